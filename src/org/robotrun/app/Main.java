@@ -1,0 +1,86 @@
+package org.robotrun.app;
+
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/** The {@code robotrun} command: the desktop simulator by default, headless tools as subcommands. */
+@Command(
+    name = "robotrun",
+    mixinStandardHelpOptions = true,
+    versionProvider = Main.Version.class,
+    description = {
+      "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate",
+      "and program robots. With no subcommand it opens the simulator window."
+    },
+    subcommands = {
+      BenchCommand.class,
+      CommandLine.HelpCommand.class
+    })
+public final class Main implements Runnable {
+
+  /** Exit codes shared by every subcommand. */
+  public static final int EXIT_OK = 0;
+  public static final int EXIT_FAILED = 1;
+  public static final int EXIT_BAD_INPUT = 2;
+
+  @Override
+  public void run() {
+    throw new UserError("the simulator window is not built yet", EXIT_FAILED);
+  }
+
+  public static void main(String[] args) {
+    System.exit(execute(args));
+  }
+
+  /** Runs the command line and returns the exit code (tests call this). */
+  public static int execute(String... args) {
+    CommandLine cl = commandLine();
+    return cl.execute(args);
+  }
+
+  static CommandLine commandLine() {
+    CommandLine cl = new CommandLine(new Main());
+    cl.setExecutionExceptionHandler(Main::onExecutionException);
+    cl.setParameterExceptionHandler(Main::onParameterException);
+    cl.setExitCodeOnInvalidInput(EXIT_BAD_INPUT);
+    return cl;
+  }
+
+  /** Bad command-line input: one line naming the problem, then where to get help. Exit 2. */
+  private static int onParameterException(CommandLine.ParameterException e, String[] args) {
+    PrintWriter err = e.getCommandLine().getErr();
+    err.println("robotrun: " + e.getMessage());
+    err.println("Try '" + e.getCommandLine().getCommandSpec().qualifiedName() + " --help' for more information.");
+    err.flush();
+    return EXIT_BAD_INPUT;
+  }
+
+  /** Anything a command throws becomes one line on stderr, never a stack trace. */
+  private static int onExecutionException(Exception e, CommandLine cl, CommandLine.ParseResult pr) {
+    PrintWriter err = cl.getErr();
+    if (e instanceof UserError ue) {
+      err.println("robotrun: " + ue.getMessage());
+      err.flush();
+      return ue.exitCode();
+    }
+    String msg = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    err.println("robotrun: internal error: " + msg);
+    if (System.getenv("ROBOTRUN_DEBUG") != null) {
+      e.printStackTrace(err);
+    } else {
+      err.println("(set ROBOTRUN_DEBUG=1 to see the details)");
+    }
+    err.flush();
+    return EXIT_FAILED;
+  }
+
+  /** Reads the version Maven put into the jar manifest. */
+  static final class Version implements CommandLine.IVersionProvider {
+    @Override
+    public String[] getVersion() {
+      String v = Main.class.getPackage().getImplementationVersion();
+      return new String[] {"robotrun " + (v == null ? "(development build)" : v)};
+    }
+  }
+}

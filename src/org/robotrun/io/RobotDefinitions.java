@@ -1,0 +1,188 @@
+package org.robotrun.io;
+
+import com.fasterxml.jackson.core.JsonParseException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.IOException;
+import java.io.InputStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.robotrun.math.Angles;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+import org.robotrun.robot.JointSpec;
+import org.robotrun.robot.LinkShape;
+import org.robotrun.robot.LinkSpec;
+import org.robotrun.robot.OpwParameters;
+import org.robotrun.robot.RobotModel;
+
+/**
+ * Reads robot definitions (JSON in {@code resources/robots/}, millimetres and degrees) into
+ * immutable {@link RobotModel}s. Degrees become radians here, once.
+ */
+public final class RobotDefinitions {
+  /** The robot a new cell gets when nothing else is said. */
+  public static final String DEFAULT_ROBOT = "lrmate200id";
+
+  private static final ObjectMapper JSON = new ObjectMapper();
+
+  private RobotDefinitions() {}
+
+  /** Loads a robot shipped in the jar by its id, e.g. "lrmate200id". */
+  public static RobotModel load(String id) {
+    String path = "/robots/" + id + ".json";
+    try (InputStream in = RobotDefinitions.class.getResourceAsStream(path)) {
+      if (in == null) {
+        throw new FileFormatException(path, 0, "no robot definition named '" + id + "'");
+      }
+      return parse(path, JSON.readTree(in));
+    } catch (JsonParseException e) {
+      throw new FileFormatException(path, e.getLocation().getLineNr(), e.getOriginalMessage());
+    } catch (IOException e) {
+      throw new FileFormatException(path, 0, e.getMessage());
+    }
+  }
+
+  /** The default robot. */
+  public static RobotModel defaultRobot() {
+    return load(DEFAULT_ROBOT);
+  }
+
+  static RobotModel parse(String source, JsonNode root) {
+    Reader r = new Reader(source);
+    List<JointSpec> joints = new ArrayList<>();
+    JsonNode js = r.array(root, "joints");
+    for (int i = 0; i < js.size(); i++) {
+      JsonNode j = js.get(i);
+      String at = "joints[" + i + "]";
+      double[] axis = r.vec(j, "axis", at);
+      joints.add(new JointSpec(
+          r.text(j, "name", at),
+          r.pose(j, at),
+          new Vec3(axis[0], axis[1], axis[2]),
+          Math.toRadians(r.number(j, "lower", at)),
+          Math.toRadians(r.number(j, "upper", at)),
+          Math.toRadians(r.number(j, "maxSpeed", at))));
+    }
+    Transform X_6F = r.pose(r.object(root, "flange", ""), "flange");
+    JsonNode wib = r.object(root, "worldInBase", "");
+    // WORLD sits above the base plate; the base frame seen from WORLD is the inverse offset.
+    Transform X_WB = Transform.translation(
+        -r.number(wib, "x", "worldInBase"), -r.number(wib, "y", "worldInBase"), -r.number(wib, "z", "worldInBase"));
+
+    List<LinkSpec> links = new ArrayList<>();
+    JsonNode ls = r.array(root, "links");
+    for (int i = 0; i < ls.size(); i++) {
+      JsonNode l = ls.get(i);
+      String at = "links[" + i + "]";
+      List<LinkShape> shapes = new ArrayList<>();
+      JsonNode ss = r.array(l, "shapes");
+      for (int k = 0; k < ss.size(); k++) {
+        JsonNode s = ss.get(k);
+        String sat = at + ".shapes[" + k + "]";
+        Transform pose = r.pose(s, sat);
+        String color = r.text(s, "color", sat);
+        String type = r.text(s, "type", sat);
+        shapes.add(switch (type) {
+          case "box" -> {
+            double[] size = r.vec(s, "size", sat);
+            yield new LinkShape.Box(pose, new Vec3(size[0], size[1], size[2]), color);
+          }
+          case "cylinder" -> new LinkShape.Cylinder(
+              pose, r.number(s, "radius", sat), r.number(s, "length", sat), color);
+          default -> throw new FileFormatException(source, 0, sat + ".type: expected box or cylinder, got '" + type + "'");
+        });
+      }
+      links.add(new LinkSpec(r.text(l, "name", at), shapes));
+    }
+
+    Optional<OpwParameters> opw = Optional.empty();
+    if (root.has("opw")) {
+      JsonNode o = root.get("opw");
+      double[] offsets = Angles.toRadians(r.numbers(o, "offsets", "opw", 6));
+      double[] signsD = r.numbers(o, "signs", "opw", 6);
+      int[] signs = new int[6];
+      for (int i = 0; i < 6; i++) {
+        signs[i] = (int) signsD[i];
+      }
+      opw = Optional.of(new OpwParameters(
+          r.number(o, "a1", "opw"), r.number(o, "a2", "opw"), r.number(o, "b", "opw"),
+          r.number(o, "c1", "opw"), r.number(o, "c2", "opw"), r.number(o, "c3", "opw"),
+          r.number(o, "c4", "opw"), offsets, signs));
+    }
+    try {
+      return new RobotModel(
+          r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links, opw,
+          root.path("coupledJ3").asBoolean(false));
+    } catch (IllegalArgumentException e) {
+      throw new FileFormatException(source, 0, e.getMessage());
+    }
+  }
+
+  /** Small typed accessors that name the JSON path of whatever is missing or wrong. */
+  private record Reader(String source) {
+    JsonNode array(JsonNode n, String field) {
+      JsonNode a = n.get(field);
+      if (a == null || !a.isArray()) {
+        throw new FileFormatException(source, 0, field + ": expected an array");
+      }
+      return a;
+    }
+
+    JsonNode object(JsonNode n, String field, String at) {
+      JsonNode o = n.get(field);
+      if (o == null || !o.isObject()) {
+        throw new FileFormatException(source, 0, join(at, field) + ": expected an object");
+      }
+      return o;
+    }
+
+    String text(JsonNode n, String field, String at) {
+      JsonNode t = n.get(field);
+      if (t == null || !t.isTextual()) {
+        throw new FileFormatException(source, 0, join(at, field) + ": expected a string");
+      }
+      return t.asText();
+    }
+
+    double number(JsonNode n, String field, String at) {
+      JsonNode t = n.get(field);
+      if (t == null || !t.isNumber() || !Double.isFinite(t.asDouble())) {
+        throw new FileFormatException(source, 0, join(at, field) + ": expected a finite number");
+      }
+      return t.asDouble();
+    }
+
+    double[] numbers(JsonNode n, String field, String at, int count) {
+      JsonNode a = n.get(field);
+      if (a == null || !a.isArray() || a.size() != count) {
+        throw new FileFormatException(source, 0, join(at, field) + ": expected " + count + " numbers");
+      }
+      double[] out = new double[count];
+      for (int i = 0; i < count; i++) {
+        if (!a.get(i).isNumber()) {
+          throw new FileFormatException(source, 0, join(at, field) + "[" + i + "]: expected a number");
+        }
+        out[i] = a.get(i).asDouble();
+      }
+      return out;
+    }
+
+    double[] vec(JsonNode n, String field, String at) {
+      return numbers(n, field, at, 3);
+    }
+
+    /** "xyz" (mm) and optional "rpy" (deg, R = Rz·Ry·Rx) as a transform. */
+    Transform pose(JsonNode n, String at) {
+      double[] xyz = n.has("xyz") ? vec(n, "xyz", at) : new double[3];
+      double[] rpy = n.has("rpy") ? vec(n, "rpy", at) : new double[3];
+      return Transform.fromRpy(xyz[0], xyz[1], xyz[2],
+          Math.toRadians(rpy[0]), Math.toRadians(rpy[1]), Math.toRadians(rpy[2]));
+    }
+
+    private static String join(String at, String field) {
+      return at.isEmpty() ? field : at + "." + field;
+    }
+  }
+}

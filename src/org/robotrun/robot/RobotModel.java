@@ -1,0 +1,79 @@
+package org.robotrun.robot;
+
+import java.util.List;
+import java.util.Optional;
+import org.robotrun.math.Transform;
+
+/**
+ * An immutable description of a serial 6-axis arm: the joint chain (kinematic convention,
+ * uncoupled J3), limits, speeds, link bodies and, where the arm has one, its closed-form (OPW)
+ * parameters. Algorithms read a model and a joint vector; nothing changes the model.
+ *
+ * <p>Frames: B is the robot base (on the floor, J1 axis), W is the controller's WORLD (on the
+ * J1 axis at J2 height for a FANUC arm), F is the flange (z out of the faceplate). Links are
+ * numbered 0 (base) to 6; link i moves with joint i.
+ *
+ * @param id short identifier used in files, e.g. "lrmate200id"
+ * @param displayName human name
+ * @param joints six joints, base to wrist
+ * @param X_6F the flange frame in link 6's frame
+ * @param X_WB the base frame in WORLD
+ * @param links seven links: base and links 1..6
+ * @param opw closed-form parameters, if the arm is ortho-parallel with a spherical wrist
+ * @param coupledJ3 whether the pendant shows J3 coupled to J2 (FANUC convention)
+ */
+public record RobotModel(
+    String id,
+    String displayName,
+    List<JointSpec> joints,
+    Transform X_6F,
+    Transform X_WB,
+    List<LinkSpec> links,
+    Optional<OpwParameters> opw,
+    boolean coupledJ3) {
+
+  public static final int DOF = 6;
+
+  public RobotModel {
+    joints = List.copyOf(joints);
+    links = List.copyOf(links);
+    if (joints.size() != DOF) {
+      throw new IllegalArgumentException("a robot needs exactly 6 joints, got " + joints.size());
+    }
+    if (links.size() != DOF + 1) {
+      throw new IllegalArgumentException("a robot needs 7 links (base and 6), got " + links.size());
+    }
+  }
+
+  public JointSpec joint(int i) {
+    return joints.get(i);
+  }
+
+  /** Lower limits (rad, kinematic convention). */
+  public double[] lowerLimits() {
+    double[] out = new double[DOF];
+    for (int i = 0; i < DOF; i++) {
+      out[i] = joints.get(i).lowerRad();
+    }
+    return out;
+  }
+
+  /** Upper limits (rad, kinematic convention). */
+  public double[] upperLimits() {
+    double[] out = new double[DOF];
+    for (int i = 0; i < DOF; i++) {
+      out[i] = joints.get(i).upperRad();
+    }
+    return out;
+  }
+
+  /** Index of the first joint outside its limits, or -1 when all are inside. */
+  public int firstJointOutsideLimits(double[] q) {
+    for (int i = 0; i < DOF; i++) {
+      if (!joints.get(i).withinLimits(q[i])) {
+        return i;
+      }
+    }
+    return -1;
+  }
+}

@@ -1,0 +1,79 @@
+package org.robotrun;
+
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+
+import com.tngtech.archunit.core.domain.JavaClasses;
+import com.tngtech.archunit.core.importer.ClassFileImporter;
+import com.tngtech.archunit.core.importer.ImportOption;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+
+/** The import rules of DESIGN.md ("Packages and who may import whom"). */
+class ArchitectureTest {
+  private static final List<String> CORE =
+      List.of("math", "robot", "collision", "world", "program", "motion", "sim", "pendant", "io");
+  private static final List<String> ALL =
+      List.of("math", "robot", "collision", "world", "program", "motion", "sim", "pendant", "io", "render", "ui", "app");
+
+  /** Which of our packages each package may use (besides itself). */
+  private static final Map<String, List<String>> ALLOWED = Map.ofEntries(
+      Map.entry("math", List.of()),
+      Map.entry("robot", List.of("math")),
+      Map.entry("collision", List.of("math")),
+      Map.entry("world", List.of("math", "collision")),
+      Map.entry("program", List.of("math")),
+      Map.entry("motion", List.of("math", "robot")),
+      Map.entry("sim", List.of("math", "robot", "collision", "world", "program", "motion")),
+      Map.entry("pendant", List.of("math", "program", "sim")),
+      Map.entry("io", CORE),
+      Map.entry("render", CORE),
+      Map.entry("ui", ALL),
+      Map.entry("app", ALL));
+
+  private static JavaClasses classes;
+
+  @BeforeAll
+  static void importMainClasses() {
+    classes = new ClassFileImporter()
+        .withImportOption(ImportOption.Predefined.DO_NOT_INCLUDE_TESTS)
+        .importPackages("org.robotrun");
+  }
+
+  @Test
+  void corePackagesDoNotTouchOpenGlUiOrApp() {
+    for (String p : CORE) {
+      noClasses().that().resideInAPackage("org.robotrun." + p + "..")
+          .should().dependOnClassesThat().resideInAnyPackage(
+              "org.lwjgl..", "imgui..", "org.robotrun.render..", "org.robotrun.ui..", "org.robotrun.app..")
+          .allowEmptyShould(true)
+          .check(classes);
+    }
+  }
+
+  @Test
+  void eachPackageImportsOnlyWhatTheDesignAllows() {
+    for (Map.Entry<String, List<String>> e : ALLOWED.entrySet()) {
+      String[] forbidden = ALL.stream()
+          .filter(p -> !p.equals(e.getKey()) && !e.getValue().contains(p))
+          .map(p -> "org.robotrun." + p + "..")
+          .toArray(String[]::new);
+      if (forbidden.length == 0) {
+        continue;
+      }
+      noClasses().that().resideInAPackage("org.robotrun." + e.getKey() + "..")
+          .should().dependOnClassesThat().resideInAnyPackage(forbidden)
+          .allowEmptyShould(true)
+          .check(classes);
+    }
+  }
+
+  @Test
+  void programReachesTheRobotOnlyThroughItsOwnPort() {
+    noClasses().that().resideInAPackage("org.robotrun.program..")
+        .should().dependOnClassesThat().resideInAnyPackage("org.robotrun.motion..", "org.robotrun.robot..")
+        .allowEmptyShould(true)
+        .check(classes);
+  }
+}
