@@ -10,14 +10,17 @@ import picocli.CommandLine.Command;
     mixinStandardHelpOptions = true,
     versionProvider = Main.Version.class,
     description = {
-      "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate",
-      "and program robots. With no subcommand it opens the simulator window."
+      "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate and program robots.",
+      "With no subcommand it opens the simulator window.",
+      ""
     },
     subcommands = {
+      GuiCommand.class,
+      RenderCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })
-public final class Main implements Runnable {
+public final class Main implements java.util.concurrent.Callable<Integer> {
 
   /** Exit codes shared by every subcommand. */
   public static final int EXIT_OK = 0;
@@ -25,8 +28,8 @@ public final class Main implements Runnable {
   public static final int EXIT_BAD_INPUT = 2;
 
   @Override
-  public void run() {
-    throw new UserError("the simulator window is not built yet", EXIT_FAILED);
+  public Integer call() {
+    return new GuiCommand().call();
   }
 
   public static void main(String[] args) {

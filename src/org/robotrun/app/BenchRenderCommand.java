@@ -1,0 +1,82 @@
+package org.robotrun.app;
+
+import java.util.Arrays;
+import java.util.concurrent.Callable;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.render.GlUnavailableException;
+import org.robotrun.render.HeadlessRenderer;
+import org.robotrun.render.OrbitCamera;
+import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.SceneSnapshot;
+import org.robotrun.sim.SceneSnapshots;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code robotrun bench render}: frames per second of the default scene, headless. */
+@Command(
+    name = "render",
+    mixinStandardHelpOptions = true,
+    description = {
+      "Render the default scene headless (OSMesa) for a while and print frames per second.",
+      "Each frame is drawn, multisample-resolved and finished (glFinish); the arm moves every frame, so the scene is rebuilt from a fresh snapshot as in the simulator.",
+      "Output: fps=X frames=N seconds=S width=W height=H samples=K median_frame_ms=T"
+    })
+public final class BenchRenderCommand implements Callable<Integer> {
+  @Option(names = "--width", defaultValue = "1280", description = "Width in pixels (default: ${DEFAULT-VALUE}).")
+  int width;
+
+  @Option(names = "--height", defaultValue = "800", description = "Height in pixels (default: ${DEFAULT-VALUE}).")
+  int height;
+
+  @Option(names = "--seconds", defaultValue = "5", description = "How long to measure (default: ${DEFAULT-VALUE}).")
+  double seconds;
+
+  @Option(names = "--samples", defaultValue = "" + HeadlessRenderer.SAMPLES,
+      description = "Multisamples per pixel, 1, 2, 4 or 8 (default: ${DEFAULT-VALUE}, as robotrun render uses).")
+  int samples;
+
+  @Override
+  public Integer call() {
+    if (samples != 1 && samples != 2 && samples != 4 && samples != 8) {
+      throw new UserError("--samples: expected 1, 2, 4 or 8, got " + samples);
+    }
+    RenderCommand.checkSize("--width", width);
+    RenderCommand.checkSize("--height", height);
+    if (!(seconds > 0 && seconds <= 600)) {
+      throw new UserError("--seconds: expected more than 0 and at most 600, got " + seconds);
+    }
+    RobotModel robot = RobotDefinitions.defaultRobot();
+    OrbitCamera camera = new OrbitCamera();
+    try (HeadlessRenderer r = new HeadlessRenderer(width, height, samples)) {
+      // Warm up: shader compilation, mesh upload, JIT.
+      for (int i = 0; i < 10; i++) {
+        r.renderFrame(scene(robot, i), camera);
+      }
+      long start = System.nanoTime();
+      long end = start + (long) (seconds * 1e9);
+      int frames = 0;
+      long[] frameNs = new long[1 << 16];
+      long t = start;
+      while (t < end && frames < frameNs.length) {
+        r.renderFrame(scene(robot, frames), camera);
+        long now = System.nanoTime();
+        frameNs[frames++] = now - t;
+        t = now;
+      }
+      double elapsed = (t - start) / 1e9;
+      long[] sorted = Arrays.copyOf(frameNs, frames);
+      Arrays.sort(sorted);
+      System.out.printf("fps=%.1f frames=%d seconds=%.2f width=%d height=%d samples=%d median_frame_ms=%.2f%n",
+          frames / elapsed, frames, elapsed, width, height, samples, sorted[frames / 2] / 1e6);
+    } catch (GlUnavailableException e) {
+      throw new UserError("cannot render: " + e.getMessage(), Main.EXIT_FAILED);
+    }
+    return Main.EXIT_OK;
+  }
+
+  private static SceneSnapshot scene(RobotModel robot, int frame) {
+    double s = Math.sin(frame * 0.02);
+    double[] q = {0.6 * s, 0.3 * s, 0.2 * s, 0.5 * s, 0.4 * s + 0.5, s};
+    return SceneSnapshots.singleRobot(robot, q, frame / 60.0);
+  }
+}

@@ -1,0 +1,80 @@
+package org.robotrun.render;
+
+import java.nio.ByteBuffer;
+import java.nio.file.Path;
+import org.lwjgl.stb.STBImageWrite;
+import org.lwjgl.system.MemoryUtil;
+import org.robotrun.sim.SceneSnapshot;
+
+/** Renders snapshots to images with no display (see {@link HeadlessGl}). */
+public final class HeadlessRenderer implements AutoCloseable {
+  /** Multisample count: smooth edges at a cost the software renderer can carry. */
+  public static final int SAMPLES = 4;
+
+  private final HeadlessGl gl;
+  private final SceneRenderer renderer;
+  private final OffscreenTarget target;
+
+  public HeadlessRenderer(int width, int height) {
+    this(width, height, SAMPLES);
+  }
+
+  /** A renderer with the given multisample count (1 = no anti-aliasing). */
+  public HeadlessRenderer(int width, int height, int samples) {
+    gl = HeadlessGl.create();
+    try {
+      renderer = new SceneRenderer();
+      target = new OffscreenTarget(width, height, samples);
+    } catch (RuntimeException e) {
+      gl.close();
+      throw e;
+    }
+  }
+
+  /** Draws one frame into the offscreen target and waits until the GPU is done. */
+  public void renderFrame(SceneSnapshot scene, OrbitCamera camera) {
+    target.bind();
+    renderer.render(scene, camera, target.width(), target.height());
+    target.resolve();
+    org.lwjgl.opengl.GL33C.glFinish();
+  }
+
+  /** Draws one frame and returns its pixels as RGB, top row first (width·height·3 bytes). */
+  public byte[] renderRgb(SceneSnapshot scene, OrbitCamera camera) {
+    target.bind();
+    renderer.render(scene, camera, target.width(), target.height());
+    ByteBuffer px = target.readRgbTopDown();
+    try {
+      byte[] out = new byte[px.remaining()];
+      px.get(out);
+      return out;
+    } finally {
+      MemoryUtil.memFree(px);
+    }
+  }
+
+  /**
+   * Draws one frame and writes it as a PNG.
+   *
+   * @throws java.io.UncheckedIOException when the file cannot be written
+   */
+  public void renderPng(SceneSnapshot scene, OrbitCamera camera, Path out) {
+    target.bind();
+    renderer.render(scene, camera, target.width(), target.height());
+    ByteBuffer px = target.readRgbTopDown();
+    try {
+      if (!STBImageWrite.stbi_write_png(out.toString(), target.width(), target.height(), 3, px, target.width() * 3)) {
+        throw new java.io.UncheckedIOException(new java.io.IOException("could not write " + out));
+      }
+    } finally {
+      MemoryUtil.memFree(px);
+    }
+  }
+
+  @Override
+  public void close() {
+    target.close();
+    renderer.close();
+    gl.close();
+  }
+}

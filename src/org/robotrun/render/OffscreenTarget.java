@@ -1,0 +1,104 @@
+package org.robotrun.render;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.nio.ByteBuffer;
+import org.lwjgl.system.MemoryUtil;
+
+/**
+ * A framebuffer to render into without a window: multisampled colour and depth, resolved into
+ * a plain RGBA buffer that can be read back.
+ */
+public final class OffscreenTarget implements AutoCloseable {
+  private final int width;
+  private final int height;
+  private final int msFbo;
+  private final int msColor;
+  private final int msDepth;
+  private final int fbo;
+  private final int color;
+
+  public OffscreenTarget(int width, int height, int samples) {
+    this.width = width;
+    this.height = height;
+    msFbo = glGenFramebuffers();
+    glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
+    msColor = glGenRenderbuffers();
+    glBindRenderbuffer(GL_RENDERBUFFER, msColor);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor);
+    msDepth = glGenRenderbuffers();
+    glBindRenderbuffer(GL_RENDERBUFFER, msDepth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth);
+    check("multisampled");
+
+    fbo = glGenFramebuffers();
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    color = glGenRenderbuffers();
+    glBindRenderbuffer(GL_RENDERBUFFER, color);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    check("resolve");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  private static void check(String which) {
+    int status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+      throw new IllegalStateException("the " + which + " framebuffer is incomplete (status 0x"
+          + Integer.toHexString(status) + ")");
+    }
+  }
+
+  /** Binds the multisampled framebuffer for drawing. */
+  public void bind() {
+    glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
+  }
+
+  /** Resolves the samples into the plain buffer. */
+  public void resolve() {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
+
+  /**
+   * Resolves and reads the image back as RGB rows, top row first. The buffer is allocated with
+   * MemoryUtil; the caller frees it with {@link MemoryUtil#memFree}.
+   */
+  public ByteBuffer readRgbTopDown() {
+    resolve();
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    ByteBuffer bottomUp = MemoryUtil.memAlloc(width * height * 3);
+    glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, bottomUp);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    ByteBuffer topDown = MemoryUtil.memAlloc(width * height * 3);
+    int row = width * 3;
+    for (int y = 0; y < height; y++) {
+      MemoryUtil.memCopy(MemoryUtil.memAddress(bottomUp) + (long) (height - 1 - y) * row,
+          MemoryUtil.memAddress(topDown) + (long) y * row, row);
+    }
+    MemoryUtil.memFree(bottomUp);
+    return topDown;
+  }
+
+  public int width() {
+    return width;
+  }
+
+  public int height() {
+    return height;
+  }
+
+  @Override
+  public void close() {
+    glDeleteFramebuffers(msFbo);
+    glDeleteFramebuffers(fbo);
+    glDeleteRenderbuffers(msColor);
+    glDeleteRenderbuffers(msDepth);
+    glDeleteRenderbuffers(color);
+  }
+}

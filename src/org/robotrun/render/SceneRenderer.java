@@ -1,0 +1,136 @@
+package org.robotrun.render;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+import java.util.HashMap;
+import java.util.Map;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.lwjgl.system.MemoryStack;
+import org.robotrun.math.Transform;
+import org.robotrun.sim.DrawItem;
+import org.robotrun.sim.DrawShape;
+import org.robotrun.sim.SceneSnapshot;
+
+/**
+ * Draws a {@link SceneSnapshot} with OpenGL 3.3 core: the floor grid, the world axes and every
+ * draw item. Meshes are built once per distinct shape and kept (the small scene graph: shape →
+ * GPU mesh, item → model matrix and colour). Needs a current GL context on the calling thread.
+ */
+public final class SceneRenderer implements AutoCloseable {
+  private static final float[] BACKGROUND = {0.80f, 0.83f, 0.87f};
+  private static final float AXIS_LENGTH = 400f;
+  private static final float AXIS_THICK = 10f;
+
+  private final ShaderProgram solid;
+  private final ShaderProgram floor;
+  private final GpuMesh floorQuad;
+  private final GpuMesh axisBar;
+  private final Map<DrawShape, GpuMesh> meshes = new HashMap<>();
+  private final float[] model = new float[16];
+  private final Matrix4f viewProj = new Matrix4f();
+
+  public SceneRenderer() {
+    solid = ShaderProgram.load("solid");
+    floor = ShaderProgram.load("floor");
+    floorQuad = GpuMesh.upload(new MeshData(
+        new float[] {
+          -20000, -20000, 0, 0, 0, 1,
+          20000, -20000, 0, 0, 0, 1,
+          20000, 20000, 0, 0, 0, 1,
+          -20000, 20000, 0, 0, 0, 1
+        },
+        new int[] {0, 1, 2, 0, 2, 3}));
+    axisBar = GpuMesh.upload(MeshFactory.box(1, 1, 1, 0));
+  }
+
+  /** Renders into the currently bound framebuffer of the given size (pixels). */
+  public void render(SceneSnapshot scene, OrbitCamera camera, int width, int height) {
+    glViewport(0, 0, width, height);
+    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    viewProj.set(camera.viewProjection(width / (float) Math.max(1, height)));
+    Vector3f eye = camera.eye();
+    float floorZ = (float) scene.floorZ();
+
+    try (MemoryStack stack = MemoryStack.stackPush()) {
+      var vp = viewProj.get(stack.mallocFloat(16));
+
+      // Floor: pushed back a little in depth so the axes lying on it win.
+      floor.use();
+      glUniformMatrix4fv(floor.uniform("uViewProj"), false, vp);
+      glUniform3f(floor.uniform("uEye"), eye.x, eye.y, eye.z);
+      new Matrix4f().translation(0, 0, floorZ).get(model);
+      glUniformMatrix4fv(floor.uniform("uModel"), false, model);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(1f, 1f);
+      glDisable(GL_CULL_FACE);
+      floorQuad.draw();
+      glEnable(GL_CULL_FACE);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+
+      solid.use();
+      glUniformMatrix4fv(solid.uniform("uViewProj"), false, vp);
+      glUniform3f(solid.uniform("uEye"), eye.x, eye.y, eye.z);
+      glUniform3f(solid.uniform("uKeyDir"), 0.45f, -0.35f, 0.82f);
+      glUniform3f(solid.uniform("uFillDir"), -0.6f, 0.7f, 0.3f);
+      int uModel = solid.uniform("uModel");
+      int uColor = solid.uniform("uColor");
+
+      // World axes on the floor below the WORLD origin: X red, Y green, Z blue.
+      float half = AXIS_LENGTH / 2;
+      drawBar(uModel, uColor, half, 0, floorZ + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK, 0.85f, 0.15f, 0.12f);
+      drawBar(uModel, uColor, 0, half, floorZ + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK, 0.15f, 0.65f, 0.2f);
+      drawBar(uModel, uColor, 0, 0, floorZ + half, AXIS_THICK, AXIS_THICK, AXIS_LENGTH, 0.15f, 0.3f, 0.9f);
+
+      for (DrawItem item : scene.items()) {
+        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+        item.X_WS().toColumnMajor(model);
+        glUniformMatrix4fv(uModel, false, model);
+        DrawItem.Color c = item.color();
+        glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
+        mesh.draw();
+      }
+    }
+  }
+
+  private void drawBar(int uModel, int uColor, float cx, float cy, float cz, float sx, float sy, float sz,
+      float r, float g, float b) {
+    new Matrix4f().translation(cx, cy, cz).scale(sx, sy, sz).get(model);
+    glUniformMatrix4fv(uModel, false, model);
+    glUniform4f(uColor, r, g, b, 1f);
+    axisBar.draw();
+  }
+
+  private static GpuMesh buildMesh(DrawShape shape) {
+    return GpuMesh.upload(switch (shape) {
+      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(),
+          b.rounded() ? 0.14 * Math.min(b.size().x(), Math.min(b.size().y(), b.size().z())) : 0);
+      case DrawShape.Cylinder c -> MeshFactory.cylinder(c.radius(), c.length());
+      case DrawShape.Mesh m -> MeshFactory.triangles(m.triangles());
+    });
+  }
+
+  /** Number of distinct GPU meshes built so far. */
+  public int meshCount() {
+    return meshes.size();
+  }
+
+  /** Model matrix helper for tests and callers that place things by transform. */
+  static void columnMajor(Transform t, float[] dest) {
+    t.toColumnMajor(dest);
+  }
+
+  @Override
+  public void close() {
+    meshes.values().forEach(GpuMesh::close);
+    meshes.clear();
+    floorQuad.close();
+    axisBar.close();
+    solid.close();
+    floor.close();
+  }
+}

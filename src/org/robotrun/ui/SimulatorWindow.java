@@ -1,0 +1,127 @@
+package org.robotrun.ui;
+
+import static org.lwjgl.glfw.GLFW.*;
+
+import org.lwjgl.glfw.GLFWErrorCallback;
+import org.lwjgl.opengl.GL;
+import org.lwjgl.system.Configuration;
+import org.lwjgl.system.Platform;
+import org.robotrun.render.GlUnavailableException;
+import org.robotrun.render.OrbitCamera;
+import org.robotrun.render.SceneRenderer;
+import org.robotrun.sim.SceneSnapshot;
+
+/**
+ * The desktop window: a GLFW window with an OpenGL 3.3 core context showing the cell. The mouse
+ * moves the camera (left drag orbits, right or middle drag pans, wheel zooms); Home or R resets
+ * the view; Escape closes the window.
+ */
+public final class SimulatorWindow implements AutoCloseable {
+  /** Supplies the scene to draw each frame. */
+  @FunctionalInterface
+  public interface SceneSource {
+    SceneSnapshot snapshot(double wallSeconds);
+  }
+
+  private final long window;
+  private final OrbitCamera camera = new OrbitCamera();
+  private final SceneRenderer renderer;
+  private double lastX;
+  private double lastY;
+  private boolean orbiting;
+  private boolean panning;
+
+  public SimulatorWindow(String title, int width, int height) {
+    GLFWErrorCallback.createPrint(System.err).set();
+    if (!glfwInit()) {
+      throw new GlUnavailableException("GLFW could not start (is there a display? try 'robotrun render' for headless use)");
+    }
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    if (Platform.get() == Platform.MACOSX) {
+      glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    }
+    glfwWindowHint(GLFW_SAMPLES, 4);
+    window = glfwCreateWindow(width, height, title, 0, 0);
+    if (window == 0) {
+      glfwTerminate();
+      throw new GlUnavailableException("could not open a window with OpenGL 3.3 (update the graphics driver or Mesa)");
+    }
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    Configuration.OPENGL_EXPLICIT_INIT.set(true);
+    GL.create();
+    GL.createCapabilities();
+    renderer = new SceneRenderer();
+    installInput();
+  }
+
+  private void installInput() {
+    glfwSetMouseButtonCallback(window, (w, button, action, mods) -> {
+      boolean down = action == GLFW_PRESS;
+      if (button == GLFW_MOUSE_BUTTON_LEFT) {
+        orbiting = down;
+      } else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
+        panning = down;
+      }
+    });
+    glfwSetCursorPosCallback(window, (w, x, y) -> {
+      double dx = x - lastX, dy = y - lastY;
+      lastX = x;
+      lastY = y;
+      int[] ww = new int[1], wh = new int[1];
+      glfwGetWindowSize(window, ww, wh);
+      if (orbiting) {
+        camera.orbit((float) (-dx * 0.008), (float) (dy * 0.008));
+      } else if (panning && wh[0] > 0) {
+        camera.pan((float) (dx / wh[0]), (float) (dy / wh[0]));
+      }
+    });
+    glfwSetScrollCallback(window, (w, sx, sy) -> camera.zoom((float) Math.pow(0.88, sy)));
+    glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
+      if (action != GLFW_PRESS) {
+        return;
+      }
+      if (key == GLFW_KEY_HOME || key == GLFW_KEY_R) {
+        camera.reset();
+      } else if (key == GLFW_KEY_ESCAPE) {
+        glfwSetWindowShouldClose(window, true);
+      }
+    });
+  }
+
+  /** Runs the event and render loop until the window is closed. */
+  public void run(SceneSource scene) {
+    long start = System.nanoTime();
+    int[] fw = new int[1], fh = new int[1];
+    while (!glfwWindowShouldClose(window)) {
+      glfwPollEvents();
+      glfwGetFramebufferSize(window, fw, fh);
+      if (fw[0] > 0 && fh[0] > 0) {
+        renderer.render(scene.snapshot((System.nanoTime() - start) / 1e9), camera, fw[0], fh[0]);
+        glfwSwapBuffers(window);
+      } else {
+        glfwWaitEventsTimeout(0.1);
+      }
+    }
+  }
+
+  public OrbitCamera camera() {
+    return camera;
+  }
+
+  @Override
+  public void close() {
+    renderer.close();
+    GL.setCapabilities(null);
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    GL.destroy();
+    GLFWErrorCallback cb = glfwSetErrorCallback(null);
+    if (cb != null) {
+      cb.free();
+    }
+  }
+}

@@ -1,0 +1,66 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robotrun.render.GlTestSupport;
+import picocli.CommandLine;
+
+class RenderCommandTest {
+
+  record Run(int exitCode, String out, String err) {}
+
+  static Run run(String... args) {
+    CommandLine cl = Main.commandLine();
+    StringWriter out = new StringWriter();
+    StringWriter err = new StringWriter();
+    cl.setOut(new PrintWriter(out));
+    cl.setErr(new PrintWriter(err));
+    int code = cl.execute(args);
+    return new Run(code, out.toString(), err.toString());
+  }
+
+  @Test
+  void missingOutputDirectoryIsAOneLineErrorWithExitCode2(@TempDir Path dir) {
+    Run r = run("render", "--out", dir.resolve("no/such/dir/shot.png").toString());
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.err().strip().lines()).hasSize(1);
+    assertThat(r.err()).contains("--out").contains("does not exist").doesNotContain("Exception").doesNotContain("\tat ");
+  }
+
+  @Test
+  void badJointValuesAreOneLineErrorsWithExitCode2(@TempDir Path dir) {
+    String out = dir.resolve("shot.png").toString();
+    for (String joints : new String[] {"1,2,3", "0,0,0,0,0,x", "0,0,0,0,0,NaN", "0,0,0,0,0,0,0", "400,0,0,0,0,0"}) {
+      Run r = run("render", "--out", out, "--joints", joints);
+      assertThat(r.exitCode()).as(joints).isEqualTo(2);
+      assertThat(r.err().strip().lines()).as(joints).hasSize(1);
+      assertThat(r.err()).as(joints).startsWith("robotrun: --joints").doesNotContain("\tat ");
+    }
+    assertThat(Files.exists(Path.of(out))).isFalse();
+  }
+
+  @Test
+  void unknownOptionExitsWith2AndPointsToHelp() {
+    Run r = run("render", "--out", "x.png", "--bogus");
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.err()).contains("--bogus").contains("--help");
+  }
+
+  @Test
+  void rendersThePngAtTheRequestedSize(@TempDir Path dir) throws Exception {
+    // Probe first so a machine without OpenGL skips (outside CI) rather than fails.
+    GlTestSupport.rendererOrSkip(16, 16).close();
+    Path out = dir.resolve("arm.png");
+    Run r = run("render", "--out", out.toString(), "--width", "200", "--height", "120", "--joints", "90,10,-10,0,-30,0");
+    assertThat(r.exitCode()).as(r.err()).isZero();
+    var img = javax.imageio.ImageIO.read(out.toFile());
+    assertThat(img.getWidth()).isEqualTo(200);
+    assertThat(img.getHeight()).isEqualTo(120);
+  }
+}
