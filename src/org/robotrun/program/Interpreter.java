@@ -756,9 +756,7 @@ public final class Interpreter {
     }
     int m0 = motionAbove(p, m1);
     if (m0 < 0) {
-      if (m0 == -1) {
-        cur.pc = m1;
-      }
+      // The robot already stands at the first motion's point: the cursor stays.
       return backwardStopped(m0, m1);
     }
     for (int line : new int[] {m0, m1}) {
