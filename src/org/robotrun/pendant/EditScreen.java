@@ -98,8 +98,7 @@ final class EditScreen implements Screen {
       }
       String number = String.format(Locale.ROOT, "%4d:", n);
       if (isCursor && field < 0) {
-        number = "{" + number.trim() + "}";
-        number = " ".repeat(Math.max(0, 5 - number.length() + 2)) + number;
+        number = String.format(Locale.ROOT, "%5s", "{" + n + ":}");
       }
       StringBuilder text = new StringBuilder();
       List<Field> fs = fields(p, prog, n);
