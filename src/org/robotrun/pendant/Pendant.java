@@ -476,6 +476,11 @@ public final class Pendant {
     if (after == null || after.equals(before.get())) {
       return false;
     }
+    Optional<String> dup = newDuplicateLabel(before.get(), after);
+    if (dup.isPresent()) {
+      message = dup.get();
+      return false;
+    }
     Deque<Program> stack = undo.computeIfAbsent(name, n -> new ArrayDeque<>());
     stack.push(before.get());
     while (stack.size() > UNDO_DEPTH) {
@@ -483,6 +488,31 @@ public final class Pendant {
     }
     control.saveProgram(after);
     return true;
+  }
+
+  /** A label number defined twice in {@code after} but not in {@code before}, as a message. */
+  static Optional<String> newDuplicateLabel(Program before, Program after) {
+    Map<Integer, Integer> seenBefore = labels(before);
+    Map<Integer, Integer> first = new HashMap<>();
+    for (int n = 1; n <= after.lineCount(); n++) {
+      if (after.line(n) instanceof org.robotrun.program.Instruction.Label l) {
+        Integer at = first.putIfAbsent(l.number(), n);
+        if (at != null && seenBefore.getOrDefault(l.number(), 0) < 2) {
+          return Optional.of("Duplicate label: LBL[" + l.number() + "] is already on line " + at);
+        }
+      }
+    }
+    return Optional.empty();
+  }
+
+  private static Map<Integer, Integer> labels(Program p) {
+    Map<Integer, Integer> count = new HashMap<>();
+    for (org.robotrun.program.Instruction in : p.lines()) {
+      if (in instanceof org.robotrun.program.Instruction.Label l) {
+        count.merge(l.number(), 1, Integer::sum);
+      }
+    }
+    return count;
   }
 
   /** Undoes the last edit of program {@code name}. */
