@@ -133,8 +133,7 @@ public final class Pendant {
   public void type(String text) {
     keySinceShiftPress = true;
     if (modal instanceof Modal.Entry e) {
-      e.settle();
-      e.buffer.append(text);
+      e.append(text);
       return;
     }
     if (modal != null) {
@@ -365,8 +364,24 @@ public final class Pendant {
     modal = new Modal.Choice(title, options, onChoose);
   }
 
+  /** An entry offering {@code initial}: the first typed character replaces it, ENTER keeps it. */
   void entry(String prompt, String initial, boolean letters, Function<String, Optional<String>> onEnter) {
-    modal = new Modal.Entry(prompt, initial, letters, onEnter);
+    modal = new Modal.Entry(prompt, initial, true, letters, onEnter);
+  }
+
+  /** {@link #entryTyped} when the operator already typed something ({@code typed} non-null), else {@link #entry}. */
+  void entryOrTyped(String prompt, String typed, String offered, boolean letters,
+      Function<String, Optional<String>> onEnter) {
+    if (typed != null) {
+      entryTyped(prompt, typed, letters, onEnter);
+    } else {
+      entry(prompt, offered, letters, onEnter);
+    }
+  }
+
+  /** An entry that starts with text already typed (a keypad digit that opened it). */
+  void entryTyped(String prompt, String typed, boolean letters, Function<String, Optional<String>> onEnter) {
+    modal = new Modal.Entry(prompt, typed, false, letters, onEnter);
   }
 
   void confirm(String question, Runnable onYes) {
@@ -395,13 +410,13 @@ public final class Pendant {
       }
       case Modal.Entry e -> {
         if (k.keypadChar().isPresent()) {
-          e.settle();
-          e.buffer.append(k.keypadChar().get());
+          e.append(String.valueOf(k.keypadChar().get()));
           return;
         }
         switch (k) {
           case BACKSPACE -> {
             e.settle();
+            e.fresh = false;
             if (e.buffer.length() > 0) {
               e.buffer.setLength(e.buffer.length() - 1);
             }
