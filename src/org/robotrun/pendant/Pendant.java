@@ -144,10 +144,18 @@ public final class Pendant {
     screen.text(this, text);
   }
 
-  /** Advances simulated time; the EDIT cursor follows the executing line. */
+  /** Slice of simulated time between two looks at the executing line. */
+  private static final double FOLLOW_SLICE_SEC = 0.02;
+
+  /** Advances simulated time; the EDIT cursor follows the executing line as it goes. */
   public void advance(double dtSec) {
-    control.advance(dtSec);
-    followExecution();
+    double left = dtSec;
+    while (left > 1e-12) {
+      double dt = Math.min(FOLLOW_SLICE_SEC, left);
+      control.advance(dt);
+      left -= dt;
+      followExecution();
+    }
   }
 
   /** Whether SHIFT is on (held or latched). */
@@ -272,10 +280,15 @@ public final class Pendant {
 
   private void followExecution() {
     ExecutionStatus st = control.status();
-    if (st.state() != ExecState.IDLE && st.program().equals(editScreen.programName) && st.line() > 0) {
+    // follow while a program is active, and once more when it stops (so the cursor ends where it ended)
+    boolean justStopped = st.state() == ExecState.IDLE && lastFollowed != null && lastFollowed.state() != ExecState.IDLE;
+    if ((st.state() != ExecState.IDLE || justStopped) && st.program().equals(editScreen.programName) && st.line() > 0) {
       editScreen.follow(this, st.line());
     }
+    lastFollowed = st;
   }
+
+  private ExecutionStatus lastFollowed;
 
   private void menu() {
     List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm");
@@ -607,7 +620,7 @@ public final class Pendant {
     int line = st.program().isEmpty() || st.state() == ExecState.IDLE && !st.program().equals(selectedProgram)
         ? (selectedProgram.isEmpty() ? 0 : editScreen.cursorLine(this)) : st.line();
     String state = switch (st.state()) {
-      case IDLE -> "";
+      case IDLE -> "IDLE";
       case RUNNING -> "RUNNING";
       case PAUSED -> "PAUSED";
       case ABORTED -> "ABORTED";

@@ -46,6 +46,14 @@ class PendantCommandTest {
   }
 
   @Test
+  void theDocumentedTourRuns() {
+    Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys");
+    assertThat(r.exitCode()).isEqualTo(0);
+    assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]>5},JMP LBL[1]")
+        .contains("LINE 2    RUNNING").contains("LINE 5    IDLE").contains("R[  1:            ]  = {1}");
+  }
+
+  @Test
   void malformedScriptIsExit2WithFileAndLine(@TempDir Path dir) throws Exception {
     Path keys = dir.resolve("bad.keys");
     Files.writeString(keys, "SELECT\nWAIT later\n");
