@@ -40,6 +40,11 @@ public final class MotionRunner {
   static final double STALL_SEC = 0.5;
   /** Halvings of a tick's path step before a point counts as impossible to reach. */
   static final int MAX_RETRIES = 10;
+  /**
+   * A Cartesian move that brings J5 closer to 0 than this (the wrist singularity, J4 and J6 in
+   * line) stops with an alarm, as a controller without singularity avoidance does.
+   */
+  static final double WRIST_SINGULAR_RAD = Math.toRadians(1);
 
   private final RobotModel model;
   private final MotionLimits limits;
@@ -305,6 +310,9 @@ public final class MotionRunner {
     if (bad >= 0) {
       return fail(lastTag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, limitMessage(bad, qTry[bad])));
     }
+    if (entersWristSingularity(q, qTry)) {
+      return fail(lastTag(), singularity());
+    }
     for (Segment s : active) {
       s.tSec += step;
     }
@@ -478,6 +486,14 @@ public final class MotionRunner {
 
   private long lastTag() {
     return active.isEmpty() ? -1 : active.get(active.size() - 1).tag;
+  }
+
+  /** Whether J5 heads into (or through) the wrist singularity between the two joint vectors. */
+  static boolean entersWristSingularity(double[] qFrom, double[] qTo) {
+    double from = Math.abs(Math.sin(qFrom[4]));
+    double to = Math.abs(Math.sin(qTo[4]));
+    boolean crosses = Math.signum(Math.sin(qFrom[4])) * Math.signum(Math.sin(qTo[4])) < 0;
+    return crosses || (to < Math.sin(WRIST_SINGULAR_RAD) && to < from);
   }
 
   private MotionFault cannotFollow() {
