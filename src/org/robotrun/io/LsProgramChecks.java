@@ -40,10 +40,14 @@ final class LsProgramChecks {
     }
     for (int i = 0; i < lines.size(); i++) {
       int line = sourceLines.get(i);
-      for (int p : localPositionsUsed(lines.get(i))) {
-        if (program.position(p).isEmpty()) {
-          out.add(Diagnostic.error(file, line, "P[" + p + "] is used but /POS has no P[" + p + "]"));
+      Instruction in = lines.get(i);
+      if (in instanceof Instruction.Move m) {
+        requirePosition(program, m.target(), file, line, out);
+        if (m.circularEnd().isPresent()) {
+          requirePosition(program, m.circularEnd().get(), file, line, out);
         }
+      } else if (in instanceof Instruction.AssignPosReg a && a.source() instanceof Instruction.FromLocal f) {
+        requirePosition(program, new Motion.Local(f.number(), f.comment()), file, line, out);
       }
       for (LabelRef target : labelTargets(lines.get(i))) {
         if (target.index() instanceof Index.Direct d && !labels.containsKey(d.value())) {
@@ -86,21 +90,10 @@ final class LsProgramChecks {
     return b instanceof Instruction.Call c ? Optional.of(c) : Optional.empty();
   }
 
-  private static List<Integer> localPositionsUsed(Instruction in) {
-    List<Integer> out = new ArrayList<>(2);
-    if (in instanceof Instruction.Move m) {
-      if (m.target() instanceof Motion.Local l) {
-        out.add(l.number());
-      }
-      m.circularEnd().ifPresent(t -> {
-        if (t instanceof Motion.Local l) {
-          out.add(l.number());
-        }
-      });
-    } else if (in instanceof Instruction.AssignPosReg a && a.source() instanceof Instruction.FromLocal f) {
-      out.add(f.number());
+  private static void requirePosition(Program program, Motion.Target t, String file, int line, List<Diagnostic> out) {
+    if (t instanceof Motion.Local l && !program.positions().containsKey(l.number())) {
+      out.add(Diagnostic.error(file, line, "P[" + l.number() + "] is used but /POS has no P[" + l.number() + "]"));
     }
-    return out;
   }
 
   private static List<LabelRef> labelTargets(Instruction in) {
