@@ -112,6 +112,9 @@ final class LsStatementParser {
         return new Instruction.Comment(next().text().stripTrailing());
       }
       case SLASH -> {
+        if (!t.text().equals("//")) {
+          throw error("expected a statement, found '/' (a commented-out line starts with '//')");
+        }
         next();
         return new Instruction.CommentedOut(next().text().stripTrailing());
       }

@@ -158,6 +158,7 @@ class LsReaderTest {
         {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
         {"L P[1] max_speed FINE", "not supported: max_speed"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
         {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);
