@@ -14,6 +14,7 @@ import picocli.CommandLine.Command;
       "and program robots. With no subcommand it opens the simulator window."
     },
     subcommands = {
+      CheckCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })
