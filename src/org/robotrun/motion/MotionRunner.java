@@ -122,6 +122,19 @@ public final class MotionRunner {
     return out;
   }
 
+  /**
+   * Whether the running move {@code tag} has reached the point where a following move would
+   * start blending (CNT), or has finished. False for a queued move or one not known.
+   */
+  public boolean passedBlendPoint(long tag) {
+    for (Segment s : active) {
+      if (s.tag == tag) {
+        return s.tSec >= s.blendStartSec || s.finished();
+      }
+    }
+    return false;
+  }
+
   /** Whether a move with this tag is queued or running. */
   public boolean contains(long tag) {
     for (Segment s : active) {
