@@ -83,6 +83,7 @@ public final class Controller implements MotionPort {
   private final Map<String, Program> programs = new TreeMap<>();
   private final Map<String, String> comments = new HashMap<>();
   private final Interpreter interpreter;
+  private final SimpleGripper gripper = new SimpleGripper();
 
   private final Map<Long, MoveState> moves = new HashMap<>();
   private final List<Vec3> arcHistory = new ArrayList<>();
@@ -156,6 +157,7 @@ public final class Controller implements MotionPort {
   /** Advances by {@code dtSec}: the program runs, then the arm moves (program motion or jog). */
   public void tick(double dtSec) {
     timeSec += dtSec;
+    gripper.tick(registers, dtSec);
     Outcome o = interpreter.tick(dtSec);
     if (o instanceof Outcome.Alarmed a && a.alarm() != lastInterpreterAlarm) {
       lastInterpreterAlarm = a.alarm();
