@@ -18,6 +18,7 @@ import picocli.CommandLine.Command;
       GuiCommand.class,
       RenderCommand.class,
       CheckCommand.class,
+      RunCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })
