@@ -29,6 +29,9 @@ public final class Jogger {
   /** Time to reach full jog speed from rest and back (s). */
   public static final double RAMP_SEC = 0.1;
 
+  private static final JogResult IDLE = new JogResult.Idle();
+  private static final JogResult MOVING = new JogResult.Moving();
+
   private final RobotModel model;
   private final MotionLimits limits;
   private final PoseTracker tracker;
@@ -87,7 +90,7 @@ public final class Jogger {
     }
     if (!any) {
       X_WTdesired = null;
-      return new JogResult.Idle();
+      return IDLE;
     }
     return frame == JogFrame.JOINT ? jogJoints(q, keys, overrideFraction, dtSec) : jogCartesian(q, keys, frame, X_FT, X_WU, dtSec);
   }
@@ -113,7 +116,7 @@ public final class Jogger {
             Math.toDegrees(q[i])));
       }
     }
-    return new JogResult.Moving();
+    return MOVING;
   }
 
   private JogResult jogCartesian(double[] q, JogState keys, JogFrame frame, Transform X_FT, Transform X_WU,
@@ -154,6 +157,6 @@ public final class Jogger {
     }
     System.arraycopy(qTry, 0, q, 0, RobotModel.DOF);
     X_WTdesired = want;
-    return new JogResult.Moving();
+    return MOVING;
   }
 }

@@ -31,6 +31,7 @@ public final class PoseTracker {
   private final double[] err = new double[6];
   private final double[] rot = new double[3];
   private final double[] dq = new double[6];
+  private int lastIterations;
   private double positionErrorMm;
   private double rotationErrorRad;
 
@@ -58,6 +59,7 @@ public final class PoseTracker {
     for (int it = 0; ; it++) {
       computeError(q);
       if ((positionErrorMm < POSITION_EPS_MM && rotationErrorRad < ROTATION_EPS_RAD) || it == MAX_ITERATIONS) {
+        lastIterations = it;
         break;
       }
       rate.step(q, err, tool, dq);
@@ -66,6 +68,11 @@ public final class PoseTracker {
       }
     }
     return positionErrorMm <= tolMm && rotationErrorRad <= tolRad;
+  }
+
+  /** Newton steps the last {@link #track} took. */
+  public int lastIterations() {
+    return lastIterations;
   }
 
   /** Position error (mm) after the last {@link #track}. */

@@ -502,6 +502,11 @@ public final class Controller implements MotionPort {
 
   // ================================================================ alarms
 
+  /** Whether any alarm is active (cheaper than {@link #activeAlarms} in a loop). */
+  public boolean hasActiveAlarm() {
+    return !activeAlarms.isEmpty();
+  }
+
   /** Active alarms, oldest first. */
   public List<ControllerAlarm> activeAlarms() {
     return List.copyOf(activeAlarms);

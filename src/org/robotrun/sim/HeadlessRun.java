@@ -40,7 +40,7 @@ public final class HeadlessRun {
     while (true) {
       sim.step();
       afterTick.accept(sim);
-      if (!c.activeAlarms().isEmpty()) {
+      if (c.hasActiveAlarm()) {
         return new Result(Status.ALARM, Optional.of(c.activeAlarms().get(0)), sim.timeSec(), sim.timeSec() - t0, sim.ticks());
       }
       ExecutionStatus s = c.status();
