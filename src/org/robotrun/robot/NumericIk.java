@@ -46,6 +46,14 @@ public final class NumericIk {
       double positionToleranceMm, double orientationToleranceRad, int iterationsPerAttempt,
       int maxIterations, long timeCapNanos, double lengthScaleMm, double dampingGain, double stallRatio) {
 
+    public Settings {
+      if (!(positionToleranceMm > 0 && orientationToleranceRad > 0 && iterationsPerAttempt > 0
+          && maxIterations > 0 && timeCapNanos > 0 && lengthScaleMm > 0 && dampingGain >= 0
+          && stallRatio > 0 && stallRatio <= 1)) {
+        throw new IllegalArgumentException("numeric IK settings out of range: " + this);
+      }
+    }
+
     /**
      * 1e-6 mm, 1e-9 rad; 25 iterations per attempt, 2000 in all (about 1 ms), 5 ms CPU time
      * as a safety net only (the iteration cap keeps results independent of machine speed);
@@ -84,6 +92,12 @@ public final class NumericIk {
   private final double[] g = new double[6];
   private final double[] q = new double[6];
   private final double[] bestQ = new double[6];
+  private final double[] j1Seeds = new double[8];
+  private int j1SeedCount;
+  /** Lowest ½|e|² seen in this solve, at {@link #bestQ}. */
+  private double bestE;
+  /** Iterations so far in this solve. */
+  private int total;
 
   public NumericIk(RobotModel model) {
     this(model, Settings.defaults());
@@ -108,7 +122,10 @@ public final class NumericIk {
     fillSeeds();
   }
 
-  /** Solves for a flange pose in the base frame, starting from {@code qStart} (rad). */
+  /**
+   * Solves for a flange pose in the base frame, starting from {@code qStart} (rad). For a tool
+   * target {@code X_BT} ask for {@link ClosedFormIk#flangeTarget(Transform, Transform)}.
+   */
   public IkResult solve(Transform X_BF, double[] qStart) {
     KinematicChain.pack(X_BF, target, 0);
     return solvePacked(qStart);
@@ -154,9 +171,6 @@ public final class NumericIk {
     }
     return giveUp(total, "all seeds tried");
   }
-
-  private double bestE;
-  private int total;
 
   /** Iterates from {@link #q}; true when converged (q then holds the solution). */
   private boolean attemptConverges(double invL, double tolP, double tolR) {
@@ -370,9 +384,6 @@ public final class NumericIk {
       j1Seeds[j1SeedCount++] = hi - margin;
     }
   }
-
-  private final double[] j1Seeds = new double[8];
-  private int j1SeedCount;
 
   private IkResult.Unreachable precheck() {
     if (reachCheck.isPresent()) {
