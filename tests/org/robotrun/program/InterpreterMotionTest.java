@@ -73,6 +73,19 @@ class InterpreterMotionTest {
   }
 
   @Test
+  void stepRunsCntMotionsAsFine() {
+    Instruction.Move cnt = Instruction.Move.of(Motion.Type.L, Tp.p(1), Tp.mmPerSec(100), new Motion.Cnt(50), List.of());
+    Rig stepping = new Rig(progWithPositions("C", 1, cnt));
+    stepping.interp.setStepMode(true);
+    stepping.run();
+    assertThat(stepping.port.requests().get(0).fine()).isTrue();
+    Rig running = new Rig(progWithPositions("C", 1, cnt));
+    running.run();
+    assertThat(running.port.requests().get(0).fine()).isFalse();
+    assertThat(running.port.requests().get(0).cnt()).isEqualTo(50);
+  }
+
+  @Test
   void stepGoesIntoACalledProgram() {
     Program main = Tp.prog("MAIN", call("SUB"), setR(1, num(1)));
     Program sub = Tp.prog("SUB", setR(2, num(2)), setR(3, num(3)));
