@@ -120,6 +120,18 @@ class InterpreterMotionTest {
   }
 
   @Test
+  void abortEndsTheProgramAndCancelsItsMotion() {
+    Rig rig = new Rig(threeMoves());
+    rig.interp.forward();
+    rig.tick(DT);
+    rig.interp.abort();
+    assertThat(rig.interp.state()).isEqualTo(Interpreter.State.IDLE);
+    assertThat(rig.port.cancelled()).containsExactly(1L);
+    assertThat(rig.tick(DT)).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.interp.cursorLine()).isEqualTo(1);
+  }
+
+  @Test
   void holdDuringWaitKeepsTheRemainingTime() {
     Rig rig = new Rig(Tp.prog("W", waitSec(0.1), setR(1, num(1))));
     rig.interp.forward();
