@@ -278,6 +278,19 @@ class LsReaderTest {
   }
 
   @Test
+  void aBadAttributeLineIsReportedAloneAndTheOthersKept() {
+    LsReadResult r = LsReader.parse("a.ls", "/PROG  A\n/ATTR\nOWNER\t= MNEDITOR\nCOMMENT\t= \"kept\";\nJUNK;\n"
+        + "TCD:  STACK_SIZE\t= 0,\n      TASK_PRIORITY\t= 40;\n/MN\n   1:  END ;\n/POS\n/END\n");
+    assertThat(messages(r)).containsExactly(
+        "a.ls:3: /ATTR entry does not end with ';': expected 'KEY = value;'",
+        "a.ls:5: expected 'KEY = value;' in /ATTR, found 'JUNK;'");
+    assertThat(r.program().comment()).isEqualTo("kept");
+    assertThat(r.program().attributes()).containsEntry("TCD", "STACK_SIZE = 0, TASK_PRIORITY = 40")
+        .containsEntry("OWNER", "MNEDITOR");
+    assertThat(LsWriter.write(r.program())).contains("TCD:  STACK_SIZE\t= 0,\n      TASK_PRIORITY\t= 40;\n");
+  }
+
+  @Test
   void sectionsAreCheckedAndExtraSectionsFlagged() {
     assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
         .containsExactly(
