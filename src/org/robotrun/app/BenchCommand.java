@@ -7,7 +7,8 @@ import picocli.CommandLine.Command;
     name = "bench",
     mixinStandardHelpOptions = true,
     description = "Measure speed: prints one summary line per run.",
-    subcommands = {BenchRenderCommand.class})
+    subcommands = {BenchRenderCommand.class, BenchParseCommand.class, BenchInterpCommand.class, BenchIkCommand.class,
+        BenchSimCommand.class})
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
 

@@ -17,6 +17,8 @@ import picocli.CommandLine.Command;
     subcommands = {
       GuiCommand.class,
       RenderCommand.class,
+      CheckCommand.class,
+      RunCommand.class,
       PendantCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class

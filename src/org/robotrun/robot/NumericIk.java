@@ -1,0 +1,450 @@
+package org.robotrun.robot;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
+import java.util.Optional;
+import org.robotrun.math.Transform;
+
+/**
+ * Numeric position IK for any 6-axis arm: damped least squares (Levenberg–Marquardt) on the
+ * analytic Jacobian, joints clamped to their limits after every step, restarts from a fixed,
+ * deterministic list of seeds, and hard caps on iterations and time. Never returns null,
+ * never hangs.
+ *
+ * <p>Method. The error is {@code e = [(p_d − p)/L; log(R_d·Rᵀ)]} (position scaled by a
+ * characteristic length L so millimetres and radians weigh alike). Each step solves
+ * {@code (Jsᵀ·Js + λI)·Δq = Jsᵀ·e} with {@code λ = ½|e|² + λ0}: the damping follows the error,
+ * after Sugihara, "Solvability-unconcerned inverse kinematics by the Levenberg–Marquardt
+ * method" (IEEE T-RO 2011), so far from the target the step is short and steady and near it the
+ * solve becomes Gauss–Newton with quadratic convergence. An attempt is abandoned when the error
+ * stops falling (local minimum, often pinned at a limit) or after a per-attempt iteration
+ * budget; the next seed then starts: the caller's start, then seeds spread over the joint
+ * ranges (a Halton sequence) with J1 turned toward the target, front side first.
+ *
+ * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
+ * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
+ * used, without using its solutions; otherwise a reach-sphere check around J2.
+ *
+ * <p>Not thread-safe (scratch arrays). The inner loop allocates nothing.
+ */
+public final class NumericIk {
+
+  /**
+   * Tuning and caps.
+   *
+   * @param positionToleranceMm converged when the position error is below this (mm)
+   * @param orientationToleranceRad and the orientation error below this (rad)
+   * @param iterationsPerAttempt iterations before moving on to the next seed
+   * @param maxIterations total iterations over all attempts
+   * @param timeCapNanos cap on the thread CPU time of one solve (ns), counted from the end of
+   *     the first attempt
+   * @param lengthScaleMm L, the length that weighs as one radian
+   * @param dampingGain μ in λ = μ·½|e|² + λ0
+   * @param stallRatio an attempt stalls when the error falls by less than this factor per step
+   */
+  public record Settings(
+      double positionToleranceMm, double orientationToleranceRad, int iterationsPerAttempt,
+      int maxIterations, long timeCapNanos, double lengthScaleMm, double dampingGain, double stallRatio) {
+
+    public Settings {
+      if (!(positionToleranceMm > 0 && orientationToleranceRad > 0 && iterationsPerAttempt > 0
+          && maxIterations > 0 && timeCapNanos > 0 && lengthScaleMm > 0 && dampingGain >= 0
+          && stallRatio > 0 && stallRatio <= 1)) {
+        throw new IllegalArgumentException("numeric IK settings out of range: " + this);
+      }
+    }
+
+    /**
+     * 1e-6 mm, 1e-9 rad; 25 iterations per attempt, 2000 in all (about 1 ms), 5 ms CPU time
+     * as a safety net only (the iteration cap keeps results independent of machine speed);
+     * L = 300 mm, μ = 0.1,
+     * stall below 1 % progress per step. Tuned on the LR Mate reference targets (all three
+     * starts solve every row; p99 about 120 iterations).
+     */
+    public static Settings defaults() {
+      return new Settings(1e-6, 1e-9, 25, 2000, 5_000_000, 300, 0.1, 0.99);
+    }
+  }
+
+  private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
+  private static final boolean CPU_TIME = CPU.isCurrentThreadCpuTimeSupported();
+  private static final int SEEDS = 64;
+  /** Seeds stay off the limits: the middle 80 % of each range. */
+  private static final double SEED_MARGIN = 0.1;
+  /** λ0: keeps the normal equations positive definite at singularities. */
+  private static final double BASE_DAMPING = 1e-9;
+
+  private final KinematicChain chain;
+  private final Settings settings;
+  private final Optional<ClosedFormIk> reachCheck;
+  private final double reachRadiusMm;
+  private final double[] shoulder = new double[3];
+  private final double[] lower;
+  private final double[] upper;
+  private final double[] seeds = new double[SEEDS * 6];
+
+  private final double[] target = new double[12];
+  private final double[] pose = new double[12];
+  private final double[] jac = new double[36];
+  private final double[] scratch = new double[Jacobian.SCRATCH];
+  private final double[] err = new double[6];
+  private final double[] a = new double[36];
+  private final double[] g = new double[6];
+  private final double[] q = new double[6];
+  private final double[] bestQ = new double[6];
+  private final double[] j1Seeds = new double[8];
+  private int j1SeedCount;
+  /** Lowest ½|e|² seen in this solve, at {@link #bestQ}. */
+  private double bestE;
+  /** Iterations so far in this solve. */
+  private int total;
+
+  public NumericIk(RobotModel model) {
+    this(model, Settings.defaults());
+  }
+
+  public NumericIk(RobotModel model, Settings settings) {
+    this.chain = new KinematicChain(model);
+    this.settings = settings;
+    this.reachCheck = model.opw().map(p -> new ClosedFormIk(model));
+    this.lower = model.lowerLimits();
+    this.upper = model.upperLimits();
+    // Reach sphere: J2's origin (at q1 = 0) plus every later offset, flange included.
+    Transform j2 = model.joint(0).X_PJ().compose(model.joint(1).X_PJ());
+    shoulder[0] = j2.x();
+    shoulder[1] = j2.y();
+    shoulder[2] = j2.z();
+    double r = Math.hypot(j2.x(), j2.y());
+    for (int i = 2; i < RobotModel.DOF; i++) {
+      r += model.joint(i).X_PJ().translationVector().norm();
+    }
+    reachRadiusMm = r + model.X_6F().translationVector().norm();
+    fillSeeds();
+  }
+
+  /**
+   * Solves for a flange pose in the base frame, starting from {@code qStart} (rad). For a tool
+   * target {@code X_BT} ask for {@link ClosedFormIk#flangeTarget(Transform, Transform)}.
+   */
+  public IkResult solve(Transform X_BF, double[] qStart) {
+    KinematicChain.pack(X_BF, target, 0);
+    return solvePacked(qStart);
+  }
+
+  /** As {@link #solve(Transform, double[])} for a packed pose (12 doubles, see KinematicChain). */
+  public IkResult solve(double[] X_BF, double[] qStart) {
+    System.arraycopy(X_BF, 0, target, 0, 12);
+    return solvePacked(qStart);
+  }
+
+  private IkResult solvePacked(double[] qStart) {
+    long t0 = -1;
+    double invL = 1 / settings.lengthScaleMm();
+    double tolP = settings.positionToleranceMm() * invL;
+    double tolR = settings.orientationToleranceRad();
+    bestE = Double.POSITIVE_INFINITY;
+    total = 0;
+    fillJ1Seeds(Math.atan2(target[10], target[9]));
+    for (int attempt = 0; attempt <= SEEDS; attempt++) {
+      if (attempt == 1) {
+        // The start did not lead there: before restarting, reject what cannot be reached.
+        IkResult.Unreachable early = precheck();
+        if (early != null) {
+          return early;
+        }
+      }
+      startFrom(attempt, qStart);
+      if (attemptConverges(invL, tolP, tolR)) {
+        return solved(total);
+      }
+      if (total >= settings.maxIterations()) {
+        return giveUp(total, "iteration cap");
+      }
+      // Checked between attempts only (most solves finish in the first): CPU time of this
+      // thread, so a busy machine that deschedules us does not turn a solve into a failure.
+      long now = CPU_TIME ? CPU.getCurrentThreadCpuTime() : System.nanoTime();
+      if (t0 < 0) {
+        t0 = now;
+      } else if (now - t0 > settings.timeCapNanos()) {
+        return giveUp(total, "time cap");
+      }
+    }
+    return giveUp(total, "all seeds tried");
+  }
+
+  /** Iterates from {@link #q}; true when converged (q then holds the solution). */
+  private boolean attemptConverges(double invL, double tolP, double tolR) {
+    double prevE = Double.POSITIVE_INFINITY;
+    int stalls = 0;
+    for (int it = 0; it < settings.iterationsPerAttempt() && total < settings.maxIterations(); it++) {
+      total++;
+      Jacobian.tcpJacobianInBase(chain, q, null, jac, pose, scratch);
+      double e = error(invL);
+      if (e < bestE) {
+        bestE = e;
+        System.arraycopy(q, 0, bestQ, 0, 6);
+      }
+      double ep2 = err[0] * err[0] + err[1] * err[1] + err[2] * err[2];
+      double er2 = err[3] * err[3] + err[4] * err[4] + err[5] * err[5];
+      if (ep2 < tolP * tolP && er2 < tolR * tolR) {
+        return true;
+      }
+      // Stalled: the error no longer falls by the stall ratio per step (a local minimum or a limit).
+      stalls = e > settings.stallRatio() * prevE ? stalls + 1 : 0;
+      if (stalls >= 3) {
+        return false;
+      }
+      prevE = e;
+      step(invL, e);
+    }
+    return false;
+  }
+
+  /** Fills {@link #err} with the scaled error; returns ½|e|². */
+  private double error(double invL) {
+    err[0] = (target[9] - pose[9]) * invL;
+    err[1] = (target[10] - pose[10]) * invL;
+    err[2] = (target[11] - pose[11]) * invL;
+    // R_err = R_d·Rᵀ; its rotation vector (log map) in the base frame.
+    double m00 = target[0] * pose[0] + target[1] * pose[1] + target[2] * pose[2];
+    double m01 = target[0] * pose[3] + target[1] * pose[4] + target[2] * pose[5];
+    double m02 = target[0] * pose[6] + target[1] * pose[7] + target[2] * pose[8];
+    double m10 = target[3] * pose[0] + target[4] * pose[1] + target[5] * pose[2];
+    double m11 = target[3] * pose[3] + target[4] * pose[4] + target[5] * pose[5];
+    double m12 = target[3] * pose[6] + target[4] * pose[7] + target[5] * pose[8];
+    double m20 = target[6] * pose[0] + target[7] * pose[1] + target[8] * pose[2];
+    double m21 = target[6] * pose[3] + target[7] * pose[4] + target[8] * pose[5];
+    double m22 = target[6] * pose[6] + target[7] * pose[7] + target[8] * pose[8];
+    double sx = 0.5 * (m21 - m12), sy = 0.5 * (m02 - m20), sz = 0.5 * (m10 - m01);
+    double sn = Math.sqrt(sx * sx + sy * sy + sz * sz);
+    double cs = 0.5 * (m00 + m11 + m22 - 1);
+    if (sn > 1e-7) {
+      double f = Math.atan2(sn, cs) / sn;
+      err[3] = f * sx;
+      err[4] = f * sy;
+      err[5] = f * sz;
+    } else if (cs > 0) {
+      err[3] = sx;
+      err[4] = sy;
+      err[5] = sz;
+    } else {
+      // A half turn: the axis from the symmetric part, R = 2aaᵀ − I.
+      double ax = Math.sqrt(Math.max(0, (m00 + 1) / 2));
+      double ay = Math.sqrt(Math.max(0, (m11 + 1) / 2));
+      double az = Math.sqrt(Math.max(0, (m22 + 1) / 2));
+      if (ax >= ay && ax >= az) {
+        ay = Math.copySign(ay, m01);
+        az = Math.copySign(az, m02);
+      } else if (ay >= az) {
+        ax = Math.copySign(ax, m01);
+        az = Math.copySign(az, m12);
+      } else {
+        ax = Math.copySign(ax, m02);
+        ay = Math.copySign(ay, m12);
+      }
+      err[3] = Math.PI * ax;
+      err[4] = Math.PI * ay;
+      err[5] = Math.PI * az;
+    }
+    double e = 0;
+    for (int i = 0; i < 6; i++) {
+      e += err[i] * err[i];
+    }
+    return 0.5 * e;
+  }
+
+  /**
+   * One damped step {@code (Jsᵀ·Js + λI)·Δq = Jsᵀ·e}, then clamp to the limits. A joint already
+   * at a limit that the step would push further out is locked (its column removed) and the step
+   * solved again, so the other joints take up its share instead of the step being cut short.
+   */
+  private void step(double invL, double e) {
+    for (int c = 0; c < 18; c++) {
+      jac[c] *= invL;
+    }
+    double lambda = settings.dampingGain() * e + BASE_DAMPING;
+    int locked = 0;
+    for (int pass = 0; pass < 6; pass++) {
+      solveNormalEquations(lambda, locked);
+      int more = locked;
+      for (int r = 0; r < 6; r++) {
+        if ((q[r] <= lower[r] && g[r] < 0) || (q[r] >= upper[r] && g[r] > 0)) {
+          more |= 1 << r;
+        }
+      }
+      if (more == locked) {
+        break;
+      }
+      locked = more;
+    }
+    for (int r = 0; r < 6; r++) {
+      double v = (locked & (1 << r)) != 0 ? q[r] : q[r] + g[r];
+      q[r] = v < lower[r] ? lower[r] : (v > upper[r] ? upper[r] : v);
+    }
+  }
+
+  /** g = Δq from the normal equations with the locked joints' columns left out (Δq = 0 there). */
+  private void solveNormalEquations(double lambda, int locked) {
+    for (int r = 0; r < 6; r++) {
+      boolean lr = (locked & (1 << r)) != 0;
+      double gr = 0;
+      if (!lr) {
+        for (int k = 0; k < 6; k++) {
+          gr += jac[k * 6 + r] * err[k];
+        }
+      }
+      g[r] = gr;
+      for (int c = 0; c <= r; c++) {
+        double sum = 0;
+        if (!lr && (locked & (1 << c)) == 0) {
+          for (int k = 0; k < 6; k++) {
+            sum += jac[k * 6 + r] * jac[k * 6 + c];
+          }
+        }
+        a[r * 6 + c] = r == c ? sum + lambda : sum;
+      }
+    }
+    // Cholesky (lower, in place) and two triangular solves.
+    for (int r = 0; r < 6; r++) {
+      for (int c = 0; c <= r; c++) {
+        double sum = a[r * 6 + c];
+        for (int k = 0; k < c; k++) {
+          sum -= a[r * 6 + k] * a[c * 6 + k];
+        }
+        a[r * 6 + c] = r == c ? Math.sqrt(sum) : sum / a[c * 6 + c];
+      }
+    }
+    for (int r = 0; r < 6; r++) {
+      double sum = g[r];
+      for (int k = 0; k < r; k++) {
+        sum -= a[r * 6 + k] * g[k];
+      }
+      g[r] = sum / a[r * 6 + r];
+    }
+    for (int r = 5; r >= 0; r--) {
+      double sum = g[r];
+      for (int k = r + 1; k < 6; k++) {
+        sum -= a[k * 6 + r] * g[k];
+      }
+      g[r] = sum / a[r * 6 + r];
+    }
+  }
+
+  /** Attempt 0 starts from the caller's joints; later ones from the seed list. */
+  private void startFrom(int attempt, double[] qStart) {
+    if (attempt == 0) {
+      for (int i = 0; i < 6; i++) {
+        q[i] = Math.max(lower[i], Math.min(upper[i], qStart[i]));
+      }
+      return;
+    }
+    System.arraycopy(seeds, (attempt - 1) * 6, q, 0, 6);
+    // Two of every three restarts turn J1 toward (or away from) the target; the third keeps the
+    // seed's own J1, for postures folded around the base where neither is close.
+    int slot = (attempt - 1) % 3;
+    if (slot < 2) {
+      q[0] = j1Seeds[((attempt - 1) / 3 * 2 + slot) % j1SeedCount];
+    }
+  }
+
+  /**
+   * J1 seeds for a target at azimuth {@code az}: facing it and turned away from it (reaching
+   * over the top), each moved into the J1 range by ±2π where it can be, else clamped. The
+   * solver cannot cross the gap beyond the J1 limits, and the solution's J1 may differ from
+   * the azimuth by tens of degrees (folded or offset wrists), so a seed within 90° of the gap
+   * gets a twin just across it.
+   */
+  private void fillJ1Seeds(double az) {
+    j1SeedCount = 0;
+    addJ1Seeds(az);
+    addJ1Seeds(az + Math.PI);
+  }
+
+  private void addJ1Seeds(double angle) {
+    double lo = lower[0], hi = upper[0];
+    double margin = 0.02 * (hi - lo);
+    double a = ClosedFormIk.wrap(angle);
+    double v = Double.NaN;
+    for (double w : new double[] {a, a - 2 * Math.PI, a + 2 * Math.PI}) {
+      if (w >= lo && w <= hi) {
+        v = w;
+      }
+    }
+    if (Double.isNaN(v)) {
+      // In the gap: both ends of the range.
+      j1Seeds[j1SeedCount++] = hi - margin;
+      j1Seeds[j1SeedCount++] = lo + margin;
+      return;
+    }
+    j1Seeds[j1SeedCount++] = v;
+    boolean hasGap = hi - lo < 2 * Math.PI;
+    if (hasGap && hi - v < Math.PI / 2) {
+      j1Seeds[j1SeedCount++] = lo + margin;
+    } else if (hasGap && v - lo < Math.PI / 2) {
+      j1Seeds[j1SeedCount++] = hi - margin;
+    }
+  }
+
+  private IkResult.Unreachable precheck() {
+    if (reachCheck.isPresent()) {
+      // Only the verdict is used: the numeric solve below never sees the closed-form joints.
+      return reachCheck.get().reachability(target).orElse(null);
+    }
+    double dx = target[9], dy = target[10], dz = target[11] - shoulder[2];
+    double horizontal = Math.sqrt(dx * dx + dy * dy);
+    double d = Math.hypot(horizontal - Math.hypot(shoulder[0], shoulder[1]), dz);
+    if (d > reachRadiusMm) {
+      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
+          "position (%.1f, %.1f, %.1f) mm is %.0f mm from the shoulder, beyond the %.0f mm reach",
+          target[9], target[10], target[11], d, reachRadiusMm));
+    }
+    return null;
+  }
+
+  private IkResult solved(int iterations) {
+    double dx = pose[9] - target[9], dy = pose[10] - target[10], dz = pose[11] - target[11];
+    return new IkResult.Solved(q.clone(), Math.sqrt(dx * dx + dy * dy + dz * dz),
+        ClosedFormIk.rotationAngle(pose, target), iterations);
+  }
+
+  /** No convergence: say whether the best attempt was pinned at a limit or near a singularity. */
+  private IkResult giveUp(int iterations, String why) {
+    chain.flangePose(bestQ, pose, null);
+    double dx = pose[9] - target[9], dy = pose[10] - target[10], dz = pose[11] - target[11];
+    double posErr = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    double rotErr = ClosedFormIk.rotationAngle(pose, target);
+    int atLimit = -1;
+    for (int i = 0; i < 6 && atLimit < 0; i++) {
+      if (bestQ[i] <= lower[i] + 1e-9 || bestQ[i] >= upper[i] - 1e-9) {
+        atLimit = i;
+      }
+    }
+    String detail = String.format("best error %.3f mm, %.4f rad after %d iterations (%s)",
+        posErr, rotErr, iterations, why);
+    if (atLimit >= 0) {
+      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
+          "no solution found inside the joint limits; J" + (atLimit + 1) + " stopped at its limit; " + detail);
+    }
+    return new IkResult.Unreachable(IkResult.Reason.NO_CONVERGENCE, "no solution found: " + detail);
+  }
+
+  /** Halton points (bases 2, 3, 5, 7, 11, 13) over the joint ranges: fixed, well spread. */
+  private void fillSeeds() {
+    int[] bases = {2, 3, 5, 7, 11, 13};
+    for (int s = 0; s < SEEDS; s++) {
+      for (int i = 0; i < 6; i++) {
+        double h = halton(s + 1, bases[i]);
+        seeds[s * 6 + i] = lower[i] + (SEED_MARGIN + (1 - 2 * SEED_MARGIN) * h) * (upper[i] - lower[i]);
+      }
+    }
+  }
+
+  private static double halton(int index, int base) {
+    double f = 1, r = 0;
+    for (int i = index; i > 0; i /= base) {
+      f /= base;
+      r += f * (i % base);
+    }
+    return r;
+  }
+}
