@@ -186,9 +186,14 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
-  public Result jogStart(CoordSystem coord, int axis, int sign) {
+  public Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched) {
     controller.setCoordSystem(JogFrame.valueOf(coord.name()));
-    return result(controller.jogKeyDown(axis, sign, JogState.Press.HELD));
+    return result(controller.jogKeyDown(axis, sign, latched ? JogState.Press.LATCHED : JogState.Press.HELD));
+  }
+
+  @Override
+  public void jogKeyUp(int axis, int sign) {
+    controller.jogKeyUp(axis, sign);
   }
 
   @Override

@@ -53,7 +53,8 @@ public final class Pendant {
   private boolean shiftLatched;
   private boolean keySinceShiftPress;
   private CoordSystem coord = CoordSystem.JOINT;
-  private Key jogKey;
+  /** Whether a jog key went down since the last stop (for the deadman message). */
+  private boolean jogging;
 
   /** The program the EDIT screen and SHIFT+FWD work on ("" before one is chosen). */
   String selectedProgram = "";
@@ -102,7 +103,7 @@ public final class Pendant {
     followExecution();
   }
 
-  /** A key comes up: jog keys stop; SHIFT released with no key between toggles the latch. */
+  /** A key comes up: a held jog key stops; SHIFT released with no key between toggles the latch. */
   public void release(Key k) {
     if (k == Key.SHIFT) {
       shiftHeld = false;
@@ -110,17 +111,29 @@ public final class Pendant {
         shiftLatched = !shiftLatched;
         message = shiftLatched ? "SHIFT latched on (deadman held)" : "SHIFT latch off";
       }
-      if (!shift() && jogKey != null) {
+      if (!shift() && jogging) {
         control.jogStop();
-        jogKey = null;
+        jogging = false;
         message = "Jog stopped: deadman (SHIFT) released";
       }
       return;
     }
-    if (k.isJog() && k == jogKey) {
-      control.jogStop();
-      jogKey = null;
+    if (k.isJog()) {
+      control.jogKeyUp(k.jogAxis(), k.jogSign());
     }
+  }
+
+  /**
+   * A click on an on-screen jog key: latched jogging (the axis runs until clicked again, or the
+   * deadman is released). Other keys: a tap.
+   */
+  public void click(Key k) {
+    if (!k.isJog()) {
+      tap(k);
+      return;
+    }
+    keySinceShiftPress = true;
+    jogDown(k, true);
   }
 
   /** Press and release. */
@@ -169,14 +182,18 @@ public final class Pendant {
   }
 
   private void jogPress(Key k) {
+    jogDown(k, false);
+  }
+
+  private void jogDown(Key k, boolean latched) {
     if (!shift()) {
       message = "Hold SHIFT (deadman) to jog";
       return;
     }
-    Result r = control.jogStart(coord, k.jogAxis(), k.jogSign());
+    Result r = control.jogKeyDown(coord, k.jogAxis(), k.jogSign(), latched);
     switch (r) {
       case Result.Ok ok -> {
-        jogKey = k;
+        jogging = true;
         message = ok.message();
       }
       case Result.Refused no -> message = no.reason();
@@ -219,6 +236,8 @@ public final class Pendant {
           frameSelectMenu();
         } else {
           coord = CoordSystem.values()[(coord.ordinal() + 1) % CoordSystem.values().length];
+          control.jogStop();
+          jogging = false;
           message = "Jog coordinates: " + coord;
         }
       }
