@@ -141,6 +141,27 @@ class PendantProgramTest {
   }
 
   @Test
+  void theEditorFollowsExecutionIntoACalledProgramAndBack() {
+    control.saveProgram(Program.of("MAIN", java.util.List.of(new Instruction.Call("SUB", java.util.List.of()),
+        new Instruction.AssignRegister(org.robotrun.program.Item.of(2), new org.robotrun.program.Expr.IntConst(9)))));
+    control.saveProgram(Program.of("SUB", java.util.List.of(
+        new Instruction.AssignRegister(org.robotrun.program.Item.of(1), new org.robotrun.program.Expr.IntConst(5)),
+        new Instruction.WaitTime(new org.robotrun.program.Expr.RealConst(1.0)))));
+    run(p, """
+        SELECT
+        ENTER
+        SHIFT+FWD
+        WAIT 0.5
+        """);
+    assertThat(p.lcd().row(2)).startsWith("EDIT SUB");
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("2:").contains("WAIT");
+    assertThat(p.lcd().statusLine()).startsWith("SUB").contains("RUNNING");
+    run(p, "WAIT 1");
+    assertThat(control.registers().number(2)).isEqualTo(9.0);
+    assertThat(p.lcd().statusLine()).contains("IDLE");
+  }
+
+  @Test
   void holdPausesAndShiftFwdResumes() {
     createWithThreePoints();
     run(p, """
