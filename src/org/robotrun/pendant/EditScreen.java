@@ -206,7 +206,8 @@ final class EditScreen implements Screen {
               p.message("Option added");
             }
           });
-        } else if (field >= 0 && !fs.get(field).edit().choices().isEmpty()) {
+        } else if (field >= 0 && field < fs.size()
+            && fs.get(field).edit().map(e -> !e.choices().isEmpty()).orElse(false)) {
           editField(p, prog, cur, fs, null);
         } else {
           p.message("[CHOICE]: put the cursor on a field with choices (or a motion line number for options)");
@@ -261,7 +262,12 @@ final class EditScreen implements Screen {
       p.message(cur > prog.lineCount() ? "[End]: insert with POINT or [INST]" : "Move RIGHT onto a field to edit it");
       return;
     }
-    Field.Edit edit = fs.get(field).edit();
+    Optional<Field.Edit> maybe = fs.get(field).edit();
+    if (maybe.isEmpty()) {
+      p.message("This text is fixed: move RIGHT onto a field");
+      return;
+    }
+    Field.Edit edit = maybe.get();
     int keep = field;
     if (typed == null && !edit.choices().isEmpty()) {
       p.choose(fs.get(field).text(), edit.choices(), i -> {
@@ -272,13 +278,13 @@ final class EditScreen implements Screen {
       });
       return;
     }
-    if (edit.entry() == null) {
+    if (edit.entry().isEmpty()) {
       p.message("Choose with ENTER or [CHOICE]");
       return;
     }
     p.entryOrTyped("Enter value:", typed, edit.initial(), false, t -> {
       try {
-        Instruction changed = edit.entry().apply(t);
+        Instruction changed = edit.entry().get().apply(t);
         if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, changed))) {
           field = Math.min(keep, fields(p, program(p), cur).size() - 1);
         }

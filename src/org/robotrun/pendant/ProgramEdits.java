@@ -142,25 +142,26 @@ final class ProgramEdits {
       List<Field> fs = TpLine.fields(lines.get(n), view, programs);
       for (int f = 0; f < fs.size(); f++) {
         Field fd = fs.get(f);
-        if (fd.edit() == null || fd.edit().entry() == null || !fd.text().contains(from)) {
+        Optional<Field.Edit> edit = fd.edit();
+        if (edit.isEmpty() || edit.get().entry().isEmpty() || !fd.text().contains(from)) {
           continue;
         }
-        Instruction changed = null;
+        Optional<Instruction> changed = Optional.empty();
         // the field as shown (R[3]) or as its entry offers it (3)
-        for (String candidate : List.of(fd.text().replace(from, to), fd.edit().initial().replace(from, to))) {
+        for (String candidate : List.of(fd.text().replace(from, to), edit.get().initial().replace(from, to))) {
           try {
-            changed = fd.edit().entry().apply(candidate);
+            changed = Optional.of(edit.get().entry().get().apply(candidate));
             break;
           } catch (BadText e) {
             // try the next form of the field's text
           }
         }
-        if (changed == null) {
+        if (changed.isEmpty()) {
           refused++;
         } else {
           replaced++;
-          lines.set(n, changed);
-          fs = TpLine.fields(changed, view, programs);
+          lines.set(n, changed.get());
+          fs = TpLine.fields(changed.get(), view, programs);
         }
       }
     }
