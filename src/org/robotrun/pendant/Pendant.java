@@ -301,7 +301,11 @@ public final class Pendant {
 
   private void followExecution() {
     ExecutionStatus st = control.status();
-    // follow while a program is active, and once more when it stops (so the cursor ends where it ended)
+    // follow only when execution moved (so a paused program's cursor can be moved by the operator),
+    // and once more when it stops (so the cursor ends where it ended)
+    if (st.equals(lastFollowed)) {
+      return;
+    }
     boolean justStopped = st.state() == ExecState.IDLE && lastFollowed != null && lastFollowed.state() != ExecState.IDLE;
     boolean active = st.state() == ExecState.RUNNING || st.state() == ExecState.PAUSED;
     if (active && !editScreen.programName.isEmpty() && !st.program().equals(editScreen.programName)

@@ -162,6 +162,32 @@ class PendantProgramTest {
   }
 
   @Test
+  void aPausedProgramsCursorCanBeMovedAndRunsOnFromThere() {
+    createWithThreePoints();
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        STEP
+        SHIFT+FWD
+        WAIT 3
+        ITEM
+        TYPE 3
+        ENTER
+        """);
+    // paused after line 1; the operator moved the cursor to line 3 and it stays there
+    assertThat(p.lcd().statusLine()).contains("PAUSED");
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+    run(p, """
+        SHIFT+FWD
+        WAIT 5
+        """);
+    // line 3 ran from the moved cursor: the robot is at P[3] (J1 and J2 jogged 15 deg each)
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(15, within(1e-6));
+    assertThat(control.currentJoints().j2Deg()).isCloseTo(15, within(1e-6));
+  }
+
+  @Test
   void holdPausesAndShiftFwdResumes() {
     createWithThreePoints();
     run(p, """
