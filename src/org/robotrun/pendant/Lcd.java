@@ -102,6 +102,25 @@ public record Lcd(List<String> rows) {
     return body().stream().filter(r -> r.startsWith(">")).findFirst();
   }
 
+  /**
+   * Where the field under the cursor is drawn, for a UI that shows it in inverse video: the LCD
+   * row and the columns of the braces around it ({@code openCol} holds '{', {@code closeCol} '}').
+   */
+  public record FieldSpan(int row, int openCol, int closeCol) {}
+
+  /** The braced field on the cursor row, if the cursor sits on one. */
+  public java.util.Optional<FieldSpan> cursorField() {
+    for (int r = 3; r < 3 + BODY_ROWS; r++) {
+      String row = rows.get(r);
+      if (row.startsWith(">")) {
+        int open = row.indexOf('{');
+        int close = open < 0 ? -1 : row.indexOf('}', open);
+        return close < 0 ? java.util.Optional.empty() : java.util.Optional.of(new FieldSpan(r, open, close));
+      }
+    }
+    return java.util.Optional.empty();
+  }
+
   /** The whole screen, framed, one row per line, trailing blanks kept so columns line up. */
   @Override
   public String toString() {

@@ -59,6 +59,8 @@ class PendantProgramTest {
         ENTER
         """);
     assertThat(body(p)).contains("L P[2] 200mm/sec {CNT50}");
+    Lcd.FieldSpan span = p.lcd().cursorField().orElseThrow();
+    assertThat(p.lcd().row(span.row()).substring(span.openCol(), span.closeCol() + 1)).isEqualTo("{CNT50}");
 
     // a register statement and an IF at the end, through [INST]
     run(p, """
