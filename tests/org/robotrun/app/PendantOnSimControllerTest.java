@@ -157,6 +157,58 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void teachToolFrameByThreePointsAroundThePointerTip() {
+    // rotations in TOOL coordinates pivot about the active pointer's tip (UTOOL 1, 100 mm):
+    // three approaches of that tip teach UTOOL 2 = the same TCP, with the robot's own FrameTeaching
+    keys("""
+        MENU
+        5
+        DOWN
+        F2
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        COORD
+        COORD
+        HOLD SHIFT
+        HOLD +XR
+        WAIT 1.5
+        RELEASE +XR
+        RELEASE SHIFT
+        SHIFT+F5
+        HOLD SHIFT
+        HOLD +YR
+        WAIT 1.5
+        RELEASE +YR
+        RELEASE SHIFT
+        SHIFT+F5
+        """);
+    assertThat(p.lcd().promptLine()).contains("Tool Frame 2 taught");
+    Position.Cartesian ut2 = control.frame(FrameKind.TOOL, 2);
+    assertThat(ut2.xMm()).isCloseTo(0, within(0.05));
+    assertThat(ut2.yMm()).isCloseTo(0, within(0.05));
+    assertThat(ut2.zMm()).isCloseTo(100, within(0.05));
+    assertThat(body()).contains("Taught: X 0.0 Y 0.0 Z 100.0");
+    // UTOOL 3 from three approaches in one orientation: the reason is shown, the frame unchanged
+    keys("""
+        F3
+        TYPE 3
+        ENTER
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        SHIFT+F5
+        SHIFT+F5
+        """);
+    assertThat(p.lcd().row(2)).contains("Tool Frame 3");
+    assertThat(body()).contains("Not taught:");
+    assertThat(p.lcd().promptLine()).startsWith("Frame not taught:");
+    assertThat(control.frame(FrameKind.TOOL, 3).zMm()).isEqualTo(0.0);
+  }
+
+  @Test
   void positionRegisterInJointForm() {
     keys("""
         DATA
