@@ -67,6 +67,31 @@ public record Lcd(List<String> rows) {
     return one.length() >= WIDTH ? one.substring(0, WIDTH) : one + " ".repeat(WIDTH - one.length());
   }
 
+  /** {@code text} broken at spaces into rows of at most {@code width} characters (a long word is cut). */
+  static List<String> wrap(String text, int width) {
+    List<String> out = new ArrayList<>();
+    StringBuilder line = new StringBuilder();
+    for (String word : text.split(" ")) {
+      while (word.length() > width) {
+        if (line.length() > 0) {
+          out.add(line.toString());
+          line.setLength(0);
+        }
+        out.add(word.substring(0, width));
+        word = word.substring(width);
+      }
+      if (line.length() > 0 && line.length() + 1 + word.length() > width) {
+        out.add(line.toString());
+        line.setLength(0);
+      }
+      line.append(line.length() > 0 ? " " : "").append(word);
+    }
+    if (line.length() > 0) {
+      out.add(line.toString());
+    }
+    return out;
+  }
+
   /** Row {@code i} (0-based). */
   public String row(int i) {
     return rows.get(i);
