@@ -10,6 +10,7 @@ import java.util.concurrent.Callable;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
+import org.robotrun.io.LsWriter;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
@@ -34,7 +35,8 @@ import picocli.CommandLine.Spec;
       "By default the pendant drives the simulation's controller for the default robot (the default cell:",
       "HOME position, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD). --controller stand-in uses the stand-in",
       "controller instead: the same program interpreter on a toy gantry arm, no robot kinematics.",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 2 bad option or malformed script (file:line)."
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write,",
+      "2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   @Option(names = "--keys", required = true, paramLabel = "FILE.keys", description = "The key script to run.")
@@ -47,6 +49,10 @@ public final class PendantCommand implements Callable<Integer> {
   @Option(names = "--controller", paramLabel = "sim|stand-in", defaultValue = "sim",
       description = "Which controller the pendant drives: sim (default) or stand-in.")
   String controller;
+
+  @Option(names = "--save", paramLabel = "DIR",
+      description = "After the script, write every program to DIR/NAME.LS (the directory must exist).")
+  Path saveDir;
 
   @Option(names = "--scenario", paramLabel = "FILE",
       description = "Scenario to load first. Not supported by this build yet (no scenario loader): giving one is an error.")
@@ -63,6 +69,9 @@ public final class PendantCommand implements Callable<Integer> {
       }
       throw new UserError("--scenario: this build cannot load scenarios yet (the scenario loader is not merged); "
           + "run without --scenario");
+    }
+    if (saveDir != null && !Files.isDirectory(saveDir)) {
+      throw new UserError("--save: the directory " + saveDir + " does not exist");
     }
     List<String> lines;
     try {
@@ -90,6 +99,16 @@ public final class PendantCommand implements Callable<Integer> {
     PrintWriter out = spec.commandLine().getOut();
     script.run(new Pendant(control, new LsLineParser()), text -> out.print(text));
     out.flush();
+    if (saveDir != null) {
+      for (String name : control.programNames()) {
+        Path file = saveDir.resolve(name + ".LS");
+        try {
+          LsWriter.write(control.program(name).orElseThrow(), file);
+        } catch (IOException e) {
+          throw new UserError("--save: cannot write " + file + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+        }
+      }
+    }
     return Main.EXIT_OK;
   }
 

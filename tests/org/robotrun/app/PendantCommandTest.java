@@ -49,8 +49,22 @@ class PendantCommandTest {
   void theDocumentedTourRuns() {
     Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys");
     assertThat(r.exitCode()).isEqualTo(0);
-    assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]>5},JMP LBL[1]")
-        .contains("LINE 2    RUNNING").contains("LINE 5    IDLE").contains("R[  1:            ]  = {1}");
+    assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]<3},JMP LBL[1]")
+        .contains("    RUNNING").contains("LINE 6    IDLE").contains("R[  1:            ]  = {3}");
+  }
+
+  @Test
+  void saveWritesTheProgramsTheScriptBuiltAsLsFiles(@TempDir Path dir) throws Exception {
+    Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys", "--save", dir.toString());
+    assertThat(r.exitCode()).isEqualTo(0);
+    org.robotrun.io.LsReadResult back = org.robotrun.io.LsReader.read(dir.resolve("PICK1.LS"));
+    assertThat(back.hasErrors()).as(back.diagnostics().toString()).isFalse();
+    assertThat(back.program().lineCount()).isEqualTo(6);
+    assertThat(back.program().positions()).containsKeys(1, 2, 3);
+    assertThat(Files.readString(dir.resolve("PICK1.LS"))).contains("L P[2] 200mm/sec CNT50");
+    Run bad = run("pendant", "--keys", "docs/examples/pendant-tour.keys", "--save", dir.resolve("nope").toString());
+    assertThat(bad.exitCode()).isEqualTo(2);
+    assertThat(bad.err()).contains("--save: the directory");
   }
 
   @Test
