@@ -303,6 +303,25 @@ class PendantProgramTest {
   }
 
   @Test
+  void aCursorOnAFieldThatUndoRemovedFallsBackToTheLineNumber() {
+    createWithThreePoints();
+    // add two options to line 3, put the cursor on the last one, then undo both
+    run(p, """
+        F4
+        6
+        F4
+        7
+        RIGHT *8
+        NEXT
+        F4
+        F4
+        NEXT
+        LEFT
+        """);
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("{3:}");
+  }
+
+  @Test
   void copyPasteReverseAndRenumber() {
     createWithThreePoints();
     // select lines 1-3 and copy, paste with new position numbers at [End]
