@@ -276,6 +276,38 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void randomKeysOnTheRealControllerNeverThrow() {
+    org.robotrun.pendant.Key[] all = org.robotrun.pendant.Key.values();
+    java.util.Random rnd = new java.util.Random(7);
+    keys("""
+        SELECT
+        F1
+        TYPE FUZZ
+        ENTER
+        SHIFT+F1
+        """);
+    org.assertj.core.api.Assertions.assertThatCode(() -> {
+      for (int i = 0; i < 1500; i++) {
+        int what = rnd.nextInt(16);
+        if (what == 0) {
+          p.type(List.of("1", "R[2]+1", "abc", "-5", "PR[1]", "200", "FUZZ").get(rnd.nextInt(7)));
+        } else if (what == 1) {
+          p.advance(rnd.nextDouble() * 0.2);
+        } else if (what == 2) {
+          p.press(org.robotrun.pendant.Key.SHIFT);
+        } else if (what == 3) {
+          p.release(org.robotrun.pendant.Key.SHIFT);
+        } else {
+          org.robotrun.pendant.Key k = all[rnd.nextInt(all.length)];
+          p.press(k);
+          p.release(k);
+        }
+        p.lcd();
+      }
+    }).doesNotThrowAnyException();
+  }
+
+  @Test
   void uncommentUsesTheLsReaderForLinesFromFiles() {
     controller.saveProgram(org.robotrun.program.Program.of("FROMFILE", List.of(new Instruction.CommentedOut("R[2]=R[2]*3"))));
     keys("""
