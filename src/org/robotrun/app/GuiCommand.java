@@ -3,7 +3,12 @@ package org.robotrun.app;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.render.GlUnavailableException;
+import org.robotrun.math.Angles;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.ui.RobotStatusPanel;
 import org.robotrun.sim.SceneSnapshots;
 import org.robotrun.ui.SimulatorWindow;
 import picocli.CommandLine.Command;
@@ -35,7 +40,10 @@ public final class GuiCommand implements Callable<Integer> {
     RobotModel robot = RobotDefinitions.defaultRobot();
     double[] q = joints == null ? new double[RobotModel.DOF] : JointsOption.parseToKinematic(joints, robot);
     try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + robot.displayName(), width, height)) {
-      w.run(t -> SceneSnapshots.singleRobot(robot, q, t));
+      double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
+      Xyzwpr flange = Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q));
+      w.run(t -> SceneSnapshots.singleRobot(robot, q, t),
+          (fw, fh) -> RobotStatusPanel.draw("Robot", pendantDeg, flange));
     } catch (GlUnavailableException e) {
       throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
     }
