@@ -1,0 +1,476 @@
+package org.robotrun.robot;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.robotrun.math.Transform;
+
+/**
+ * Closed-form inverse kinematics for ortho-parallel arms with a spherical wrist, after
+ * Brandstötter, Angerer and Hofbaur, "An analytical solution of the inverse kinematics problem
+ * of industrial serial manipulators with an ortho-parallel basis and a spherical wrist" (2014):
+ * the wrist centre gives two J1 values, each with two (J2, J3) elbows; each of those four
+ * arms has two wrists, so up to eight solutions, each labelled with a FANUC {@link Config}.
+ * Targets are flange poses in the robot base frame B (mm); joint values in the kinematic
+ * convention (rad), {@code q = sign·(θ_opw + offset)} as in {@link OpwParameters}.
+ *
+ * <h2>CONFIG flags for this family of arms</h2>
+ * Let θ be the OPW angles of a joint vector ({@code θ = sign·q − offset}).
+ * <ul>
+ *   <li><b>F/N</b> (wrist): F when J5 &gt; 0, N when J5 ≤ 0. The two wrist solutions of one arm
+ *       have opposite J5 ({@code θ5' = −θ5}), so each arm has one F and one N solution.
+ *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'.)
+ *   <li><b>U/D</b> (elbow): U when {@code sin(θ3 + atan2(a2, c3)) > 0}, i.e. the wrist centre is
+ *       on the forward side of the upper arm (for the LR Mate: kinematic J3 &lt; 84.0°, where
+ *       the forearm and upper arm line up, the elbow singularity). The OPW elbow pairs are
+ *       {@code θ3 = ±acos(…) − atan2(a2, c3)}, so of each J1 pair one is U and one D.
+ *   <li><b>T/B</b> (arm): T when the wrist centre lies in front of the J1 axis, measured along
+ *       link 1's forward axis: {@code a1 + c2·sin θ2 + c3·sin(θ2+θ3) + a2·cos(θ2+θ3) > 0}.
+ *       The two J1 solutions differ by 180° (b = 0), so one is T and one B.
+ * </ul>
+ * So the eight solutions map one to one onto the eight flag triples (a test checks this on
+ * every reference pose). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
+ * J1 when its range exceeds ±180°) get every ±2π variant inside the limits.
+ *
+ * <p>Not thread-safe (scratch arrays); allocation-free apart from the result object.
+ */
+public final class ClosedFormIk {
+  /** Base solutions before turn variants: four arms times two wrists. */
+  public static final int BASE_SOLUTIONS = 8;
+
+  private static final double TWO_PI = 2 * Math.PI;
+  /** Below this sin θ5 the wrist is treated as singular (θ4 and θ6 only defined as a sum). */
+  private static final double WRIST_SINGULAR = 1e-9;
+  /** Slack on the cosine-law arguments so exactly stretched poses still solve. */
+  private static final double ACOS_SLACK = 1e-10;
+  /** Joint values this close outside a limit (rad) count as at the limit. */
+  private static final double LIMIT_SLACK = 1e-9;
+
+  private final RobotModel model;
+  private final KinematicChain chain;
+  private final double a1, a2, b, c1, c2, c3, c4, kappa, psi;
+  private final double[] offset = new double[6];
+  private final double[] sign = new double[6];
+  private final double[] lower;
+  private final double[] upper;
+  private final double[] lowerSlack = new double[6];
+  private final double[] upperSlack = new double[6];
+
+  private final double[] target = new double[12];
+  private final double[] base = new double[BASE_SOLUTIONS * 6];
+  private final boolean[] singularWrist = new boolean[BASE_SOLUTIONS];
+  private final double[] fk = new double[12];
+  private final double[] cand = new double[6];
+  private final double[] best = new double[6];
+
+  /** @throws IllegalArgumentException if the model has no OPW parameters */
+  public ClosedFormIk(RobotModel model) {
+    OpwParameters p = model.opw().orElseThrow(() -> new IllegalArgumentException(
+        model.id() + ": no OPW parameters, the closed-form solver does not apply"));
+    this.model = model;
+    this.chain = new KinematicChain(model);
+    a1 = p.a1();
+    a2 = p.a2();
+    b = p.b();
+    c1 = p.c1();
+    c2 = p.c2();
+    c3 = p.c3();
+    c4 = p.c4();
+    kappa = Math.sqrt(a2 * a2 + c3 * c3);
+    psi = Math.atan2(a2, c3);
+    for (int i = 0; i < 6; i++) {
+      offset[i] = p.offsetRad(i);
+      sign[i] = p.sign(i);
+    }
+    // Round-off can put a solution at a limit 1e-15 outside it: accept that and clamp.
+    lower = model.lowerLimits();
+    upper = model.upperLimits();
+    for (int i = 0; i < 6; i++) {
+      lowerSlack[i] = lower[i] - LIMIT_SLACK;
+      upperSlack[i] = upper[i] + LIMIT_SLACK;
+    }
+  }
+
+  public RobotModel model() {
+    return model;
+  }
+
+  /** A labelled solution. */
+  public record Solution(double[] q, Config config) {}
+
+  /**
+   * The flange pose to ask for so that the tool frame T reaches {@code X_BT}:
+   * {@code X_BF = X_BT · X_FT⁻¹}.
+   */
+  public static Transform flangeTarget(Transform X_BT, Transform X_FT) {
+    return X_BT.compose(X_FT.inverse());
+  }
+
+  /** The CONFIG of a joint vector (see the class comment for the definitions). */
+  public Config configOf(double[] q) {
+    return new Config(flipMargin(q) > 0, upMargin(q) > 0, topMargin(q) > 0,
+        Config.turnOf(q[0]), Config.turnOf(q[3]), Config.turnOf(q[5]));
+  }
+
+  /**
+   * Solves for the given CONFIG (taught positions): the branch whose F/N, U/D, T/B flags match,
+   * with J1, J4, J6 moved to the asked turn numbers.
+   */
+  public IkResult solve(Transform X_BF, Config config) {
+    KinematicChain.pack(X_BF, target, 0);
+    return solve(target, config);
+  }
+
+  /** As {@link #solve(Transform, Config)} for a packed pose (12 doubles, see KinematicChain). */
+  public IkResult solve(double[] X_BF, Config config) {
+    if (X_BF != target) {
+      System.arraycopy(X_BF, 0, target, 0, 12);
+    }
+    int valid = solveBase(target, 0);
+    if (valid == 0) {
+      return outOfReach();
+    }
+    int found = -1;
+    for (int k = 0; k < BASE_SOLUTIONS && found < 0; k++) {
+      if ((valid & (1 << k)) != 0 && matches(k, config)) {
+        found = k;
+      }
+    }
+    if (found < 0) {
+      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
+          "the pose has no solution in CONFIG '" + config + "' (that arm side is out of reach)");
+    }
+    int o = found * 6;
+    for (int i = 0; i < 6; i++) {
+      cand[i] = base[o + i];
+    }
+    cand[0] += TWO_PI * config.turn1();
+    cand[3] += TWO_PI * config.turn4();
+    cand[5] += TWO_PI * config.turn6();
+    // J2, J3, J5 carry no turn number: take their variant inside the limits (J3 spans > 180°).
+    cand[1] = intoLimits(cand[1], 1);
+    cand[2] = intoLimits(cand[2], 2);
+    cand[4] = intoLimits(cand[4], 4);
+    for (int i = 0; i < 6; i++) {
+      if (!ok(cand[i], i)) {
+        return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, String.format(
+            "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg", config, i + 1,
+            Math.toDegrees(cand[i]), Math.toDegrees(lower[i]), Math.toDegrees(upper[i])));
+      }
+      cand[i] = clampToLimits(cand[i], i);
+    }
+    return solved(cand);
+  }
+
+  /**
+   * The solution nearest to {@code qCurrent} (jogging): over every branch and every turn
+   * variant inside the limits, the least sum of squared joint differences.
+   */
+  public IkResult solveNearest(Transform X_BF, double[] qCurrent) {
+    KinematicChain.pack(X_BF, target, 0);
+    return solveNearest(target, qCurrent);
+  }
+
+  /** As {@link #solveNearest(Transform, double[])} for a packed pose. */
+  public IkResult solveNearest(double[] X_BF, double[] qCurrent) {
+    if (X_BF != target) {
+      System.arraycopy(X_BF, 0, target, 0, 12);
+    }
+    double theta4Pref = sign[3] * qCurrent[3] - offset[3];
+    int valid = solveBase(target, theta4Pref);
+    if (valid == 0) {
+      return outOfReach();
+    }
+    double bestD = Double.POSITIVE_INFINITY;
+    for (int k = 0; k < BASE_SOLUTIONS; k++) {
+      if ((valid & (1 << k)) == 0) {
+        continue;
+      }
+      int o = k * 6;
+      double q1 = nearestTurn(base[o], qCurrent[0], 0);
+      double q2 = nearestTurn(base[o + 1], qCurrent[1], 1);
+      double q3 = nearestTurn(base[o + 2], qCurrent[2], 2);
+      double q4 = nearestTurn(base[o + 3], qCurrent[3], 3);
+      double q5 = nearestTurn(base[o + 4], qCurrent[4], 4);
+      double q6 = nearestTurn(base[o + 5], qCurrent[5], 5);
+      // NaN (no variant inside the limits) makes d NaN, which never compares smaller.
+      double d = sq(q1 - qCurrent[0]) + sq(q2 - qCurrent[1]) + sq(q3 - qCurrent[2])
+          + sq(q4 - qCurrent[3]) + sq(q5 - qCurrent[4]) + sq(q6 - qCurrent[5]);
+      if (d < bestD) {
+        bestD = d;
+        best[0] = q1;
+        best[1] = q2;
+        best[2] = q3;
+        best[3] = q4;
+        best[4] = q5;
+        best[5] = q6;
+      }
+    }
+    if (bestD == Double.POSITIVE_INFINITY) {
+      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
+          "the pose is within reach but every solution has a joint outside its limits");
+    }
+    return solved(best);
+  }
+
+  /**
+   * Every solution inside the joint limits, each turn variant separately, labelled with its
+   * CONFIG. Empty when out of reach or only outside the limits. Allocates (not for hot loops).
+   */
+  public List<Solution> allSolutions(Transform X_BF) {
+    KinematicChain.pack(X_BF, target, 0);
+    int valid = solveBase(target, 0);
+    List<Solution> out = new ArrayList<>();
+    for (int k = 0; k < BASE_SOLUTIONS; k++) {
+      if ((valid & (1 << k)) == 0) {
+        continue;
+      }
+      int o = k * 6;
+      for (int t1 = -2; t1 <= 2; t1++) {
+        for (int t4 = -2; t4 <= 2; t4++) {
+          for (int t6 = -2; t6 <= 2; t6++) {
+            double[] q = new double[6];
+            System.arraycopy(base, o, q, 0, 6);
+            q[1] = intoLimits(q[1], 1);
+            q[2] = intoLimits(q[2], 2);
+            q[4] = intoLimits(q[4], 4);
+            q[0] += TWO_PI * t1;
+            q[3] += TWO_PI * t4;
+            q[5] += TWO_PI * t6;
+            boolean inside = true;
+            for (int i = 0; i < 6; i++) {
+              inside &= ok(q[i], i);
+              q[i] = clampToLimits(q[i], i);
+            }
+            if (inside) {
+              out.add(new Solution(q, configOf(q)));
+            }
+          }
+        }
+      }
+    }
+    return out;
+  }
+
+  /**
+   * The (up to) eight base solutions, each joint wrapped to (-π, π], not limit-checked.
+   *
+   * @param out 48 doubles: solution k at [6k..6k+5]
+   * @return bit k set when solution k exists (0: out of reach)
+   */
+  public int solveAllBase(Transform X_BF, double[] out) {
+    KinematicChain.pack(X_BF, target, 0);
+    int valid = solveBase(target, 0);
+    System.arraycopy(base, 0, out, 0, base.length);
+    return valid;
+  }
+
+  // ---------------------------------------------------------------------------------------
+
+  /** Fills {@link #base}; returns the validity mask. Brandstötter et al. 2014, eqs. for θ1..θ6. */
+  private int solveBase(double[] X, double theta4Singular) {
+    double r00 = X[0], r01 = X[1], r02 = X[2];
+    double r10 = X[3], r11 = X[4], r12 = X[5];
+    double r20 = X[6], r21 = X[7], r22 = X[8];
+    // Wrist centre: back from the flange along its approach (z) axis.
+    double cx = X[9] - c4 * r02, cy = X[10] - c4 * r12, cz = X[11] - c4 * r22;
+    double rxy2 = cx * cx + cy * cy - b * b;
+    if (!(rxy2 >= 0)) {
+      return 0;
+    }
+    double nx1 = Math.sqrt(rxy2) - a1;
+    double phi = Math.atan2(cy, cx);
+    double beta = Math.atan2(b, nx1 + a1);
+    double th1Front = phi - beta;
+    double th1Back = phi + beta - Math.PI;
+    double dz = cz - c1;
+    double s1sq = nx1 * nx1 + dz * dz;
+    double nx2 = nx1 + 2 * a1;
+    double s2sq = nx2 * nx2 + dz * dz;
+    double c2sq = c2 * c2, k2 = kappa * kappa;
+    int valid = 0;
+    // Front arm (θ1 = φ − β), elbows i and ii.
+    double s1 = Math.sqrt(s1sq);
+    double cosA = (s1sq - c2sq - k2) / (2 * c2 * kappa);
+    if (s1 > 0 && Math.abs(cosA) <= 1 + ACOS_SLACK) {
+      double g = Math.acos(clamp((s1sq + c2sq - k2) / (2 * s1 * c2)));
+      double e = Math.atan2(nx1, dz);
+      double a = Math.acos(clamp(cosA));
+      valid |= arm(0, th1Front, -g + e, a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      valid |= arm(2, th1Front, g + e, -a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+    }
+    // Back arm (θ1 = φ + β − π), elbows iii and iv.
+    double s2 = Math.sqrt(s2sq);
+    double cosB = (s2sq - c2sq - k2) / (2 * c2 * kappa);
+    if (s2 > 0 && Math.abs(cosB) <= 1 + ACOS_SLACK) {
+      double g = Math.acos(clamp((s2sq + c2sq - k2) / (2 * s2 * c2)));
+      double e = Math.atan2(nx2, dz);
+      double a = Math.acos(clamp(cosB));
+      valid |= arm(4, th1Back, -g - e, a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      valid |= arm(6, th1Back, g - e, -a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+    }
+    return valid;
+  }
+
+  /** Wrist angles for one arm (θ1, θ2, θ3); writes solutions k and k+1; returns their bits. */
+  private int arm(int k, double th1, double th2, double th3,
+      double r00, double r01, double r02, double r10, double r11, double r12,
+      double r20, double r21, double r22, double theta4Singular) {
+    double cs1 = Math.cos(th1), sn1 = Math.sin(th1);
+    double th23 = th2 + th3;
+    double c23 = Math.cos(th23), s23 = Math.sin(th23);
+    // Columns of R seen in the forearm frame 3 (R_03 = Rz(θ1)·Ry(θ2+θ3)); wrist is ZYZ there.
+    double ah = cs1 * r02 + sn1 * r12;
+    double ax3 = c23 * ah - s23 * r22;
+    double ay3 = -sn1 * r02 + cs1 * r12;
+    double az3 = s23 * ah + c23 * r22;
+    double sinB = Math.sqrt(ax3 * ax3 + ay3 * ay3);
+    double th4, th5, th6;
+    boolean singular = sinB < WRIST_SINGULAR;
+    if (!singular) {
+      th4 = Math.atan2(ay3, ax3);
+      th5 = Math.atan2(sinB, az3);
+      double nz3 = s23 * (cs1 * r00 + sn1 * r10) + c23 * r20;
+      double oz3 = s23 * (cs1 * r01 + sn1 * r11) + c23 * r21;
+      th6 = Math.atan2(oz3, -nz3);
+    } else {
+      // Axes 4 and 6 line up: only θ4 + θ6 (θ5 = 0) or θ4 − θ6 (θ5 = π) is defined; keep θ4.
+      double nh = cs1 * r00 + sn1 * r10;
+      double nx3 = c23 * nh - s23 * r20;
+      double ny3 = -sn1 * r00 + cs1 * r10;
+      th4 = theta4Singular;
+      if (az3 > 0) {
+        th5 = 0;
+        th6 = Math.atan2(ny3, nx3) - th4;
+      } else {
+        th5 = Math.PI;
+        th6 = th4 - Math.atan2(-ny3, -nx3);
+      }
+    }
+    write(k, th1, th2, th3, th4, th5, th6);
+    write(k + 1, th1, th2, th3, th4 + Math.PI, -th5, th6 - Math.PI);
+    singularWrist[k] = singular;
+    singularWrist[k + 1] = singular;
+    return 3 << k;
+  }
+
+  private void write(int k, double t1, double t2, double t3, double t4, double t5, double t6) {
+    int o = k * 6;
+    base[o] = wrap(sign[0] * (t1 + offset[0]));
+    base[o + 1] = wrap(sign[1] * (t2 + offset[1]));
+    base[o + 2] = wrap(sign[2] * (t3 + offset[2]));
+    base[o + 3] = wrap(sign[3] * (t4 + offset[3]));
+    base[o + 4] = wrap(sign[4] * (t5 + offset[4]));
+    base[o + 5] = wrap(sign[5] * (t6 + offset[5]));
+  }
+
+  /** Whether base solution k has the flags of {@code c}, allowing a flag exactly at its boundary. */
+  private boolean matches(int k, Config c) {
+    int o = k * 6;
+    for (int i = 0; i < 6; i++) {
+      cand[i] = base[o + i];
+    }
+    double mf = flipMargin(cand), mu = upMargin(cand), mt = topMargin(cand);
+    boolean fOk = (mf > 0) == c.flip() || singularWrist[k] || Math.abs(mf) < 1e-9;
+    boolean uOk = (mu > 0) == c.up() || Math.abs(mu) < 1e-9;
+    boolean tOk = (mt > 0) == c.top() || Math.abs(mt) < 1e-6;
+    return fOk && uOk && tOk;
+  }
+
+  /** F/N margin: J5 itself (F when positive). */
+  private double flipMargin(double[] q) {
+    return wrap(q[4]);
+  }
+
+  /** U/D margin: sin(θ3 + atan2(a2, c3)), positive for U. */
+  private double upMargin(double[] q) {
+    double th3 = sign[2] * q[2] - offset[2];
+    return Math.sin(th3 + psi);
+  }
+
+  /** T/B margin (mm): wrist centre's distance in front of the J1 axis along link 1's x. */
+  private double topMargin(double[] q) {
+    double th2 = sign[1] * q[1] - offset[1];
+    double th23 = th2 + sign[2] * q[2] - offset[2];
+    return a1 + c2 * Math.sin(th2) + c3 * Math.sin(th23) + a2 * Math.cos(th23);
+  }
+
+  /** The variant of {@code q} (± 2π multiples) within joint i's limits nearest to {@code ref}; NaN if none. */
+  private double nearestTurn(double q, double ref, int i) {
+    double v = q + TWO_PI * Math.rint((ref - q) / TWO_PI);
+    if (ok(v, i)) {
+      return clampToLimits(v, i);
+    }
+    double lo = v - TWO_PI, hi = v + TWO_PI;
+    boolean loOk = ok(lo, i);
+    boolean hiOk = ok(hi, i);
+    if (loOk && hiOk) {
+      return clampToLimits(ref - lo < hi - ref ? lo : hi, i);
+    }
+    return loOk ? clampToLimits(lo, i) : (hiOk ? clampToLimits(hi, i) : Double.NaN);
+  }
+
+  /** {@code q} (in (-π, π]) or its ±2π variant, whichever lies inside joint i's limits. */
+  private double intoLimits(double q, int i) {
+    if (ok(q, i)) {
+      return clampToLimits(q, i);
+    }
+    double alt = q > 0 ? q - TWO_PI : q + TWO_PI;
+    return ok(alt, i) ? clampToLimits(alt, i) : q;
+  }
+
+  /** Inside joint i's limits, or outside by no more than round-off. */
+  private boolean ok(double v, int i) {
+    return v >= lowerSlack[i] && v <= upperSlack[i];
+  }
+
+  private double clampToLimits(double v, int i) {
+    return v < lower[i] ? lower[i] : (v > upper[i] ? upper[i] : v);
+  }
+
+  private IkResult solved(double[] q) {
+    chain.flangePose(q, fk, null);
+    double dx = fk[9] - target[9], dy = fk[10] - target[10], dz = fk[11] - target[11];
+    double pos = Math.sqrt(dx * dx + dy * dy + dz * dz);
+    return new IkResult.Solved(q.clone(), pos, rotationAngle(fk, target), 0);
+  }
+
+  private IkResult outOfReach() {
+    return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
+        "position (%.1f, %.1f, %.1f) mm is out of reach: the wrist centre is beyond the arm's "
+            + "reach or closer to the shoulder than the folded arm allows",
+        target[9], target[10], target[11]));
+  }
+
+  /** Rotation angle (rad) between two packed orientations, accurate near 0. */
+  static double rotationAngle(double[] a, double[] b) {
+    double tr = a[0] * b[0] + a[3] * b[3] + a[6] * b[6]
+        + a[1] * b[1] + a[4] * b[4] + a[7] * b[7]
+        + a[2] * b[2] + a[5] * b[5] + a[8] * b[8];
+    // Skew part of Raᵀ·Rb gives sin: keeps precision for small angles.
+    double sx = (a[1] * b[2] + a[4] * b[5] + a[7] * b[8]) - (a[2] * b[1] + a[5] * b[4] + a[8] * b[7]);
+    double sy = (a[2] * b[0] + a[5] * b[3] + a[8] * b[6]) - (a[0] * b[2] + a[3] * b[5] + a[6] * b[8]);
+    double sz = (a[0] * b[1] + a[3] * b[4] + a[6] * b[7]) - (a[1] * b[0] + a[4] * b[3] + a[7] * b[6]);
+    double s = 0.5 * Math.sqrt(sx * sx + sy * sy + sz * sz);
+    double c = Math.max(-1, Math.min(1, (tr - 1) / 2));
+    return Math.atan2(s, c);
+  }
+
+  private static double clamp(double x) {
+    return x > 1 ? 1 : (x < -1 ? -1 : x);
+  }
+
+  private static double sq(double x) {
+    return x * x;
+  }
+
+  /** Wraps into (-π, π] without the cost of IEEEremainder for values already near the range. */
+  static double wrap(double a) {
+    while (a > Math.PI) {
+      a -= TWO_PI;
+    }
+    while (a <= -Math.PI) {
+      a += TWO_PI;
+    }
+    return a;
+  }
+}
