@@ -1,0 +1,183 @@
+package org.robotrun.io;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.robotrun.io.LsToken.Kind;
+
+/**
+ * Splits one line of a .LS file into tokens. It works a line at a time because the format is
+ * line-oriented: a bad line never disturbs the next one, which is what lets the parser report
+ * every bad line in one pass.
+ *
+ * <p>Three places hold free text rather than tokens, and the lexer knows them: the comment of
+ * an indexed item after {@code :} inside brackets ({@code LBL[99:NO GRIP]}), the text of {@code
+ * MESSAGE[...]}, and (at the start of a statement) a {@code !} remark or a {@code //}
+ * commented-out line. Everything else is words, numbers, strings and punctuation; a character
+ * TP does not use becomes a {@link Kind#BAD_CHAR} token for the parser to report.
+ */
+public final class LsLexer {
+  private LsLexer() {}
+
+  /**
+   * Tokens of {@code text}, ending with an {@link Kind#EOL} token.
+   *
+   * @param text the characters to split (no line break)
+   * @param line the 1-based line number, stamped on every token
+   * @param firstColumn the 1-based column of {@code text}'s first character in the file line
+   * @param statement true for a /MN statement body, where a leading {@code !} or {@code //}
+   *     makes the rest of the line free text
+   */
+  public static List<LsToken> tokenize(String text, int line, int firstColumn, boolean statement) {
+    List<LsToken> out = new ArrayList<>();
+    int n = text.length();
+    int i = 0;
+    int bracketDepth = 0;
+    while (i < n) {
+      char c = text.charAt(i);
+      int col = firstColumn + i;
+      if (c == ' ' || c == '\t') {
+        i++;
+        continue;
+      }
+      if (statement && out.isEmpty()) {
+        if (c == '!') {
+          out.add(new LsToken(Kind.BANG, "!", line, col));
+          out.add(new LsToken(Kind.RAW, text.substring(i + 1), line, col + 1));
+          i = n;
+          continue;
+        }
+        if (c == '/' && i + 1 < n && text.charAt(i + 1) == '/') {
+          out.add(new LsToken(Kind.SLASH, "//", line, col));
+          out.add(new LsToken(Kind.RAW, text.substring(i + 2), line, col + 2));
+          i = n;
+          continue;
+        }
+      }
+      if (isWordStart(c)) {
+        int j = i + 1;
+        while (j < n && isWordPart(text.charAt(j))) {
+          j++;
+        }
+        out.add(new LsToken(Kind.WORD, text.substring(i, j), line, col));
+        i = j;
+        continue;
+      }
+      if (isDigit(c) || (c == '.' && i + 1 < n && isDigit(text.charAt(i + 1)))) {
+        int j = i;
+        while (j < n && isDigit(text.charAt(j))) {
+          j++;
+        }
+        if (j < n && text.charAt(j) == '.') {
+          j++;
+          while (j < n && isDigit(text.charAt(j))) {
+            j++;
+          }
+        }
+        out.add(new LsToken(Kind.NUMBER, text.substring(i, j), line, col));
+        i = j;
+        continue;
+      }
+      switch (c) {
+        case '\'', '"' -> {
+          int end = text.indexOf(c, i + 1);
+          if (end < 0) {
+            // Unclosed: the parser sees a string running to the end and a BAD_CHAR for the quote.
+            out.add(new LsToken(Kind.BAD_CHAR, String.valueOf(c), line, col));
+            i++;
+          } else {
+            out.add(new LsToken(Kind.STRING, text.substring(i + 1, end), line, col));
+            i = end + 1;
+          }
+        }
+        case '[' -> {
+          boolean message = !out.isEmpty() && out.get(out.size() - 1).isWord("MESSAGE");
+          out.add(new LsToken(Kind.LBRACKET, "[", line, col));
+          i++;
+          if (message) {
+            int end = text.indexOf(']', i);
+            int stop = end < 0 ? n : end;
+            out.add(new LsToken(Kind.RAW, text.substring(i, stop), line, firstColumn + i));
+            i = stop;
+          } else {
+            bracketDepth++;
+          }
+        }
+        case ']' -> {
+          bracketDepth = Math.max(0, bracketDepth - 1);
+          out.add(new LsToken(Kind.RBRACKET, "]", line, col));
+          i++;
+        }
+        case ':' -> {
+          out.add(new LsToken(Kind.COLON, ":", line, col));
+          i++;
+          if (bracketDepth > 0) {
+            int end = text.indexOf(']', i);
+            int stop = end < 0 ? n : end;
+            out.add(new LsToken(Kind.ITEM_COMMENT, text.substring(i, stop), line, firstColumn + i));
+            i = stop;
+          }
+        }
+        case '<' -> {
+          if (i + 1 < n && text.charAt(i + 1) == '>') {
+            out.add(new LsToken(Kind.NE, "<>", line, col));
+            i += 2;
+          } else if (i + 1 < n && text.charAt(i + 1) == '=') {
+            out.add(new LsToken(Kind.LE, "<=", line, col));
+            i += 2;
+          } else {
+            out.add(new LsToken(Kind.LT, "<", line, col));
+            i++;
+          }
+        }
+        case '>' -> {
+          if (i + 1 < n && text.charAt(i + 1) == '=') {
+            out.add(new LsToken(Kind.GE, ">=", line, col));
+            i += 2;
+          } else {
+            out.add(new LsToken(Kind.GT, ">", line, col));
+            i++;
+          }
+        }
+        default -> {
+          Kind k = single(c);
+          out.add(new LsToken(k, String.valueOf(c), line, col));
+          i++;
+        }
+      }
+    }
+    out.add(new LsToken(Kind.EOL, "", line, firstColumn + n));
+    return out;
+  }
+
+  private static Kind single(char c) {
+    return switch (c) {
+      case ']' -> Kind.RBRACKET;
+      case '(' -> Kind.LPAREN;
+      case ')' -> Kind.RPAREN;
+      case '{' -> Kind.LBRACE;
+      case '}' -> Kind.RBRACE;
+      case ',' -> Kind.COMMA;
+      case ';' -> Kind.SEMICOLON;
+      case '=' -> Kind.EQ;
+      case '+' -> Kind.PLUS;
+      case '-' -> Kind.MINUS;
+      case '*' -> Kind.STAR;
+      case '/' -> Kind.SLASH;
+      case '%' -> Kind.PERCENT;
+      case '!' -> Kind.BANG;
+      default -> Kind.BAD_CHAR;
+    };
+  }
+
+  private static boolean isDigit(char c) {
+    return c >= '0' && c <= '9';
+  }
+
+  private static boolean isWordStart(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_' || c == '$';
+  }
+
+  private static boolean isWordPart(char c) {
+    return isWordStart(c) || isDigit(c);
+  }
+}

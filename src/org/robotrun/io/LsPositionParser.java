@@ -1,0 +1,330 @@
+package org.robotrun.io;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.robotrun.io.LsToken.Kind;
+import org.robotrun.program.Config;
+import org.robotrun.program.LocalPosition;
+import org.robotrun.program.Position;
+
+/**
+ * Reads the /POS section: blocks {@code P[n:"comment"]{ GP1: UF : u, UT : t, CONFIG : '...',
+ * X = ... mm, ... };} in Cartesian or joint form. A bad block is reported and skipped up to its
+ * closing {@code };} so the following blocks are still read; a block that is never closed is
+ * reported on its first line.
+ */
+final class LsPositionParser {
+
+  private static final String[] CARTESIAN = {"X", "Y", "Z", "W", "P", "R"};
+  private static final String[] JOINT = {"J1", "J2", "J3", "J4", "J5", "J6"};
+
+  private final String file;
+  private final List<Diagnostic> diagnostics;
+  private final List<LsToken> tokens = new ArrayList<>();
+  private int pos;
+
+  private LsPositionParser(String file, List<Diagnostic> diagnostics) {
+    this.file = file;
+    this.diagnostics = diagnostics;
+  }
+
+  /**
+   * Parses the section's lines.
+   *
+   * @param lines the section's lines, without the {@code /POS} header
+   * @param firstLine the 1-based file line of {@code lines.get(0)}
+   * @param diagnostics where problems are added
+   * @return P[n] by number in file order; bad blocks are left out (and reported)
+   */
+  static Map<Integer, LocalPosition> parse(String file, List<String> lines, int firstLine, List<Diagnostic> diagnostics) {
+    LsPositionParser p = new LsPositionParser(file, diagnostics);
+    for (int i = 0; i < lines.size(); i++) {
+      List<LsToken> t = LsLexer.tokenize(lines.get(i), firstLine + i, 1, false);
+      p.tokens.addAll(t.subList(0, t.size() - 1));
+    }
+    int endLine = firstLine + Math.max(0, lines.size() - 1);
+    p.tokens.add(new LsToken(Kind.EOL, "", endLine, 1));
+    return p.blocks();
+  }
+
+  private Map<Integer, LocalPosition> blocks() {
+    Map<Integer, LocalPosition> out = new LinkedHashMap<>();
+    Map<Integer, Integer> firstLineOf = new HashMap<>();
+    while (!peek().is(Kind.EOL)) {
+      LsToken start = peek();
+      try {
+        LocalPosition lp = block();
+        Integer earlier = firstLineOf.putIfAbsent(lp.number(), start.line());
+        if (earlier != null) {
+          diagnostics.add(Diagnostic.error(file, start.line(),
+              "P[" + lp.number() + "] is defined twice in /POS (first on line " + earlier + ")"));
+        } else {
+          out.put(lp.number(), lp);
+        }
+      } catch (LsSyntaxError e) {
+        diagnostics.add(Diagnostic.error(file, e.line(), e.getMessage()));
+        skipPastBlock(start);
+      }
+    }
+    return out;
+  }
+
+  /** After an error: skip to just after the next {@code };}, or to the next {@code P[} block start. */
+  private void skipPastBlock(LsToken start) {
+    if (peek() == start && !peek().is(Kind.EOL)) {
+      next();
+    }
+    while (!peek().is(Kind.EOL)) {
+      LsToken t = peek();
+      if (t.is(Kind.RBRACE) && peek(1).is(Kind.SEMICOLON)) {
+        next();
+        next();
+        return;
+      }
+      if (t.isWord("P") && peek(1).is(Kind.LBRACKET) && t.column() == 1) {
+        return;
+      }
+      next();
+    }
+  }
+
+  private LocalPosition block() {
+    LsToken start = peek();
+    if (!start.isWord("P") || !peek(1).is(Kind.LBRACKET)) {
+      throw error(start, "expected a position block 'P[n:\"comment\"]{', found " + start.describe());
+    }
+    next();
+    next();
+    LsToken num = expect(Kind.NUMBER, "the position number in P[n]");
+    int number = parseInt(num);
+    if (number < 1) {
+      throw error(num, "P[" + number + "]: position numbers start at 1");
+    }
+    String where = "P[" + number + "]";
+    String comment = "";
+    if (peek().is(Kind.COLON)) {
+      next();
+      if (peek().is(Kind.ITEM_COMMENT)) {
+        comment = unquote(next().text().strip());
+      }
+    }
+    expect(Kind.RBRACKET, "']' closing " + where);
+    expect(Kind.LBRACE, "'{' after " + where);
+
+    Map<String, Double> values = new LinkedHashMap<>();
+    Integer uf = null;
+    Integer ut = null;
+    Config config = null;
+    boolean sawGroup = false;
+    while (true) {
+      LsToken t = peek();
+      if (t.is(Kind.EOL)) {
+        throw error(start, where + " is not closed: expected '};' before the end of the /POS section");
+      }
+      if (t.is(Kind.RBRACE)) {
+        next();
+        expect(Kind.SEMICOLON, "';' after the '}' closing " + where);
+        break;
+      }
+      if (t.is(Kind.COMMA)) {
+        next();
+        continue;
+      }
+      if (!t.is(Kind.WORD)) {
+        throw error(t, where + ": expected a field (GP1:, UF, UT, CONFIG, X..R or J1..J6) or '};', found " + t.describe());
+      }
+      if (t.isWord("P") && peek(1).is(Kind.LBRACKET) && t.column() == 1) {
+        throw error(start, where + " is not closed: expected '};' before the next block on line " + t.line());
+      }
+      next();
+      String key = t.text().toUpperCase(Locale.ROOT);
+      if (key.startsWith("GP")) {
+        expect(Kind.COLON, "':' after " + t.text());
+        if (!key.equals("GP1")) {
+          throw error(t, "not supported: motion group " + key + " in " + where + " (RobotRun moves one group, GP1)");
+        }
+        if (sawGroup) {
+          throw error(t, where + ": GP1 appears twice");
+        }
+        sawGroup = true;
+        continue;
+      }
+      if (!sawGroup) {
+        throw error(t, where + ": expected 'GP1:' before the position data, found " + t.describe());
+      }
+      switch (key) {
+        case "UF", "UT" -> {
+          expect(Kind.COLON, "':' after " + key);
+          int v = parseInt(expect(Kind.NUMBER, "the frame number after " + key + " :"));
+          if (key.equals("UF")) {
+            uf = v;
+          } else {
+            ut = v;
+          }
+        }
+        case "CONFIG" -> {
+          expect(Kind.COLON, "':' after CONFIG");
+          LsToken s = expect(Kind.STRING, "a quoted configuration like 'N U T, 0, 0, 0' after CONFIG :");
+          config = config(s, where);
+        }
+        default -> {
+          if (key.matches("E\\d+")) {
+            throw error(t, "not supported: extended axis " + key + " in " + where);
+          }
+          boolean cart = indexOf(CARTESIAN, key) >= 0;
+          boolean joint = indexOf(JOINT, key) >= 0;
+          if (!cart && !joint) {
+            throw error(t, where + ": unknown field '" + t.text() + "': expected UF, UT, CONFIG, X, Y, Z, W, P, R or J1..J6");
+          }
+          expect(Kind.EQ, "'=' after " + key);
+          boolean negative = peek().is(Kind.MINUS);
+          if (negative) {
+            next();
+          }
+          LsToken n = expect(Kind.NUMBER, "a number after " + key + " =");
+          double v = Double.parseDouble(n.text());
+          String unit = (key.equals("X") || key.equals("Y") || key.equals("Z")) ? "mm" : "deg";
+          LsToken u = peek();
+          if (!u.isWord(unit)) {
+            throw error(u, where + ": expected '" + unit + "' after the value of " + key + ", found " + u.describe());
+          }
+          next();
+          if (values.put(key, negative ? -v : v) != null) {
+            throw error(t, where + ": " + key + " appears twice");
+          }
+        }
+      }
+    }
+    if (uf == null || ut == null) {
+      throw error(start, where + ": expected 'UF : n, UT : n' (the frames the position was taught in)");
+    }
+    return new LocalPosition(number, comment, uf, ut, position(values, config, where, start));
+  }
+
+  private Position position(Map<String, Double> v, Config config, String where, LsToken start) {
+    boolean anyCart = false;
+    boolean anyJoint = false;
+    for (String k : v.keySet()) {
+      anyCart |= indexOf(CARTESIAN, k) >= 0;
+      anyJoint |= indexOf(JOINT, k) >= 0;
+    }
+    if (anyCart && anyJoint) {
+      throw error(start, where + ": mixes Cartesian (X..R) and joint (J1..J6) values; expected one form");
+    }
+    if (!anyCart && !anyJoint) {
+      throw error(start, where + ": has no position: expected X, Y, Z, W, P, R or J1..J6");
+    }
+    String[] keys = anyCart ? CARTESIAN : JOINT;
+    double[] d = new double[6];
+    for (int i = 0; i < 6; i++) {
+      Double x = v.get(keys[i]);
+      if (x == null) {
+        throw error(start, where + ": " + keys[i] + " is missing: expected all of " + String.join(", ", keys));
+      }
+      d[i] = x;
+    }
+    if (anyJoint) {
+      if (config != null) {
+        diagnostics.add(Diagnostic.warning(file, start.line(), where + ": CONFIG ignored on a joint position"));
+      }
+      return new Position.Joint(d[0], d[1], d[2], d[3], d[4], d[5]);
+    }
+    if (config == null) {
+      diagnostics.add(Diagnostic.warning(file, start.line(), where + ": no CONFIG; assuming 'N U T, 0, 0, 0'"));
+      config = Config.DEFAULT;
+    }
+    return new Position.Cartesian(d[0], d[1], d[2], d[3], d[4], d[5], config);
+  }
+
+  /** {@code 'N U T, 0, 0, 0'}: flip F|N, elbow U|D, arm T|B, then up to three turn numbers. */
+  private Config config(LsToken s, String where) {
+    String[] parts = s.text().split(",", -1);
+    String[] letters = parts[0].trim().toUpperCase(Locale.ROOT).split("\\s+");
+    String expected = where + ": CONFIG '" + s.text() + "': expected 'F|N U|D T|B, t1, t2, t3' like 'N U T, 0, 0, 0'";
+    if (letters.length != 3 || parts.length > 4) {
+      throw error(s, expected);
+    }
+    boolean flip = switch (letters[0]) {
+      case "F" -> true;
+      case "N" -> false;
+      default -> throw error(s, expected);
+    };
+    boolean up = switch (letters[1]) {
+      case "U" -> true;
+      case "D" -> false;
+      default -> throw error(s, expected);
+    };
+    boolean top = switch (letters[2]) {
+      case "T" -> true;
+      case "B" -> false;
+      default -> throw error(s, expected);
+    };
+    int[] turns = new int[3];
+    for (int i = 1; i < parts.length; i++) {
+      try {
+        turns[i - 1] = Integer.parseInt(parts[i].trim());
+      } catch (NumberFormatException e) {
+        throw error(s, expected);
+      }
+    }
+    return new Config(flip, up, top, turns[0], turns[1], turns[2]);
+  }
+
+  private static String unquote(String s) {
+    if (s.length() >= 2 && s.startsWith("\"") && s.endsWith("\"")) {
+      return s.substring(1, s.length() - 1);
+    }
+    return s;
+  }
+
+  private static int indexOf(String[] a, String k) {
+    for (int i = 0; i < a.length; i++) {
+      if (a[i].equals(k)) {
+        return i;
+      }
+    }
+    return -1;
+  }
+
+  private int parseInt(LsToken t) {
+    if (t.text().indexOf('.') >= 0) {
+      throw error(t, "expected an integer, found " + t.describe());
+    }
+    try {
+      return Integer.parseInt(t.text());
+    } catch (NumberFormatException e) {
+      throw error(t, "number " + t.text() + " is too large");
+    }
+  }
+
+  private LsToken peek() {
+    return tokens.get(pos);
+  }
+
+  private LsToken peek(int ahead) {
+    return tokens.get(Math.min(pos + ahead, tokens.size() - 1));
+  }
+
+  private LsToken next() {
+    LsToken t = tokens.get(pos);
+    if (pos < tokens.size() - 1) {
+      pos++;
+    }
+    return t;
+  }
+
+  private LsToken expect(Kind k, String what) {
+    if (!peek().is(k)) {
+      throw error(peek(), "expected " + what + ", found " + peek().describe());
+    }
+    return next();
+  }
+
+  private LsSyntaxError error(LsToken at, String message) {
+    return new LsSyntaxError(at.line(), message);
+  }
+}

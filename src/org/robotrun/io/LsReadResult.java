@@ -1,0 +1,50 @@
+package org.robotrun.io;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Objects;
+import java.util.Set;
+import org.robotrun.program.Program;
+
+/**
+ * What reading a .LS file gives: the program (as much of it as could be read: a bad /MN line
+ * stands as a commented-out line so the numbering of the others holds), every problem found,
+ * and for each program line the file line it came from.
+ *
+ * @param file the file name used in diagnostics
+ * @param program the program read
+ * @param diagnostics problems in file-line order
+ * @param sourceLines {@code sourceLines.get(n - 1)} is the 1-based file line of program line n
+ */
+public record LsReadResult(String file, Program program, List<Diagnostic> diagnostics, List<Integer> sourceLines) {
+
+  public LsReadResult {
+    Objects.requireNonNull(file, "file");
+    Objects.requireNonNull(program, "program");
+    List<Diagnostic> sorted = new ArrayList<>(diagnostics);
+    sorted.sort(Comparator.comparingInt(Diagnostic::line));
+    diagnostics = List.copyOf(sorted);
+    sourceLines = List.copyOf(sourceLines);
+  }
+
+  /** True when at least one diagnostic is an error (not just a warning). */
+  public boolean hasErrors() {
+    return diagnostics.stream().anyMatch(Diagnostic::isError);
+  }
+
+  /** The file line of program line {@code n} (1-based), for alarms and messages. */
+  public int sourceLine(int n) {
+    return sourceLines.get(n - 1);
+  }
+
+  /**
+   * This result plus a diagnostic for every CALL to a program not in {@code knownPrograms}
+   * (names compared ignoring case; the program itself always counts as known).
+   */
+  public LsReadResult withCallTargetsChecked(Set<String> knownPrograms) {
+    List<Diagnostic> all = new ArrayList<>(diagnostics);
+    all.addAll(LsProgramChecks.unknownCalls(this, knownPrograms));
+    return new LsReadResult(file, program, all, sourceLines);
+  }
+}

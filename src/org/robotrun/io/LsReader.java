@@ -1,0 +1,479 @@
+package org.robotrun.io;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.LocalPosition;
+import org.robotrun.program.Program;
+
+/**
+ * Reads FANUC ASCII {@code .LS} programs (TP-LANGUAGE.md): {@code /PROG}, {@code /ATTR},
+ * {@code /MN}, {@code /POS}, {@code /END}.
+ *
+ * <p>Reading never throws on bad content: it returns the program it could read plus a
+ * diagnostic for every bad line ({@code file:line: message} naming what was expected). It
+ * recovers at line boundaries, so one pass reports them all. Statements FANUC has but RobotRun
+ * does not are reported as {@code not supported: NAME}; nothing is dropped silently. Only a
+ * file that cannot be read at all (missing, a directory, no permission) is an {@link
+ * IOException}.
+ *
+ * <p>Normalisation, so that read → write → read gives the same model: missing /ATTR entries get
+ * the defaults a controller writes, and LINE_COUNT is set to the real number of lines (with a
+ * warning when the file said otherwise).
+ */
+public final class LsReader {
+  private LsReader() {}
+
+  /** Reads a file; CALL targets are not checked (the program set is unknown). */
+  public static LsReadResult read(Path file) throws IOException {
+    return parse(file.toString(), decode(Files.readAllBytes(file)));
+  }
+
+  /** Reads a file and checks CALL targets against {@code knownPrograms} (names, any case). */
+  public static LsReadResult read(Path file, Set<String> knownPrograms) throws IOException {
+    return read(file).withCallTargetsChecked(knownPrograms);
+  }
+
+  /** Parses text; CALL targets are not checked. */
+  public static LsReadResult parse(String fileName, String text) {
+    return new Parse(fileName, text).run();
+  }
+
+  /** Parses text and checks CALL targets against {@code knownPrograms}. */
+  public static LsReadResult parse(String fileName, String text, Set<String> knownPrograms) {
+    return parse(fileName, text).withCallTargetsChecked(knownPrograms);
+  }
+
+  /**
+   * Bytes to text. Controllers write ASCII; anything that is not valid UTF-8 becomes U+FFFD so
+   * binary garbage reaches the parser (and is reported) instead of failing the read.
+   */
+  static String decode(byte[] bytes) {
+    try {
+      return StandardCharsets.UTF_8.newDecoder()
+          .onMalformedInput(CodingErrorAction.REPLACE)
+          .onUnmappableCharacter(CodingErrorAction.REPLACE)
+          .decode(ByteBuffer.wrap(bytes))
+          .toString();
+    } catch (java.nio.charset.CharacterCodingException e) {
+      throw new IllegalStateException("a REPLACE decoder does not throw", e);
+    }
+  }
+
+  /** One parse: the mutable state of reading one file, used once. */
+  private static final class Parse {
+    private final String file;
+    private final String[] lines;
+    private final List<Diagnostic> diags = new ArrayList<>();
+
+    private String name;
+    private final Map<String, String> attributes = new LinkedHashMap<>();
+    private String comment = "";
+    private int declaredLineCount = -1;
+    private int lineCountLine;
+    private final List<Instruction> instructions = new ArrayList<>();
+    private final List<Integer> sourceLines = new ArrayList<>();
+    private Map<Integer, LocalPosition> positions = Map.of();
+
+    Parse(String file, String text) {
+      this.file = file;
+      this.lines = splitLines(text);
+      this.name = defaultName(file);
+    }
+
+    LsReadResult run() {
+      int i = 0;
+      int n = lines.length;
+      while (i < n && lines[i].isBlank()) {
+        i++;
+      }
+      if (i == n) {
+        diags.add(Diagnostic.error(file, 1, "empty file: expected an ASCII .LS program starting with '/PROG  NAME'"));
+        return result();
+      }
+      if (!lines[i].startsWith("/PROG")) {
+        if (looksBinary(lines[i])) {
+          diags.add(Diagnostic.error(file, i + 1, "not a text file: expected an ASCII .LS program starting with '/PROG  NAME'"));
+          return result();
+        }
+        diags.add(Diagnostic.error(file, i + 1, "expected '/PROG  NAME' (an ASCII .LS program), found '" + clip(lines[i]) + "'"));
+      }
+      boolean sawProg = false;
+      boolean sawAttr = false;
+      boolean sawMn = false;
+      boolean sawPos = false;
+      boolean sawEnd = false;
+      while (i < n) {
+        String header = sectionHeader(lines[i]);
+        if (header == null) {
+          i++; // text before any section: already reported above
+          continue;
+        }
+        int start = i + 1;
+        int end = start;
+        while (end < n && sectionHeader(lines[end]) == null) {
+          end++;
+        }
+        int headerLine = i + 1;
+        switch (header) {
+          case "/PROG" -> {
+            if (sawProg) {
+              diags.add(Diagnostic.error(file, headerLine, "second /PROG: one file holds one program"));
+            } else {
+              prog(lines[i], headerLine);
+              sawProg = true;
+            }
+            blankOnly(start, end, "/PROG");
+          }
+          case "/ATTR" -> {
+            if (sawAttr) {
+              diags.add(Diagnostic.error(file, headerLine, "second /ATTR section"));
+            }
+            sawAttr = true;
+            attr(start, end);
+          }
+          case "/MN" -> {
+            if (sawMn) {
+              diags.add(Diagnostic.error(file, headerLine, "second /MN section"));
+            }
+            sawMn = true;
+            mn(start, end);
+          }
+          case "/POS" -> {
+            if (sawPos) {
+              diags.add(Diagnostic.error(file, headerLine, "second /POS section"));
+            }
+            if (!sawMn) {
+              diags.add(Diagnostic.error(file, headerLine, "/POS before /MN: expected /PROG, /ATTR, /MN, /POS, /END in that order"));
+            }
+            sawPos = true;
+            List<String> body = new ArrayList<>(end - start);
+            for (int k = start; k < end; k++) {
+              body.add(lines[k]);
+            }
+            positions = LsPositionParser.parse(file, body, start + 1, diags);
+          }
+          case "/END" -> {
+            sawEnd = true;
+            for (int k = start; k < end; k++) {
+              if (!lines[k].isBlank()) {
+                diags.add(Diagnostic.warning(file, k + 1, "text after /END is ignored"));
+                break;
+              }
+            }
+          }
+          default -> diags.add(Diagnostic.warning(file, headerLine,
+              "not supported: section " + header + " (its " + (end - start) + " lines are ignored)"));
+        }
+        if (sawEnd) {
+          break;
+        }
+        i = end;
+      }
+      int last = Math.max(1, n);
+      if (!sawProg && diags.isEmpty()) {
+        diags.add(Diagnostic.error(file, 1, "missing '/PROG  NAME'"));
+      }
+      if (!sawMn) {
+        diags.add(Diagnostic.error(file, last, "missing /MN section (the program body)"));
+      }
+      if (!sawEnd) {
+        diags.add(Diagnostic.error(file, last, "file ends without /END (truncated?)"));
+      }
+      return result();
+    }
+
+    private LsReadResult result() {
+      if (declaredLineCount >= 0 && declaredLineCount != instructions.size()) {
+        diags.add(Diagnostic.warning(file, lineCountLine,
+            "LINE_COUNT = " + declaredLineCount + " but /MN has " + instructions.size() + " lines; using " + instructions.size()));
+      }
+      Map<String, String> attrs = new LinkedHashMap<>(attributes);
+      for (Map.Entry<String, String> d : LsAttributes.DEFAULTS.entrySet()) {
+        attrs.putIfAbsent(d.getKey(), d.getValue());
+      }
+      attrs.put(LsAttributes.LINE_COUNT, Integer.toString(instructions.size()));
+      Program program = new Program(name, attrs, comment, instructions, positions);
+      diags.addAll(LsProgramChecks.check(file, program, sourceLines));
+      return new LsReadResult(file, program, diags, sourceLines);
+    }
+
+    // ---- /PROG --------------------------------------------------------------------------
+
+    private void prog(String text, int line) {
+      String[] words = text.substring("/PROG".length()).trim().split("\\s+");
+      if (words.length == 0 || words[0].isEmpty()) {
+        diags.add(Diagnostic.error(file, line, "expected a program name after /PROG"));
+        return;
+      }
+      if (!Program.isValidName(words[0])) {
+        diags.add(Diagnostic.error(file, line, "'" + clip(words[0]) + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
+            + Program.MAX_NAME_LENGTH + " characters"));
+      } else {
+        name = words[0].toUpperCase(Locale.ROOT);
+      }
+      if (words.length > 1) {
+        diags.add(Diagnostic.warning(file, line, "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
+      }
+    }
+
+    private void blankOnly(int start, int end, String section) {
+      for (int k = start; k < end; k++) {
+        if (!lines[k].isBlank()) {
+          diags.add(Diagnostic.error(file, k + 1, "unexpected text after " + section + ": expected /ATTR or /MN"));
+          return;
+        }
+      }
+    }
+
+    // ---- /ATTR --------------------------------------------------------------------------
+
+    private void attr(int start, int end) {
+      int k = start;
+      while (k < end) {
+        if (lines[k].isBlank()) {
+          k++;
+          continue;
+        }
+        int first = k;
+        StringBuilder entry = new StringBuilder(lines[k].strip());
+        while (!endsWithSemicolon(entry) && k + 1 < end) {
+          k++;
+          entry.append('\n').append(lines[k].strip());
+        }
+        k++;
+        attrEntry(entry.toString(), first + 1);
+      }
+    }
+
+    private static boolean endsWithSemicolon(StringBuilder sb) {
+      return sb.length() > 0 && sb.charAt(sb.length() - 1) == ';';
+    }
+
+    private void attrEntry(String text, int line) {
+      if (!text.endsWith(";")) {
+        diags.add(Diagnostic.error(file, line, "/ATTR entry does not end with ';': expected 'KEY = value;'"));
+        return;
+      }
+      String body = text.substring(0, text.length() - 1);
+      int colon = body.indexOf(':');
+      int eq = body.indexOf('=');
+      if (colon > 0 && (eq < 0 || colon < eq) && isKey(body.substring(0, colon).strip())) {
+        // A grouped entry: "TCD:  STACK_SIZE = 0, TASK_PRIORITY = 50, ...".
+        String key = body.substring(0, colon).strip().toUpperCase(Locale.ROOT);
+        List<String> parts = new ArrayList<>();
+        for (String sub : body.substring(colon + 1).split(",")) {
+          int e = sub.indexOf('=');
+          if (e < 0 || !isKey(sub.substring(0, e).strip())) {
+            diags.add(Diagnostic.error(file, line, "/ATTR " + key + ": expected 'NAME = value' entries separated by ',', found '" + clip(sub.strip()) + "'"));
+            return;
+          }
+          parts.add(sub.substring(0, e).strip() + " = " + sub.substring(e + 1).strip());
+        }
+        putAttr(key, String.join(", ", parts), line);
+        return;
+      }
+      if (eq < 0 || !isKey(body.substring(0, eq).strip())) {
+        diags.add(Diagnostic.error(file, line, "expected 'KEY = value;' in /ATTR, found '" + clip(text) + "'"));
+        return;
+      }
+      String key = body.substring(0, eq).strip().toUpperCase(Locale.ROOT);
+      String value = body.substring(eq + 1).strip();
+      switch (key) {
+        case LsAttributes.COMMENT -> comment = value.length() >= 2 && value.startsWith("\"") && value.endsWith("\"")
+            ? value.substring(1, value.length() - 1) : value;
+        case LsAttributes.LINE_COUNT -> {
+          lineCountLine = line;
+          try {
+            declaredLineCount = Integer.parseInt(value);
+          } catch (NumberFormatException e) {
+            diags.add(Diagnostic.warning(file, line, "LINE_COUNT '" + clip(value) + "' is not a number; using the real count"));
+          }
+          putAttr(key, value, line);
+        }
+        default -> putAttr(key, value, line);
+      }
+    }
+
+    private void putAttr(String key, String value, int line) {
+      if (attributes.put(key, value) != null) {
+        diags.add(Diagnostic.warning(file, line, "/ATTR " + key + " appears twice; the last one counts"));
+      }
+    }
+
+    private static boolean isKey(String s) {
+      if (s.isEmpty()) {
+        return false;
+      }
+      for (int i = 0; i < s.length(); i++) {
+        char c = s.charAt(i);
+        if (!(Character.isLetterOrDigit(c) && c < 128) && c != '_') {
+          return false;
+        }
+      }
+      return true;
+    }
+
+    // ---- /MN ----------------------------------------------------------------------------
+
+    private void mn(int start, int end) {
+      int k = start;
+      while (k < end) {
+        String text = lines[k];
+        int line = k + 1;
+        k++;
+        if (text.isBlank()) {
+          continue;
+        }
+        int p = skipSpaces(text, 0);
+        int digitsStart = p;
+        while (p < text.length() && Character.isDigit(text.charAt(p)) && text.charAt(p) < 128) {
+          p++;
+        }
+        boolean numbered = p > digitsStart && p < text.length() && text.charAt(p) == ':';
+        if (!numbered) {
+          if (p == digitsStart && p < text.length() && text.charAt(p) == ':') {
+            diags.add(Diagnostic.error(file, line, "continuation line ':  ...' without a C motion line before it"));
+          } else {
+            diags.add(Diagnostic.error(file, line, "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
+          }
+          continue;
+        }
+        int number;
+        try {
+          number = Integer.parseInt(text.substring(digitsStart, p));
+        } catch (NumberFormatException e) {
+          number = -1;
+        }
+        int expected = instructions.size() + 1;
+        if (number != expected) {
+          diags.add(Diagnostic.error(file, line, "line number " + text.substring(digitsStart, p) + " out of order: expected " + expected));
+        }
+        Body body = body(text, p + 1, line);
+        List<LsToken> tokens = body.tokens;
+        boolean terminated = body.terminated;
+        if (!terminated && k < end && isContinuation(lines[k])) {
+          // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement.
+          String cont = lines[k];
+          int colon = cont.indexOf(':');
+          Body second = body(cont, colon + 1, k + 1);
+          k++;
+          List<LsToken> joined = new ArrayList<>(tokens.subList(0, tokens.size() - 1));
+          joined.addAll(second.tokens);
+          tokens = joined;
+          terminated = second.terminated;
+        }
+        Instruction in;
+        try {
+          in = LsStatementParser.parse(tokens);
+          if (!terminated) {
+            diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
+          }
+        } catch (LsSyntaxError e) {
+          diags.add(Diagnostic.error(file, e.line(), e.getMessage()));
+          // Keep the numbering of the following lines: the bad line stays as commented-out text.
+          in = new Instruction.CommentedOut(text.substring(p + 1).strip());
+        }
+        instructions.add(in);
+        sourceLines.add(line);
+      }
+    }
+
+    private record Body(List<LsToken> tokens, boolean terminated) {}
+
+    /** Tokens of a statement starting at {@code from}, without its final {@code ;}. */
+    private static Body body(String text, int from, int line) {
+      int endIdx = text.length();
+      while (endIdx > from && Character.isWhitespace(text.charAt(endIdx - 1))) {
+        endIdx--;
+      }
+      boolean terminated = endIdx > from && text.charAt(endIdx - 1) == ';';
+      if (terminated) {
+        endIdx--;
+      }
+      return new Body(LsLexer.tokenize(text.substring(from, endIdx), line, from + 1, true), terminated);
+    }
+
+    private static boolean isContinuation(String text) {
+      int p = skipSpaces(text, 0);
+      return p > 0 && p < text.length() && text.charAt(p) == ':';
+    }
+
+    // ---- helpers ------------------------------------------------------------------------
+
+    private static int skipSpaces(String s, int from) {
+      int p = from;
+      while (p < s.length() && (s.charAt(p) == ' ' || s.charAt(p) == '\t')) {
+        p++;
+      }
+      return p;
+    }
+
+    /** The section word if the line starts one ({@code /MN}), else null. */
+    private static String sectionHeader(String line) {
+      if (line.length() < 2 || line.charAt(0) != '/' || !Character.isLetter(line.charAt(1))) {
+        return null;
+      }
+      int e = 1;
+      while (e < line.length() && (Character.isLetterOrDigit(line.charAt(e)) || line.charAt(e) == '_')) {
+        e++;
+      }
+      return line.substring(0, e).toUpperCase(Locale.ROOT);
+    }
+
+    private static boolean looksBinary(String line) {
+      int bad = 0;
+      for (int i = 0; i < line.length(); i++) {
+        char c = line.charAt(i);
+        if ((c < 0x20 && c != '\t') || c == '\uFFFD') {
+          bad++;
+        }
+      }
+      return bad > 0;
+    }
+
+    private static String[] splitLines(String text) {
+      List<String> out = new ArrayList<>();
+      int s = 0;
+      int len = text.length();
+      for (int i = 0; i < len; i++) {
+        if (text.charAt(i) == '\n') {
+          int e = i > s && text.charAt(i - 1) == '\r' ? i - 1 : i;
+          out.add(text.substring(s, e));
+          s = i + 1;
+        }
+      }
+      if (s < len) {
+        out.add(text.substring(s).replace("\r", ""));
+      }
+      return out.toArray(String[]::new);
+    }
+
+    private static String defaultName(String file) {
+      String base = file.substring(Math.max(file.lastIndexOf('/'), file.lastIndexOf('\\')) + 1);
+      int dot = base.lastIndexOf('.');
+      String stem = (dot > 0 ? base.substring(0, dot) : base).toUpperCase(Locale.ROOT);
+      return Program.isValidName(stem) ? stem : "UNNAMED";
+    }
+
+    private static String clip(String s) {
+      String t = s.length() > 40 ? s.substring(0, 40) + "..." : s;
+      StringBuilder sb = new StringBuilder(t.length());
+      for (int i = 0; i < t.length(); i++) {
+        char c = t.charAt(i);
+        sb.append(c < 0x20 || c == 0x7f ? '?' : c);
+      }
+      return sb.toString();
+    }
+  }
+}

@@ -1,0 +1,909 @@
+package org.robotrun.io;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import org.robotrun.io.LsToken.Kind;
+import org.robotrun.program.Expr;
+import org.robotrun.program.Index;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Item;
+import org.robotrun.program.LabelRef;
+import org.robotrun.program.Motion;
+import org.robotrun.program.Program;
+
+/**
+ * Recursive-descent parser for one /MN statement (TP-LANGUAGE.md, "Statements"). It sees the
+ * tokens of a single statement (a circular motion's continuation line appended), so a bad
+ * statement is reported with {@link LsSyntaxError} and the reader continues with the next line.
+ *
+ * <p>Expressions use the precedence of {@link Expr.BinaryOp} everywhere, so FANUC's short form
+ * {@code R[1]=R[2]+1} and a parenthesised expression are parsed alike. Parentheses may nest at
+ * most {@link #MAX_NESTING} deep and a statement may hold at most {@link #MAX_OPERATORS}
+ * operators: beyond that the statement is rejected with a diagnostic instead of risking a stack
+ * overflow here or in whoever walks the tree later.
+ */
+final class LsStatementParser {
+
+  /** Deepest parenthesis nesting accepted; far beyond what anyone types on a pendant. */
+  static final int MAX_NESTING = 64;
+
+  /** Most operators in one statement; keeps trees shallow enough for recursive walkers. */
+  static final int MAX_OPERATORS = 1000;
+
+  /** FANUC statements RobotRun knows by name but does not implement: first word → name. */
+  private static final Map<String, String> UNSUPPORTED = Map.ofEntries(
+      Map.entry("SKIP", "SKIP CONDITION"),
+      Map.entry("OFFSET", "OFFSET CONDITION"),
+      Map.entry("TOOL_OFFSET", "TOOL_OFFSET CONDITION"),
+      Map.entry("RUN", "RUN (multitasking)"),
+      Map.entry("MONITOR", "MONITOR"),
+      Map.entry("COL", "COL DETECT"),
+      Map.entry("LOCK", "LOCK PREG"),
+      Map.entry("UNLOCK", "UNLOCK PREG"),
+      Map.entry("SR", "string registers SR[]"),
+      Map.entry("VR", "vision registers VR[]"),
+      Map.entry("AI", "analog input AI[]"),
+      Map.entry("AO", "analog output AO[]"),
+      Map.entry("SDI", "SDI[]"),
+      Map.entry("SDO", "SDO[]"),
+      Map.entry("UI", "UOP input UI[]"),
+      Map.entry("UO", "UOP output UO[]"),
+      Map.entry("SI", "SOP input SI[]"),
+      Map.entry("SO", "SOP output SO[]"),
+      Map.entry("WI", "weld input WI[]"),
+      Map.entry("WO", "weld output WO[]"),
+      Map.entry("JOINT_MAX_SPEED", "JOINT_MAX_SPEED"),
+      Map.entry("LINEAR_MAX_SPEED", "LINEAR_MAX_SPEED"),
+      Map.entry("TIMER_OVERFLOW", "TIMER_OVERFLOW"),
+      Map.entry("RSR", "RSR"),
+      Map.entry("DIAGNOSTIC", "DIAGNOSTIC"),
+      Map.entry("STRING", "string operations"),
+      Map.entry("POINT_LOGIC", "POINT_LOGIC"),
+      Map.entry("SPOT", "spot welding SPOT[]"),
+      Map.entry("ARC", "arc welding"),
+      Map.entry("WELD", "arc welding"),
+      Map.entry("PALLETIZING", "palletizing"),
+      Map.entry("TC_ONLINE", "TC_ONLINE"),
+      Map.entry("SKIP_CONDITION", "SKIP CONDITION"),
+      Map.entry("PTH", "PTH"),
+      Map.entry("MAX_SPEED", "max_speed"));
+
+  private final List<LsToken> tokens;
+  private int pos;
+  private int nesting;
+  private int operators;
+
+  private LsStatementParser(List<LsToken> tokens) {
+    this.tokens = tokens;
+  }
+
+  /**
+   * Parses one statement.
+   *
+   * @param tokens the statement's tokens, ending in one {@link Kind#EOL} (the terminating
+   *     {@code ;} already removed by the reader)
+   * @throws LsSyntaxError naming the line and what was expected
+   */
+  static Instruction parse(List<LsToken> tokens) {
+    LsStatementParser p = new LsStatementParser(tokens);
+    Instruction in = p.statement();
+    if (!p.peek().is(Kind.EOL)) {
+      throw p.error("expected the end of the statement, found " + p.peek().describe());
+    }
+    return in;
+  }
+
+  // ---- statements -------------------------------------------------------------------------
+
+  private Instruction statement() {
+    LsToken t = peek();
+    switch (t.kind()) {
+      case EOL -> {
+        return new Instruction.Blank();
+      }
+      case BANG -> {
+        next();
+        return new Instruction.Comment(next().text().stripTrailing());
+      }
+      case SLASH -> {
+        next();
+        return new Instruction.CommentedOut(next().text().stripTrailing());
+      }
+      case EQ -> {
+        next();
+        Expr value = expression();
+        expect(Kind.COMMA, "',' after the SELECT value");
+        return new Instruction.SelectCase(value, branch());
+      }
+      case WORD -> {
+        return wordStatement(t);
+      }
+      default -> throw error("expected a statement, found " + t.describe());
+    }
+  }
+
+  private Instruction wordStatement(LsToken t) {
+    String w = t.text().toUpperCase(Locale.ROOT);
+    if (isMotionType(w) && (peek(1).isWord("P") || peek(1).isWord("PR"))) {
+      return motion();
+    }
+    if (w.startsWith("$")) {
+      throw error("not supported: system variable assignment (" + t.text() + ")");
+    }
+    next();
+    return switch (w) {
+      case "R" -> {
+        Item reg = item("R");
+        expect(Kind.EQ, "'=' after R[...]");
+        yield new Instruction.AssignRegister(reg, expression());
+      }
+      case "PR" -> positionRegisterAssignment();
+      case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
+      case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
+      case "TIMER" -> {
+        Item timer = item("TIMER");
+        expect(Kind.EQ, "'=' after TIMER[...]");
+        LsToken a = expectWord("START, STOP or RESET");
+        yield switch (a.text().toUpperCase(Locale.ROOT)) {
+          case "START" -> new Instruction.TimerSet(timer, Instruction.TimerAction.START);
+          case "STOP" -> new Instruction.TimerSet(timer, Instruction.TimerAction.STOP);
+          case "RESET" -> new Instruction.TimerSet(timer, Instruction.TimerAction.RESET);
+          default -> throw error(a, "expected START, STOP or RESET after TIMER[...]=, found " + a.describe());
+        };
+      }
+      case "UFRAME_NUM", "UTOOL_NUM" -> {
+        expect(Kind.EQ, "'=' after " + w);
+        yield new Instruction.SelectFrame(w.equals("UFRAME_NUM") ? FrameKind.USER : FrameKind.TOOL, numberOrRegister(w));
+      }
+      case "UFRAME", "UTOOL" -> {
+        Index frame = index(w);
+        expect(Kind.EQ, "'=' after " + w + "[...]");
+        expectWordNamed("PR", "PR[i] (" + w + "[n] is set from a position register)");
+        yield new Instruction.SetFrame(w.equals("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame, item("PR"));
+      }
+      case "PAYLOAD" -> new Instruction.Payload(index("PAYLOAD"));
+      case "LBL" -> {
+        LabelRef l = labelRef();
+        if (!(l.index() instanceof Index.Direct d)) {
+          throw error("a label number must be a constant: LBL[n]");
+        }
+        if (d.value() < 1) {
+          throw error("label numbers start at 1, found LBL[" + d.value() + "]");
+        }
+        yield new Instruction.Label(d.value(), l.comment());
+      }
+      case "JMP" -> jump();
+      case "CALL" -> call();
+      case "END" -> new Instruction.End();
+      case "PAUSE" -> new Instruction.Pause();
+      case "ABORT" -> new Instruction.Abort();
+      case "IF" -> ifStatement();
+      case "ELSE" -> {
+        if (peek().is(Kind.COMMA)) {
+          next();
+          yield new Instruction.SelectElse(branch());
+        }
+        yield new Instruction.Else();
+      }
+      case "ENDIF" -> new Instruction.EndIf();
+      case "SELECT" -> {
+        expectWordNamed("R", "R[i] after SELECT (SELECT R[i]=value,JMP LBL[n])");
+        Item reg = item("R");
+        expect(Kind.EQ, "'=' after SELECT R[...]");
+        Expr value = expression();
+        expect(Kind.COMMA, "',' after the SELECT value");
+        yield new Instruction.Select(reg, value, branch());
+      }
+      case "FOR" -> forStatement();
+      case "ENDFOR" -> new Instruction.EndFor();
+      case "WAIT" -> waitStatement();
+      case "MESSAGE" -> {
+        expect(Kind.LBRACKET, "'[' after MESSAGE");
+        String text = peek().is(Kind.RAW) ? next().text() : "";
+        expect(Kind.RBRACKET, "']' closing MESSAGE[...]");
+        yield new Instruction.Message(text);
+      }
+      case "UALM" -> new Instruction.UserAlarm(index("UALM"));
+      case "OVERRIDE" -> {
+        expect(Kind.EQ, "'=' after OVERRIDE");
+        Expr pct = operand();
+        if (!(pct instanceof Expr.IntConst || pct instanceof Expr.RealConst || pct instanceof Expr.Register)) {
+          throw error("expected a percentage (n% or R[i]) after OVERRIDE=");
+        }
+        if (peek().is(Kind.PERCENT)) {
+          next();
+        }
+        yield new Instruction.SetOverride(pct);
+      }
+      default -> throw unknownStatement(t);
+    };
+  }
+
+  private LsSyntaxError unknownStatement(LsToken t) {
+    String w = t.text().toUpperCase(Locale.ROOT);
+    String name = UNSUPPORTED.get(w);
+    if (name != null) {
+      return error(t, "not supported: " + name);
+    }
+    return error(t, "unknown statement '" + t.text()
+        + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
+  }
+
+  private Instruction positionRegisterAssignment() {
+    expect(Kind.LBRACKET, "'[' after PR");
+    Index idx = indexValue("PR");
+    if (peek().is(Kind.COMMA)) {
+      next();
+      int element = intConst("element number 1..6 in PR[i,j]");
+      if (element < 1 || element > 6) {
+        throw error("PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), found " + element);
+      }
+      String comment = itemCommentAndClose("PR[i,j]");
+      expect(Kind.EQ, "'=' after PR[i,j]");
+      return new Instruction.AssignPosElement(new Item(idx, comment), element, expression());
+    }
+    Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
+    expect(Kind.EQ, "'=' after PR[...]");
+    LsToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
+    Instruction.PosSource src = switch (s.text().toUpperCase(Locale.ROOT)) {
+      case "PR" -> {
+        Item from = item("PR");
+        if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+          boolean add = next().is(Kind.PLUS);
+          expectWordNamed("PR", "PR[k] (positions add and subtract only with position registers)");
+          yield new Instruction.PosArithmetic(from, add, item("PR"));
+        }
+        yield new Instruction.FromPosReg(from);
+      }
+      case "P" -> {
+        Item p = item("P");
+        yield new Instruction.FromLocal(directNumber(p, "P"), p.comment());
+      }
+      case "LPOS" -> new Instruction.CurrentLpos();
+      case "JPOS" -> new Instruction.CurrentJpos();
+      case "UFRAME" -> new Instruction.FromFrame(FrameKind.USER, index("UFRAME"));
+      case "UTOOL" -> new Instruction.FromFrame(FrameKind.TOOL, index("UTOOL"));
+      default -> throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
+    };
+    return new Instruction.AssignPosReg(reg, src);
+  }
+
+  private Instruction ioAssignment(IoKind kind) {
+    Item port = item(kind.name());
+    expect(Kind.EQ, "'=' after " + kind + "[...]");
+    if (peek().isWord("PULSE")) {
+      if (kind != IoKind.DO && kind != IoKind.RO) {
+        throw error("PULSE works on DO[] and RO[] only, not " + kind + "[]");
+      }
+      next();
+      OptionalDouble width = OptionalDouble.empty();
+      if (peek().is(Kind.COMMA)) {
+        next();
+        width = OptionalDouble.of(number("pulse width in seconds"));
+        expectWordNamed("sec", "'sec' after the pulse width");
+      }
+      return new Instruction.Pulse(kind, port, width);
+    }
+    return new Instruction.SetIo(kind, port, expression());
+  }
+
+  private Instruction jump() {
+    expectWordNamed("LBL", "LBL[n] after JMP");
+    return new Instruction.Jump(labelRef());
+  }
+
+  private Instruction call() {
+    LsToken name = expectWord("a program name after CALL");
+    if (!Program.isValidName(name.text())) {
+      throw error(name, "'" + name.text() + "' is not a program name: expected letters, digits and '_', starting with a letter");
+    }
+    List<Expr> args = new ArrayList<>();
+    if (peek().is(Kind.LPAREN)) {
+      next();
+      if (!peek().is(Kind.RPAREN)) {
+        do {
+          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+        } while (accept(Kind.COMMA));
+      }
+      expect(Kind.RPAREN, "')' closing the CALL arguments");
+    }
+    return new Instruction.Call(name.text().toUpperCase(Locale.ROOT), args);
+  }
+
+  private Instruction.Branch branch() {
+    LsToken w = expectWord("JMP LBL[n] or CALL NAME");
+    if (w.isWord("JMP")) {
+      return (Instruction.Jump) jump();
+    }
+    if (w.isWord("CALL")) {
+      return (Instruction.Call) call();
+    }
+    throw error(w, "expected JMP LBL[n] or CALL NAME, found " + w.describe());
+  }
+
+  private Instruction ifStatement() {
+    Expr cond = expression();
+    if (peek().isWord("THEN")) {
+      next();
+      return new Instruction.IfThen(cond);
+    }
+    expect(Kind.COMMA, "',' then JMP or CALL (or THEN) after the IF condition");
+    return new Instruction.If(cond, branch());
+  }
+
+  private Instruction forStatement() {
+    expectWordNamed("R", "R[i] after FOR (FOR R[i]=start TO end)");
+    Item counter = item("R");
+    expect(Kind.EQ, "'=' after FOR R[...]");
+    Expr start = forBound();
+    LsToken dir = expectWord("TO or DOWNTO");
+    boolean down;
+    if (dir.isWord("TO")) {
+      down = false;
+    } else if (dir.isWord("DOWNTO")) {
+      down = true;
+    } else {
+      throw error(dir, "expected TO or DOWNTO in FOR, found " + dir.describe());
+    }
+    return new Instruction.For(counter, start, down, forBound());
+  }
+
+  /** FOR bounds are a constant, R[i] or AR[i] (FANUC allows nothing else). */
+  private Expr forBound() {
+    Expr e = unary();
+    return switch (e) {
+      case Expr.IntConst c -> c;
+      case Expr.Register r -> r;
+      case Expr.Arg a -> a;
+      default -> throw error("a FOR bound must be an integer constant, R[i] or AR[i]");
+    };
+  }
+
+  private Instruction waitStatement() {
+    if (peek().is(Kind.NUMBER)) {
+      double sec = number("wait time");
+      expectSecUnit();
+      return new Instruction.WaitTime(new Expr.RealConst(sec));
+    }
+    Expr cond = expression();
+    if (peek().is(Kind.LPAREN) && cond instanceof Expr.Register) {
+      expectSecUnit();
+      return new Instruction.WaitTime(cond);
+    }
+    if (cond instanceof Expr.Register && peek().is(Kind.EOL)) {
+      return new Instruction.WaitTime(cond);
+    }
+    Optional<LabelRef> timeout = Optional.empty();
+    if (peek().isWord("TIMEOUT")) {
+      next();
+      expect(Kind.COMMA, "',' after TIMEOUT");
+      expectWordNamed("LBL", "LBL[n] after TIMEOUT,");
+      timeout = Optional.of(labelRef());
+    }
+    return new Instruction.WaitCondition(cond, timeout);
+  }
+
+  private void expectSecUnit() {
+    expect(Kind.LPAREN, "'(sec)' after the wait time");
+    expectWordNamed("sec", "'(sec)' after the wait time");
+    expect(Kind.RPAREN, "')' closing '(sec)'");
+  }
+
+  // ---- motion -----------------------------------------------------------------------------
+
+  private static boolean isMotionType(String w) {
+    return w.equals("J") || w.equals("L") || w.equals("C") || w.equals("A");
+  }
+
+  private Instruction motion() {
+    Motion.Type type = Motion.Type.valueOf(next().text().toUpperCase(Locale.ROOT));
+    Motion.Target target = motionTarget();
+    Optional<Motion.Target> end = Optional.empty();
+    if (type == Motion.Type.C) {
+      if (!(peek().isWord("P") || peek().isWord("PR"))) {
+        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found " + peek().describe());
+      }
+      end = Optional.of(motionTarget());
+    }
+    Motion.Speed speed = speed(type);
+    Motion.Termination term = termination();
+    List<Motion.Option> options = new ArrayList<>();
+    while (!peek().is(Kind.EOL)) {
+      options.add(motionOption());
+    }
+    return new Instruction.Move(type, target, end, speed, term, options);
+  }
+
+  private Motion.Target motionTarget() {
+    LsToken w = next();
+    if (w.isWord("P")) {
+      Item p = item("P");
+      return new Motion.Local(directNumber(p, "P"), p.comment());
+    }
+    return new Motion.Register(item("PR"));
+  }
+
+  private Motion.Speed speed(Motion.Type type) {
+    Motion.SpeedValue value;
+    LsToken t = peek();
+    if (t.is(Kind.NUMBER)) {
+      value = new Motion.SpeedConst(number("speed"));
+    } else if (t.isWord("R")) {
+      next();
+      value = new Motion.SpeedRegister(item("R"));
+    } else if (t.is(Kind.WORD) && UNSUPPORTED.containsKey(t.text().toUpperCase(Locale.ROOT))) {
+      throw error(t, "not supported: " + UNSUPPORTED.get(t.text().toUpperCase(Locale.ROOT)));
+    } else {
+      throw error("expected a speed (30%, 400mm/sec, 2sec, R[i]%...), found " + t.describe());
+    }
+    Motion.SpeedUnit unit = speedUnit();
+    if (!unit.fits(type)) {
+      String allowed = type == Motion.Type.J ? "%, sec or msec" : "mm/sec, cm/min, inch/min, deg/sec, sec or msec";
+      throw error("speed unit " + unitText(unit) + " does not fit a " + type + " motion: expected " + allowed);
+    }
+    return new Motion.Speed(value, unit);
+  }
+
+  private Motion.SpeedUnit speedUnit() {
+    LsToken t = peek();
+    if (t.is(Kind.PERCENT)) {
+      next();
+      return Motion.SpeedUnit.PERCENT;
+    }
+    if (!t.is(Kind.WORD)) {
+      throw error("expected a speed unit (%, mm/sec, cm/min, inch/min, deg/sec, sec, msec), found " + t.describe());
+    }
+    next();
+    String u = t.text().toLowerCase(Locale.ROOT);
+    switch (u) {
+      case "sec" -> {
+        return Motion.SpeedUnit.SEC;
+      }
+      case "msec" -> {
+        return Motion.SpeedUnit.MSEC;
+      }
+      default -> {
+        // mm/sec, cm/min, inch/min, deg/sec
+      }
+    }
+    if (!peek().is(Kind.SLASH)) {
+      throw error(t, "expected a speed unit (%, mm/sec, cm/min, inch/min, deg/sec, sec, msec), found " + t.describe());
+    }
+    next();
+    LsToken per = expectWord("sec or min after '/'");
+    String full = u + "/" + per.text().toLowerCase(Locale.ROOT);
+    return switch (full) {
+      case "mm/sec" -> Motion.SpeedUnit.MM_PER_SEC;
+      case "cm/min" -> Motion.SpeedUnit.CM_PER_MIN;
+      case "inch/min" -> Motion.SpeedUnit.INCH_PER_MIN;
+      case "deg/sec" -> Motion.SpeedUnit.DEG_PER_SEC;
+      default -> throw error(t, "unknown speed unit '" + full + "': expected mm/sec, cm/min, inch/min or deg/sec");
+    };
+  }
+
+  /** How a unit is written in TP; the writer uses the same table. */
+  static String unitText(Motion.SpeedUnit unit) {
+    return switch (unit) {
+      case PERCENT -> "%";
+      case SEC -> "sec";
+      case MSEC -> "msec";
+      case MM_PER_SEC -> "mm/sec";
+      case CM_PER_MIN -> "cm/min";
+      case INCH_PER_MIN -> "inch/min";
+      case DEG_PER_SEC -> "deg/sec";
+    };
+  }
+
+  private Motion.Termination termination() {
+    LsToken t = peek();
+    if (t.isWord("FINE")) {
+      next();
+      return new Motion.Fine();
+    }
+    if (t.isWord("CNT")) {
+      next();
+      if (peek().is(Kind.NUMBER)) {
+        return new Motion.Cnt(cntValue(intConst("CNT value")));
+      }
+      expectWordNamed("R", "a number or R[i] after CNT");
+      return new Motion.CntRegister(item("R"));
+    }
+    if (t.is(Kind.WORD) && t.text().regionMatches(true, 0, "CNT", 0, 3) && allDigits(t.text(), 3)) {
+      next();
+      return new Motion.Cnt(cntValue(parseIntOrFail(t, t.text().substring(3))));
+    }
+    throw error("expected a termination (FINE, CNTn or CNT R[i]), found " + t.describe());
+  }
+
+  private int cntValue(int v) {
+    if (v > 100) {
+      throw error("CNT" + v + ": expected 0..100");
+    }
+    return v;
+  }
+
+  private Motion.Option motionOption() {
+    LsToken t = next();
+    if (t.is(Kind.WORD)) {
+      String w = t.text().toUpperCase(Locale.ROOT);
+      switch (w) {
+        case "OFFSET" -> {
+          if (peek().is(Kind.COMMA)) {
+            next();
+            expectWordNamed("PR", "PR[i] after Offset,");
+            return new Motion.OffsetPr(item("PR"));
+          }
+          return new Motion.Offset();
+        }
+        case "TOOL_OFFSET" -> {
+          expect(Kind.COMMA, "',PR[i]' after Tool_Offset");
+          expectWordNamed("PR", "PR[i] after Tool_Offset,");
+          return new Motion.ToolOffsetPr(item("PR"));
+        }
+        case "SKIP" -> {
+          expect(Kind.COMMA, "',LBL[n]' after Skip");
+          expectWordNamed("LBL", "LBL[n] after Skip,");
+          return new Motion.Skip(labelRef());
+        }
+        case "WJNT" -> {
+          return new Motion.Wjnt();
+        }
+        case "INC" -> {
+          return new Motion.Inc();
+        }
+        default -> {
+          if (w.startsWith("ACC") && allDigits(w, 3)) {
+            int acc = parseIntOrFail(t, w.substring(3));
+            if (acc > 150) {
+              throw error(t, "ACC" + acc + ": expected 0..150");
+            }
+            return new Motion.Acc(acc);
+          }
+          if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
+            throw error(t, "not supported: motion option " + t.text() + " (TIME BEFORE/AFTER, distance before)");
+          }
+          throw error(t, "not supported: motion option '" + t.text()
+              + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
+        }
+      }
+    }
+    throw error(t, "expected a motion option or the end of the statement, found " + t.describe());
+  }
+
+  // ---- expressions ------------------------------------------------------------------------
+
+  private Expr expression() {
+    return binary(1);
+  }
+
+  /** Precedence climbing: all binary operators are left-associative. */
+  private Expr binary(int minPrecedence) {
+    Expr left = unary();
+    while (true) {
+      Expr.BinaryOp op = binaryOp(peek());
+      if (op == null || op.precedence() < minPrecedence) {
+        return left;
+      }
+      next();
+      countOperator();
+      Expr right = binary(op.precedence() + 1);
+      left = new Expr.Binary(op, left, right);
+    }
+  }
+
+  private static Expr.BinaryOp binaryOp(LsToken t) {
+    return switch (t.kind()) {
+      case STAR -> Expr.BinaryOp.MUL;
+      case SLASH -> Expr.BinaryOp.DIVIDE;
+      case PLUS -> Expr.BinaryOp.ADD;
+      case MINUS -> Expr.BinaryOp.SUB;
+      case EQ -> Expr.BinaryOp.EQ;
+      case NE -> Expr.BinaryOp.NE;
+      case LT -> Expr.BinaryOp.LT;
+      case LE -> Expr.BinaryOp.LE;
+      case GT -> Expr.BinaryOp.GT;
+      case GE -> Expr.BinaryOp.GE;
+      case WORD -> switch (t.text().toUpperCase(Locale.ROOT)) {
+        case "DIV" -> Expr.BinaryOp.DIV;
+        case "MOD" -> Expr.BinaryOp.MOD;
+        case "AND" -> Expr.BinaryOp.AND;
+        case "OR" -> Expr.BinaryOp.OR;
+        default -> null;
+      };
+      default -> null;
+    };
+  }
+
+  private Expr unary() {
+    LsToken t = peek();
+    if (t.is(Kind.MINUS)) {
+      next();
+      if (peek().is(Kind.NUMBER)) {
+        return negate(constant(next()));
+      }
+      countOperator();
+      return new Expr.Unary(Expr.UnaryOp.MINUS, unary());
+    }
+    if (t.is(Kind.BANG)) {
+      next();
+      countOperator();
+      return new Expr.Unary(Expr.UnaryOp.NOT, unary());
+    }
+    return operand();
+  }
+
+  private Expr negate(Expr c) {
+    return switch (c) {
+      case Expr.IntConst i -> new Expr.IntConst(-i.value());
+      case Expr.RealConst r -> new Expr.RealConst(-r.value());
+      default -> throw new IllegalStateException("constant expected");
+    };
+  }
+
+  private void countOperator() {
+    if (++operators > MAX_OPERATORS) {
+      throw error("expression too long: more than " + MAX_OPERATORS + " operators in one statement");
+    }
+  }
+
+  /** A single value: constant, register, I/O, parenthesised expression. */
+  private Expr operand() {
+    LsToken t = next();
+    switch (t.kind()) {
+      case NUMBER -> {
+        return constant(t);
+      }
+      case LPAREN -> {
+        if (++nesting > MAX_NESTING) {
+          throw error(t, "parentheses nested too deeply: at most " + MAX_NESTING + " levels");
+        }
+        Expr inner = expression();
+        expect(Kind.RPAREN, "')' closing the '(' of column " + t.column());
+        nesting--;
+        return new Expr.Group(inner);
+      }
+      case STRING -> throw error(t, "a string is allowed only as a CALL argument");
+      case WORD -> {
+        String w = t.text().toUpperCase(Locale.ROOT);
+        return switch (w) {
+          case "ON" -> new Expr.OnOff(true);
+          case "OFF" -> new Expr.OnOff(false);
+          case "R" -> new Expr.Register(item("R"));
+          case "PR" -> positionElement();
+          case "DI", "DO", "RI", "RO", "GI", "GO", "F" -> new Expr.Io(IoKind.valueOf(w), item(w));
+          case "TIMER" -> new Expr.Timer(item("TIMER"));
+          case "AR" -> {
+            Item a = item("AR");
+            if (!a.comment().isEmpty()) {
+              throw error(t, "AR[i] takes no comment");
+            }
+            yield new Expr.Arg(a.index());
+          }
+          default -> {
+            String name = UNSUPPORTED.get(w);
+            if (name != null) {
+              throw error(t, "not supported: " + name);
+            }
+            throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+          }
+        };
+      }
+      default -> throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+    }
+  }
+
+  private Expr positionElement() {
+    expect(Kind.LBRACKET, "'[' after PR");
+    Index idx = indexValue("PR");
+    if (!peek().is(Kind.COMMA)) {
+      throw error("PR[i] is a whole position: in an expression use one element, PR[i,j]");
+    }
+    next();
+    int element = intConst("element number 1..6 in PR[i,j]");
+    if (element < 1 || element > 6) {
+      throw error("PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), found " + element);
+    }
+    return new Expr.PosElement(new Item(idx, itemCommentAndClose("PR[i,j]")), element);
+  }
+
+  private Expr constant(LsToken t) {
+    String s = t.text();
+    if (s.indexOf('.') >= 0) {
+      return new Expr.RealConst(Double.parseDouble(s));
+    }
+    try {
+      return new Expr.IntConst(Integer.parseInt(s));
+    } catch (NumberFormatException e) {
+      throw error(t, "integer " + s + " is too large: expected at most " + Integer.MAX_VALUE);
+    }
+  }
+
+  // ---- items and indexes ------------------------------------------------------------------
+
+  /** {@code [index(:comment)]} after the word {@code what} (already consumed). */
+  private Item item(String what) {
+    return item(what, what + "[i]");
+  }
+
+  private Item item(String what, String form) {
+    if (!peek().is(Kind.LBRACKET)) {
+      throw error("expected '[' after " + what + " (" + form + "), found " + peek().describe());
+    }
+    next();
+    Index idx = indexValue(what);
+    return new Item(idx, itemCommentAndClose(what + "[...]"));
+  }
+
+  /** An index without a comment: {@code PAYLOAD[1]}, {@code UALM[2]}, {@code UFRAME[R[1]]}. */
+  private Index index(String what) {
+    Item i = item(what);
+    if (!i.comment().isEmpty()) {
+      throw error(what + "[...] takes no comment");
+    }
+    return i.index();
+  }
+
+  private LabelRef labelRef() {
+    expect(Kind.LBRACKET, "'[' after LBL");
+    Index idx = indexValue("LBL");
+    return new LabelRef(idx, itemCommentAndClose("LBL[...]"));
+  }
+
+  /** The number inside brackets: a non-negative integer or {@code R[i]} (indirect). */
+  private Index indexValue(String what) {
+    LsToken t = peek();
+    if (t.is(Kind.NUMBER)) {
+      return new Index.Direct(intConst("index of " + what + "[...]"));
+    }
+    if (t.isWord("R")) {
+      next();
+      expect(Kind.LBRACKET, "'[' after R");
+      int reg = intConst("register number in R[...]");
+      String comment = itemCommentAndClose("R[...]");
+      return new Index.Indirect(reg, comment);
+    }
+    if (t.isWord("AR")) {
+      throw error(t, "not supported: an index through AR[] (use R[i])");
+    }
+    throw error("expected an index (a number or R[i]) inside " + what + "[...], found " + t.describe());
+  }
+
+  /** Optional {@code :comment} then the closing bracket. */
+  private String itemCommentAndClose(String what) {
+    String comment = "";
+    if (peek().is(Kind.COLON)) {
+      next();
+      if (peek().is(Kind.ITEM_COMMENT)) {
+        comment = next().text();
+      }
+    }
+    expect(Kind.RBRACKET, "']' closing " + what);
+    return comment;
+  }
+
+  /** {@code n} or {@code R[i]} as in {@code UFRAME_NUM=n|R[i]}. */
+  private Index numberOrRegister(String what) {
+    LsToken t = peek();
+    if (t.is(Kind.NUMBER)) {
+      return new Index.Direct(intConst(what + " value"));
+    }
+    if (t.isWord("R")) {
+      next();
+      Item r = item("R");
+      if (!(r.index() instanceof Index.Direct d)) {
+        throw error(what + "=R[R[i]] is not allowed: expected a number or R[i]");
+      }
+      return new Index.Indirect(d.value(), r.comment());
+    }
+    throw error("expected a number or R[i] after " + what + "=, found " + t.describe());
+  }
+
+  private int directNumber(Item item, String what) {
+    if (!(item.index() instanceof Index.Direct d)) {
+      throw error(what + "[...] needs a constant number (P[R[i]] does not exist; use PR[R[i]])");
+    }
+    if (d.value() < 1) {
+      throw error(what + "[" + d.value() + "]: numbers start at 1");
+    }
+    return d.value();
+  }
+
+  // ---- tokens -----------------------------------------------------------------------------
+
+  private LsToken peek() {
+    return tokens.get(pos);
+  }
+
+  private LsToken peek(int ahead) {
+    return tokens.get(Math.min(pos + ahead, tokens.size() - 1));
+  }
+
+  private LsToken next() {
+    LsToken t = tokens.get(pos);
+    if (pos < tokens.size() - 1) {
+      pos++;
+    }
+    return t;
+  }
+
+  private boolean accept(Kind k) {
+    if (peek().is(k)) {
+      next();
+      return true;
+    }
+    return false;
+  }
+
+  private LsToken expect(Kind k, String what) {
+    if (!peek().is(k)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
+    return next();
+  }
+
+  private LsToken expectWord(String what) {
+    if (!peek().is(Kind.WORD)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
+    return next();
+  }
+
+  private void expectWordNamed(String word, String what) {
+    if (!peek().isWord(word)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
+    next();
+  }
+
+  private int intConst(String what) {
+    LsToken t = peek();
+    if (!t.is(Kind.NUMBER) || t.text().indexOf('.') >= 0) {
+      throw error("expected an integer (" + what + "), found " + t.describe());
+    }
+    next();
+    return parseIntOrFail(t, t.text());
+  }
+
+  private double number(String what) {
+    LsToken t = peek();
+    if (!t.is(Kind.NUMBER)) {
+      throw error("expected a number (" + what + "), found " + t.describe());
+    }
+    next();
+    return Double.parseDouble(t.text());
+  }
+
+  private int parseIntOrFail(LsToken t, String digits) {
+    try {
+      return Integer.parseInt(digits);
+    } catch (NumberFormatException e) {
+      throw error(t, "number " + digits + " is too large");
+    }
+  }
+
+  private static boolean allDigits(String s, int from) {
+    if (s.length() <= from) {
+      return false;
+    }
+    for (int i = from; i < s.length(); i++) {
+      if (s.charAt(i) < '0' || s.charAt(i) > '9') {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  private LsSyntaxError error(String message) {
+    return new LsSyntaxError(peek().line(), message);
+  }
+
+  private LsSyntaxError error(LsToken at, String message) {
+    return new LsSyntaxError(at.line(), message);
+  }
+}

@@ -1,0 +1,483 @@
+package org.robotrun.io;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.List;
+import java.util.Map;
+import org.robotrun.program.Config;
+import org.robotrun.program.Expr;
+import org.robotrun.program.Index;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.Item;
+import org.robotrun.program.LabelRef;
+import org.robotrun.program.LocalPosition;
+import org.robotrun.program.Motion;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+
+/**
+ * Writes a program as a FANUC ASCII {@code .LS} file a controller accepts: the five sections,
+ * /ATTR with the controller's defaults for missing entries and the real LINE_COUNT, lines
+ * numbered {@code "   7:"} with the motion type right after the colon ({@code "   7:J P[1] 30%
+ * FINE    ;"}) and two spaces otherwise, register assignments and motions closed by four
+ * spaces and {@code ;}, other statements by one, and position blocks in FANUC's number format.
+ *
+ * <p>The output is a function of the model only, so write → read → write gives the same bytes;
+ * parentheses the model does not hold are added only where precedence needs them.
+ */
+public final class LsWriter {
+  private LsWriter() {}
+
+  /** The file text (LF line ends). */
+  public static String write(Program program) {
+    StringBuilder sb = new StringBuilder(64 + program.lineCount() * 40);
+    sb.append("/PROG  ").append(program.name()).append('\n');
+    attributes(program, sb);
+    sb.append("/MN\n");
+    List<Instruction> lines = program.lines();
+    for (int i = 0; i < lines.size(); i++) {
+      line(i + 1, lines.get(i), sb);
+    }
+    sb.append("/POS\n");
+    for (LocalPosition p : program.positions().values()) {
+      position(p, sb);
+    }
+    sb.append("/END\n");
+    return sb.toString();
+  }
+
+  /** Writes the file atomically (temporary file, then rename), so a crash never leaves half a program. */
+  public static void write(Program program, Path file) throws IOException {
+    Path dir = file.toAbsolutePath().getParent();
+    Path tmp = Files.createTempFile(dir, ".robotrun-", ".tmp");
+    try {
+      Files.writeString(tmp, write(program), StandardCharsets.UTF_8);
+      try {
+        Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+      } catch (AtomicMoveNotSupportedException e) {
+        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING);
+      }
+    } finally {
+      Files.deleteIfExists(tmp);
+    }
+  }
+
+  // ---- /ATTR --------------------------------------------------------------------------------
+
+  private static void attributes(Program program, StringBuilder sb) {
+    sb.append("/ATTR\n");
+    Map<String, String> attrs = program.attributes();
+    for (Map.Entry<String, String> d : LsAttributes.DEFAULTS.entrySet()) {
+      String key = d.getKey();
+      String value = key.equals(LsAttributes.LINE_COUNT)
+          ? Integer.toString(program.lineCount())
+          : attrs.getOrDefault(key, d.getValue());
+      attribute(key, value, sb);
+      if (key.equals("OWNER")) {
+        attribute(LsAttributes.COMMENT, "\"" + program.comment() + "\"", sb);
+      }
+    }
+    for (Map.Entry<String, String> e : attrs.entrySet()) {
+      if (!LsAttributes.DEFAULTS.containsKey(e.getKey()) && !e.getKey().equals(LsAttributes.COMMENT)) {
+        attribute(e.getKey(), e.getValue(), sb);
+      }
+    }
+  }
+
+  private static void attribute(String key, String value, StringBuilder sb) {
+    if (key.equals(LsAttributes.TCD)) {
+      // "TCD:  STACK_SIZE\t= 0," then one indented sub-entry per line, the last closed by ';'.
+      String[] parts = value.split(",");
+      for (int i = 0; i < parts.length; i++) {
+        String part = parts[i].strip();
+        int eq = part.indexOf('=');
+        String sub = eq < 0 ? part : part.substring(0, eq).strip();
+        String v = eq < 0 ? "" : part.substring(eq + 1).strip();
+        String lead = (i == 0 ? "TCD:  " : "      ") + sub;
+        sb.append(FanucFormat.padWithTabs(lead, 0)).append("= ").append(v).append(i == parts.length - 1 ? ";" : ",").append('\n');
+      }
+      return;
+    }
+    sb.append(FanucFormat.attrKey(key)).append("= ").append(value).append(";\n");
+  }
+
+  // ---- /MN ----------------------------------------------------------------------------------
+
+  private static void line(int n, Instruction in, StringBuilder sb) {
+    String num = Integer.toString(n);
+    for (int i = num.length(); i < 4; i++) {
+      sb.append(' ');
+    }
+    sb.append(num).append(':');
+    if (in instanceof Instruction.Move m) {
+      move(m, sb);
+      return;
+    }
+    sb.append("  ");
+    statement(in, sb);
+    sb.append(closesWithWideGap(in) ? "    ;\n" : " ;\n");
+  }
+
+  /** Controllers end motion and register-assignment lines with four spaces before the ';'. */
+  private static boolean closesWithWideGap(Instruction in) {
+    return in instanceof Instruction.AssignRegister
+        || in instanceof Instruction.AssignPosReg
+        || in instanceof Instruction.AssignPosElement;
+  }
+
+  private static void move(Instruction.Move m, StringBuilder sb) {
+    sb.append(m.type().name()).append(' ');
+    target(m.target(), sb);
+    if (m.circularEnd().isPresent()) {
+      sb.append("\n    :  ");
+      target(m.circularEnd().get(), sb);
+    }
+    sb.append(' ');
+    switch (m.speed().value()) {
+      case Motion.SpeedConst c -> sb.append(FanucFormat.plain(c.value()));
+      case Motion.SpeedRegister r -> item("R", r.register(), sb);
+    }
+    sb.append(LsStatementParser.unitText(m.speed().unit())).append(' ');
+    switch (m.termination()) {
+      case Motion.Fine f -> sb.append("FINE");
+      case Motion.Cnt c -> sb.append("CNT").append(c.value());
+      case Motion.CntRegister c -> {
+        sb.append("CNT ");
+        item("R", c.register(), sb);
+      }
+    }
+    for (Motion.Option o : m.options()) {
+      sb.append(' ');
+      switch (o) {
+        case Motion.Offset x -> sb.append("Offset");
+        case Motion.OffsetPr x -> {
+          sb.append("Offset,");
+          item("PR", x.register(), sb);
+        }
+        case Motion.ToolOffsetPr x -> {
+          sb.append("Tool_Offset,");
+          item("PR", x.register(), sb);
+        }
+        case Motion.Acc x -> sb.append("ACC").append(x.percent());
+        case Motion.Skip x -> {
+          sb.append("Skip,");
+          label(x.label(), sb);
+        }
+        case Motion.Wjnt x -> sb.append("Wjnt");
+        case Motion.Inc x -> sb.append("INC");
+      }
+    }
+    sb.append("    ;\n");
+  }
+
+  private static void target(Motion.Target t, StringBuilder sb) {
+    switch (t) {
+      case Motion.Local l -> sb.append("P[").append(l.number()).append(comment(l.comment())).append(']');
+      case Motion.Register r -> item("PR", r.register(), sb);
+    }
+  }
+
+  /** The statement text between the line prefix and the closing ';'. */
+  static void statement(Instruction in, StringBuilder sb) {
+    switch (in) {
+      case Instruction.Move m -> throw new IllegalArgumentException("motion lines are written by move()");
+      case Instruction.AssignRegister a -> {
+        item("R", a.register(), sb);
+        sb.append('=');
+        expr(a.value(), sb);
+      }
+      case Instruction.AssignPosReg a -> {
+        item("PR", a.register(), sb);
+        sb.append('=');
+        switch (a.source()) {
+          case Instruction.FromPosReg f -> item("PR", f.register(), sb);
+          case Instruction.FromLocal f -> sb.append("P[").append(f.number()).append(comment(f.comment())).append(']');
+          case Instruction.CurrentLpos c -> sb.append("LPOS");
+          case Instruction.CurrentJpos c -> sb.append("JPOS");
+          case Instruction.FromFrame f -> {
+            sb.append(f.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
+            index(f.frame(), sb);
+            sb.append(']');
+          }
+          case Instruction.PosArithmetic p -> {
+            item("PR", p.left(), sb);
+            sb.append(p.add() ? '+' : '-');
+            item("PR", p.right(), sb);
+          }
+        }
+      }
+      case Instruction.AssignPosElement a -> {
+        sb.append("PR[");
+        index(a.register().index(), sb);
+        sb.append(',').append(a.element()).append(comment(a.register().comment())).append("]=");
+        expr(a.value(), sb);
+      }
+      case Instruction.SelectFrame s -> {
+        sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME_NUM=" : "UTOOL_NUM=");
+        numberOrRegister(s.number(), sb);
+      }
+      case Instruction.SetFrame s -> {
+        sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
+        index(s.frame(), sb);
+        sb.append("]=");
+        item("PR", s.register(), sb);
+      }
+      case Instruction.Payload p -> {
+        sb.append("PAYLOAD[");
+        index(p.schedule(), sb);
+        sb.append(']');
+      }
+      case Instruction.Label l -> sb.append("LBL[").append(l.number()).append(comment(l.comment())).append(']');
+      case Instruction.Jump j -> branch(j, sb);
+      case Instruction.Call c -> branch(c, sb);
+      case Instruction.End e -> sb.append("END");
+      case Instruction.Pause p -> sb.append("PAUSE");
+      case Instruction.Abort a -> sb.append("ABORT");
+      case Instruction.If f -> {
+        sb.append("IF ");
+        expr(f.condition(), sb);
+        sb.append(',');
+        branch(f.branch(), sb);
+      }
+      case Instruction.IfThen f -> {
+        sb.append("IF ");
+        expr(f.condition(), sb);
+        sb.append(" THEN");
+      }
+      case Instruction.Else e -> sb.append("ELSE");
+      case Instruction.EndIf e -> sb.append("ENDIF");
+      case Instruction.Select s -> {
+        sb.append("SELECT ");
+        item("R", s.register(), sb);
+        sb.append('=');
+        expr(s.value(), sb);
+        sb.append(',');
+        branch(s.branch(), sb);
+      }
+      case Instruction.SelectCase s -> {
+        // Aligned under the register of the SELECT line, as the pendant shows it.
+        sb.append("       =");
+        expr(s.value(), sb);
+        sb.append(',');
+        branch(s.branch(), sb);
+      }
+      case Instruction.SelectElse s -> {
+        sb.append("       ELSE,");
+        branch(s.branch(), sb);
+      }
+      case Instruction.For f -> {
+        sb.append("FOR ");
+        item("R", f.counter(), sb);
+        sb.append('=');
+        expr(f.start(), sb);
+        sb.append(f.down() ? " DOWNTO " : " TO ");
+        expr(f.end(), sb);
+      }
+      case Instruction.EndFor e -> sb.append("ENDFOR");
+      case Instruction.WaitTime w -> {
+        sb.append("WAIT ");
+        switch (w.seconds()) {
+          case Expr.RealConst c -> sb.append(FanucFormat.waitSeconds(c.value())).append("(sec)");
+          case Expr.IntConst c -> sb.append(FanucFormat.waitSeconds(c.value())).append("(sec)");
+          default -> expr(w.seconds(), sb);
+        }
+      }
+      case Instruction.WaitCondition w -> {
+        sb.append("WAIT ");
+        expr(w.condition(), sb);
+        w.timeoutLabel().ifPresent(l -> {
+          sb.append(" TIMEOUT,");
+          label(l, sb);
+        });
+      }
+      case Instruction.TimerSet t -> {
+        item("TIMER", t.timer(), sb);
+        sb.append('=').append(t.action().name());
+      }
+      case Instruction.SetIo s -> {
+        item(s.kind().name(), s.port(), sb);
+        sb.append('=');
+        expr(s.value(), sb);
+      }
+      case Instruction.Pulse p -> {
+        item(p.kind().name(), p.port(), sb);
+        sb.append("=PULSE");
+        if (p.widthSec().isPresent()) {
+          sb.append(',').append(FanucFormat.plain(p.widthSec().getAsDouble())).append("sec");
+        }
+      }
+      case Instruction.Comment c -> sb.append('!').append(c.text());
+      case Instruction.CommentedOut c -> sb.append("//").append(c.text());
+      case Instruction.Message m -> sb.append("MESSAGE[").append(m.text()).append(']');
+      case Instruction.UserAlarm u -> {
+        sb.append("UALM[");
+        index(u.number(), sb);
+        sb.append(']');
+      }
+      case Instruction.SetOverride o -> {
+        sb.append("OVERRIDE=");
+        expr(o.percent(), sb);
+        if (!(o.percent() instanceof Expr.Register)) {
+          sb.append('%');
+        }
+      }
+      case Instruction.Blank b -> {
+        // nothing: "   5:   ;"
+      }
+    }
+  }
+
+  private static void branch(Instruction.Branch b, StringBuilder sb) {
+    switch (b) {
+      case Instruction.Jump j -> {
+        sb.append("JMP ");
+        label(j.label(), sb);
+      }
+      case Instruction.Call c -> {
+        sb.append("CALL ").append(c.program());
+        if (!c.args().isEmpty()) {
+          sb.append('(');
+          for (int i = 0; i < c.args().size(); i++) {
+            if (i > 0) {
+              sb.append(',');
+            }
+            expr(c.args().get(i), sb);
+          }
+          sb.append(')');
+        }
+      }
+    }
+  }
+
+  // ---- expressions --------------------------------------------------------------------------
+
+  /** Binding strength of an expression as written: atoms bind tightest, then unary operators. */
+  private static int strength(Expr e) {
+    return switch (e) {
+      case Expr.Binary b -> b.op().precedence();
+      case Expr.Unary u -> 6;
+      default -> 7;
+    };
+  }
+
+  static void expr(Expr e, StringBuilder sb) {
+    switch (e) {
+      case Expr.IntConst c -> sb.append(c.value());
+      case Expr.RealConst c -> sb.append(FanucFormat.real(c.value()));
+      case Expr.OnOff o -> sb.append(o.on() ? "ON" : "OFF");
+      case Expr.StringConst s -> {
+        char q = s.value().indexOf('\'') >= 0 ? '"' : '\'';
+        sb.append(q).append(s.value()).append(q);
+      }
+      case Expr.Register r -> item("R", r.register(), sb);
+      case Expr.PosElement p -> {
+        sb.append("PR[");
+        index(p.register().index(), sb);
+        sb.append(',').append(p.element()).append(comment(p.register().comment())).append(']');
+      }
+      case Expr.Io io -> item(io.kind().name(), io.port(), sb);
+      case Expr.Timer t -> item("TIMER", t.timer(), sb);
+      case Expr.Arg a -> {
+        sb.append("AR[");
+        index(a.index(), sb);
+        sb.append(']');
+      }
+      case Expr.Unary u -> {
+        sb.append(u.op().symbol());
+        operand(u.operand(), strength(u.operand()) < 6, sb);
+      }
+      case Expr.Binary b -> {
+        int p = b.op().precedence();
+        operand(b.left(), strength(b.left()) < p, sb);
+        String sym = b.op().symbol();
+        boolean word = Character.isLetter(sym.charAt(0));
+        sb.append(word ? " " + sym + " " : sym);
+        operand(b.right(), strength(b.right()) <= p, sb);
+      }
+      case Expr.Group g -> {
+        sb.append('(');
+        expr(g.inner(), sb);
+        sb.append(')');
+      }
+    }
+  }
+
+  private static void operand(Expr e, boolean parenthesise, StringBuilder sb) {
+    if (parenthesise) {
+      sb.append('(');
+      expr(e, sb);
+      sb.append(')');
+    } else {
+      expr(e, sb);
+    }
+  }
+
+  // ---- items ----------------------------------------------------------------------------------
+
+  private static void item(String kind, Item item, StringBuilder sb) {
+    sb.append(kind).append('[');
+    index(item.index(), sb);
+    sb.append(comment(item.comment())).append(']');
+  }
+
+  private static void label(LabelRef l, StringBuilder sb) {
+    sb.append("LBL[");
+    index(l.index(), sb);
+    sb.append(comment(l.comment())).append(']');
+  }
+
+  private static void index(Index i, StringBuilder sb) {
+    switch (i) {
+      case Index.Direct d -> sb.append(d.value());
+      case Index.Indirect r -> sb.append("R[").append(r.register()).append(comment(r.comment())).append(']');
+    }
+  }
+
+  /** {@code UFRAME_NUM=1} or {@code UFRAME_NUM=R[3]}: here an indirect index is the register itself. */
+  private static void numberOrRegister(Index i, StringBuilder sb) {
+    index(i, sb);
+  }
+
+  private static String comment(String c) {
+    return c.isEmpty() ? "" : ":" + c;
+  }
+
+  // ---- /POS ---------------------------------------------------------------------------------
+
+  private static void position(LocalPosition p, StringBuilder sb) {
+    sb.append("P[").append(p.number());
+    if (!p.comment().isEmpty()) {
+      sb.append(":\"").append(p.comment()).append('"');
+    }
+    sb.append("]{\n   GP1:\n\tUF : ").append(p.userFrame()).append(", UT : ").append(p.toolFrame()).append(',');
+    switch (p.position()) {
+      case Position.Cartesian c -> {
+        sb.append("\t\tCONFIG : '").append(config(c.config())).append("',\n");
+        sb.append("\tX =").append(FanucFormat.positionValue(c.xMm())).append("  mm,");
+        sb.append("\tY =").append(FanucFormat.positionValue(c.yMm())).append("  mm,");
+        sb.append("\tZ =").append(FanucFormat.positionValue(c.zMm())).append("  mm,\n");
+        sb.append("\tW =").append(FanucFormat.positionValue(c.wDeg())).append(" deg,");
+        sb.append("\tP =").append(FanucFormat.positionValue(c.pDeg())).append(" deg,");
+        sb.append("\tR =").append(FanucFormat.positionValue(c.rDeg())).append(" deg\n");
+      }
+      case Position.Joint j -> {
+        sb.append('\n');
+        for (int k = 1; k <= 6; k++) {
+          sb.append("\tJ").append(k).append("=").append(FanucFormat.positionValue(j.element(k))).append(" deg");
+          sb.append(k == 6 ? "\n" : k == 3 ? ",\n" : ",");
+        }
+      }
+    }
+    sb.append("};\n");
+  }
+
+  /** {@code N U T, 0, 0, 0}. */
+  static String config(Config c) {
+    return (c.flip() ? "F" : "N") + " " + (c.up() ? "U" : "D") + " " + (c.top() ? "T" : "B")
+        + ", " + c.turn1() + ", " + c.turn2() + ", " + c.turn3();
+  }
+}

@@ -1,0 +1,140 @@
+package org.robotrun.program;
+
+import java.util.Objects;
+
+/**
+ * An expression on the right of an assignment, in a condition, or as a CALL argument. The tree
+ * is as written: {@link Group} keeps parentheses so a writer reproduces them, and FANUC's
+ * unparenthesised short form {@code R[1]=R[2]+1} is the same tree without a Group.
+ */
+public sealed interface Expr {
+
+  /** An integer constant ({@code 3}, {@code -7}); FANUC keeps integer and real apart. */
+  record IntConst(int value) implements Expr {}
+
+  /** A real constant ({@code 2.5}, {@code .20}). */
+  record RealConst(double value) implements Expr {}
+
+  /** {@code ON} / {@code OFF}. */
+  record OnOff(boolean on) implements Expr {}
+
+  /** A string constant, only meaningful as a CALL argument ({@code 'PART_A'}). */
+  record StringConst(String value) implements Expr {
+    public StringConst {
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
+  /** A data register {@code R[i]} or {@code R[R[i]]}. */
+  record Register(Item register) implements Expr {
+    public Register {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /**
+   * One element of a position register, {@code PR[i,j]}: j = 1..6 is X, Y, Z, W, P, R (mm, deg)
+   * of a Cartesian PR or J1..J6 (deg) of a joint PR. The comment in {@code PR[10,3:STACK]} is
+   * the item's comment.
+   */
+  record PosElement(Item register, int element) implements Expr {
+    public PosElement {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** An I/O port or flag: {@code DI[i]}, {@code DO[i]}, {@code RI[i]}, {@code RO[i]}, {@code GI[i]}, {@code GO[i]}, {@code F[i]}. */
+  record Io(IoKind kind, Item port) implements Expr {
+    public Io {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(port, "port");
+    }
+  }
+
+  /** {@code TIMER[i]}: elapsed simulated seconds. */
+  record Timer(Item timer) implements Expr {
+    public Timer {
+      Objects.requireNonNull(timer, "timer");
+    }
+  }
+
+  /** {@code AR[i]}: the i-th argument of the current CALL. */
+  record Arg(Index index) implements Expr {
+    public Arg {
+      Objects.requireNonNull(index, "index");
+    }
+  }
+
+  /** {@code -x} or {@code !x} (NOT). */
+  record Unary(UnaryOp op, Expr operand) implements Expr {
+    public Unary {
+      Objects.requireNonNull(op, "op");
+      Objects.requireNonNull(operand, "operand");
+    }
+  }
+
+  /** {@code left op right}. */
+  record Binary(BinaryOp op, Expr left, Expr right) implements Expr {
+    public Binary {
+      Objects.requireNonNull(op, "op");
+      Objects.requireNonNull(left, "left");
+      Objects.requireNonNull(right, "right");
+    }
+  }
+
+  /** A parenthesised subexpression {@code (inner)}, kept so the text can be reproduced. */
+  record Group(Expr inner) implements Expr {
+    public Group {
+      Objects.requireNonNull(inner, "inner");
+    }
+  }
+
+  /** Unary operators. */
+  enum UnaryOp {
+    /** Arithmetic negation {@code -x}. */
+    MINUS("-"),
+    /** Logical negation {@code !x}. */
+    NOT("!");
+
+    private final String symbol;
+
+    UnaryOp(String symbol) {
+      this.symbol = symbol;
+    }
+
+    /** The operator as FANUC writes it. */
+    public String symbol() {
+      return symbol;
+    }
+  }
+
+  /**
+   * Binary operators with their TP spelling and precedence inside parentheses (higher binds
+   * tighter): {@code * / DIV MOD} 5, {@code + -} 4, comparisons 3, {@code AND} 2, {@code OR} 1.
+   */
+  enum BinaryOp {
+    MUL("*", 5), DIVIDE("/", 5), DIV("DIV", 5), MOD("MOD", 5),
+    ADD("+", 4), SUB("-", 4),
+    EQ("=", 3), NE("<>", 3), LT("<", 3), LE("<=", 3), GT(">", 3), GE(">=", 3),
+    AND("AND", 2),
+    OR("OR", 1);
+
+    private final String symbol;
+    private final int precedence;
+
+    BinaryOp(String symbol, int precedence) {
+      this.symbol = symbol;
+      this.precedence = precedence;
+    }
+
+    /** The operator as FANUC writes it ({@code DIV}, {@code <>}, {@code AND}). */
+    public String symbol() {
+      return symbol;
+    }
+
+    /** Binding strength inside parentheses; higher binds tighter. All are left-associative. */
+    public int precedence() {
+      return precedence;
+    }
+  }
+}

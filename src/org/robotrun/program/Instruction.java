@@ -1,0 +1,339 @@
+package org.robotrun.program;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.OptionalDouble;
+
+/**
+ * One numbered line of a program's /MN section, one record per TP statement
+ * (TP-LANGUAGE.md). Line n of a program is {@code program.lines().get(n - 1)}; a circular
+ * motion with its continuation line is one line, as on the pendant. Multi-line constructs
+ * (IF…THEN/ELSE/ENDIF, SELECT cases, FOR/ENDFOR) are one record per line, exactly as FANUC
+ * numbers them; the interpreter matches them up.
+ */
+public sealed interface Instruction {
+
+  // ---- motion -----------------------------------------------------------------------------
+
+  /**
+   * {@code type target speed termination [options]}. For {@code C} motion {@code target} is the
+   * via point (first line) and {@code circularEnd} the end point of the continuation line, which
+   * carries {@code speed}, {@code termination} and {@code options}; for the other types
+   * {@code circularEnd} is empty.
+   */
+  record Move(Motion.Type type, Motion.Target target, Optional<Motion.Target> circularEnd,
+      Motion.Speed speed, Motion.Termination termination, List<Motion.Option> options) implements Instruction {
+    public Move {
+      Objects.requireNonNull(type, "type");
+      Objects.requireNonNull(target, "target");
+      Objects.requireNonNull(circularEnd, "circularEnd");
+      Objects.requireNonNull(speed, "speed");
+      Objects.requireNonNull(termination, "termination");
+      options = Motion.copyOptions(options);
+      if ((type == Motion.Type.C) != circularEnd.isPresent()) {
+        throw new IllegalArgumentException("a C motion has an end point, other types none");
+      }
+    }
+
+    /** A J, L or A motion. */
+    public static Move of(Motion.Type type, Motion.Target target, Motion.Speed speed, Motion.Termination term,
+        List<Motion.Option> options) {
+      return new Move(type, target, Optional.empty(), speed, term, options);
+    }
+
+    /** A C motion through {@code via} to {@code end}. */
+    public static Move circular(Motion.Target via, Motion.Target end, Motion.Speed speed, Motion.Termination term,
+        List<Motion.Option> options) {
+      return new Move(Motion.Type.C, via, Optional.of(end), speed, term, options);
+    }
+  }
+
+  // ---- registers --------------------------------------------------------------------------
+
+  /** {@code R[i]=expr}. */
+  record AssignRegister(Item register, Expr value) implements Instruction {
+    public AssignRegister {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
+  /** {@code PR[i]=source}. */
+  record AssignPosReg(Item register, PosSource source) implements Instruction {
+    public AssignPosReg {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(source, "source");
+    }
+  }
+
+  /** {@code PR[i,j]=expr}; j = 1..6. The item comment is on {@code register}. */
+  record AssignPosElement(Item register, int element, Expr value) implements Instruction {
+    public AssignPosElement {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
+  /** The right side of {@code PR[i]=…}. */
+  sealed interface PosSource {}
+
+  /** {@code PR[j]}. */
+  record FromPosReg(Item register) implements PosSource {
+    public FromPosReg {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** {@code P[j]}: a local position. */
+  record FromLocal(int number, String comment) implements PosSource {
+    public FromLocal {
+      Objects.requireNonNull(comment, "comment");
+    }
+  }
+
+  /** {@code LPOS}: the current Cartesian position in the active frames. */
+  record CurrentLpos() implements PosSource {}
+
+  /** {@code JPOS}: the current joint position. */
+  record CurrentJpos() implements PosSource {}
+
+  /** {@code UFRAME[n]} or {@code UTOOL[n]}: a frame's data. */
+  record FromFrame(FrameKind kind, Index frame) implements PosSource {
+    public FromFrame {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(frame, "frame");
+    }
+  }
+
+  /** {@code PR[j]+PR[k]} ({@code add}) or {@code PR[j]-PR[k]}. */
+  record PosArithmetic(Item left, boolean add, Item right) implements PosSource {
+    public PosArithmetic {
+      Objects.requireNonNull(left, "left");
+      Objects.requireNonNull(right, "right");
+    }
+  }
+
+  // ---- frames and payload -----------------------------------------------------------------
+
+  /** User frame or tool frame. */
+  enum FrameKind {
+    /** {@code UFRAME} / {@code UFRAME_NUM}. */
+    USER,
+    /** {@code UTOOL} / {@code UTOOL_NUM}. */
+    TOOL
+  }
+
+  /** {@code UFRAME_NUM=n|R[i]} or {@code UTOOL_NUM=n|R[i]} (0 = world / flange). */
+  record SelectFrame(FrameKind kind, Index number) implements Instruction {
+    public SelectFrame {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(number, "number");
+    }
+  }
+
+  /** {@code UFRAME[n]=PR[i]} or {@code UTOOL[n]=PR[i]}. */
+  record SetFrame(FrameKind kind, Index frame, Item register) implements Instruction {
+    public SetFrame {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(frame, "frame");
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** {@code PAYLOAD[n]}: accepted, no dynamics. */
+  record Payload(Index schedule) implements Instruction {
+    public Payload {
+      Objects.requireNonNull(schedule, "schedule");
+    }
+  }
+
+  // ---- flow -------------------------------------------------------------------------------
+
+  /** What an {@code IF cond,} or a SELECT case does: a jump or a call. */
+  sealed interface Branch {}
+
+  /** {@code LBL[n:comment]}: a jump target (always a direct number). */
+  record Label(int number, String comment) implements Instruction {
+    public Label {
+      Objects.requireNonNull(comment, "comment");
+    }
+  }
+
+  /** {@code JMP LBL[n]} / {@code JMP LBL[R[i]]}. */
+  record Jump(LabelRef label) implements Instruction, Branch {
+    public Jump {
+      Objects.requireNonNull(label, "label");
+    }
+  }
+
+  /** {@code CALL NAME} / {@code CALL NAME(args)}: args land in AR[1..]. */
+  record Call(String program, List<Expr> args) implements Instruction, Branch {
+    public Call {
+      Objects.requireNonNull(program, "program");
+      args = List.copyOf(args);
+    }
+  }
+
+  /** {@code END}: return from a call; at top level ends the program. */
+  record End() implements Instruction {}
+
+  /** {@code PAUSE}. */
+  record Pause() implements Instruction {}
+
+  /** {@code ABORT}. */
+  record Abort() implements Instruction {}
+
+  /** {@code IF cond, JMP LBL[n]} / {@code IF cond, CALL NAME}. */
+  record If(Expr condition, Branch branch) implements Instruction {
+    public If {
+      Objects.requireNonNull(condition, "condition");
+      Objects.requireNonNull(branch, "branch");
+    }
+  }
+
+  /** {@code IF (expr) THEN}; the condition is usually an {@link Expr.Group}. */
+  record IfThen(Expr condition) implements Instruction {
+    public IfThen {
+      Objects.requireNonNull(condition, "condition");
+    }
+  }
+
+  /** {@code ELSE} of an IF…THEN block. */
+  record Else() implements Instruction {}
+
+  /** {@code ENDIF}. */
+  record EndIf() implements Instruction {}
+
+  /** First line of a SELECT: {@code SELECT R[i]=value, branch}. */
+  record Select(Item register, Expr value, Branch branch) implements Instruction {
+    public Select {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(value, "value");
+      Objects.requireNonNull(branch, "branch");
+    }
+  }
+
+  /** A further SELECT line: {@code =value, branch}. */
+  record SelectCase(Expr value, Branch branch) implements Instruction {
+    public SelectCase {
+      Objects.requireNonNull(value, "value");
+      Objects.requireNonNull(branch, "branch");
+    }
+  }
+
+  /** The last SELECT line: {@code ELSE, branch}. */
+  record SelectElse(Branch branch) implements Instruction {
+    public SelectElse {
+      Objects.requireNonNull(branch, "branch");
+    }
+  }
+
+  /** {@code FOR R[i]=start TO|DOWNTO end}; start/end are constants, R[] or AR[]. */
+  record For(Item counter, Expr start, boolean down, Expr end) implements Instruction {
+    public For {
+      Objects.requireNonNull(counter, "counter");
+      Objects.requireNonNull(start, "start");
+      Objects.requireNonNull(end, "end");
+    }
+  }
+
+  /** {@code ENDFOR}. */
+  record EndFor() implements Instruction {}
+
+  /** {@code WAIT t(sec)} or {@code WAIT R[i]}: seconds of simulated time. */
+  record WaitTime(Expr seconds) implements Instruction {
+    public WaitTime {
+      Objects.requireNonNull(seconds, "seconds");
+    }
+  }
+
+  /**
+   * {@code WAIT cond} or {@code WAIT cond TIMEOUT,LBL[n]}: waits until the condition holds; with a
+   * timeout label jumps there after $WAITTMOUT seconds.
+   */
+  record WaitCondition(Expr condition, Optional<LabelRef> timeoutLabel) implements Instruction {
+    public WaitCondition {
+      Objects.requireNonNull(condition, "condition");
+      Objects.requireNonNull(timeoutLabel, "timeoutLabel");
+    }
+  }
+
+  /** What a TIMER statement does. */
+  enum TimerAction {
+    START, STOP, RESET
+  }
+
+  /** {@code TIMER[i]=START|STOP|RESET}. */
+  record TimerSet(Item timer, TimerAction action) implements Instruction {
+    public TimerSet {
+      Objects.requireNonNull(timer, "timer");
+      Objects.requireNonNull(action, "action");
+    }
+  }
+
+  // ---- I/O --------------------------------------------------------------------------------
+
+  /**
+   * {@code DO[i]=ON|OFF|R[j]}, {@code RO[i]=…}, {@code GO[i]=n|R[j]}, {@code F[i]=ON|OFF|(expr)}.
+   */
+  record SetIo(IoKind kind, Item port, Expr value) implements Instruction {
+    public SetIo {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(port, "port");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
+  /**
+   * {@code DO[i]=PULSE} or {@code DO[i]=PULSE,t sec} (also RO): ON for the width then OFF; without
+   * a width the controller's default pulse width ($DEFPULSE) applies.
+   */
+  record Pulse(IoKind kind, Item port, OptionalDouble widthSec) implements Instruction {
+    public Pulse {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(port, "port");
+      Objects.requireNonNull(widthSec, "widthSec");
+    }
+  }
+
+  // ---- other ------------------------------------------------------------------------------
+
+  /** {@code ! text}. */
+  record Comment(String text) implements Instruction {
+    public Comment {
+      Objects.requireNonNull(text, "text");
+    }
+  }
+
+  /** {@code //text}: a commented-out line, kept verbatim (after the {@code //}). */
+  record CommentedOut(String text) implements Instruction {
+    public CommentedOut {
+      Objects.requireNonNull(text, "text");
+    }
+  }
+
+  /** {@code MESSAGE[text]}: shown on the user screen. */
+  record Message(String text) implements Instruction {
+    public Message {
+      Objects.requireNonNull(text, "text");
+    }
+  }
+
+  /** {@code UALM[i]}: raises user alarm i. */
+  record UserAlarm(Index number) implements Instruction {
+    public UserAlarm {
+      Objects.requireNonNull(number, "number");
+    }
+  }
+
+  /** {@code OVERRIDE=n%} / {@code OVERRIDE=R[i]}: sets the speed override (1..100). */
+  record SetOverride(Expr percent) implements Instruction {
+    public SetOverride {
+      Objects.requireNonNull(percent, "percent");
+    }
+  }
+
+  /** A blank line. */
+  record Blank() implements Instruction {}
+}

@@ -1,0 +1,33 @@
+package org.robotrun.program;
+
+/**
+ * Bit and group I/O plus flags, each indexed 1..64 (flags 1..200). Inputs (DI, RI, GI) are set
+ * by the simulation (RI[1] reports the gripper closed); outputs (DO, RO, GO) and flags (F) are
+ * written by programs. RO[1] drives the end effector unless a scenario maps it otherwise.
+ */
+public enum IoKind {
+  DI(false, false), DO(true, false), RI(false, false), RO(true, false), GI(false, true), GO(true, true), F(true, false);
+
+  private final boolean writable;
+  private final boolean group;
+
+  IoKind(boolean writable, boolean group) {
+    this.writable = writable;
+    this.group = group;
+  }
+
+  /** Whether a program may assign it ({@code DO[1]=ON}); inputs are written only by the simulation. */
+  public boolean writable() {
+    return writable;
+  }
+
+  /** Group ports (GI, GO) carry an integer; the others ON/OFF. */
+  public boolean group() {
+    return group;
+  }
+
+  /** Highest valid index: 200 for flags, 64 for I/O. */
+  public int size() {
+    return this == F ? Registers.FLAG_COUNT : Registers.IO_COUNT;
+  }
+}

@@ -1,0 +1,134 @@
+package org.robotrun.program;
+
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * Parts of a motion statement {@code type target speed termination [options]}. The statement
+ * itself is {@link Instruction.Move}.
+ */
+public final class Motion {
+  private Motion() {}
+
+  /** J joint, L linear, C circular (via + end), A circular arc through consecutive A points. */
+  public enum Type {
+    J, L, C, A
+  }
+
+  /** Where a motion goes: a local {@code P[n]} or a position register {@code PR[n]} / {@code PR[R[i]]}. */
+  public sealed interface Target {}
+
+  /** {@code P[n:comment]}: a position of the program's /POS block. */
+  public record Local(int number, String comment) implements Target {
+    public Local {
+      Objects.requireNonNull(comment, "comment");
+    }
+  }
+
+  /** {@code PR[n:comment]} or {@code PR[R[i]]}. */
+  public record Register(Item register) implements Target {
+    public Register {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** Speed units; which fit which motion type is {@link #fits(Type)}. */
+  public enum SpeedUnit {
+    /** {@code %} of maximum joint speed (J only). */
+    PERCENT,
+    /** {@code sec}: motion time. */
+    SEC,
+    /** {@code msec}: motion time. */
+    MSEC,
+    MM_PER_SEC, CM_PER_MIN, INCH_PER_MIN,
+    /** {@code deg/sec}: orientation speed (L/C/A). */
+    DEG_PER_SEC;
+
+    /** Whether this unit is allowed for the motion type (TP-LANGUAGE.md, speed row). */
+    public boolean fits(Type type) {
+      return switch (this) {
+        case SEC, MSEC -> true;
+        case PERCENT -> type == Type.J;
+        case MM_PER_SEC, CM_PER_MIN, INCH_PER_MIN, DEG_PER_SEC -> type != Type.J;
+      };
+    }
+  }
+
+  /** The number in a speed: a constant ({@code 400}) or a data register ({@code R[3]}). */
+  public sealed interface SpeedValue {}
+
+  /** {@code 400mm/sec}, {@code 30%}, {@code 0.5sec}. */
+  public record SpeedConst(double value) implements SpeedValue {}
+
+  /** {@code R[i]%}, {@code R[i]mm/sec}. */
+  public record SpeedRegister(Item register) implements SpeedValue {
+    public SpeedRegister {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** A speed value with its unit. */
+  public record Speed(SpeedValue value, SpeedUnit unit) {
+    public Speed {
+      Objects.requireNonNull(value, "value");
+      Objects.requireNonNull(unit, "unit");
+    }
+  }
+
+  /** How a motion ends: {@code FINE}, {@code CNTn} or {@code CNT R[i]}. */
+  public sealed interface Termination {}
+
+  /** {@code FINE}: stop exactly at the point. */
+  public record Fine() implements Termination {}
+
+  /** {@code CNTn}, n in 0..100: blend into the next motion (larger blends earlier). */
+  public record Cnt(int value) implements Termination {}
+
+  /** {@code CNT R[i]}. */
+  public record CntRegister(Item register) implements Termination {
+    public CntRegister {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** Motion options, in the order written. */
+  public sealed interface Option {}
+
+  /** {@code Offset}: shifts by the PR named in the offset condition (RobotRun has none: an alarm). */
+  public record Offset() implements Option {}
+
+  /** {@code Offset,PR[i]}: shifts the target by PR[i] in the active user frame. */
+  public record OffsetPr(Item register) implements Option {
+    public OffsetPr {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** {@code Tool_Offset,PR[i]}: shifts the target by PR[i] in the tool frame. */
+  public record ToolOffsetPr(Item register) implements Option {
+    public ToolOffsetPr {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** {@code ACCn}: acceleration override in percent. */
+  public record Acc(int percent) implements Option {}
+
+  /** {@code Skip,LBL[i]}: jump to the label if the skip condition is not met by the end of motion. */
+  public record Skip(LabelRef label) implements Option {
+    public Skip {
+      Objects.requireNonNull(label, "label");
+    }
+  }
+
+  /** {@code Wjnt}: keep the wrist joints' attitude during a linear/circular motion. */
+  public record Wjnt() implements Option {}
+
+  /** {@code INC}: the target is an increment from the current position. */
+  public record Inc() implements Option {}
+
+  /** Options list helper: an unmodifiable copy. */
+  static List<Option> copyOptions(List<Option> options) {
+    return List.copyOf(Objects.requireNonNull(options, "options"));
+  }
+}

@@ -1,0 +1,87 @@
+package org.robotrun.program;
+
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * A TP program as an .LS file holds it (immutable).
+ *
+ * @param name program name: letters, digits and '_', starting with a letter, at most 36 chars
+ * @param attributes every /ATTR entry other than COMMENT, in the order read: key to the raw text
+ *     between {@code =} and the closing {@code ;} (trimmed), e.g. {@code "OWNER" -> "MNEDITOR"},
+ *     {@code "CREATE" -> "DATE 25-01-10  TIME 09:00:00"}; a writer fills in sane defaults for
+ *     missing keys
+ * @param comment the COMMENT attribute without its quotes ("" when absent)
+ * @param lines the /MN lines; line n is {@code lines.get(n - 1)}
+ * @param positions the /POS block: P[n] by number, in the order read
+ */
+public record Program(String name, Map<String, String> attributes, String comment, List<Instruction> lines,
+    Map<Integer, LocalPosition> positions) {
+
+  /** Longest program name FANUC accepts. */
+  public static final int MAX_NAME_LENGTH = 36;
+
+  public Program {
+    Objects.requireNonNull(name, "name");
+    Objects.requireNonNull(comment, "comment");
+    attributes = Collections.unmodifiableMap(new LinkedHashMap<>(attributes));
+    lines = List.copyOf(lines);
+    positions = Collections.unmodifiableMap(new LinkedHashMap<>(positions));
+    for (Map.Entry<Integer, LocalPosition> e : positions.entrySet()) {
+      if (e.getKey() != e.getValue().number()) {
+        throw new IllegalArgumentException("P[" + e.getKey() + "] holds position number " + e.getValue().number());
+      }
+    }
+  }
+
+  /** A program with no attributes, comment or positions (tests, new programs). */
+  public static Program of(String name, List<Instruction> lines) {
+    return new Program(name, Map.of(), "", lines, Map.of());
+  }
+
+  /** A program with lines and local positions. */
+  public static Program of(String name, List<Instruction> lines, List<LocalPosition> positions) {
+    Map<Integer, LocalPosition> byNumber = new LinkedHashMap<>();
+    for (LocalPosition p : positions) {
+      byNumber.put(p.number(), p);
+    }
+    return new Program(name, Map.of(), "", lines, byNumber);
+  }
+
+  /** Whether {@code name} is a valid program name (letters, digits, '_'; a letter first; ≤ 36). */
+  public static boolean isValidName(String name) {
+    if (name.isEmpty() || name.length() > MAX_NAME_LENGTH || !isAsciiLetter(name.charAt(0))) {
+      return false;
+    }
+    for (int i = 1; i < name.length(); i++) {
+      char c = name.charAt(i);
+      if (!isAsciiLetter(c) && !(c >= '0' && c <= '9') && c != '_') {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  private static boolean isAsciiLetter(char c) {
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+  }
+
+  /** Number of /MN lines. */
+  public int lineCount() {
+    return lines.size();
+  }
+
+  /** Line {@code number} (1-based). */
+  public Instruction line(int number) {
+    return lines.get(number - 1);
+  }
+
+  /** The local position P[number], if the /POS block has it. */
+  public Optional<LocalPosition> position(int number) {
+    return Optional.ofNullable(positions.get(number));
+  }
+}

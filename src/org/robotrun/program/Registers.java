@@ -1,0 +1,162 @@
+package org.robotrun.program;
+
+import java.util.Arrays;
+import java.util.Objects;
+
+/**
+ * The controller's register and I/O state (mutable, one per controller): data registers
+ * R[1..200], position registers PR[1..100], flags F[1..200], DI/DO/RI/RO/GI/GO[1..64] and
+ * TIMER[1..10]. Indices are 1-based as on the pendant; an index out of range throws
+ * {@link RegisterIndexException}, which the interpreter reports as an alarm. Call arguments
+ * (AR[]) belong to a call frame and live in the interpreter.
+ *
+ * <p>Data registers keep FANUC's distinction between integer and real values: {@code R[1]=3}
+ * holds the integer 3, {@code R[1]=3/2} the real 1.5. Accessors take and return primitives so the
+ * interpreter's hot path does not allocate.
+ */
+public final class Registers {
+  public static final int R_COUNT = 200;
+  public static final int PR_COUNT = 100;
+  public static final int FLAG_COUNT = 200;
+  public static final int IO_COUNT = 64;
+  public static final int TIMER_COUNT = 10;
+
+  private final double[] r = new double[R_COUNT + 1];
+  private final boolean[] rIsInteger = new boolean[R_COUNT + 1];
+  private final Position[] pr = new Position[PR_COUNT + 1];
+  private final int[][] io = new int[IoKind.values().length][];
+  private final double[] timerSec = new double[TIMER_COUNT + 1];
+  private final boolean[] timerRunning = new boolean[TIMER_COUNT + 1];
+
+  /** All registers zero (integer 0), PRs Cartesian zero, I/O OFF, timers stopped at 0. */
+  public Registers() {
+    Arrays.fill(rIsInteger, true);
+    Arrays.fill(pr, Position.Cartesian.ZERO);
+    for (IoKind k : IoKind.values()) {
+      io[k.ordinal()] = new int[k.size() + 1];
+    }
+  }
+
+  private static void check(String table, int i, int size) {
+    if (i < 1 || i > size) {
+      throw new RegisterIndexException(table, i, size);
+    }
+  }
+
+  // ---- R[] ----
+
+  /** R[i] as a number (integers exactly). */
+  public double number(int i) {
+    check("R", i, R_COUNT);
+    return r[i];
+  }
+
+  /** Whether R[i] holds an integer (as opposed to a real). */
+  public boolean isInteger(int i) {
+    check("R", i, R_COUNT);
+    return rIsInteger[i];
+  }
+
+  /** Sets R[i] to an integer. */
+  public void setInteger(int i, int value) {
+    check("R", i, R_COUNT);
+    r[i] = value;
+    rIsInteger[i] = true;
+  }
+
+  /** Sets R[i] to a real. */
+  public void setReal(int i, double value) {
+    check("R", i, R_COUNT);
+    r[i] = value;
+    rIsInteger[i] = false;
+  }
+
+  /** Sets R[i]; {@code integer} says which kind of number it holds ({@code value} must then be whole). */
+  public void set(int i, double value, boolean integer) {
+    check("R", i, R_COUNT);
+    r[i] = value;
+    rIsInteger[i] = integer;
+  }
+
+  // ---- PR[] ----
+
+  /** PR[i]. */
+  public Position position(int i) {
+    check("PR", i, PR_COUNT);
+    return pr[i];
+  }
+
+  /** Sets PR[i]. */
+  public void setPosition(int i, Position value) {
+    check("PR", i, PR_COUNT);
+    pr[i] = Objects.requireNonNull(value, "value");
+  }
+
+  // ---- I/O and flags ----
+
+  /** A bit port or flag: ON is true. For GI/GO, whether the group value is non-zero. */
+  public boolean bit(IoKind kind, int i) {
+    check(kind.name(), i, kind.size());
+    return io[kind.ordinal()][i] != 0;
+  }
+
+  /** Sets a bit port or flag (inputs too: the simulation writes DI/RI). */
+  public void setBit(IoKind kind, int i, boolean on) {
+    check(kind.name(), i, kind.size());
+    io[kind.ordinal()][i] = on ? 1 : 0;
+  }
+
+  /** A port's value as an integer: 0/1 for bits, the group value for GI/GO. */
+  public int value(IoKind kind, int i) {
+    check(kind.name(), i, kind.size());
+    return io[kind.ordinal()][i];
+  }
+
+  /** Sets a group port's integer value (GI/GO); for a bit port any non-zero value is ON. */
+  public void setValue(IoKind kind, int i, int value) {
+    check(kind.name(), i, kind.size());
+    io[kind.ordinal()][i] = kind.group() ? value : (value != 0 ? 1 : 0);
+  }
+
+  // ---- TIMER[] ----
+
+  /** TIMER[i] in simulated seconds. */
+  public double timerSec(int i) {
+    check("TIMER", i, TIMER_COUNT);
+    return timerSec[i];
+  }
+
+  /** Whether TIMER[i] is counting. */
+  public boolean timerRunning(int i) {
+    check("TIMER", i, TIMER_COUNT);
+    return timerRunning[i];
+  }
+
+  /** TIMER[i]=START: counts on from its current value. */
+  public void startTimer(int i) {
+    check("TIMER", i, TIMER_COUNT);
+    timerRunning[i] = true;
+  }
+
+  /** TIMER[i]=STOP: keeps its value. */
+  public void stopTimer(int i) {
+    check("TIMER", i, TIMER_COUNT);
+    timerRunning[i] = false;
+  }
+
+  /** TIMER[i]=RESET: stops it and sets it to 0. */
+  public void resetTimer(int i) {
+    check("TIMER", i, TIMER_COUNT);
+    timerRunning[i] = false;
+    timerSec[i] = 0;
+  }
+
+  /** Advances every running timer by {@code dtSec} of simulated time. */
+  public void advanceTimers(double dtSec) {
+    for (int i = 1; i <= TIMER_COUNT; i++) {
+      if (timerRunning[i]) {
+        timerSec[i] += dtSec;
+      }
+    }
+  }
+}

@@ -1,0 +1,289 @@
+package org.robotrun.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.robotrun.program.Config;
+import org.robotrun.program.Expr;
+import org.robotrun.program.Expr.BinaryOp;
+import org.robotrun.program.Index;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Item;
+import org.robotrun.program.LabelRef;
+import org.robotrun.program.LocalPosition;
+import org.robotrun.program.Motion;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+
+class LsReaderTest {
+
+  private static final String HEAD = "/PROG  T\n/ATTR\n/MN\n";
+  private static final String TAIL = "/POS\n/END\n";
+
+  /** A program whose /MN holds {@code mn} (lines start at file line 4). */
+  private static LsReadResult mn(String mn) {
+    return LsReader.parse("t.ls", HEAD + mn + TAIL);
+  }
+
+  private static List<String> messages(LsReadResult r) {
+    return r.diagnostics().stream().map(Diagnostic::toString).toList();
+  }
+
+  private static Instruction only(String statementLine) {
+    LsReadResult r = mn("   1:" + statementLine + "\n");
+    assertThat(messages(r)).isEmpty();
+    return r.program().line(1);
+  }
+
+  @Test
+  void readsPick3AsTheControllerWroteIt() throws IOException {
+    LsReadResult r = LsReader.read(Path.of("tests/resources/programs/PICK3.LS"));
+    assertThat(r.diagnostics()).isEmpty();
+    Program p = r.program();
+    assertThat(p.name()).isEqualTo("PICK3");
+    assertThat(p.comment()).isEqualTo("3 picks demo");
+    assertThat(p.lineCount()).isEqualTo(29);
+    assertThat(p.attributes()).containsEntry("OWNER", "MNEDITOR").containsEntry("LINE_COUNT", "29")
+        .containsEntry("CREATE", "DATE 25-01-10  TIME 09:00:00");
+    assertThat(List.copyOf(p.attributes().keySet())).startsWith("OWNER", "PROG_SIZE", "CREATE", "MODIFIED");
+    assertThat(p.line(7)).isEqualTo(Instruction.Move.of(Motion.Type.J, new Motion.Local(1, "HOME"),
+        new Motion.Speed(new Motion.SpeedConst(30), Motion.SpeedUnit.PERCENT), new Motion.Fine(), List.of()));
+    assertThat(p.line(15)).isEqualTo(new Instruction.AssignPosElement(Item.of(10, "STACK"), 3,
+        new Expr.Binary(BinaryOp.MUL,
+            new Expr.Group(new Expr.Binary(BinaryOp.SUB, new Expr.Register(Item.of(1, "I")), new Expr.IntConst(1))),
+            new Expr.IntConst(20))));
+    assertThat(p.line(13)).isEqualTo(new Instruction.WaitCondition(
+        new Expr.Binary(BinaryOp.EQ, new Expr.Io(IoKind.RI, Item.of(1, "CLOSED")), new Expr.OnOff(true)),
+        java.util.Optional.of(LabelRef.of(99))));
+    assertThat(p.line(18)).isEqualTo(new Instruction.WaitTime(new Expr.RealConst(0.2)));
+    assertThat(p.line(23)).isEqualTo(new Instruction.SelectElse(new Instruction.Call("BEEP", List.of())));
+    assertThat(p.line(27)).isEqualTo(new Instruction.Label(99, "NO GRIP"));
+    assertThat(p.position(1)).contains(new LocalPosition(1, "HOME", 1, 1, new Position.Joint(0, 0, 0, 0, -90, 0)));
+    assertThat(p.position(2)).contains(new LocalPosition(2, "PICK", 1, 1,
+        new Position.Cartesian(350, -120, 40, 180, 0, 0, Config.DEFAULT)));
+    assertThat(r.sourceLine(1)).isEqualTo(22);
+  }
+
+  @Test
+  void precedenceInsideParenthesesIsTheUsualOne() {
+    Instruction in = only("  R[1]=(2+3*4)    ;");
+    assertThat(in).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.Group(
+        new Expr.Binary(BinaryOp.ADD, new Expr.IntConst(2),
+            new Expr.Binary(BinaryOp.MUL, new Expr.IntConst(3), new Expr.IntConst(4))))));
+    Instruction logic = only("  IF R[1]=1 OR R[2]>2 AND DI[1]=ON,JMP LBL[1] ;\n   2:  LBL[1]  ;");
+    Expr cond = ((Instruction.If) logic).condition();
+    assertThat(cond).isInstanceOfSatisfying(Expr.Binary.class, b -> {
+      assertThat(b.op()).isEqualTo(BinaryOp.OR);
+      assertThat(((Expr.Binary) b.right()).op()).isEqualTo(BinaryOp.AND);
+    });
+  }
+
+  @Test
+  void indirectRegistersAndItemComments() {
+    assertThat(only("  R[R[2:PTR]:X]=R[R[3]]    ;")).isEqualTo(new Instruction.AssignRegister(
+        new Item(new Index.Indirect(2, "PTR"), "X"), new Expr.Register(new Item(new Index.Indirect(3, ""), ""))));
+    assertThat(only("  JMP LBL[R[4]] ;")).isEqualTo(new Instruction.Jump(new LabelRef(new Index.Indirect(4, ""), "")));
+  }
+
+  @Test
+  void constantsKeepIntegerAndRealApart() {
+    assertThat(only("  R[1]=.5    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.RealConst(0.5)));
+    assertThat(only("  R[1]=-3    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.IntConst(-3)));
+    assertThat(only("  R[1]=3.0    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.RealConst(3)));
+  }
+
+  @Test
+  void circularMotionTakesItsContinuationLine() {
+    LsReadResult r = LsReader.parse("c.ls", HEAD
+        + "   1:C P[1]    \n    :  P[2] 100mm/sec FINE    ;\n   2:  END ;\n"
+        + "/POS\nP[1]{\n   GP1:\n\tUF : 0, UT : 1,\n\tJ1= 0 deg, J2= 0 deg, J3= 0 deg, J4= 0 deg, J5= 0 deg, J6= 0 deg\n};\n"
+        + "P[2]{\n   GP1:\n\tUF : 0, UT : 1,\n\tJ1= 1 deg, J2= 0 deg, J3= 0 deg, J4= 0 deg, J5= 0 deg, J6= 0 deg\n};\n/END\n");
+    assertThat(messages(r)).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(Instruction.Move.circular(new Motion.Local(1, ""), new Motion.Local(2, ""),
+        new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.MM_PER_SEC), new Motion.Fine(), List.of()));
+    assertThat(r.sourceLine(2)).isEqualTo(6);
+
+    LsReadResult missing = mn("   1:C P[1]\n   2:  END ;\n");
+    assertThat(messages(missing)).anyMatch(m -> m.startsWith("t.ls:4: a C motion needs its end point on a continuation line"));
+  }
+
+  @Test
+  void everyBadLineIsReportedInOnePassWithWhatWasExpected() {
+    LsReadResult r = mn(String.join("\n",
+        "   1:  R[1]=1    ;",
+        "   2:  R[1]=    ;",
+        "   3:  JMP LBL[ ;",
+        "   4:J P[1] 100mm/sec FINE    ;",
+        "   5:L PR[1] 30% FINE    ;",
+        "   6:  FOR R[1]=1 UNTIL 3 ;",
+        "   7:  SKIP CONDITION DI[1]=ON ;",
+        "   8:  R[2]=3 ;",
+        "   9:  WAIT 2 ;",
+        "  10:  DI[1]=ON ;",
+        "  11:  CALL _HIDDEN ;",
+        "  12:  R[1]=1",
+        "  13:L PR[1] 100mm/sec FINE Frobnicate    ;",
+        "  14:J PR[1] 20% CNT120    ;",
+        "")) ;
+    assertThat(messages(r)).containsExactly(
+        "t.ls:5: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found end of line",
+        "t.ls:6: expected an index (a number or R[i]) inside LBL[...], found end of line",
+        "t.ls:7: speed unit mm/sec does not fit a J motion: expected %, sec or msec",
+        "t.ls:8: speed unit % does not fit a L motion: expected mm/sec, cm/min, inch/min, deg/sec, sec or msec",
+        "t.ls:9: expected TO or DOWNTO in FOR, found 'UNTIL'",
+        "t.ls:10: not supported: SKIP CONDITION",
+        "t.ls:12: expected '(sec)' after the wait time, found end of line",
+        "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO or F)",
+        "t.ls:14: '_HIDDEN' is not a program name: expected letters, digits and '_', starting with a letter",
+        "t.ls:15: expected ';' at the end of the line",
+        "t.ls:16: not supported: motion option 'Frobnicate' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)",
+        "t.ls:17: CNT120: expected 0..100");
+    // Bad lines keep their place, so line numbering of the rest holds.
+    assertThat(r.program().lineCount()).isEqualTo(14);
+    assertThat(r.program().line(8)).isInstanceOf(Instruction.AssignRegister.class);
+  }
+
+  @Test
+  void unsupportedStatementsAreNamedNotDropped() {
+    for (String[] c : new String[][] {
+        {"RUN SUB1", "not supported: RUN (multitasking)"},
+        {"$WAITTMOUT=100", "not supported: system variable assignment ($WAITTMOUT)"},
+        {"SR[1]=R[1]", "not supported: string registers SR[]"},
+        {"AO[1]=5", "not supported: analog output AO[]"},
+        {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
+        {"L P[1] max_speed FINE", "not supported: max_speed"},
+        {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
+      LsReadResult r = mn("   1:  " + c[0] + " ;\n");
+      assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);
+    }
+  }
+
+  @Test
+  void lineNumbersOutOfOrderAreReported() {
+    LsReadResult r = mn("   1:  R[1]=1 ;\n   3:  R[1]=2 ;\n   2:  R[1]=3 ;\n");
+    assertThat(messages(r)).containsExactly(
+        "t.ls:5: line number 3 out of order: expected 2",
+        "t.ls:6: line number 2 out of order: expected 3");
+    assertThat(r.program().lineCount()).isEqualTo(3);
+  }
+
+  @Test
+  void programLevelChecks() {
+    LsReadResult r = mn(String.join("\n",
+        "   1:  LBL[1] ;",
+        "   2:J P[7] 10% FINE    ;",
+        "   3:  LBL[1:AGAIN] ;",
+        "   4:  JMP LBL[5] ;",
+        "   5:  IF R[1]=1,JMP LBL[6] ;",
+        "   6:  WAIT DI[1]=ON TIMEOUT,LBL[7] ;",
+        "   7:  JMP LBL[R[1]] ;",
+        "   8:  CALL NOWHERE ;",
+        ""));
+    assertThat(messages(r)).containsExactly(
+        "t.ls:5: P[7] is used but /POS has no P[7]",
+        "t.ls:6: LBL[1] is defined twice (first on line 4)",
+        "t.ls:7: LBL[5] is not defined in this program",
+        "t.ls:8: LBL[6] is not defined in this program",
+        "t.ls:9: LBL[7] is not defined in this program");
+    LsReadResult known = r.withCallTargetsChecked(Set.of("OTHER"));
+    assertThat(messages(known)).contains("t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
+    assertThat(messages(mn("   1:  CALL T ;\n").withCallTargetsChecked(Set.of()))).isEmpty();
+  }
+
+  @Test
+  void blocksMustMatchUp() {
+    LsReadResult r = mn(String.join("\n",
+        "   1:  ENDFOR ;",
+        "   2:  IF (R[1]=1) THEN ;",
+        "   3:  FOR R[2]=1 TO 2 ;",
+        "   4:  ENDIF ;",
+        "   5:  ELSE ;",
+        "   6:         =2,JMP LBL[1] ;",
+        "   7:  LBL[1] ;",
+        ""));
+    assertThat(messages(r)).containsExactly(
+        "t.ls:4: ENDFOR without an open FOR",
+        "t.ls:5: IF ... THEN has no ENDIF",
+        "t.ls:6: FOR has no ENDFOR",
+        "t.ls:7: ENDIF without an open IF ... THEN (the innermost open block is the FOR on line 6)",
+        "t.ls:8: ELSE without an open IF ... THEN (the innermost open block is the FOR on line 6)",
+        "t.ls:9: SELECT case '=value' must follow a SELECT line or another case");
+  }
+
+  @Test
+  void positionBlocksReportBadFieldsAndKeepTheGoodOnes() {
+    String pos = String.join("\n",
+        "/POS",
+        "P[1:\"A\"]{",
+        "   GP1:",
+        "\tUF : 1, UT : 1,\t\tCONFIG : 'N U X, 0, 0, 0',",
+        "\tX =   1.000  mm,\tY =   2.000  mm,\tZ =   3.000  mm,",
+        "\tW =   0.000 deg,\tP =   0.000 deg,\tR =   0.000 deg",
+        "};",
+        "P[2]{",
+        "   GP1:",
+        "\tUF : 1, UT : 1,",
+        "\tJ1=   0.000 deg,\tJ2=   0.000 deg,\tJ3=   0.000 deg,",
+        "\tJ4=   0.000 deg,\tJ5=   0.000 deg,\tJ6=   0.000 mm",
+        "};",
+        "P[3]{",
+        "   GP2:",
+        "};",
+        "P[4]{",
+        "   GP1:",
+        "\tUF : 0, UT : 2,",
+        "\tX =   1.000  mm,\tY =   2.000  mm,\tZ =   3.000  mm,",
+        "\tW =   0.000 deg,\tP =   0.000 deg",
+        "};",
+        "P[5]{",
+        "   GP1:",
+        "\tUF : 0, UT : 2,",
+        "\tJ1=   1.000 deg,\tJ2=   0.000 deg,\tJ3=   0.000 deg,",
+        "\tJ4=   0.000 deg,\tJ5=   0.000 deg,\tJ6=   0.000 deg",
+        "};",
+        "P[6]{",
+        "   GP1:",
+        "\tUF : 0, UT : 2,",
+        "/END",
+        "");
+    LsReadResult r = LsReader.parse("p.ls", HEAD + "   1:  END ;\n" + pos);
+    assertThat(messages(r)).containsExactly(
+        "p.ls:8: P[1]: CONFIG 'N U X, 0, 0, 0': expected 'F|N U|D T|B, t1, t2, t3' like 'N U T, 0, 0, 0'",
+        "p.ls:16: P[2]: expected 'deg' after the value of J6, found 'mm'",
+        "p.ls:19: not supported: motion group GP2 in P[3] (RobotRun moves one group, GP1)",
+        "p.ls:21: P[4]: R is missing: expected all of X, Y, Z, W, P, R",
+        "p.ls:33: P[6] is not closed: expected '};' before the end of the /POS section");
+    assertThat(r.program().positions().keySet()).containsExactly(5);
+  }
+
+  @Test
+  void attributesAreKeptInOrderWithDefaultsAddedAndLineCountCorrected() {
+    LsReadResult r = LsReader.parse("a.ls", "/PROG  A\n/ATTR\nZETA\t= 1;\nOWNER\t= ME;\nLINE_COUNT\t= 9;\n"
+        + "COMMENT\t= \"hi\";\n/MN\n   1:  END ;\n/POS\n/END\n");
+    assertThat(messages(r)).containsExactly("a.ls:5: warning: LINE_COUNT = 9 but /MN has 1 lines; using 1");
+    assertThat(r.hasErrors()).isFalse();
+    assertThat(List.copyOf(r.program().attributes().keySet())).startsWith("ZETA", "OWNER", "LINE_COUNT", "PROG_SIZE");
+    assertThat(r.program().attributes()).containsEntry("OWNER", "ME").containsEntry("LINE_COUNT", "1")
+        .containsEntry("PROTECT", "READ_WRITE");
+    assertThat(r.program().comment()).isEqualTo("hi");
+    String written = LsWriter.write(r.program());
+    assertThat(written).contains("OWNER\t\t= ME;\nCOMMENT\t\t= \"hi\";\n").contains("LINE_COUNT\t= 1;\n").contains("ZETA\t\t= 1;\n");
+  }
+
+  @Test
+  void sectionsAreCheckedAndExtraSectionsFlagged() {
+    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
+        .containsExactly(
+            "s.ls:1: warning: not supported: program sub-type 'Macro' (read as a normal program)",
+            "s.ls:3: warning: not supported: section /APPL (its 1 lines are ignored)",
+            "s.ls:9: warning: text after /END is ignored");
+    assertThat(messages(LsReader.parse("n.ls", "/PROG  1BAD\n/MN\n/POS\n/END\n")))
+        .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', starting with a letter, at most 36 characters");
+  }
+}
