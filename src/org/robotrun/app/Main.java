@@ -43,7 +43,6 @@ public final class Main implements Runnable {
     CommandLine cl = new CommandLine(new Main());
     cl.setExecutionExceptionHandler(Main::onExecutionException);
     cl.setParameterExceptionHandler(Main::onParameterException);
-    cl.setExitCodeOnInvalidInput(EXIT_BAD_INPUT);
     return cl;
   }
 
