@@ -118,12 +118,26 @@ class ClosedFormIkTest {
   @Test
   void beyondReachIsOutOfReachAndFast() {
     Transform far = Xyzwpr.ofDegrees(2000, 0, 330, 180, 0, 0).toTransform();
-    long t0 = System.nanoTime();
-    IkResult r = ik.solve(far, Config.parse("N U T, 0, 0, 0"));
-    long ns = System.nanoTime() - t0;
+    Config config = Config.parse("N U T, 0, 0, 0");
+    IkResult r = ik.solve(far, config);
     assertThat(r).isInstanceOfSatisfying(IkResult.Unreachable.class,
         u -> assertThat(u.reason()).isEqualTo(IkResult.Reason.OUT_OF_REACH));
-    assertThat(ns).isLessThan(1_000_000);
+    // Worst case of 200 warm calls under 1 ms. A batch may be preempted on a loaded 2-core
+    // machine (that is the scheduler, not the solver), so the best of three batches counts.
+    for (int i = 0; i < 2000; i++) {
+      ik.solve(far, config);
+    }
+    long bestWorstNs = Long.MAX_VALUE;
+    for (int batch = 0; batch < 3; batch++) {
+      long worst = 0;
+      for (int i = 0; i < 200; i++) {
+        long t0 = System.nanoTime();
+        ik.solve(far, config);
+        worst = Math.max(worst, System.nanoTime() - t0);
+      }
+      bestWorstNs = Math.min(bestWorstNs, worst);
+    }
+    assertThat(bestWorstNs).isLessThan(1_000_000);
   }
 
   @Test
