@@ -21,10 +21,12 @@ public final class Registers {
   public static final int IO_COUNT = 64;
   public static final int TIMER_COUNT = 10;
 
-  private final double[] r = new double[R_COUNT + 1];
-  private final boolean[] rIsInteger = new boolean[R_COUNT + 1];
-  private final Position[] pr = new Position[PR_COUNT + 1];
-  private final int[][] io = new int[IoKind.values().length][];
+  // Package-private so the interpreter's compiled code reads them without per-access checks
+  // (it validates indices itself).
+  final double[] r = new double[R_COUNT + 1];
+  final boolean[] rIsInteger = new boolean[R_COUNT + 1];
+  final Position[] pr = new Position[PR_COUNT + 1];
+  final int[][] io = new int[IoKind.values().length][];
   private final double[] timerSec = new double[TIMER_COUNT + 1];
   private final boolean[] timerRunning = new boolean[TIMER_COUNT + 1];
 

@@ -1,0 +1,191 @@
+package org.robotrun.pendant;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.robotrun.pendant.RobotControl.CommentTable;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Position;
+import org.robotrun.program.Registers;
+
+/**
+ * DATA: numeric registers (value and comment), position registers (summary; DETAIL for
+ * components and Cartesian/joint form; RECORD, CLEAR) and flags. [TYPE] switches tables.
+ */
+final class DataScreen implements Screen {
+  enum Table {
+    REGISTERS("Numeric Registers", Registers.R_COUNT),
+    POSITION_REGISTERS("Position Registers", Registers.PR_COUNT),
+    FLAGS("Flags", Registers.FLAG_COUNT);
+
+    final String title;
+    final int size;
+
+    Table(String title, int size) {
+      this.title = title;
+      this.size = size;
+    }
+  }
+
+  private Table table = Table.REGISTERS;
+  private final int[] cursor = new int[Table.values().length];
+  /** Column on a register row: 0 comment, 1 value. */
+  private int column = 1;
+
+  private int index() {
+    return cursor[table.ordinal()] + 1;
+  }
+
+  @Override
+  public String title(Pendant p) {
+    return "DATA " + table.title;
+  }
+
+  @Override
+  public List<String> body(Pendant p) {
+    List<String> rows = new ArrayList<>();
+    int cur = cursor[table.ordinal()];
+    int top = Math.max(0, Math.min(cur - Lcd.BODY_ROWS / 2, table.size - Lcd.BODY_ROWS));
+    Registers regs = p.control().registers();
+    for (int i = top; i < table.size && rows.size() < Lcd.BODY_ROWS; i++) {
+      int n = i + 1;
+      boolean on = i == cur;
+      String m = on ? ">" : " ";
+      rows.add(switch (table) {
+        case REGISTERS -> {
+          String c = p.control().comment(CommentTable.R, n);
+          String v = regs.isInteger(n) ? Long.toString((long) regs.number(n)) : ExprText.real(regs.number(n));
+          yield m + String.format(Locale.ROOT, "R[%3d:%s]  = %s", n, on && column == 0 ? "{" + pad(c) + "}" : pad(c),
+              on && column == 1 ? "{" + v + "}" : v);
+        }
+        case POSITION_REGISTERS -> {
+          String c = p.control().comment(CommentTable.PR, n);
+          yield m + String.format(Locale.ROOT, "PR[%3d:%s] %s", n, on && column == 0 ? "{" + pad(c) + "}" : pad(c),
+              summary(regs.position(n)));
+        }
+        case FLAGS -> m + String.format(Locale.ROOT, "F[%3d]  %s", n, regs.bit(IoKind.F, n) ? "ON" : "OFF");
+      });
+    }
+    return rows;
+  }
+
+  private static String pad(String c) {
+    return String.format(Locale.ROOT, "%-12s", c);
+  }
+
+  static String summary(Position pos) {
+    return switch (pos) {
+      case Position.Cartesian c -> String.format(Locale.ROOT, "X%.1f Y%.1f Z%.1f W%.1f P%.1f R%.1f", c.xMm(), c.yMm(),
+          c.zMm(), c.wDeg(), c.pDeg(), c.rDeg());
+      case Position.Joint j -> String.format(Locale.ROOT, "JNT %.1f,%.1f,%.1f,%.1f,%.1f,%.1f", j.j1Deg(), j.j2Deg(),
+          j.j3Deg(), j.j4Deg(), j.j5Deg(), j.j6Deg());
+    };
+  }
+
+  @Override
+  public List<String> functionKeys(Pendant p) {
+    return switch (table) {
+      case REGISTERS -> List.of("[TYPE]", "", "", "", "");
+      case POSITION_REGISTERS -> List.of("[TYPE]", "DETAIL", "RECORD", "CLEAR", "");
+      case FLAGS -> List.of("[TYPE]", "", "", "ON", "OFF");
+    };
+  }
+
+  @Override
+  public void key(Pendant p, Key k) {
+    int t = table.ordinal();
+    Registers regs = p.control().registers();
+    switch (k) {
+      case UP -> cursor[t] = Math.max(0, cursor[t] - (p.shift() ? Lcd.BODY_ROWS : 1));
+      case DOWN -> cursor[t] = Math.min(table.size - 1, cursor[t] + (p.shift() ? Lcd.BODY_ROWS : 1));
+      case LEFT -> column = 0;
+      case RIGHT -> column = 1;
+      case F1 -> p.choose("TYPE", List.of(Table.REGISTERS.title, Table.POSITION_REGISTERS.title, Table.FLAGS.title),
+          i -> table = Table.values()[i]);
+      case ITEM -> p.entry("Item number:", "", false, s -> {
+        Optional<Integer> n = Pendant.parseInt(s, 1, table.size);
+        if (n.isEmpty()) {
+          return Optional.of("Item must be 1.." + table.size + ", got '" + s.trim() + "'");
+        }
+        cursor[t] = n.get() - 1;
+        return Optional.empty();
+      });
+      case F2 -> {
+        if (table == Table.POSITION_REGISTERS) {
+          PositionScreen.openRegister(p, index());
+        }
+      }
+      case F3 -> {
+        if (table == Table.POSITION_REGISTERS) {
+          if (!p.shift()) {
+            p.message("RECORD: hold SHIFT and press F3");
+            return;
+          }
+          int n = index();
+          Position now = regs.position(n) instanceof Position.Joint ? p.control().currentJoints()
+              : p.control().currentPose(p.control().activeFrame(FrameKind.USER), p.control().activeFrame(FrameKind.TOOL));
+          regs.setPosition(n, now);
+          p.message("PR[" + n + "] recorded");
+        }
+      }
+      case F4, F5 -> {
+        int n = index();
+        if (table == Table.FLAGS) {
+          regs.setBit(IoKind.F, n, k == Key.F4);
+        } else if (table == Table.POSITION_REGISTERS && k == Key.F4) {
+          p.confirm("Clear PR[" + n + "]?", () -> {
+            regs.setPosition(n, Position.Cartesian.ZERO);
+            p.message("PR[" + n + "] cleared");
+          });
+        }
+      }
+      case ENTER -> edit(p, null);
+      default -> {
+        if (k.keypadChar().isPresent()) {
+          edit(p, String.valueOf(k.keypadChar().get()));
+        }
+      }
+    }
+  }
+
+  @Override
+  public void text(Pendant p, String s) {
+    edit(p, s);
+  }
+
+  private void edit(Pendant p, String typed) {
+    int n = index();
+    if (table == Table.FLAGS) {
+      boolean on = !p.control().registers().bit(IoKind.F, n);
+      p.control().registers().setBit(IoKind.F, n, on);
+      return;
+    }
+    CommentTable ct = table == Table.REGISTERS ? CommentTable.R : CommentTable.PR;
+    if (column == 0 || table == Table.POSITION_REGISTERS && typed != null && !Character.isDigit(typed.charAt(0))) {
+      p.entry(ct + "[" + n + "] comment:", typed == null ? p.control().comment(ct, n) : typed, true, c -> {
+        p.control().setComment(ct, n, c.trim());
+        return Optional.empty();
+      });
+      return;
+    }
+    if (table == Table.POSITION_REGISTERS) {
+      PositionScreen.openRegister(p, n);
+      return;
+    }
+    p.entry("R[" + n + "] value:", typed == null ? "" : typed, false, s -> {
+      String v = s.trim();
+      Optional<Double> d = Pendant.parseNumber(v);
+      if (d.isEmpty()) {
+        return Optional.of("Bad number '" + v + "'");
+      }
+      if (v.matches("-?\\d+") && Math.abs(d.get()) <= Integer.MAX_VALUE) {
+        p.control().registers().setInteger(n, (int) Math.round(d.get()));
+      } else {
+        p.control().registers().setReal(n, d.get());
+      }
+      return Optional.empty();
+    });
+  }
+}

@@ -1,0 +1,203 @@
+package org.robotrun.pendant;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.function.Consumer;
+
+/**
+ * A {@code .keys} script: one pendant action per line, for tests, tutorials and graders.
+ *
+ * <pre>
+ * # comment                 (whole line)
+ * SHIFT+F1                  SHIFT held around one key press
+ * ENTER                     a key press and release (legend or name: F1, I/O, +%, +X/J1, +X, J1+)
+ * DOWN *3                   the same key three times
+ * TYPE PICK1                typed text (the rest of the line, as written)
+ * HOLD SHIFT                key down (stays down)
+ * RELEASE SHIFT             key up
+ * WAIT 2.5                  2.5 s of simulated time
+ * SHOW                      print the LCD
+ * </pre>
+ *
+ * A script is parsed whole before it runs, so a malformed line stops it before any key is
+ * pressed.
+ */
+public final class KeyScript {
+  /** One action. */
+  public sealed interface Step {
+    /** Source line (1-based) for messages. */
+    int line();
+
+    /** Key press and release, with SHIFT held around it when {@code shift}. */
+    record Tap(int line, Key key, boolean shift, int times) implements Step {}
+
+    /** Key down. */
+    record Press(int line, Key key) implements Step {}
+
+    /** Key up. */
+    record Release(int line, Key key) implements Step {}
+
+    /** Typed text. */
+    record Type(int line, String text) implements Step {}
+
+    /** Simulated seconds. */
+    record Wait(int line, double seconds) implements Step {}
+
+    /** Print the LCD. */
+    record Show(int line) implements Step {}
+  }
+
+  /** A parse failure: where and what. */
+  public record Malformed(String file, int line, String message) {
+    /** {@code file:line: message}. */
+    public String display() {
+      return file + ":" + line + ": " + message;
+    }
+  }
+
+  private final List<Step> steps;
+
+  private KeyScript(List<Step> steps) {
+    this.steps = List.copyOf(steps);
+  }
+
+  /** The steps in order. */
+  public List<Step> steps() {
+    return steps;
+  }
+
+  /** Parses script lines; {@code file} names the source in messages. */
+  public static Parsed parse(String file, List<String> lines) {
+    Objects.requireNonNull(file, "file");
+    List<Step> steps = new ArrayList<>();
+    for (int i = 0; i < lines.size(); i++) {
+      int n = i + 1;
+      String raw = lines.get(i);
+      String t = raw.strip();
+      if (t.isEmpty() || t.startsWith("#")) {
+        continue;
+      }
+      String word = t.split("\\s+", 2)[0].toUpperCase(Locale.ROOT);
+      String rest = t.length() > word.length() ? t.substring(word.length()).strip() : "";
+      switch (word) {
+        case "SHOW" -> {
+          if (!rest.isEmpty()) {
+            return bad(file, n, "SHOW takes nothing after it");
+          }
+          steps.add(new Step.Show(n));
+        }
+        case "TYPE" -> {
+          // the text as written after "TYPE ", inner spaces kept
+          String text = raw.stripLeading().substring(4);
+          text = text.startsWith(" ") ? text.substring(1) : text;
+          if (text.isEmpty()) {
+            return bad(file, n, "TYPE needs the text to type");
+          }
+          steps.add(new Step.Type(n, text.stripTrailing()));
+        }
+        case "WAIT" -> {
+          try {
+            double s = Double.parseDouble(rest);
+            if (!(s >= 0) || s > 3600) {
+              return bad(file, n, "WAIT seconds must be 0..3600, got " + rest);
+            }
+            steps.add(new Step.Wait(n, s));
+          } catch (NumberFormatException e) {
+            return bad(file, n, "WAIT needs seconds (e.g. WAIT 2.5), got '" + rest + "'");
+          }
+        }
+        case "HOLD", "RELEASE" -> {
+          if (rest.isEmpty()) {
+            // HOLD alone is the HOLD key
+            if (word.equals("HOLD")) {
+              steps.add(new Step.Tap(n, Key.HOLD, false, 1));
+              continue;
+            }
+            return bad(file, n, "RELEASE needs a key name");
+          }
+          Optional<Key> k = Key.parse(rest);
+          if (k.isEmpty()) {
+            return bad(file, n, "unknown key '" + rest + "'");
+          }
+          steps.add(word.equals("HOLD") ? new Step.Press(n, k.get()) : new Step.Release(n, k.get()));
+        }
+        default -> {
+          String keyText = t;
+          int times = 1;
+          int star = t.lastIndexOf('*');
+          if (star > 0) {
+            try {
+              times = Integer.parseInt(t.substring(star + 1).strip());
+            } catch (NumberFormatException e) {
+              return bad(file, n, "repeat count after * must be a whole number");
+            }
+            if (times < 1 || times > 1000) {
+              return bad(file, n, "repeat count must be 1..1000");
+            }
+            keyText = t.substring(0, star).strip();
+          }
+          boolean shift = false;
+          Optional<Key> k = Key.parse(keyText);
+          if (k.isEmpty() && keyText.toUpperCase(Locale.ROOT).startsWith("SHIFT+")) {
+            shift = true;
+            k = Key.parse(keyText.substring(6));
+          }
+          if (k.isEmpty()) {
+            return bad(file, n, "unknown key or command '" + keyText + "' (keys: F1..F5, ENTER, SHIFT+FWD, +X/J1...;"
+                + " commands: TYPE, HOLD, RELEASE, WAIT, SHOW)");
+          }
+          steps.add(new Step.Tap(n, k.get(), shift, times));
+        }
+      }
+    }
+    return new Parsed.Ok(new KeyScript(steps));
+  }
+
+  private static Parsed bad(String file, int line, String message) {
+    return new Parsed.Bad(new Malformed(file, line, message));
+  }
+
+  /** Outcome of {@link #parse}. */
+  public sealed interface Parsed {
+    /** A script ready to run. */
+    record Ok(KeyScript script) implements Parsed {}
+
+    /** The first malformed line. */
+    record Bad(Malformed error) implements Parsed {}
+  }
+
+  /**
+   * Runs the script on {@code pendant}; every SHOW hands {@code show} a header line and the
+   * LCD text.
+   */
+  public void run(Pendant pendant, Consumer<String> show) {
+    double timeSec = 0;
+    for (Step s : steps) {
+      switch (s) {
+        case Step.Tap t -> {
+          for (int i = 0; i < t.times(); i++) {
+            if (t.shift()) {
+              pendant.press(Key.SHIFT);
+            }
+            pendant.tap(t.key());
+            if (t.shift()) {
+              pendant.release(Key.SHIFT);
+            }
+          }
+        }
+        case Step.Press p -> pendant.press(p.key());
+        case Step.Release r -> pendant.release(r.key());
+        case Step.Type t -> pendant.type(t.text());
+        case Step.Wait w -> {
+          pendant.advance(w.seconds());
+          timeSec += w.seconds();
+        }
+        case Step.Show sh -> show.accept(String.format(Locale.ROOT, "-- SHOW (line %d, t=%.3f s) --%n%s", sh.line(),
+            timeSec, pendant.render()));
+      }
+    }
+  }
+}

@@ -1,0 +1,584 @@
+package org.robotrun.pendant;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.Function;
+import java.util.function.IntConsumer;
+import java.util.function.UnaryOperator;
+import org.robotrun.pendant.RobotControl.CoordSystem;
+import org.robotrun.pendant.RobotControl.ExecState;
+import org.robotrun.pendant.RobotControl.ExecutionStatus;
+import org.robotrun.pendant.RobotControl.Result;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Program;
+
+/**
+ * The teach pendant as a state machine: keys in, commands on a {@link RobotControl} out, and the
+ * LCD as text ({@link #lcd()}). No drawing and no toolkit: the desktop UI draws {@link Lcd} rows
+ * and forwards keys; scripts and tests do the same with {@code .keys} files.
+ *
+ * <p>SHIFT works held ({@link #press}/{@link #release}) and toggled (a SHIFT press and release
+ * with no other key between latches it on or off). SHIFT is also the deadman: jog keys move the
+ * robot only while it is on. Every error the operator can cause ends as a message on the prompt
+ * line; no key throws.
+ */
+public final class Pendant {
+  /** Undo depth of the program editor (the issue asks for at least 50). */
+  static final int UNDO_DEPTH = 100;
+
+  private final RobotControl control;
+  private final LineParser lineParser;
+
+  final SelectScreen selectScreen = new SelectScreen();
+  final EditScreen editScreen = new EditScreen();
+  final DataScreen dataScreen = new DataScreen();
+  final IoScreen ioScreen = new IoScreen();
+  final PosnScreen posnScreen = new PosnScreen();
+  final FrameScreen frameScreen = new FrameScreen();
+  final AlarmScreen alarmScreen = new AlarmScreen();
+
+  private Screen screen = selectScreen;
+  private final Deque<Screen> history = new ArrayDeque<>();
+  private Modal modal;
+  private String message = "";
+
+  private boolean shiftHeld;
+  private boolean shiftLatched;
+  private boolean keySinceShiftPress;
+  private CoordSystem coord = CoordSystem.JOINT;
+  private Key jogKey;
+
+  /** The program the EDIT screen and SHIFT+FWD work on ("" before one is chosen). */
+  String selectedProgram = "";
+  final Map<String, Deque<Program>> undo = new HashMap<>();
+  /** Lines commented out on this pendant, by program and text, so uncomment restores them exactly. */
+  final Map<String, org.robotrun.program.Instruction> commentMemo = new HashMap<>();
+  List<org.robotrun.program.Instruction> clipboard = List.of();
+  DefaultMotion defaultMotion = DefaultMotion.STANDARD.get(0);
+
+  /** A pendant on {@code control}; uncommenting lines not commented here needs a parser (may be {@link LineParser#NONE}). */
+  public Pendant(RobotControl control, LineParser lineParser) {
+    this.control = java.util.Objects.requireNonNull(control, "control");
+    this.lineParser = java.util.Objects.requireNonNull(lineParser, "lineParser");
+  }
+
+  /** A pendant without a TP line parser. */
+  public Pendant(RobotControl control) {
+    this(control, LineParser.NONE);
+  }
+
+  /** The controller this pendant drives. */
+  public RobotControl control() {
+    return control;
+  }
+
+  LineParser lineParser() {
+    return lineParser;
+  }
+
+  // ---- input -----------------------------------------------------------------------------
+
+  /** A key goes down. */
+  public void press(Key k) {
+    if (k == Key.SHIFT) {
+      shiftHeld = true;
+      keySinceShiftPress = false;
+      return;
+    }
+    keySinceShiftPress = true;
+    if (k.isJog()) {
+      jogPress(k);
+      return;
+    }
+    message = "";
+    handle(k);
+    followExecution();
+  }
+
+  /** A key comes up: jog keys stop; SHIFT released with no key between toggles the latch. */
+  public void release(Key k) {
+    if (k == Key.SHIFT) {
+      shiftHeld = false;
+      if (!keySinceShiftPress) {
+        shiftLatched = !shiftLatched;
+        message = shiftLatched ? "SHIFT latched on (deadman held)" : "SHIFT latch off";
+      }
+      if (!shift() && jogKey != null) {
+        control.jogStop();
+        jogKey = null;
+        message = "Jog stopped: deadman (SHIFT) released";
+      }
+      return;
+    }
+    if (k.isJog() && k == jogKey) {
+      control.jogStop();
+      jogKey = null;
+    }
+  }
+
+  /** Press and release. */
+  public void tap(Key k) {
+    press(k);
+    release(k);
+  }
+
+  /** Typed text: goes to an open entry, or starts one on the field under the cursor. */
+  public void type(String text) {
+    keySinceShiftPress = true;
+    if (modal instanceof Modal.Entry e) {
+      e.settle();
+      e.buffer.append(text);
+      return;
+    }
+    if (modal != null) {
+      message = "Finish the open prompt first (ENTER or PREV)";
+      return;
+    }
+    message = "";
+    screen.text(this, text);
+  }
+
+  /** Advances simulated time; the EDIT cursor follows the executing line. */
+  public void advance(double dtSec) {
+    control.advance(dtSec);
+    followExecution();
+  }
+
+  /** Whether SHIFT is on (held or latched). */
+  public boolean shift() {
+    return shiftHeld || shiftLatched;
+  }
+
+  /** The jog coordinate system COORD selects. */
+  public CoordSystem coord() {
+    return coord;
+  }
+
+  private void jogPress(Key k) {
+    if (!shift()) {
+      message = "Hold SHIFT (deadman) to jog";
+      return;
+    }
+    Result r = control.jogStart(coord, k.jogAxis(), k.jogSign());
+    switch (r) {
+      case Result.Ok ok -> {
+        jogKey = k;
+        message = ok.message();
+      }
+      case Result.Refused no -> message = no.reason();
+    }
+  }
+
+  private void handle(Key k) {
+    if (modal != null) {
+      modalKey(k);
+      return;
+    }
+    switch (k) {
+      case SELECT -> show(selectScreen);
+      case EDIT -> openEditor();
+      case DATA -> show(dataScreen);
+      case POSN -> show(posnScreen);
+      case IO -> show(ioScreen);
+      case STATUS -> show(alarmScreen);
+      case MENU -> menu();
+      case FCTN -> function();
+      case DISP -> {
+        Screen back = history.peek();
+        if (back != null) {
+          show(back);
+        } else {
+          message = "No other screen to display";
+        }
+      }
+      case PREV -> {
+        if (!screen.prev(this)) {
+          if (history.isEmpty()) {
+            message = "No previous screen";
+          } else {
+            screen = history.pop();
+          }
+        }
+      }
+      case COORD -> {
+        if (shift()) {
+          frameSelectMenu();
+        } else {
+          coord = CoordSystem.values()[(coord.ordinal() + 1) % CoordSystem.values().length];
+          message = "Jog coordinates: " + coord;
+        }
+      }
+      case STEP -> {
+        control.setStepMode(!control.stepMode());
+        message = control.stepMode() ? "Single step on" : "Single step off";
+      }
+      case HOLD -> {
+        control.hold();
+        message = "HOLD";
+      }
+      case FWD, BWD -> run(k == Key.FWD);
+      case RESET -> {
+        boolean had = control.activeAlarm().isPresent();
+        control.reset();
+        message = had ? "Alarm reset" : "RESET";
+      }
+      case OVERRIDE_UP, OVERRIDE_DOWN -> {
+        control.setOverridePct(OverrideSteps.next(control.overridePct(), k == Key.OVERRIDE_UP, shift()));
+        message = "Override " + control.overridePct() + "%";
+      }
+      case TOOL1, TOOL2 -> toggleHand(k == Key.TOOL1 ? 1 : 2);
+      default -> screen.key(this, k);
+    }
+  }
+
+  private void toggleHand(int port) {
+    boolean on = !control.registers().bit(IoKind.RO, port);
+    control.registers().setBit(IoKind.RO, port, on);
+    message = "RO[" + port + "]=" + (on ? "ON" : "OFF") + (port == 1 ? (on ? " (hand closed)" : " (hand open)") : "");
+  }
+
+  private void run(boolean forward) {
+    String name = selectedProgram;
+    if (!shift()) {
+      message = "Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run";
+      return;
+    }
+    if (name.isEmpty() || control.program(name).isEmpty()) {
+      message = "No program selected: choose one on SELECT";
+      return;
+    }
+    int line = editScreen.cursorLine(this);
+    int count = control.program(name).get().lineCount();
+    if (line > count) {
+      if (!forward && count > 0) {
+        line = count + 1;
+      } else {
+        message = "Cursor at [End]: move it to the line to start from";
+        return;
+      }
+    }
+    Result r = control.run(name, line, forward);
+    message = switch (r) {
+      case Result.Ok ok -> ok.message();
+      case Result.Refused no -> no.reason();
+    };
+  }
+
+  private void followExecution() {
+    ExecutionStatus st = control.status();
+    if (st.state() != ExecState.IDLE && st.program().equals(editScreen.programName) && st.line() > 0) {
+      editScreen.follow(this, st.line());
+    }
+  }
+
+  private void menu() {
+    List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm");
+    choose("MENU", items, i -> {
+      switch (i) {
+        case 0 -> show(selectScreen);
+        case 1 -> openEditor();
+        case 2 -> show(dataScreen);
+        case 3 -> show(ioScreen);
+        case 4 -> show(frameScreen);
+        case 5 -> show(posnScreen);
+        default -> show(alarmScreen);
+      }
+    });
+  }
+
+  private void function() {
+    choose("FUNCTION", List.of("ABORT (ALL)", "SHIFT latch off", "Set active UTOOL/UFRAME"), i -> {
+      switch (i) {
+        case 0 -> {
+          control.abort();
+          message = "Program aborted";
+        }
+        case 1 -> {
+          shiftLatched = false;
+          message = "SHIFT latch off";
+        }
+        default -> frameSelectMenu();
+      }
+    });
+  }
+
+  /** SHIFT+COORD: choose the active tool or user frame. */
+  void frameSelectMenu() {
+    choose("Active frame", List.of("Tool frame (UTOOL)", "User frame (UFRAME)"), which -> {
+      FrameKind kind = which == 0 ? FrameKind.TOOL : FrameKind.USER;
+      String word = kind == FrameKind.TOOL ? "UTOOL" : "UFRAME";
+      entry("Active " + word + " (0-10):", Integer.toString(control.activeFrame(kind)), false, t -> {
+        Optional<Integer> n = parseInt(t, 0, 10);
+        if (n.isEmpty()) {
+          return Optional.of(word + ": enter 0 to 10, got '" + t.trim() + "'");
+        }
+        control.selectFrame(kind, n.get());
+        message = word + "_NUM=" + n.get();
+        return Optional.empty();
+      });
+    });
+  }
+
+  void openEditor() {
+    if (selectedProgram.isEmpty() || control.program(selectedProgram).isEmpty()) {
+      show(selectScreen);
+      message = "No program selected: choose one and press ENTER";
+      return;
+    }
+    editScreen.open(this, selectedProgram);
+    show(editScreen);
+  }
+
+  /** Switches screens (PREV comes back). */
+  void show(Screen s) {
+    if (s != screen) {
+      history.push(screen);
+      while (history.size() > 20) {
+        history.removeLast();
+      }
+      screen = s;
+    }
+  }
+
+  /** Back to the screen shown before this one. */
+  void prevScreen() {
+    if (!history.isEmpty()) {
+      screen = history.pop();
+    }
+  }
+
+  /** The screen on display. */
+  public Screen screen() {
+    return screen;
+  }
+
+  // ---- modal prompts -----------------------------------------------------------------------
+
+  void choose(String title, List<String> options, IntConsumer onChoose) {
+    modal = new Modal.Choice(title, options, onChoose);
+  }
+
+  void entry(String prompt, String initial, boolean letters, Function<String, Optional<String>> onEnter) {
+    modal = new Modal.Entry(prompt, initial, letters, onEnter);
+  }
+
+  void confirm(String question, Runnable onYes) {
+    modal = new Modal.Confirm(question, onYes);
+  }
+
+  private void modalKey(Key k) {
+    switch (modal) {
+      case Modal.Choice c -> {
+        switch (k) {
+          case UP -> c.cursor = Math.max(0, c.cursor - 1);
+          case DOWN -> c.cursor = Math.min(c.options.size() - 1, c.cursor + 1);
+          case ENTER -> pick(c, c.cursor);
+          case PREV -> modal = null;
+          default -> {
+            int d = k.digit();
+            if (d >= 1 && d <= c.options.size()) {
+              pick(c, d - 1);
+            } else if (d == 0 && c.options.size() >= 10) {
+              pick(c, 9);
+            } else {
+              message = "Choose with UP/DOWN and ENTER (or 1-" + Math.min(9, c.options.size()) + "); PREV cancels";
+            }
+          }
+        }
+      }
+      case Modal.Entry e -> {
+        if (k.keypadChar().isPresent()) {
+          e.settle();
+          e.buffer.append(k.keypadChar().get());
+          return;
+        }
+        switch (k) {
+          case BACKSPACE -> {
+            e.settle();
+            if (e.buffer.length() > 0) {
+              e.buffer.setLength(e.buffer.length() - 1);
+            }
+          }
+          case F1, F2, F3, F4, F5 -> {
+            if (e.letters) {
+              e.letterKey(k.ordinal() - Key.F1.ordinal());
+            }
+          }
+          case RIGHT -> e.settle();
+          case ENTER -> {
+            modal = null;
+            Optional<String> err = e.onEnter.apply(e.buffer.toString());
+            err.ifPresent(m -> message = m);
+          }
+          case PREV -> {
+            modal = null;
+            message = "Entry cancelled";
+          }
+          default -> message = "Entry open: ENTER accepts, PREV cancels";
+        }
+      }
+      case Modal.Confirm c -> {
+        switch (k) {
+          case F4 -> {
+            modal = null;
+            c.onYes.run();
+          }
+          case F5, PREV -> {
+            modal = null;
+            message = "Cancelled";
+          }
+          default -> message = c.question + " F4 YES / F5 NO";
+        }
+      }
+    }
+  }
+
+  private void pick(Modal.Choice c, int i) {
+    modal = null;
+    c.onChoose.accept(i);
+  }
+
+  // ---- helpers for screens ----------------------------------------------------------------
+
+  /** Shows {@code text} on the prompt line. */
+  void message(String text) {
+    message = text;
+  }
+
+  /** The prompt line's current message. */
+  public String message() {
+    return message;
+  }
+
+  /**
+   * Changes program {@code name} through {@code edit}, keeping the old version for undo. A
+   * running program is not edited (message instead). Returns whether it changed.
+   */
+  boolean editProgram(String name, UnaryOperator<Program> edit) {
+    ExecutionStatus st = control.status();
+    if (st.state() == ExecState.RUNNING && st.program().equals(name)) {
+      message = "Program is running: HOLD or abort it before editing";
+      return false;
+    }
+    Optional<Program> before = control.program(name);
+    if (before.isEmpty()) {
+      message = "Program " + name + " no longer exists";
+      return false;
+    }
+    Program after = edit.apply(before.get());
+    if (after == null || after.equals(before.get())) {
+      return false;
+    }
+    Deque<Program> stack = undo.computeIfAbsent(name, n -> new ArrayDeque<>());
+    stack.push(before.get());
+    while (stack.size() > UNDO_DEPTH) {
+      stack.removeLast();
+    }
+    control.saveProgram(after);
+    return true;
+  }
+
+  /** Undoes the last edit of program {@code name}. */
+  void undo(String name) {
+    Deque<Program> stack = undo.get(name);
+    if (stack == null || stack.isEmpty()) {
+      message = "Nothing to undo";
+      return;
+    }
+    control.saveProgram(stack.pop());
+    message = "Undone (" + stack.size() + " more)";
+  }
+
+  static Optional<Integer> parseInt(String text, int lo, int hi) {
+    try {
+      int v = Integer.parseInt(text.trim());
+      return v < lo || v > hi ? Optional.empty() : Optional.of(v);
+    } catch (NumberFormatException e) {
+      return Optional.empty();
+    }
+  }
+
+  static Optional<Double> parseNumber(String text) {
+    try {
+      double v = Double.parseDouble(text.trim());
+      return Double.isFinite(v) ? Optional.of(v) : Optional.empty();
+    } catch (NumberFormatException e) {
+      return Optional.empty();
+    }
+  }
+
+  // ---- LCD ---------------------------------------------------------------------------------
+
+  /** The LCD as it stands. */
+  public Lcd lcd() {
+    followExecution();
+    List<String> body;
+    String prompt = message;
+    List<String> keys;
+    String title = screen.title(this);
+    switch (modal) {
+      case null -> {
+        body = screen.body(this);
+        keys = screen.functionKeys(this);
+      }
+      case Modal.Choice c -> {
+        body = choiceBody(c);
+        keys = List.of("", "", "", "", "");
+        title = title + " - " + c.title;
+        if (prompt.isEmpty()) {
+          prompt = "Select item (UP/DOWN, ENTER or number; PREV cancels)";
+        }
+      }
+      case Modal.Entry e -> {
+        body = screen.body(this);
+        prompt = e.prompt + " " + e.buffer + "_";
+        keys = e.letters ? Modal.Entry.LETTER_GROUPS : List.of("", "", "", "", "");
+      }
+      case Modal.Confirm c -> {
+        body = screen.body(this);
+        prompt = c.question;
+        keys = List.of("", "", "", "YES", "NO");
+      }
+    }
+    return Lcd.of(statusLine(), control.activeAlarm().map(RobotControl.AlarmEntry::display).orElse(""), title, body,
+        prompt, keys);
+  }
+
+  /** The LCD as text (what {@code SHOW} prints). */
+  public String render() {
+    return lcd().toString();
+  }
+
+  private String statusLine() {
+    ExecutionStatus st = control.status();
+    String prog = st.program().isEmpty() ? selectedProgram : st.program();
+    int line = st.program().isEmpty() || st.state() == ExecState.IDLE && !st.program().equals(selectedProgram)
+        ? (selectedProgram.isEmpty() ? 0 : editScreen.cursorLine(this)) : st.line();
+    String state = switch (st.state()) {
+      case IDLE -> "";
+      case RUNNING -> "RUNNING";
+      case PAUSED -> "PAUSED";
+      case ABORTED -> "ABORTED";
+    };
+    return String.format(Locale.ROOT, "%-12s LINE %-4d %-7s %-4s %-5s T%-2d U%-2d %3d%%%s",
+        prog.isEmpty() ? "(none)" : prog.length() > 12 ? prog.substring(0, 12) : prog, line, state,
+        control.stepMode() ? "STEP" : "", coord, control.activeFrame(FrameKind.TOOL), control.activeFrame(FrameKind.USER),
+        control.overridePct(), shift() ? " SHIFT" : "");
+  }
+
+  private static List<String> choiceBody(Modal.Choice c) {
+    List<String> rows = new ArrayList<>();
+    int top = Math.max(0, Math.min(c.cursor - Lcd.BODY_ROWS / 2, c.options.size() - Lcd.BODY_ROWS));
+    for (int i = top; i < c.options.size() && rows.size() < Lcd.BODY_ROWS; i++) {
+      rows.add((i == c.cursor ? ">" : " ") + String.format(Locale.ROOT, "%2d ", i + 1) + c.options.get(i));
+    }
+    return rows;
+  }
+}

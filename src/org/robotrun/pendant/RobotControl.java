@@ -1,0 +1,308 @@
+package org.robotrun.pendant;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
+
+/**
+ * What the pendant needs from one robot's controller. The pendant owns screens and keys; the
+ * controller owns programs, registers, frames, motion and execution. {@code sim.Controller} is
+ * reached through an adapter ({@link StandInRobotControl} serves until then, and in tests).
+ *
+ * <p>Units at this boundary are the pendant's: mm and degrees; joints in FANUC's coupled-J3
+ * convention. Every method a user can make fail answers with a {@link Result}, never an
+ * exception.
+ */
+public interface RobotControl {
+
+  // ---- programs ----------------------------------------------------------------------------
+
+  /** Names of the stored programs, alphabetical. */
+  List<String> programNames();
+
+  /** The stored program {@code name}. */
+  Optional<Program> program(String name);
+
+  /** Stores (creates or replaces) a program. */
+  void saveProgram(Program program);
+
+  /** Deletes a program; refused while it runs or is paused. */
+  Result deleteProgram(String name);
+
+  // ---- registers, I/O, comments -------------------------------------------------------------
+
+  /** The controller's registers and I/O (live: the pendant reads and writes them). */
+  Registers registers();
+
+  /** Item comment of R[i] or PR[i] ("" when none). */
+  String comment(CommentTable table, int index);
+
+  /** Sets the item comment of R[i] or PR[i]. */
+  void setComment(CommentTable table, int index, String comment);
+
+  /** Tables whose items carry comments on the DATA screen. */
+  enum CommentTable {
+    R, PR
+  }
+
+  // ---- frames ------------------------------------------------------------------------------
+
+  /** UFRAME[n] / UTOOL[n], n = 1..10 (mm, deg). */
+  Position.Cartesian frame(FrameKind kind, int number);
+
+  /** Sets UFRAME[n] / UTOOL[n] (direct entry or a taught result). */
+  void setFrame(FrameKind kind, int number, Position.Cartesian value);
+
+  /** The frame's comment ("" when none). */
+  String frameComment(FrameKind kind, int number);
+
+  /** Sets the frame's comment. */
+  void setFrameComment(FrameKind kind, int number, String comment);
+
+  /** The active user or tool frame number, 0..10 (0 = world / flange). */
+  int activeFrame(FrameKind kind);
+
+  /** Selects the active user or tool frame, 0..10. */
+  void selectFrame(FrameKind kind, int number);
+
+  /**
+   * Computes a frame from recorded robot positions (the kinematics issue's methods) and, on
+   * success, stores it in UTOOL[number] / UFRAME[number]. {@code points} are the recorded joint
+   * positions in the order the method lists them; user-frame methods use the active tool.
+   */
+  TeachResult teachFrame(FrameKind kind, int number, TeachMethod method, List<Position.Joint> points);
+
+  /** Frame teaching methods (direct entry needs no points). */
+  enum TeachMethod {
+    TOOL_THREE_POINT(FrameKind.TOOL, "Three Point", List.of("Approach point 1", "Approach point 2", "Approach point 3")),
+    TOOL_SIX_POINT_XZ(FrameKind.TOOL, "Six Point(XZ)", List.of("Approach point 1", "Approach point 2",
+        "Approach point 3", "Orient Origin Point", "X Direction Point", "Z Direction Point")),
+    TOOL_SIX_POINT_XY(FrameKind.TOOL, "Six Point(XY)", List.of("Approach point 1", "Approach point 2",
+        "Approach point 3", "Orient Origin Point", "X Direction Point", "Y Direction Point")),
+    USER_THREE_POINT(FrameKind.USER, "Three Point", List.of("Orient Origin Point", "X Direction Point",
+        "Y Direction Point")),
+    USER_FOUR_POINT(FrameKind.USER, "Four Point", List.of("Orient Origin Point", "X Direction Point",
+        "Y Direction Point", "System Origin")),
+    DIRECT_ENTRY_TOOL(FrameKind.TOOL, "Direct Entry", List.of()),
+    DIRECT_ENTRY_USER(FrameKind.USER, "Direct Entry", List.of());
+
+    private final FrameKind kind;
+    private final String title;
+    private final List<String> pointNames;
+
+    TeachMethod(FrameKind kind, String title, List<String> pointNames) {
+      this.kind = kind;
+      this.title = title;
+      this.pointNames = pointNames;
+    }
+
+    /** Which frames the method teaches. */
+    public FrameKind kind() {
+      return kind;
+    }
+
+    /** The name on the pendant ("Three Point"). */
+    public String title() {
+      return title;
+    }
+
+    /** The points to record, in order (empty for direct entry). */
+    public List<String> pointNames() {
+      return pointNames;
+    }
+
+    /** The methods offered for one kind of frame. */
+    public static List<TeachMethod> forKind(FrameKind kind) {
+      return java.util.Arrays.stream(values()).filter(m -> m.kind == kind).toList();
+    }
+  }
+
+  /** Outcome of frame teaching: the frame, or why it could not be computed. */
+  sealed interface TeachResult {
+    /** Taught: the frame stored, with a detail line (e.g. the fit error). */
+    record Taught(Position.Cartesian frame, String detail) implements TeachResult {
+      public Taught {
+        Objects.requireNonNull(frame, "frame");
+        Objects.requireNonNull(detail, "detail");
+      }
+    }
+
+    /** Not taught: the reason (points too close, collinear…). */
+    record Failed(String reason) implements TeachResult {
+      public Failed {
+        Objects.requireNonNull(reason, "reason");
+      }
+    }
+  }
+
+  // ---- position ----------------------------------------------------------------------------
+
+  /** The current joint position (deg, coupled J3). */
+  Position.Joint currentJoints();
+
+  /**
+   * The current TCP of tool frame {@code toolFrame} (0 = flange) in user frame
+   * {@code userFrame} (0 = world), with the current configuration.
+   */
+  Position.Cartesian currentPose(int userFrame, int toolFrame);
+
+  /** A Cartesian position (in the given frames) as joints, or why it is unreachable. */
+  Conversion<Position.Joint> toJoints(Position.Cartesian pose, int userFrame, int toolFrame);
+
+  /** Joints as a Cartesian position of {@code toolFrame} in {@code userFrame}. */
+  Position.Cartesian toCartesian(Position.Joint joints, int userFrame, int toolFrame);
+
+  /** A conversion that may fail (unreachable pose). */
+  sealed interface Conversion<T> {
+    /** Converted. */
+    record Ok<T>(T value) implements Conversion<T> {}
+
+    /** Not convertible, with the reason. */
+    record Failed<T>(String reason) implements Conversion<T> {}
+  }
+
+  /**
+   * Starts a joint move to {@code target} at a slow teaching speed (MOVE_TO, TOUCHUP checks),
+   * taught in {@code userFrame}/{@code toolFrame} for a Cartesian target.
+   */
+  Result moveTo(Position target, int userFrame, int toolFrame);
+
+  // ---- jog ---------------------------------------------------------------------------------
+
+  /** Jog coordinate systems, in the order COORD cycles them. */
+  enum CoordSystem {
+    JOINT, WORLD, TOOL, USER
+  }
+
+  /**
+   * Starts jogging axis {@code axis} (1..6: X,Y,Z,W,P,R or J1..J6) in direction {@code sign}
+   * (+1/-1) in {@code coord}. The jog runs while the key is held and the deadman is on.
+   */
+  Result jogStart(CoordSystem coord, int axis, int sign);
+
+  /** Stops any jog (key released, deadman released). */
+  void jogStop();
+
+  // ---- execution ---------------------------------------------------------------------------
+
+  /** Speed override, 1..100 %. */
+  int overridePct();
+
+  /** Sets the speed override, 1..100 %. */
+  void setOverridePct(int percent);
+
+  /** Single-step mode (STEP key). */
+  boolean stepMode();
+
+  /** Sets single-step mode. */
+  void setStepMode(boolean on);
+
+  /**
+   * SHIFT+FWD / SHIFT+BWD: runs {@code program} from {@code line} forward, or steps back one
+   * motion; a paused program of the same name resumes. Refused with a reason (active alarm,
+   * program missing, line out of range).
+   */
+  Result run(String program, int line, boolean forward);
+
+  /** HOLD: pauses a running program (motion decelerates). */
+  void hold();
+
+  /** FCTN ABORT: ends the program (state ABORTED). */
+  void abort();
+
+  /** RESET: clears the active alarm. */
+  void reset();
+
+  /** Where execution stands. */
+  ExecutionStatus status();
+
+  /** Execution states as the status line names them. */
+  enum ExecState {
+    IDLE, RUNNING, PAUSED, ABORTED
+  }
+
+  /**
+   * Execution status.
+   *
+   * @param program the program running, paused or last run ("" when none)
+   * @param line its current line (1-based; 0 when none)
+   */
+  record ExecutionStatus(String program, int line, ExecState state) {
+    public ExecutionStatus {
+      Objects.requireNonNull(program, "program");
+      Objects.requireNonNull(state, "state");
+    }
+  }
+
+  /** The active alarm, if any. */
+  Optional<AlarmEntry> activeAlarm();
+
+  /** Alarm history, newest first. */
+  List<AlarmEntry> alarmHistory();
+
+  /** Clears the alarm history (the active alarm stays until RESET). */
+  void clearAlarmHistory();
+
+  /** Raises an alarm (e.g. a pendant operation the controller refuses in the middle of a run). */
+  void raiseAlarm(AlarmEntry alarm);
+
+  /**
+   * One alarm as the pendant shows it: {@code SRVO-062 ...}, {@code INTP-311 (PICK, 4) ...}.
+   *
+   * @param code FANUC-style code, e.g. {@code MOTN-017}
+   * @param program program name, "" when not from a program
+   * @param line program line, 0 when none
+   */
+  record AlarmEntry(String code, String message, String program, int line) {
+    public AlarmEntry {
+      Objects.requireNonNull(code, "code");
+      Objects.requireNonNull(message, "message");
+      Objects.requireNonNull(program, "program");
+    }
+
+    /** One line: {@code INTP-311 (PICK, 4) Undefined label}. */
+    public String display() {
+      String where = program.isEmpty() ? "" : " (" + program + ", " + line + ")";
+      return code + where + " " + message;
+    }
+  }
+
+  // ---- time --------------------------------------------------------------------------------
+
+  /**
+   * Advances the simulation by {@code dtSec} of simulated time (headless and scripted use; a
+   * GUI-driven controller advances on its own clock and may treat this as a no-op).
+   */
+  void advance(double dtSec);
+
+  /** Outcome of a command the controller may refuse. */
+  sealed interface Result {
+    /** Done (or started), with an optional message for the prompt line. */
+    record Ok(String message) implements Result {
+      public Ok {
+        Objects.requireNonNull(message, "message");
+      }
+    }
+
+    /** Refused, with the reason for the prompt line. */
+    record Refused(String reason) implements Result {
+      public Refused {
+        Objects.requireNonNull(reason, "reason");
+      }
+    }
+
+    /** Done, nothing to say. */
+    static Result ok() {
+      return new Ok("");
+    }
+
+    /** Refused with a reason. */
+    static Result refused(String reason) {
+      return new Refused(reason);
+    }
+  }
+}

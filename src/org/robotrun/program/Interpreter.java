@@ -1,0 +1,846 @@
+package org.robotrun.program;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import org.robotrun.program.MotionRequest.Waypoint;
+
+/**
+ * Runs TP programs the way a controller does, one tick at a time: a program counter and an
+ * explicit call stack (no recursion in Java), so a pendant can run (SHIFT+FWD), single-step
+ * (STEP), HOLD, resume, run backward (SHIFT+BWD), and RESET an alarm (TP-LANGUAGE.md,
+ * "Execution").
+ *
+ * <p>Time is the caller's: {@link #tick(double)} advances simulated time and runs lines until the
+ * program waits (motion, WAIT), pauses, ends or alarms. Motions go to the {@link MotionPort};
+ * the interpreter waits for the port to report them done. A tick that runs more than
+ * {@link InterpreterSettings#instructionBudgetPerTick()} lines without waiting raises a runaway
+ * alarm rather than freezing the application.
+ *
+ * <p>Programs are compiled once per version ({@link Compiler}); the run loop and expression
+ * evaluation then allocate nothing for non-motion statements.
+ *
+ * <p>Semantics worth knowing (FANUC's where the language defines them): {@code /} always gives a
+ * real, {@code DIV} truncates toward zero, {@code MOD} takes the sign of the dividend; integer
+ * arithmetic that leaves 32 bits becomes real; a FOR loop whose start is past its end skips the
+ * body, and after a completed loop the counter holds the end value; {@code WAIT cond
+ * TIMEOUT,LBL[n]} jumps after {@code $WAITTMOUT}; TIMERs count simulated time on every tick;
+ * {@code Skip,LBL[n]} jumps after the motion because RobotRun has no skip condition that could
+ * become true; plain {@code Offset} (which needs OFFSET CONDITION) is an alarm.
+ *
+ * <p>Not thread-safe: one interpreter per controller, driven by the simulation thread.
+ */
+public final class Interpreter {
+
+  /** Where the interpreter stands. */
+  public enum State {
+    /** No program running; {@link #forward()} starts the selected program at the cursor. */
+    IDLE,
+    /** Running or waiting (motion, WAIT). */
+    RUNNING,
+    /** Stopped and resumable (HOLD, PAUSE, STEP, after a backward step). */
+    PAUSED,
+    /** Stopped by an alarm; {@link #reset()} clears it. */
+    ALARMED
+  }
+
+  /** Highest UFRAME / UTOOL number. */
+  static final int FRAME_COUNT = 10;
+
+  private static final int W_NONE = 0;
+  private static final int W_MOTION = 1;
+  private static final int W_TIME = 2;
+  private static final int W_CONDITION = 3;
+  private static final double TIME_EPS_SEC = 1e-9;
+  private static final int MAX_SCREEN_LINES = 100;
+
+  final ProgramStore store;
+  final Registers regs;
+  final MotionPort port;
+  final InterpreterSettings settings;
+
+  private final Map<String, CompiledProgram> compiled = new HashMap<>();
+  private final Frame[] frames;
+  private int depth;
+  /** The running frame ({@code frames[depth - 1]}), or null when idle. */
+  Frame cur;
+
+  private State state = State.IDLE;
+  private boolean stepMode;
+  private Alarm alarm;
+  private Outcome alarmOutcome;
+  private Outcome haltOutcome = Outcome.FINISHED;
+  private String selected = "";
+  private int cursorLine = 1;
+
+  private int waitKind = W_NONE;
+  /** Line index of the statement being waited on (motion or WAIT). */
+  private int waitLine;
+  private long motionHandle;
+  private boolean motionHeld;
+  private boolean motionBackward;
+  private Ops.LabelTarget motionSkip;
+  private double waitRemainingSec;
+  private double waitElapsedSec;
+  private Ops.WaitConditionOp waitOp;
+
+  /** Type of the value the last evaluated expression node returned ({@link Nodes#INT}…). */
+  int kind;
+  /** String value of the last node when {@code kind == STR}. */
+  String str;
+
+  private final double[][] pulseLeftSec;
+  private int activePulses;
+  private final List<String> userScreen = new ArrayList<>();
+  private String notice = "";
+  private long executedLines;
+
+  /** Runs programs from {@code store} on {@code registers}, moving through {@code port}. */
+  public Interpreter(ProgramStore store, Registers registers, MotionPort port, InterpreterSettings settings) {
+    this.store = Objects.requireNonNull(store, "store");
+    this.regs = Objects.requireNonNull(registers, "registers");
+    this.port = Objects.requireNonNull(port, "port");
+    this.settings = Objects.requireNonNull(settings, "settings");
+    this.frames = new Frame[settings.maxCallDepth()];
+    for (int i = 0; i < frames.length; i++) {
+      frames[i] = new Frame();
+    }
+    this.pulseLeftSec = new double[IoKind.values().length][Registers.IO_COUNT + 1];
+  }
+
+  // ================================================================ pendant-facing API
+
+  /** Selects the program SHIFT+FWD starts, with the cursor on line 1. Only when no program is active. */
+  public void select(String program) {
+    requireIdle("select a program");
+    selected = Objects.requireNonNull(program, "program");
+    cursorLine = 1;
+  }
+
+  /** Moves the cursor (1-based line) of an idle program or of the paused current program. */
+  public void setCursor(int line) {
+    if (line < 1) {
+      throw new IllegalArgumentException("line " + line + ": lines start at 1");
+    }
+    switch (state) {
+      case IDLE, ALARMED -> cursorLine = line;
+      case PAUSED -> {
+        cancelWait();
+        cur.pc = line - 1;
+      }
+      case RUNNING -> throw new IllegalStateException("cannot move the cursor of a running program: HOLD first");
+    }
+  }
+
+  /** STEP on (one line per {@link #forward()}) or off (run continuously). */
+  public void setStepMode(boolean on) {
+    stepMode = on;
+  }
+
+  public boolean stepMode() {
+    return stepMode;
+  }
+
+  /**
+   * SHIFT+FWD: starts the selected program at the cursor when idle, or resumes a paused one
+   * (a held motion continues). Does nothing while running or alarmed (RESET first).
+   */
+  public void forward() {
+    switch (state) {
+      case IDLE -> start();
+      case PAUSED -> {
+        if (waitKind == W_MOTION && motionHeld) {
+          port.resume(motionHandle);
+          motionHeld = false;
+        }
+        state = State.RUNNING;
+      }
+      case RUNNING, ALARMED -> {
+        // Nothing to do: already running, or an alarm must be reset first.
+      }
+    }
+  }
+
+  /** HOLD: pauses a running program; a motion in progress decelerates and stays resumable. */
+  public void hold() {
+    if (state != State.RUNNING) {
+      return;
+    }
+    if (waitKind == W_MOTION && !motionHeld) {
+      port.hold(motionHandle);
+      motionHeld = true;
+    }
+    state = State.PAUSED;
+  }
+
+  /**
+   * RESET: clears an alarm. The program is no longer active; the cursor stays on the alarm's
+   * line of the program that raised it, so SHIFT+FWD runs on from there.
+   */
+  public void reset() {
+    if (state == State.ALARMED) {
+      state = State.IDLE;
+      alarm = null;
+      alarmOutcome = null;
+    }
+  }
+
+  /** FCTN ABORT: ends the active program (cancelling its motion); the cursor stays where it was. */
+  public void abort() {
+    if (state == State.RUNNING || state == State.PAUSED) {
+      int line = cursorLine();
+      String program = cur.prog.name;
+      cancelWait();
+      deactivate(program, line);
+    }
+  }
+
+  /**
+   * SHIFT+BWD: one backward step. The robot is taken to stand at the target of the nearest
+   * motion line above the cursor; it moves back to the motion line above that one, using the
+   * motion type and speed of the line it backs out of (FINE), and the cursor lands on the line it
+   * backed out of (so SHIFT+FWD re-runs it). Lines with no effect are passed over; CALL, JMP,
+   * WAIT, I/O and other flow statements stop it with a {@link #notice()}.
+   *
+   * @return WaitingForMotion when a backward motion started, Paused when it stopped with a
+   *     notice, the alarm when building the motion failed, Continue when the program is running
+   *     (HOLD first; nothing happens)
+   */
+  public Outcome backward() {
+    switch (state) {
+      case RUNNING -> {
+        notice = "BWD: program is running; HOLD first";
+        return Outcome.CONTINUE;
+      }
+      case ALARMED -> {
+        return alarmOutcome;
+      }
+      case IDLE -> {
+        CompiledProgram cp = compiledOrNull(selected);
+        if (cp == null) {
+          notice = "BWD: no program " + selected;
+          return Outcome.FINISHED;
+        }
+        push(cp, Math.min(cursorLine - 1, cp.ops.length));
+        state = State.PAUSED;
+      }
+      case PAUSED -> {
+        if (waitKind == W_MOTION) {
+          // A held motion is abandoned; backing out of it returns to its start point.
+          port.cancel(motionHandle);
+          waitKind = W_NONE;
+        } else if (waitKind != W_NONE) {
+          cur.pc = waitLine;
+          waitKind = W_NONE;
+        }
+      }
+    }
+    return backwardStep();
+  }
+
+  /**
+   * Advances simulated time by {@code dtSec} (pulses, timers, waits) and runs the program until it
+   * waits, pauses, ends or alarms.
+   */
+  public Outcome tick(double dtSec) {
+    if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
+      throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);
+    }
+    if (activePulses > 0) {
+      advancePulses(dtSec);
+    }
+    regs.advanceTimers(dtSec);
+    switch (state) {
+      case IDLE -> {
+        return Outcome.FINISHED;
+      }
+      case PAUSED -> {
+        return Outcome.PAUSED;
+      }
+      case ALARMED -> {
+        return alarmOutcome;
+      }
+      case RUNNING -> {
+        // Below.
+      }
+    }
+    if (waitKind != W_NONE) {
+      Outcome waiting = serviceWait(dtSec);
+      if (waiting != null) {
+        return waiting;
+      }
+    }
+    return runLines();
+  }
+
+  public State state() {
+    return state;
+  }
+
+  /** The alarm that stopped the program, while ALARMED. */
+  public Optional<Alarm> alarm() {
+    return Optional.ofNullable(alarm);
+  }
+
+  /** The active program's name (the callee inside a CALL), or the selected one when idle. */
+  public String currentProgram() {
+    return cur != null ? cur.prog.name : selected;
+  }
+
+  /**
+   * The cursor (1-based): the line being waited on, else the line the next SHIFT+FWD runs; when
+   * idle or alarmed, where the program stopped or was put.
+   */
+  public int cursorLine() {
+    if (cur == null) {
+      return cursorLine;
+    }
+    return waitKind != W_NONE ? waitLine + 1 : cur.pc + 1;
+  }
+
+  /** Programs on the call stack (1 = top program only, 0 when idle). */
+  public int callDepth() {
+    return depth;
+  }
+
+  /** MESSAGE[] texts, oldest first (the user screen), at most the last 100. */
+  public List<String> userScreen() {
+    return Collections.unmodifiableList(userScreen);
+  }
+
+  /** The last note for the user (e.g. why backward execution stopped), "" when none. */
+  public String notice() {
+    return notice;
+  }
+
+  /** Lines executed since construction (for throughput figures). */
+  public long executedLines() {
+    return executedLines;
+  }
+
+  // ================================================================ run loop
+
+  private Outcome runLines() {
+    int budget = settings.instructionBudgetPerTick();
+    Frame f = cur;
+    int line = f.pc;
+    try {
+      while (true) {
+        f = cur;
+        line = f.pc;
+        Ops.Op[] ops = f.prog.ops;
+        if (line >= ops.length) {
+          // Running past the last line is an END.
+          if (end() != Ops.NEXT) {
+            return haltOutcome;
+          }
+          continue;
+        }
+        if (--budget < 0) {
+          throw new AlarmSignal(AlarmKind.RUNAWAY, "more than " + settings.instructionBudgetPerTick()
+              + " lines in one tick without motion or WAIT (runaway loop)");
+        }
+        f.pc = line + 1;
+        executedLines++;
+        if (ops[line].exec(this) != Ops.NEXT) {
+          return haltOutcome;
+        }
+        if (stepMode) {
+          state = State.PAUSED;
+          return Outcome.PAUSED;
+        }
+      }
+    } catch (AlarmSignal a) {
+      return raise(a, f.prog.name, line + 1);
+    }
+  }
+
+  private Outcome serviceWait(double dtSec) {
+    try {
+      switch (waitKind) {
+        case W_MOTION -> {
+          switch (port.poll(motionHandle)) {
+            case RUNNING -> {
+              return Outcome.WAITING_FOR_MOTION;
+            }
+            case FAILED -> {
+              MotionPort.Start.Rejected why = port.failure(motionHandle);
+              waitKind = W_NONE;
+              throw new AlarmSignal(AlarmKind.MOTION, why.code(), why.message());
+            }
+            case DONE -> {
+              waitKind = W_NONE;
+              if (motionBackward) {
+                state = State.PAUSED;
+                return Outcome.PAUSED;
+              }
+              if (motionSkip != null) {
+                cur.pc = motionSkip.line(this);
+              }
+            }
+          }
+        }
+        case W_TIME -> {
+          waitRemainingSec -= dtSec;
+          if (waitRemainingSec > TIME_EPS_SEC) {
+            return Outcome.WAITING_ON_TIME;
+          }
+          waitKind = W_NONE;
+        }
+        case W_CONDITION -> {
+          waitElapsedSec += dtSec;
+          if (!waitOp.condition.bool(this, "WAIT")) {
+            if (waitOp.timeout == null || waitElapsedSec < settings.waitTimeoutSec() - TIME_EPS_SEC) {
+              return Outcome.WAITING_ON_CONDITION;
+            }
+            cur.pc = waitOp.timeout.line(this);
+          }
+          waitKind = W_NONE;
+        }
+        default -> throw new IllegalStateException("wait kind " + waitKind);
+      }
+    } catch (AlarmSignal a) {
+      waitKind = W_NONE;
+      return raise(a, cur.prog.name, waitLine + 1);
+    }
+    if (stepMode) {
+      state = State.PAUSED;
+      return Outcome.PAUSED;
+    }
+    return null;
+  }
+
+  private Outcome raise(AlarmSignal a, String program, int line) {
+    cancelWait();
+    alarm = new Alarm(a.kind, a.code, program, line, a.getMessage());
+    alarmOutcome = new Outcome.Alarmed(alarm);
+    deactivate(program, line);
+    state = State.ALARMED;
+    return alarmOutcome;
+  }
+
+  private void deactivate(String program, int line) {
+    for (int i = 0; i < depth; i++) {
+      frames[i].prog = null;
+    }
+    depth = 0;
+    cur = null;
+    selected = program;
+    cursorLine = Math.max(1, line);
+    state = State.IDLE;
+  }
+
+  private void cancelWait() {
+    if (waitKind == W_MOTION) {
+      port.cancel(motionHandle);
+    }
+    waitKind = W_NONE;
+    motionHeld = false;
+  }
+
+  private void requireIdle(String what) {
+    if (state == State.RUNNING || state == State.PAUSED) {
+      throw new IllegalStateException("cannot " + what + " while program " + currentProgram() + " is active");
+    }
+  }
+
+  private void start() {
+    notice = "";
+    CompiledProgram cp = compiledOrNull(selected);
+    if (cp == null) {
+      raise(new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "program " + selected + " does not exist"), selected, cursorLine);
+      return;
+    }
+    if (cp.structureError != null) {
+      raise(new AlarmSignal(AlarmKind.STRUCTURE, cp.structureError), cp.name, cp.structureErrorLine + 1);
+      return;
+    }
+    push(cp, Math.min(cursorLine - 1, cp.ops.length));
+    state = State.RUNNING;
+  }
+
+  private void push(CompiledProgram cp, int pc) {
+    Frame f = frames[depth];
+    f.enter(cp, pc);
+    depth++;
+    cur = f;
+  }
+
+  private CompiledProgram compiledOrNull(String name) {
+    Optional<Program> found = store.find(name);
+    if (found.isEmpty()) {
+      return null;
+    }
+    Program p = found.get();
+    CompiledProgram c = compiled.get(name);
+    if (c == null || c.program != p) {
+      c = Compiler.compile(p);
+      compiled.put(name, c);
+    }
+    return c;
+  }
+
+  // ================================================================ services for compiled code
+
+  /** END, or running past the last line: return to the caller, or finish the top program. */
+  int end() {
+    if (depth <= 1) {
+      int line = Math.max(1, Math.min(cur.pc, cur.prog.ops.length));
+      deactivate(cur.prog.name, line);
+      haltOutcome = Outcome.FINISHED;
+      return Ops.HALT;
+    }
+    frames[depth - 1].prog = null;
+    depth--;
+    cur = frames[depth - 1];
+    return Ops.NEXT;
+  }
+
+  int pauseProgram() {
+    state = State.PAUSED;
+    haltOutcome = Outcome.PAUSED;
+    return Ops.HALT;
+  }
+
+  /** CALL: evaluates the arguments in the caller, then enters the callee at line 1. */
+  void call(String name, Nodes.Node[] args, int returnPc) {
+    CompiledProgram cp = compiledOrNull(name);
+    if (cp == null) {
+      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "CALL " + name + ": no such program");
+    }
+    if (depth + 1 > settings.maxCallDepth()) {
+      throw new AlarmSignal(AlarmKind.CALL_DEPTH,
+          "CALL " + name + ": call depth would exceed " + settings.maxCallDepth());
+    }
+    if (cp.structureError != null) {
+      throw new AlarmSignal(AlarmKind.STRUCTURE,
+          "CALL " + name + ": line " + (cp.structureErrorLine + 1) + ": " + cp.structureError);
+    }
+    Frame callee = frames[depth];
+    callee.ensureArgs(args.length);
+    for (int i = 0; i < args.length; i++) {
+      callee.argValue[i] = args[i].eval(this);
+      callee.argKind[i] = kind;
+      callee.argString[i] = kind == Nodes.STR ? str : null;
+    }
+    cur.pc = returnPc;
+    int nargs = args.length;
+    push(cp, 0);
+    callee.nargs = nargs;
+  }
+
+  /** AR[i] of the running program. */
+  double readArg(int i) {
+    Frame f = cur;
+    if (i < 1 || i > f.nargs) {
+      throw new AlarmSignal(AlarmKind.BAD_INDEX,
+          "AR[" + i + "]: " + f.prog.name + " was called with " + f.nargs + " argument" + (f.nargs == 1 ? "" : "s"));
+    }
+    kind = f.argKind[i - 1];
+    if (kind == Nodes.STR) {
+      str = f.argString[i - 1];
+    }
+    return f.argValue[i - 1];
+  }
+
+  /** R[i] = value of type {@link #kind}; ON/OFF stores 1/0, a string is a type mismatch. */
+  void storeR(int i, double v) {
+    switch (kind) {
+      case Nodes.INT, Nodes.BOOL -> {
+        regs.r[i] = v;
+        regs.rIsInteger[i] = true;
+      }
+      case Nodes.REAL -> {
+        regs.r[i] = v;
+        regs.rIsInteger[i] = false;
+      }
+      default -> throw Nodes.mismatch("R[" + i + "] needs a number", kind);
+    }
+  }
+
+  /** The value of R[j] used as an index ({@code R[R[j]]}, {@code LBL[R[j]]}): a whole number. */
+  int registerAsIndex(int j) {
+    Nodes.check("R", j, Registers.R_COUNT);
+    double v = regs.r[j];
+    if (!Nodes.isWhole(v)) {
+      throw new AlarmSignal(AlarmKind.BAD_INDEX, "R[" + j + "]=" + v + " is not a whole number and cannot be an index");
+    }
+    return (int) v;
+  }
+
+  LocalPosition localPosition(int n) {
+    Optional<LocalPosition> p = cur.prog.program.position(n);
+    if (p.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "P[" + n + "] is not in the /POS block of " + cur.prog.name);
+    }
+    return p.get();
+  }
+
+  int waitTime(double seconds) {
+    if (seconds <= 0) {
+      return Ops.NEXT;
+    }
+    waitKind = W_TIME;
+    waitLine = cur.pc - 1;
+    waitRemainingSec = seconds;
+    haltOutcome = Outcome.WAITING_ON_TIME;
+    return Ops.HALT;
+  }
+
+  int waitCondition(Ops.WaitConditionOp op) {
+    waitKind = W_CONDITION;
+    waitLine = cur.pc - 1;
+    waitOp = op;
+    waitElapsedSec = 0;
+    haltOutcome = Outcome.WAITING_ON_CONDITION;
+    return Ops.HALT;
+  }
+
+  void pulse(IoKind io, int i, double widthSec) {
+    regs.io[io.ordinal()][i] = 1;
+    if (pulseLeftSec[io.ordinal()][i] <= 0) {
+      activePulses++;
+    }
+    // A zero width still shows ON until the next tick.
+    pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
+  }
+
+  private void advancePulses(double dtSec) {
+    for (IoKind io : new IoKind[] {IoKind.DO, IoKind.RO}) {
+      double[] left = pulseLeftSec[io.ordinal()];
+      for (int i = 1; i < left.length; i++) {
+        if (left[i] > 0) {
+          left[i] -= dtSec;
+          if (left[i] <= TIME_EPS_SEC) {
+            left[i] = 0;
+            regs.io[io.ordinal()][i] = 0;
+            activePulses--;
+          }
+        }
+      }
+    }
+  }
+
+  void message(String text) {
+    if (userScreen.size() == MAX_SCREEN_LINES) {
+      userScreen.remove(0);
+    }
+    userScreen.add(text);
+  }
+
+  // ================================================================ motion
+
+  /** Issues a forward motion line (the current line), then waits for it. */
+  int startMotion(Ops.MoveOp op, boolean backward, MotionRequest request) {
+    MotionRequest req = request != null ? request : request(op.move, cur.pc - 1);
+    MotionPort.Start s = port.startMotion(req);
+    return switch (s) {
+      case MotionPort.Start.Rejected r -> throw new AlarmSignal(AlarmKind.MOTION, r.code(), r.message());
+      case MotionPort.Start.Started st -> {
+        waitKind = W_MOTION;
+        waitLine = backward ? req.line() - 1 : cur.pc - 1;
+        motionHandle = st.handle();
+        motionHeld = false;
+        motionBackward = backward;
+        motionSkip = backward ? null : op.skip;
+        haltOutcome = Outcome.WAITING_FOR_MOTION;
+        yield Ops.HALT;
+      }
+    };
+  }
+
+  /** Resolves a motion line into a request: positions, register speeds, CNT, offsets. */
+  private MotionRequest request(Instruction.Move mv, int lineIndex) {
+    int uf = port.activeFrame(Instruction.FrameKind.USER);
+    int ut = port.activeFrame(Instruction.FrameKind.TOOL);
+    Waypoint first = waypoint(mv.target(), uf, ut);
+    Optional<Waypoint> via = Optional.empty();
+    Waypoint target = first;
+    if (mv.circularEnd().isPresent()) {
+      via = Optional.of(first);
+      target = waypoint(mv.circularEnd().get(), uf, ut);
+    }
+    double speed = switch (mv.speed().value()) {
+      case Motion.SpeedConst c -> c.value();
+      case Motion.SpeedRegister r -> registerNumber(r.register(), "speed");
+    };
+    if (!mv.speed().unit().fits(mv.type())) {
+      throw new AlarmSignal(AlarmKind.BAD_VALUE, "speed unit " + mv.speed().unit() + " does not fit a " + mv.type() + " motion");
+    }
+    if (!(speed > 0)) {
+      throw new AlarmSignal(AlarmKind.BAD_VALUE, "speed " + speed + " must be greater than 0");
+    }
+    boolean fine = false;
+    int cnt = switch (mv.termination()) {
+      case Motion.Fine f -> {
+        fine = true;
+        yield 0;
+      }
+      case Motion.Cnt c -> c.value();
+      case Motion.CntRegister r -> {
+        double v = registerNumber(r.register(), "CNT");
+        if (!Nodes.isWhole(v)) {
+          throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, "CNT needs an integer, got " + v);
+        }
+        yield (int) v;
+      }
+    };
+    if (cnt < 0 || cnt > 100) {
+      throw new AlarmSignal(AlarmKind.BAD_VALUE, "CNT" + cnt + ": expected 0..100");
+    }
+    Optional<Position> offset = Optional.empty();
+    Optional<Position> toolOffset = Optional.empty();
+    int acc = 100;
+    boolean wjnt = false;
+    boolean inc = false;
+    for (Motion.Option o : mv.options()) {
+      switch (o) {
+        case Motion.Offset x -> throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION,
+            "Offset needs an OFFSET CONDITION, which RobotRun does not support: write Offset,PR[i]");
+        case Motion.OffsetPr x -> offset = Optional.of(positionRegister(x.register()));
+        case Motion.ToolOffsetPr x -> toolOffset = Optional.of(positionRegister(x.register()));
+        case Motion.Acc x -> {
+          if (x.percent() < 0 || x.percent() > 150) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, "ACC" + x.percent() + ": expected 0..150");
+          }
+          acc = x.percent();
+        }
+        case Motion.Skip x -> {
+          // Handled after the motion (see MoveOp.skip).
+        }
+        case Motion.Wjnt x -> wjnt = true;
+        case Motion.Inc x -> inc = true;
+      }
+    }
+    return new MotionRequest(mv.type(), target, via, speed, mv.speed().unit(), fine, cnt, offset, toolOffset, acc, wjnt,
+        inc, false, cur.prog.name, lineIndex + 1);
+  }
+
+  private double registerNumber(Item register, String what) {
+    int i = Nodes.check("R", new Nodes.Idx(register.index()).resolve(this), Registers.R_COUNT);
+    return regs.r[i];
+  }
+
+  private Position positionRegister(Item register) {
+    int i = Nodes.check("PR", new Nodes.Idx(register.index()).resolve(this), Registers.PR_COUNT);
+    return regs.pr[i];
+  }
+
+  private Waypoint waypoint(Motion.Target target, int activeUf, int activeUt) {
+    return switch (target) {
+      case Motion.Local l -> {
+        LocalPosition p = localPosition(l.number());
+        yield new Waypoint(itemName("P", l.number(), l.comment()), p.position(), p.userFrame(), p.toolFrame());
+      }
+      case Motion.Register r -> {
+        int i = Nodes.check("PR", new Nodes.Idx(r.register().index()).resolve(this), Registers.PR_COUNT);
+        yield new Waypoint(itemName("PR", i, r.register().comment()), regs.pr[i], activeUf, activeUt);
+      }
+    };
+  }
+
+  private static String itemName(String table, int n, String comment) {
+    return table + "[" + n + (comment.isEmpty() ? "" : ":" + comment) + "]";
+  }
+
+  private Outcome backwardStep() {
+    CompiledProgram p = cur.prog;
+    int c = cur.pc;
+    int m1 = motionAbove(p, c);
+    if (m1 < 0) {
+      return backwardStopped(m1, c);
+    }
+    int m0 = motionAbove(p, m1);
+    if (m0 < 0) {
+      // The robot already stands at the first motion's point: the cursor stays.
+      return backwardStopped(m0, m1);
+    }
+    for (int line : new int[] {m0, m1}) {
+      if (p.program.line(line + 1) instanceof Instruction.Move mv
+          && mv.options().stream().anyMatch(o -> o instanceof Motion.Inc)) {
+        notice = "BWD stopped at line " + (line + 1) + ": an INC motion cannot run backward";
+        return Outcome.PAUSED;
+      }
+    }
+    Instruction.Move back = (Instruction.Move) p.program.line(m1 + 1);
+    try {
+      MotionRequest to = request((Instruction.Move) p.program.line(m0 + 1), m0);
+      MotionRequest from = request(back, m1);
+      Motion.Type type = back.type();
+      MotionRequest req = new MotionRequest(type, to.target(), type == Motion.Type.C ? from.via() : Optional.empty(),
+          from.speed(), from.speedUnit(), true, 0, to.offset(), to.toolOffset(), from.accPercent(), from.wristJoint(),
+          false, true, p.name, m0 + 1);
+      cur.pc = m1;
+      state = State.RUNNING;
+      notice = "";
+      return startMotion(null, true, req) == Ops.HALT ? haltOutcome : Outcome.PAUSED;
+    } catch (AlarmSignal a) {
+      return raise(a, p.name, m0 + 1);
+    }
+  }
+
+  /**
+   * The nearest motion line index above line index {@code below}: -1 when none (top reached),
+   * or -2 - k when line k blocks backward execution.
+   */
+  private static int motionAbove(CompiledProgram p, int below) {
+    for (int k = Math.min(below, p.ops.length) - 1; k >= 0; k--) {
+      if (p.motion[k]) {
+        return k;
+      }
+      if (!p.backwardBlocker[k].isEmpty()) {
+        return -2 - k;
+      }
+    }
+    return -1;
+  }
+
+  private Outcome backwardStopped(int code, int from) {
+    if (code == -1) {
+      notice = "BWD: top of program reached above line " + (from + 1);
+    } else {
+      int k = -2 - code;
+      notice = "BWD stopped at line " + (k + 1) + ": " + cur.prog.backwardBlocker[k] + " cannot run backward";
+    }
+    return Outcome.PAUSED;
+  }
+
+  /** One program on the call stack; slots are reused so a CALL does not allocate. */
+  static final class Frame {
+    CompiledProgram prog;
+    /** Index of the next line to run. */
+    int pc;
+    int nargs;
+    double[] argValue = new double[0];
+    int[] argKind = new int[0];
+    String[] argString = new String[0];
+    /** Per FOR line: the counter register while the loop runs (0 = not running), and its end value. */
+    int[] forReg = new int[0];
+    int[] forEnd = new int[0];
+
+    void enter(CompiledProgram p, int startPc) {
+      prog = p;
+      pc = startPc;
+      nargs = 0;
+      int n = p.ops.length;
+      if (forReg.length < n) {
+        forReg = new int[n];
+        forEnd = new int[n];
+      } else {
+        java.util.Arrays.fill(forReg, 0, n, 0);
+      }
+    }
+
+    void ensureArgs(int n) {
+      if (argValue.length < n) {
+        argValue = new double[n];
+        argKind = new int[n];
+        argString = new String[n];
+      }
+    }
+  }
+}

@@ -1,0 +1,44 @@
+package org.robotrun.program;
+
+import java.util.Map;
+
+/**
+ * Controller settings the interpreter reads (FANUC system variables in brackets).
+ *
+ * @param instructionBudgetPerTick lines a program may run in one tick without motion or wait
+ *     before it is a runaway loop alarm
+ * @param maxCallDepth deepest CALL nesting (the top program counts as 1)
+ * @param waitTimeoutSec {@code WAIT … TIMEOUT,LBL[n]} timeout in seconds ($WAITTMOUT)
+ * @param defaultPulseSec pulse width of {@code DO[i]=PULSE} without a width ($DEFPULSE)
+ * @param userAlarmMessages UALM[i] texts ($UALRM_MSG[i]); missing ones show "UALM[i]"
+ */
+public record InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth, double waitTimeoutSec,
+    double defaultPulseSec, Map<Integer, String> userAlarmMessages) {
+
+  public InterpreterSettings {
+    if (instructionBudgetPerTick < 1) {
+      throw new IllegalArgumentException("instructionBudgetPerTick must be >= 1, got " + instructionBudgetPerTick);
+    }
+    if (maxCallDepth < 1) {
+      throw new IllegalArgumentException("maxCallDepth must be >= 1, got " + maxCallDepth);
+    }
+    userAlarmMessages = Map.copyOf(userAlarmMessages);
+  }
+
+  /** 100 000 lines per tick, depth 32, $WAITTMOUT 30 s, $DEFPULSE 0.4 s, no UALM texts. */
+  public static InterpreterSettings defaults() {
+    return new InterpreterSettings(100_000, 32, 30.0, 0.4, Map.of());
+  }
+
+  public InterpreterSettings withBudget(int budget) {
+    return new InterpreterSettings(budget, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages);
+  }
+
+  public InterpreterSettings withWaitTimeoutSec(double seconds) {
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, seconds, defaultPulseSec, userAlarmMessages);
+  }
+
+  public InterpreterSettings withUserAlarmMessages(Map<Integer, String> messages) {
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, messages);
+  }
+}

@@ -1,0 +1,457 @@
+package org.robotrun.program;
+
+/**
+ * Compiled expressions: a tree of small objects whose {@code eval} returns the value as a double
+ * and leaves its type in {@link Interpreter#kind} (and a string in {@link Interpreter#str}), so
+ * evaluation allocates nothing. Built by {@link Compiler} from {@link Expr}.
+ */
+final class Nodes {
+  private Nodes() {}
+
+  // Value types of an evaluated expression.
+  static final int INT = 0;
+  static final int REAL = 1;
+  static final int BOOL = 2;
+  static final int STR = 3;
+
+  static String typeName(int kind) {
+    return switch (kind) {
+      case INT -> "an integer";
+      case REAL -> "a real";
+      case BOOL -> "ON/OFF";
+      default -> "a string";
+    };
+  }
+
+  static AlarmSignal mismatch(String what, int kind) {
+    return new AlarmSignal(AlarmKind.TYPE_MISMATCH, what + ", got " + typeName(kind));
+  }
+
+  static AlarmSignal badIndex(String table, int index, int size) {
+    return new AlarmSignal(AlarmKind.BAD_INDEX, table + "[" + index + "]: index out of range (expected 1.." + size + ")");
+  }
+
+  static int check(String table, int index, int size) {
+    if (index < 1 || index > size) {
+      throw badIndex(table, index, size);
+    }
+    return index;
+  }
+
+  /** A whole number that fits an int, or -1 marker handled by callers via the flag. */
+  static boolean isWhole(double v) {
+    return v == Math.rint(v) && v >= Integer.MIN_VALUE && v <= Integer.MAX_VALUE;
+  }
+
+  /** An index {@code [n]} or {@code [R[i]]}, resolved at run time. */
+  static final class Idx {
+    final int direct;
+    /** 0 when direct; otherwise the R[] number holding the index. */
+    final int viaRegister;
+
+    Idx(Index index) {
+      switch (index) {
+        case Index.Direct d -> {
+          direct = d.value();
+          viaRegister = 0;
+        }
+        case Index.Indirect i -> {
+          direct = 0;
+          viaRegister = i.register();
+        }
+      }
+    }
+
+    int resolve(Interpreter m) {
+      return viaRegister == 0 ? direct : m.registerAsIndex(viaRegister);
+    }
+  }
+
+  abstract static class Node {
+    /** The value; its type is left in {@code m.kind}. */
+    abstract double eval(Interpreter m);
+
+    /** Evaluates and requires a number (integer or real). */
+    final double number(Interpreter m, String what) {
+      double v = eval(m);
+      if (m.kind > REAL) {
+        throw mismatch(what + " needs a number", m.kind);
+      }
+      return v;
+    }
+
+    /** Evaluates and requires ON/OFF. */
+    final boolean bool(Interpreter m, String what) {
+      double v = eval(m);
+      if (m.kind != BOOL) {
+        throw mismatch(what + " needs ON/OFF or a condition", m.kind);
+      }
+      return v != 0;
+    }
+
+    /** Evaluates and requires a whole number (FOR bounds, GO values, indices). */
+    final int integer(Interpreter m, String what) {
+      double v = eval(m);
+      if (m.kind > REAL || !isWhole(v)) {
+        throw m.kind > REAL ? mismatch(what + " needs an integer", m.kind)
+            : new AlarmSignal(AlarmKind.TYPE_MISMATCH, what + " needs an integer, got " + v);
+      }
+      return (int) v;
+    }
+  }
+
+  static final class Const extends Node {
+    final double value;
+    final int type;
+
+    Const(double value, int type) {
+      this.value = value;
+      this.type = type;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      m.kind = type;
+      return value;
+    }
+  }
+
+  static final class StrConst extends Node {
+    final String value;
+
+    StrConst(String value) {
+      this.value = value;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      m.kind = STR;
+      m.str = value;
+      return 0;
+    }
+  }
+
+  /** {@code R[n]} with n checked at compile time. */
+  static final class RegDirect extends Node {
+    final int i;
+
+    RegDirect(int i) {
+      this.i = i;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      Registers g = m.regs;
+      m.kind = g.rIsInteger[i] ? INT : REAL;
+      return g.r[i];
+    }
+  }
+
+  /** {@code R[R[j]]} (or a direct index out of range, which alarms when read). */
+  static final class RegIndexed extends Node {
+    final Idx idx;
+
+    RegIndexed(Idx idx) {
+      this.idx = idx;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      int i = check("R", idx.resolve(m), Registers.R_COUNT);
+      Registers g = m.regs;
+      m.kind = g.rIsInteger[i] ? INT : REAL;
+      return g.r[i];
+    }
+  }
+
+  static final class PosElement extends Node {
+    final Idx idx;
+    final int element;
+
+    PosElement(Idx idx, int element) {
+      this.idx = idx;
+      this.element = element;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      int i = check("PR", idx.resolve(m), Registers.PR_COUNT);
+      if (element < 1 || element > Position.ELEMENTS) {
+        throw new AlarmSignal(AlarmKind.BAD_INDEX, "PR[" + i + "," + element + "]: element out of range (expected 1..6)");
+      }
+      m.kind = REAL;
+      return m.regs.pr[i].element(element);
+    }
+  }
+
+  static final class IoRead extends Node {
+    final IoKind io;
+    final Idx idx;
+
+    IoRead(IoKind io, Idx idx) {
+      this.io = io;
+      this.idx = idx;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      int i = check(io.name(), idx.resolve(m), io.size());
+      int v = m.regs.io[io.ordinal()][i];
+      if (io.group()) {
+        m.kind = INT;
+        return v;
+      }
+      m.kind = BOOL;
+      return v != 0 ? 1 : 0;
+    }
+  }
+
+  static final class TimerRead extends Node {
+    final Idx idx;
+
+    TimerRead(Idx idx) {
+      this.idx = idx;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      int i = check("TIMER", idx.resolve(m), Registers.TIMER_COUNT);
+      m.kind = REAL;
+      return m.regs.timerSec(i);
+    }
+  }
+
+  static final class ArgRead extends Node {
+    final Idx idx;
+
+    ArgRead(Idx idx) {
+      this.idx = idx;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      return m.readArg(idx.resolve(m));
+    }
+  }
+
+  static final class Neg extends Node {
+    final Node a;
+
+    Neg(Node a) {
+      this.a = a;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double v = a.eval(m);
+      if (m.kind > REAL) {
+        throw mismatch("unary '-' needs a number", m.kind);
+      }
+      return -v;
+    }
+  }
+
+  static final class Not extends Node {
+    final Node a;
+
+    Not(Node a) {
+      this.a = a;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double v = a.eval(m);
+      if (m.kind != BOOL) {
+        throw mismatch("'!' needs ON/OFF or a condition", m.kind);
+      }
+      return v != 0 ? 0 : 1;
+    }
+  }
+
+  /** Integer result when both operands are integers and it fits 32 bits (as FANUC's R[]); else real. */
+  static int numericKind(int ka, int kb, double result) {
+    return ka == INT && kb == INT && result >= Integer.MIN_VALUE && result <= Integer.MAX_VALUE ? INT : REAL;
+  }
+
+  static final class Add extends Node {
+    final Node a;
+    final Node b;
+
+    Add(Node a, Node b) {
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double x = a.eval(m);
+      int ka = m.kind;
+      double y = b.eval(m);
+      int kb = m.kind;
+      if ((ka | kb) > REAL) {
+        throw mismatch("'+' needs numbers", Math.max(ka, kb));
+      }
+      double r = x + y;
+      m.kind = numericKind(ka, kb, r);
+      return r;
+    }
+  }
+
+  static final class Sub extends Node {
+    final Node a;
+    final Node b;
+
+    Sub(Node a, Node b) {
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double x = a.eval(m);
+      int ka = m.kind;
+      double y = b.eval(m);
+      int kb = m.kind;
+      if ((ka | kb) > REAL) {
+        throw mismatch("'-' needs numbers", Math.max(ka, kb));
+      }
+      double r = x - y;
+      m.kind = numericKind(ka, kb, r);
+      return r;
+    }
+  }
+
+  static final class Mul extends Node {
+    final Node a;
+    final Node b;
+
+    Mul(Node a, Node b) {
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double x = a.eval(m);
+      int ka = m.kind;
+      double y = b.eval(m);
+      int kb = m.kind;
+      if ((ka | kb) > REAL) {
+        throw mismatch("'*' needs numbers", Math.max(ka, kb));
+      }
+      double r = x * y;
+      m.kind = numericKind(ka, kb, r);
+      return r;
+    }
+  }
+
+  /** {@code /}: always a real result; {@code DIV}: quotient truncated toward zero; {@code MOD}: sign of the dividend. */
+  static final class Division extends Node {
+    final Expr.BinaryOp op;
+    final Node a;
+    final Node b;
+
+    Division(Expr.BinaryOp op, Node a, Node b) {
+      this.op = op;
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double x = a.eval(m);
+      int ka = m.kind;
+      double y = b.eval(m);
+      int kb = m.kind;
+      if ((ka | kb) > REAL) {
+        throw mismatch("'" + op.symbol() + "' needs numbers", Math.max(ka, kb));
+      }
+      if (y == 0) {
+        throw new AlarmSignal(AlarmKind.DIVIDE_BY_ZERO, "division by zero in '" + op.symbol() + "'");
+      }
+      switch (op) {
+        case DIVIDE -> {
+          m.kind = REAL;
+          return x / y;
+        }
+        case DIV -> {
+          // FANUC DIV: the integer part of the quotient, truncated toward zero (-7 DIV 2 = -3).
+          double q = x / y;
+          double r = q < 0 ? Math.ceil(q) : Math.floor(q);
+          m.kind = numericKind(INT, INT, r);
+          return r;
+        }
+        default -> {
+          // FANUC MOD: remainder with the sign of the dividend (-7 MOD 2 = -1), i.e. x - (x DIV y) * y;
+          // Java's % on doubles is exactly that (IEEE fmod).
+          double r = x % y;
+          m.kind = numericKind(ka, kb, r);
+          return r;
+        }
+      }
+    }
+  }
+
+  static final class Compare extends Node {
+    final Expr.BinaryOp op;
+    final Node a;
+    final Node b;
+
+    Compare(Expr.BinaryOp op, Node a, Node b) {
+      this.op = op;
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double x = a.eval(m);
+      int ka = m.kind;
+      String sx = m.str;
+      double y = b.eval(m);
+      int kb = m.kind;
+      boolean numbers = ka <= REAL && kb <= REAL;
+      boolean r;
+      if (numbers) {
+        r = switch (op) {
+          case EQ -> x == y;
+          case NE -> x != y;
+          case LT -> x < y;
+          case LE -> x <= y;
+          case GT -> x > y;
+          case GE -> x >= y;
+          default -> throw new IllegalStateException(op + " is not a comparison");
+        };
+      } else if (ka == kb && (op == Expr.BinaryOp.EQ || op == Expr.BinaryOp.NE)) {
+        boolean same = ka == STR ? sx.equals(m.str) : x == y;
+        r = (op == Expr.BinaryOp.EQ) == same;
+      } else {
+        throw new AlarmSignal(AlarmKind.TYPE_MISMATCH,
+            "'" + op.symbol() + "' cannot compare " + typeName(ka) + " with " + typeName(kb));
+      }
+      m.kind = BOOL;
+      return r ? 1 : 0;
+    }
+  }
+
+  /** AND / OR: both operands are evaluated (no short circuit), as on the controller. */
+  static final class Logic extends Node {
+    final boolean and;
+    final Node a;
+    final Node b;
+
+    Logic(boolean and, Node a, Node b) {
+      this.and = and;
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      boolean x = a.bool(m, and ? "AND" : "OR");
+      boolean y = b.bool(m, and ? "AND" : "OR");
+      m.kind = BOOL;
+      return (and ? x && y : x || y) ? 1 : 0;
+    }
+  }
+}

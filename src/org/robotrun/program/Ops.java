@@ -1,0 +1,630 @@
+package org.robotrun.program;
+
+import java.util.OptionalDouble;
+import org.robotrun.program.Nodes.Idx;
+import org.robotrun.program.Nodes.Node;
+
+/**
+ * Compiled lines: one {@link Op} per /MN line, built by {@link Compiler}. Before {@code exec}
+ * the interpreter has already advanced the frame's program counter to the next line; an op that
+ * branches overwrites it. {@code exec} answers {@link #NEXT} to go on or {@link #HALT} when the
+ * interpreter must stop this tick (it has then set its state and outcome).
+ */
+final class Ops {
+  private Ops() {}
+
+  static final int NEXT = 0;
+  static final int HALT = 1;
+
+  abstract static class Op {
+    abstract int exec(Interpreter m);
+  }
+
+  /** Comment, //, blank line, LBL, PAYLOAD (after its range check), ENDIF. */
+  static final class Nop extends Op {
+    @Override
+    int exec(Interpreter m) {
+      return NEXT;
+    }
+  }
+
+  /** A line that alarms when run (e.g. a direct index out of range found at compile time). */
+  static final class Fail extends Op {
+    final AlarmKind kind;
+    final String message;
+
+    Fail(AlarmKind kind, String message) {
+      this.kind = kind;
+      this.message = message;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      throw new AlarmSignal(kind, message);
+    }
+  }
+
+  /** {@code R[n]=expr} with n checked at compile time: the hot path. */
+  static final class AssignRDirect extends Op {
+    final int i;
+    final Node value;
+
+    AssignRDirect(int i, Node value) {
+      this.i = i;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      double v = value.eval(m);
+      m.storeR(i, v);
+      return NEXT;
+    }
+  }
+
+  /** {@code R[R[j]]=expr}. */
+  static final class AssignRIndexed extends Op {
+    final Idx idx;
+    final Node value;
+
+    AssignRIndexed(Idx idx, Node value) {
+      this.idx = idx;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("R", idx.resolve(m), Registers.R_COUNT);
+      double v = value.eval(m);
+      m.storeR(i, v);
+      return NEXT;
+    }
+  }
+
+  /** A label target: resolved at compile time when direct, looked up when indirect. */
+  static final class LabelTarget {
+    final Idx idx;
+    /** Line index of a direct label, -1 when the program has no such label or it is indirect. */
+    final int directLine;
+
+    LabelTarget(Idx idx, int directLine) {
+      this.idx = idx;
+      this.directLine = directLine;
+    }
+
+    int line(Interpreter m) {
+      if (directLine >= 0) {
+        return directLine;
+      }
+      int n = idx.resolve(m);
+      int line = m.cur.prog.labelLine(n);
+      if (line < 0) {
+        throw new AlarmSignal(AlarmKind.UNKNOWN_LABEL, "LBL[" + n + "] is not in program " + m.cur.prog.name);
+      }
+      return line;
+    }
+  }
+
+  /** A JMP or CALL as the action of IF / SELECT. */
+  abstract static class BranchOp extends Op {
+    /** Takes the branch; {@code after} is where a CALL returns to. */
+    abstract int take(Interpreter m, int after);
+
+    @Override
+    int exec(Interpreter m) {
+      return take(m, m.cur.pc);
+    }
+  }
+
+  static final class JumpOp extends BranchOp {
+    final LabelTarget target;
+
+    JumpOp(LabelTarget target) {
+      this.target = target;
+    }
+
+    @Override
+    int take(Interpreter m, int after) {
+      m.cur.pc = target.line(m);
+      return NEXT;
+    }
+  }
+
+  static final class CallOp extends BranchOp {
+    final String program;
+    final Node[] args;
+
+    CallOp(String program, Node[] args) {
+      this.program = program;
+      this.args = args;
+    }
+
+    @Override
+    int take(Interpreter m, int after) {
+      m.call(program, args, after);
+      return NEXT;
+    }
+  }
+
+  static final class IfOp extends Op {
+    final Node condition;
+    final BranchOp branch;
+
+    IfOp(Node condition, BranchOp branch) {
+      this.condition = condition;
+      this.branch = branch;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      return condition.bool(m, "IF") ? branch.take(m, m.cur.pc) : NEXT;
+    }
+  }
+
+  /** {@code IF (cond) THEN}: when false, goes to the line after ELSE, or to ENDIF. */
+  static final class IfThenOp extends Op {
+    final Node condition;
+    int falseLine;
+
+    IfThenOp(Node condition) {
+      this.condition = condition;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      if (!condition.bool(m, "IF")) {
+        m.cur.pc = falseLine;
+      }
+      return NEXT;
+    }
+  }
+
+  /** {@code ELSE} reached from the THEN branch: skip to ENDIF. */
+  static final class ElseOp extends Op {
+    int endIfLine;
+
+    @Override
+    int exec(Interpreter m) {
+      m.cur.pc = endIfLine;
+      return NEXT;
+    }
+  }
+
+  /** A whole SELECT group, run at its first line; case lines are skipped when reached. */
+  static final class SelectOp extends Op {
+    final Idx register;
+    Node[] values;
+    BranchOp[] branches;
+    /** The ELSE branch, or null when the group has none. */
+    BranchOp otherwise;
+    /** First line after the group. */
+    int afterLine;
+
+    SelectOp(Idx register) {
+      this.register = register;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("R", register.resolve(m), Registers.R_COUNT);
+      double v = m.regs.r[i];
+      for (int c = 0; c < values.length; c++) {
+        double x = values[c].number(m, "SELECT value");
+        if (x == v) {
+          m.cur.pc = afterLine;
+          return branches[c].take(m, afterLine);
+        }
+      }
+      m.cur.pc = afterLine;
+      return otherwise == null ? NEXT : otherwise.take(m, afterLine);
+    }
+  }
+
+  /** A SELECT case or ELSE line reached directly (e.g. by a jump): skip the rest of the group. */
+  static final class SelectSkipOp extends Op {
+    int afterLine;
+
+    @Override
+    int exec(Interpreter m) {
+      m.cur.pc = afterLine;
+      return NEXT;
+    }
+  }
+
+  static final class ForOp extends Op {
+    final int line;
+    final Idx counter;
+    final Node start;
+    final Node end;
+    final boolean down;
+    int afterEndFor;
+
+    ForOp(int line, Idx counter, Node start, Node end, boolean down) {
+      this.line = line;
+      this.counter = counter;
+      this.start = start;
+      this.end = end;
+      this.down = down;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int reg = Nodes.check("R", counter.resolve(m), Registers.R_COUNT);
+      int a = start.integer(m, "FOR start");
+      int b = end.integer(m, "FOR end");
+      m.regs.r[reg] = a;
+      m.regs.rIsInteger[reg] = true;
+      Interpreter.Frame f = m.cur;
+      if (down ? a < b : a > b) {
+        f.forReg[line] = 0;
+        f.pc = afterEndFor;
+      } else {
+        f.forReg[line] = reg;
+        f.forEnd[line] = b;
+      }
+      return NEXT;
+    }
+  }
+
+  /**
+   * {@code ENDFOR}: while the counter has not reached the end value, steps it by one and loops;
+   * the counter is left at the end value when the loop exits.
+   */
+  static final class EndForOp extends Op {
+    final int forLine;
+    final boolean down;
+
+    EndForOp(int forLine, boolean down) {
+      this.forLine = forLine;
+      this.down = down;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      Interpreter.Frame f = m.cur;
+      int reg = f.forReg[forLine];
+      if (reg == 0) {
+        throw new AlarmSignal(AlarmKind.STRUCTURE, "ENDFOR reached but its FOR (line " + (forLine + 1) + ") is not running");
+      }
+      Registers g = m.regs;
+      double v = g.r[reg];
+      if (!g.rIsInteger[reg]) {
+        throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, "FOR counter R[" + reg + "] must hold an integer, got " + v);
+      }
+      int end = f.forEnd[forLine];
+      if (down ? v > end : v < end) {
+        g.r[reg] = down ? v - 1 : v + 1;
+        f.pc = forLine + 1;
+      } else {
+        f.forReg[forLine] = 0;
+      }
+      return NEXT;
+    }
+  }
+
+  static final class EndOp extends Op {
+    @Override
+    int exec(Interpreter m) {
+      return m.end();
+    }
+  }
+
+  static final class PauseOp extends Op {
+    @Override
+    int exec(Interpreter m) {
+      return m.pauseProgram();
+    }
+  }
+
+  static final class WaitTimeOp extends Op {
+    final Node seconds;
+
+    WaitTimeOp(Node seconds) {
+      this.seconds = seconds;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      return m.waitTime(seconds.number(m, "WAIT"));
+    }
+  }
+
+  static final class WaitConditionOp extends Op {
+    final Node condition;
+    /** Null when the WAIT has no TIMEOUT label. */
+    final LabelTarget timeout;
+
+    WaitConditionOp(Node condition, LabelTarget timeout) {
+      this.condition = condition;
+      this.timeout = timeout;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      return condition.bool(m, "WAIT") ? NEXT : m.waitCondition(this);
+    }
+  }
+
+  static final class TimerOp extends Op {
+    final Idx idx;
+    final Instruction.TimerAction action;
+
+    TimerOp(Idx idx, Instruction.TimerAction action) {
+      this.idx = idx;
+      this.action = action;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("TIMER", idx.resolve(m), Registers.TIMER_COUNT);
+      switch (action) {
+        case START -> m.regs.startTimer(i);
+        case STOP -> m.regs.stopTimer(i);
+        case RESET -> m.regs.resetTimer(i);
+      }
+      return NEXT;
+    }
+  }
+
+  static final class SetIoOp extends Op {
+    final IoKind io;
+    final Idx idx;
+    final Node value;
+
+    SetIoOp(IoKind io, Idx idx, Node value) {
+      this.io = io;
+      this.idx = idx;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check(io.name(), idx.resolve(m), io.size());
+      if (!io.writable()) {
+        throw new AlarmSignal(AlarmKind.WRITE_PROTECTED, io.name() + "[" + i + "] is an input");
+      }
+      double v = value.eval(m);
+      int k = m.kind;
+      if (io.group()) {
+        if (k > Nodes.REAL || !Nodes.isWhole(v)) {
+          throw k > Nodes.REAL ? Nodes.mismatch(io.name() + "[" + i + "] needs an integer", k)
+              : new AlarmSignal(AlarmKind.TYPE_MISMATCH, io.name() + "[" + i + "] needs an integer, got " + v);
+        }
+        m.regs.io[io.ordinal()][i] = (int) v;
+      } else {
+        if (k == Nodes.STR) {
+          throw Nodes.mismatch(io.name() + "[" + i + "] needs ON/OFF", k);
+        }
+        // DO[i]=R[j]: 0 is OFF, any other number ON (as on the controller).
+        m.regs.io[io.ordinal()][i] = v != 0 ? 1 : 0;
+      }
+      return NEXT;
+    }
+  }
+
+  static final class PulseOp extends Op {
+    final IoKind io;
+    final Idx idx;
+    final OptionalDouble widthSec;
+
+    PulseOp(IoKind io, Idx idx, OptionalDouble widthSec) {
+      this.io = io;
+      this.idx = idx;
+      this.widthSec = widthSec;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check(io.name(), idx.resolve(m), io.size());
+      if (!io.writable() || io.group()) {
+        throw new AlarmSignal(io.writable() ? AlarmKind.TYPE_MISMATCH : AlarmKind.WRITE_PROTECTED,
+            io.name() + "[" + i + "] cannot be pulsed");
+      }
+      m.pulse(io, i, widthSec.orElse(m.settings.defaultPulseSec()));
+      return NEXT;
+    }
+  }
+
+  static final class MessageOp extends Op {
+    final String text;
+
+    MessageOp(String text) {
+      this.text = text;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      m.message(text);
+      return NEXT;
+    }
+  }
+
+  static final class UserAlarmOp extends Op {
+    final Idx idx;
+
+    UserAlarmOp(Idx idx) {
+      this.idx = idx;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int n = idx.resolve(m);
+      String text = m.settings.userAlarmMessages().getOrDefault(n, "UALM[" + n + "]");
+      throw new AlarmSignal(AlarmKind.USER_ALARM, text);
+    }
+  }
+
+  static final class AbortOp extends Op {
+    @Override
+    int exec(Interpreter m) {
+      throw new AlarmSignal(AlarmKind.ABORTED, "ABORT");
+    }
+  }
+
+  static final class OverrideOp extends Op {
+    final Node percent;
+
+    OverrideOp(Node percent) {
+      this.percent = percent;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int p = percent.integer(m, "OVERRIDE");
+      if (p < 1 || p > 100) {
+        throw new AlarmSignal(AlarmKind.BAD_VALUE, "OVERRIDE=" + p + "%: expected 1..100");
+      }
+      m.port.setOverridePct(p);
+      return NEXT;
+    }
+  }
+
+  static final class PayloadOp extends Op {
+    final Idx idx;
+
+    PayloadOp(Idx idx) {
+      this.idx = idx;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      // Accepted without dynamics; only the schedule number is checked (PAYLOAD[1..10]).
+      Nodes.check("PAYLOAD", idx.resolve(m), 10);
+      return NEXT;
+    }
+  }
+
+  static final class SelectFrameOp extends Op {
+    final Instruction.FrameKind kind;
+    final Idx number;
+
+    SelectFrameOp(Instruction.FrameKind kind, Idx number) {
+      this.kind = kind;
+      this.number = number;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int n = number.resolve(m);
+      if (n < 0 || n > Interpreter.FRAME_COUNT) {
+        throw new AlarmSignal(AlarmKind.BAD_VALUE, frameName(kind) + "_NUM=" + n + ": expected 0.." + Interpreter.FRAME_COUNT);
+      }
+      m.port.selectFrame(kind, n);
+      return NEXT;
+    }
+  }
+
+  static String frameName(Instruction.FrameKind kind) {
+    return switch (kind) {
+      case USER -> "UFRAME";
+      case TOOL -> "UTOOL";
+    };
+  }
+
+  static final class SetFrameOp extends Op {
+    final Instruction.FrameKind kind;
+    final Idx frame;
+    final Idx pr;
+
+    SetFrameOp(Instruction.FrameKind kind, Idx frame, Idx pr) {
+      this.kind = kind;
+      this.frame = frame;
+      this.pr = pr;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int n = Nodes.check(frameName(kind), frame.resolve(m), Interpreter.FRAME_COUNT);
+      int i = Nodes.check("PR", pr.resolve(m), Registers.PR_COUNT);
+      if (!(m.regs.pr[i] instanceof Position.Cartesian c)) {
+        throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, frameName(kind) + "[" + n + "]=PR[" + i + "]: PR[" + i + "] is a joint position");
+      }
+      m.port.setFrame(kind, n, c);
+      return NEXT;
+    }
+  }
+
+  static final class AssignPrOp extends Op {
+    final Idx target;
+    final Instruction.PosSource source;
+    final Idx a;
+    final Idx b;
+
+    AssignPrOp(Idx target, Instruction.PosSource source, Idx a, Idx b) {
+      this.target = target;
+      this.source = source;
+      this.a = a;
+      this.b = b;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("PR", target.resolve(m), Registers.PR_COUNT);
+      Position p = switch (source) {
+        case Instruction.FromPosReg s -> m.regs.pr[Nodes.check("PR", a.resolve(m), Registers.PR_COUNT)];
+        case Instruction.FromLocal s -> m.localPosition(s.number()).position();
+        case Instruction.CurrentLpos s -> m.port.currentLpos();
+        case Instruction.CurrentJpos s -> m.port.currentJpos();
+        case Instruction.FromFrame s -> m.port.frame(s.kind(),
+            Nodes.check(frameName(s.kind()), a.resolve(m), Interpreter.FRAME_COUNT));
+        case Instruction.PosArithmetic s -> arithmetic(m, s.add());
+      };
+      m.regs.pr[i] = p;
+      return NEXT;
+    }
+
+    private Position arithmetic(Interpreter m, boolean add) {
+      int j = Nodes.check("PR", a.resolve(m), Registers.PR_COUNT);
+      int k = Nodes.check("PR", b.resolve(m), Registers.PR_COUNT);
+      Position x = m.regs.pr[j];
+      Position y = m.regs.pr[k];
+      if (x instanceof Position.Cartesian cx && y instanceof Position.Cartesian cy) {
+        return add ? cx.plus(cy) : cx.minus(cy);
+      }
+      if (x instanceof Position.Joint jx && y instanceof Position.Joint jy) {
+        return add ? jx.plus(jy) : jx.minus(jy);
+      }
+      throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, "PR[" + j + "] and PR[" + k + "] are not both Cartesian or both joint");
+    }
+  }
+
+  static final class AssignPrElementOp extends Op {
+    final Idx target;
+    final int element;
+    final Node value;
+
+    AssignPrElementOp(Idx target, int element, Node value) {
+      this.target = target;
+      this.element = element;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("PR", target.resolve(m), Registers.PR_COUNT);
+      if (element < 1 || element > Position.ELEMENTS) {
+        throw new AlarmSignal(AlarmKind.BAD_INDEX, "PR[" + i + "," + element + "]: element out of range (expected 1..6)");
+      }
+      double v = value.number(m, "PR[" + i + "," + element + "]");
+      m.regs.pr[i] = m.regs.pr[i].withElement(element, v);
+      return NEXT;
+    }
+  }
+
+  /** A motion line; {@link Interpreter#startMotion} resolves and issues it. */
+  static final class MoveOp extends Op {
+    final Instruction.Move move;
+    /** Skip,LBL[] target or null. */
+    final LabelTarget skip;
+
+    MoveOp(Instruction.Move move, LabelTarget skip) {
+      this.move = move;
+      this.skip = skip;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      return m.startMotion(this, false, null);
+    }
+  }
+}
