@@ -28,7 +28,8 @@ public final class RobotStatusPanel {
       ImGui.text(String.format("  Y %9.3f  P %8.3f", p.y(), p.pDeg()));
       ImGui.text(String.format("  Z %9.3f  R %8.3f", p.z(), p.rDeg()));
       ImGui.separator();
-      ImGui.textDisabled("Mouse: drag orbit, right-drag pan, wheel zoom, R resets");
+      ImGui.textDisabled("Mouse: drag orbit, right-drag pan, wheel zoom, Home resets");
+      ImGui.textDisabled(String.format("%.0f frames/s", ImGui.getIO().getFramerate()));
     }
     ImGui.end();
   }

@@ -16,8 +16,8 @@ import org.robotrun.sim.SceneSnapshot;
 
 /**
  * The desktop window: a GLFW window with an OpenGL 3.3 core context showing the cell. The mouse
- * moves the camera (left drag orbits, right or middle drag pans, wheel zooms); Home or R resets
- * the view; Escape closes the window. Panels (the pendant, status) are Dear ImGui windows drawn
+ * moves the camera (left drag orbits, right or middle drag pans, wheel zooms); Home resets the
+ * view. Other keys go to a {@link KeyHandler} (the pendant keyboard). Panels (the pendant, status) are Dear ImGui windows drawn
  * over the scene; while the mouse is over a panel the camera ignores it.
  */
 public final class SimulatorWindow implements AutoCloseable {
@@ -36,6 +36,14 @@ public final class SimulatorWindow implements AutoCloseable {
   private double lastY;
   private boolean orbiting;
   private boolean panning;
+  private KeyHandler keyHandler = (key, action) -> false;
+
+  /** Receives keyboard events that no panel text field wants. */
+  @FunctionalInterface
+  public interface KeyHandler {
+    /** Returns whether the key was used. */
+    boolean onKey(int glfwKey, int action);
+  }
 
   public SimulatorWindow(String title, int width, int height) {
     GLFWErrorCallback.createPrint(System.err).set();
@@ -73,7 +81,7 @@ public final class SimulatorWindow implements AutoCloseable {
   private void installInput() {
     glfwSetMouseButtonCallback(window, (w, button, action, mods) -> {
       boolean down = action == GLFW_PRESS;
-      if (down && ImGui.getCurrentContext().ptr != 0 && ImGui.getIO().getWantCaptureMouse()) {
+      if (down && ImGui.getIO().getWantCaptureMouse()) {
         return;
       }
       if (button == GLFW_MOUSE_BUTTON_LEFT) {
@@ -100,14 +108,15 @@ public final class SimulatorWindow implements AutoCloseable {
       }
     });
     glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
-      if (action != GLFW_PRESS || ImGui.getIO().getWantCaptureKeyboard()) {
+      // Releases always go through, so a key held while a text field took focus still stops.
+      if (action != GLFW_RELEASE && ImGui.getIO().getWantCaptureKeyboard()) {
         return;
       }
-      if (key == GLFW_KEY_HOME || key == GLFW_KEY_R) {
+      if (key == GLFW_KEY_HOME && action == GLFW_PRESS) {
         camera.reset();
-      } else if (key == GLFW_KEY_ESCAPE) {
-        glfwSetWindowShouldClose(window, true);
+        return;
       }
+      keyHandler.onKey(key, action);
     });
   }
 
@@ -141,6 +150,10 @@ public final class SimulatorWindow implements AutoCloseable {
         glfwWaitEventsTimeout(0.1);
       }
     }
+  }
+
+  public void setKeyHandler(KeyHandler handler) {
+    keyHandler = handler;
   }
 
   public OrbitCamera camera() {
