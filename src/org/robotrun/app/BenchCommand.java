@@ -10,6 +10,8 @@ import picocli.CommandLine.Command;
     subcommands = {
       BenchRenderCommand.class,
       BenchIkCommand.class,
+      BenchParseCommand.class,
+      BenchInterpCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

@@ -17,6 +17,7 @@ import picocli.CommandLine.Command;
     subcommands = {
       GuiCommand.class,
       RenderCommand.class,
+      CheckCommand.class,
       PendantCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class

@@ -18,6 +18,15 @@ import org.robotrun.io.LsToken.Kind;
 public final class LsLexer {
   private LsLexer() {}
 
+  /** Shared one-character token texts, so punctuation does not allocate a string per token. */
+  private static final String[] ONE_CHAR = new String[128];
+
+  static {
+    for (char c = 0; c < ONE_CHAR.length; c++) {
+      ONE_CHAR[c] = String.valueOf(c).intern();
+    }
+  }
+
   /**
    * Tokens of {@code text}, ending with an {@link Kind#EOL} token.
    *
@@ -28,7 +37,7 @@ public final class LsLexer {
    *     makes the rest of the line free text
    */
   public static List<LsToken> tokenize(String text, int line, int firstColumn, boolean statement) {
-    List<LsToken> out = new ArrayList<>();
+    List<LsToken> out = new ArrayList<>(24);
     int n = text.length();
     int i = 0;
     int bracketDepth = 0;
@@ -91,7 +100,7 @@ public final class LsLexer {
         }
         case '[' -> {
           boolean message = !out.isEmpty() && out.get(out.size() - 1).isWord("MESSAGE");
-          out.add(new LsToken(Kind.LBRACKET, "[", line, col));
+          out.add(new LsToken(Kind.LBRACKET, ONE_CHAR['['], line, col));
           i++;
           if (message) {
             int end = text.indexOf(']', i);
@@ -104,11 +113,11 @@ public final class LsLexer {
         }
         case ']' -> {
           bracketDepth = Math.max(0, bracketDepth - 1);
-          out.add(new LsToken(Kind.RBRACKET, "]", line, col));
+          out.add(new LsToken(Kind.RBRACKET, ONE_CHAR[']'], line, col));
           i++;
         }
         case ':' -> {
-          out.add(new LsToken(Kind.COLON, ":", line, col));
+          out.add(new LsToken(Kind.COLON, ONE_CHAR[':'], line, col));
           i++;
           if (bracketDepth > 0) {
             int end = text.indexOf(']', i);
@@ -140,7 +149,7 @@ public final class LsLexer {
         }
         default -> {
           Kind k = single(c);
-          out.add(new LsToken(k, String.valueOf(c), line, col));
+          out.add(new LsToken(k, c < ONE_CHAR.length ? ONE_CHAR[c] : String.valueOf(c), line, col));
           i++;
         }
       }

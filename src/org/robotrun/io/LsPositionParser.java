@@ -1,6 +1,5 @@
 package org.robotrun.io;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -17,15 +16,13 @@ import org.robotrun.program.Position;
  * closing {@code };} so the following blocks are still read; a block that is never closed is
  * reported on its first line.
  */
-final class LsPositionParser {
+final class LsPositionParser extends LsTokenCursor {
 
   private static final String[] CARTESIAN = {"X", "Y", "Z", "W", "P", "R"};
   private static final String[] JOINT = {"J1", "J2", "J3", "J4", "J5", "J6"};
 
   private final String file;
   private final List<Diagnostic> diagnostics;
-  private final List<LsToken> tokens = new ArrayList<>();
-  private int pos;
 
   private LsPositionParser(String file, List<Diagnostic> diagnostics) {
     this.file = file;
@@ -299,32 +296,5 @@ final class LsPositionParser {
     } catch (NumberFormatException e) {
       throw error(t, "number " + t.text() + " is too large");
     }
-  }
-
-  private LsToken peek() {
-    return tokens.get(pos);
-  }
-
-  private LsToken peek(int ahead) {
-    return tokens.get(Math.min(pos + ahead, tokens.size() - 1));
-  }
-
-  private LsToken next() {
-    LsToken t = tokens.get(pos);
-    if (pos < tokens.size() - 1) {
-      pos++;
-    }
-    return t;
-  }
-
-  private LsToken expect(Kind k, String what) {
-    if (!peek().is(k)) {
-      throw error(peek(), "expected " + what + ", found " + peek().describe());
-    }
-    return next();
-  }
-
-  private LsSyntaxError error(LsToken at, String message) {
-    return new LsSyntaxError(at.line(), message);
   }
 }

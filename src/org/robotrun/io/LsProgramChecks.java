@@ -40,10 +40,14 @@ final class LsProgramChecks {
     }
     for (int i = 0; i < lines.size(); i++) {
       int line = sourceLines.get(i);
-      for (int p : localPositionsUsed(lines.get(i))) {
-        if (program.position(p).isEmpty()) {
-          out.add(Diagnostic.error(file, line, "P[" + p + "] is used but /POS has no P[" + p + "]"));
+      Instruction in = lines.get(i);
+      if (in instanceof Instruction.Move m) {
+        requirePosition(program, m.target(), file, line, out);
+        if (m.circularEnd().isPresent()) {
+          requirePosition(program, m.circularEnd().get(), file, line, out);
         }
+      } else if (in instanceof Instruction.AssignPosReg a && a.source() instanceof Instruction.FromLocal f) {
+        requirePosition(program, new Motion.Local(f.number(), f.comment()), file, line, out);
       }
       for (LabelRef target : labelTargets(lines.get(i))) {
         if (target.index() instanceof Index.Direct d && !labels.containsKey(d.value())) {
@@ -74,116 +78,115 @@ final class LsProgramChecks {
     return out;
   }
 
+  /** The CALL a line makes, directly or as the branch of an IF or SELECT line. */
   private static Optional<Instruction.Call> callIn(Instruction in) {
-    Instruction.Branch b = switch (in) {
-      case Instruction.Call c -> c;
-      case Instruction.If f -> f.branch();
-      case Instruction.Select s -> s.branch();
-      case Instruction.SelectCase s -> s.branch();
-      case Instruction.SelectElse s -> s.branch();
-      default -> null;
-    };
-    return b instanceof Instruction.Call c ? Optional.of(c) : Optional.empty();
-  }
-
-  private static List<Integer> localPositionsUsed(Instruction in) {
-    List<Integer> out = new ArrayList<>(2);
-    if (in instanceof Instruction.Move m) {
-      if (m.target() instanceof Motion.Local l) {
-        out.add(l.number());
-      }
-      m.circularEnd().ifPresent(t -> {
-        if (t instanceof Motion.Local l) {
-          out.add(l.number());
-        }
-      });
-    } else if (in instanceof Instruction.AssignPosReg a && a.source() instanceof Instruction.FromLocal f) {
-      out.add(f.number());
+    Optional<Instruction.Branch> b = branchOf(in);
+    if (in instanceof Instruction.Call c) {
+      return Optional.of(c);
     }
-    return out;
+    return b.filter(x -> x instanceof Instruction.Call).map(x -> (Instruction.Call) x);
   }
 
+  /** The branch of an IF or SELECT line. */
+  private static Optional<Instruction.Branch> branchOf(Instruction in) {
+    if (in instanceof Instruction.If f) {
+      return Optional.of(f.branch());
+    } else if (in instanceof Instruction.Select s) {
+      return Optional.of(s.branch());
+    } else if (in instanceof Instruction.SelectCase s) {
+      return Optional.of(s.branch());
+    } else if (in instanceof Instruction.SelectElse s) {
+      return Optional.of(s.branch());
+    }
+    return Optional.empty();
+  }
+
+  private static void requirePosition(Program program, Motion.Target t, String file, int line, List<Diagnostic> out) {
+    if (t instanceof Motion.Local l && !program.positions().containsKey(l.number())) {
+      out.add(Diagnostic.error(file, line, "P[" + l.number() + "] is used but /POS has no P[" + l.number() + "]"));
+    }
+  }
+
+  /** Labels a line may jump to: JMP, IF/SELECT branches, WAIT ... TIMEOUT and motion Skip. */
   private static List<LabelRef> labelTargets(Instruction in) {
     List<LabelRef> out = new ArrayList<>(1);
-    switch (in) {
-      case Instruction.Jump j -> out.add(j.label());
-      case Instruction.If f -> jumpOf(f.branch(), out);
-      case Instruction.Select s -> jumpOf(s.branch(), out);
-      case Instruction.SelectCase s -> jumpOf(s.branch(), out);
-      case Instruction.SelectElse s -> jumpOf(s.branch(), out);
-      case Instruction.WaitCondition w -> w.timeoutLabel().ifPresent(out::add);
-      case Instruction.Move m -> {
-        for (Motion.Option o : m.options()) {
-          if (o instanceof Motion.Skip s) {
-            out.add(s.label());
-          }
+    if (in instanceof Instruction.Jump j) {
+      out.add(j.label());
+    } else if (in instanceof Instruction.WaitCondition w) {
+      w.timeoutLabel().ifPresent(out::add);
+    } else if (in instanceof Instruction.Move m) {
+      for (Motion.Option o : m.options()) {
+        if (o instanceof Motion.Skip s) {
+          out.add(s.label());
         }
       }
-      default -> {
-        // no label used
-      }
     }
+    branchOf(in).ifPresent(b -> {
+      if (b instanceof Instruction.Jump j) {
+        out.add(j.label());
+      }
+    });
     return out;
   }
 
-  private static void jumpOf(Instruction.Branch b, List<LabelRef> out) {
-    if (b instanceof Instruction.Jump j) {
-      out.add(j.label());
-    }
+  /** The kinds of block a line can open. */
+  private enum Block {
+    IF_THEN,
+    ELSE_PART,
+    FOR
   }
+
+  /** A block opened on program line {@code index} (0-based) and not yet closed. */
+  private record Open(Block kind, int index) {}
 
   /** IF...THEN/ELSE/ENDIF and FOR/ENDFOR nest; SELECT case lines follow a SELECT line. */
   private static void blockStructure(String file, List<Instruction> lines, List<Integer> src, List<Diagnostic> out) {
-    // Each open block: its kind ('I' = IF THEN, 'E' = its ELSE part, 'F' = FOR) and line index.
-    Deque<int[]> open = new ArrayDeque<>();
+    Deque<Open> open = new ArrayDeque<>();
     for (int i = 0; i < lines.size(); i++) {
       Instruction in = lines.get(i);
       int line = src.get(i);
-      switch (in) {
-        case Instruction.IfThen t -> open.push(new int[] {'I', i});
-        case Instruction.For f -> open.push(new int[] {'F', i});
-        case Instruction.Else e -> {
-          if (open.isEmpty() || open.peek()[0] != 'I') {
-            out.add(Diagnostic.error(file, line, "ELSE without an open IF ... THEN"
-                + innermost(open, src)));
-          } else {
-            open.peek()[0] = 'E';
-          }
+      Block top = open.isEmpty() ? null : open.peek().kind();
+      if (in instanceof Instruction.IfThen) {
+        open.push(new Open(Block.IF_THEN, i));
+      } else if (in instanceof Instruction.For) {
+        open.push(new Open(Block.FOR, i));
+      } else if (in instanceof Instruction.Else) {
+        if (top == Block.IF_THEN) {
+          open.push(new Open(Block.ELSE_PART, open.pop().index()));
+        } else {
+          out.add(Diagnostic.error(file, line, "ELSE without an open IF ... THEN" + innermost(open, src)));
         }
-        case Instruction.EndIf e -> {
-          if (open.isEmpty() || (open.peek()[0] != 'I' && open.peek()[0] != 'E')) {
-            out.add(Diagnostic.error(file, line, "ENDIF without an open IF ... THEN" + innermost(open, src)));
-          } else {
-            open.pop();
-          }
+      } else if (in instanceof Instruction.EndIf) {
+        if (top == Block.IF_THEN || top == Block.ELSE_PART) {
+          open.pop();
+        } else {
+          out.add(Diagnostic.error(file, line, "ENDIF without an open IF ... THEN" + innermost(open, src)));
         }
-        case Instruction.EndFor e -> {
-          if (open.isEmpty() || open.peek()[0] != 'F') {
-            out.add(Diagnostic.error(file, line, "ENDFOR without an open FOR" + innermost(open, src)));
-          } else {
-            open.pop();
-          }
+      } else if (in instanceof Instruction.EndFor) {
+        if (top == Block.FOR) {
+          open.pop();
+        } else {
+          out.add(Diagnostic.error(file, line, "ENDFOR without an open FOR" + innermost(open, src)));
         }
-        case Instruction.SelectCase c -> selectFollows(file, lines, i, line, "=value", out);
-        case Instruction.SelectElse c -> selectFollows(file, lines, i, line, "ELSE,", out);
-        default -> {
-          // not a block statement
-        }
+      } else if (in instanceof Instruction.SelectCase) {
+        selectFollows(file, lines, i, line, "=value", out);
+      } else if (in instanceof Instruction.SelectElse) {
+        selectFollows(file, lines, i, line, "ELSE,", out);
       }
     }
     while (!open.isEmpty()) {
-      int[] b = open.pop();
-      String what = b[0] == 'F' ? "FOR has no ENDFOR" : "IF ... THEN has no ENDIF";
-      out.add(Diagnostic.error(file, src.get(b[1]), what));
+      Open b = open.pop();
+      String what = b.kind() == Block.FOR ? "FOR has no ENDFOR" : "IF ... THEN has no ENDIF";
+      out.add(Diagnostic.error(file, src.get(b.index()), what));
     }
   }
 
-  private static String innermost(Deque<int[]> open, List<Integer> src) {
+  private static String innermost(Deque<Open> open, List<Integer> src) {
     if (open.isEmpty()) {
       return "";
     }
-    int[] b = open.peek();
-    return " (the innermost open block is the " + (b[0] == 'F' ? "FOR" : "IF") + " on line " + src.get(b[1]) + ")";
+    Open b = open.peek();
+    return " (the innermost open block is the " + (b.kind() == Block.FOR ? "FOR" : "IF") + " on line " + src.get(b.index()) + ")";
   }
 
   private static void selectFollows(String file, List<Instruction> lines, int i, int line, String what, List<Diagnostic> out) {

@@ -247,13 +247,22 @@ public final class LsReader {
         }
         int first = k;
         StringBuilder entry = new StringBuilder(lines[k].strip());
-        while (!endsWithSemicolon(entry) && k + 1 < end) {
+        // Only a grouped entry ("TCD:  STACK_SIZE = 0,") runs over several lines; a plain entry
+        // missing its ';' is reported alone instead of swallowing the entries after it.
+        boolean grouped = isGroupedStart(entry.toString());
+        while (grouped && !endsWithSemicolon(entry) && k + 1 < end) {
           k++;
           entry.append('\n').append(lines[k].strip());
         }
         k++;
         attrEntry(entry.toString(), first + 1);
       }
+    }
+
+    private static boolean isGroupedStart(String text) {
+      int colon = text.indexOf(':');
+      int eq = text.indexOf('=');
+      return colon > 0 && (eq < 0 || colon < eq) && isKey(text.substring(0, colon).strip());
     }
 
     private static boolean endsWithSemicolon(StringBuilder sb) {
@@ -268,7 +277,7 @@ public final class LsReader {
       String body = text.substring(0, text.length() - 1);
       int colon = body.indexOf(':');
       int eq = body.indexOf('=');
-      if (colon > 0 && (eq < 0 || colon < eq) && isKey(body.substring(0, colon).strip())) {
+      if (isGroupedStart(body)) {
         // A grouped entry: "TCD:  STACK_SIZE = 0, TASK_PRIORITY = 50, ...".
         String key = body.substring(0, colon).strip().toUpperCase(Locale.ROOT);
         List<String> parts = new ArrayList<>();

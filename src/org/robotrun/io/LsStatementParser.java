@@ -28,7 +28,7 @@ import org.robotrun.program.Program;
  * operators: beyond that the statement is rejected with a diagnostic instead of risking a stack
  * overflow here or in whoever walks the tree later.
  */
-final class LsStatementParser {
+final class LsStatementParser extends LsTokenCursor {
 
   /** Deepest parenthesis nesting accepted; far beyond what anyone types on a pendant. */
   static final int MAX_NESTING = 64;
@@ -74,13 +74,11 @@ final class LsStatementParser {
       Map.entry("PTH", "PTH"),
       Map.entry("MAX_SPEED", "max_speed"));
 
-  private final List<LsToken> tokens;
-  private int pos;
   private int nesting;
   private int operators;
 
   private LsStatementParser(List<LsToken> tokens) {
-    this.tokens = tokens;
+    super(tokens);
   }
 
   /**
@@ -112,6 +110,9 @@ final class LsStatementParser {
         return new Instruction.Comment(next().text().stripTrailing());
       }
       case SLASH -> {
+        if (!t.text().equals("//")) {
+          throw error("expected a statement, found '/' (a commented-out line starts with '//')");
+        }
         next();
         return new Instruction.CommentedOut(next().text().stripTrailing());
       }
@@ -816,51 +817,6 @@ final class LsStatementParser {
 
   // ---- tokens -----------------------------------------------------------------------------
 
-  private LsToken peek() {
-    return tokens.get(pos);
-  }
-
-  private LsToken peek(int ahead) {
-    return tokens.get(Math.min(pos + ahead, tokens.size() - 1));
-  }
-
-  private LsToken next() {
-    LsToken t = tokens.get(pos);
-    if (pos < tokens.size() - 1) {
-      pos++;
-    }
-    return t;
-  }
-
-  private boolean accept(Kind k) {
-    if (peek().is(k)) {
-      next();
-      return true;
-    }
-    return false;
-  }
-
-  private LsToken expect(Kind k, String what) {
-    if (!peek().is(k)) {
-      throw error("expected " + what + ", found " + peek().describe());
-    }
-    return next();
-  }
-
-  private LsToken expectWord(String what) {
-    if (!peek().is(Kind.WORD)) {
-      throw error("expected " + what + ", found " + peek().describe());
-    }
-    return next();
-  }
-
-  private void expectWordNamed(String word, String what) {
-    if (!peek().isWord(word)) {
-      throw error("expected " + what + ", found " + peek().describe());
-    }
-    next();
-  }
-
   private int intConst(String what) {
     LsToken t = peek();
     if (!t.is(Kind.NUMBER) || t.text().indexOf('.') >= 0) {
@@ -897,13 +853,5 @@ final class LsStatementParser {
       }
     }
     return true;
-  }
-
-  private LsSyntaxError error(String message) {
-    return new LsSyntaxError(peek().line(), message);
-  }
-
-  private LsSyntaxError error(LsToken at, String message) {
-    return new LsSyntaxError(at.line(), message);
   }
 }

@@ -57,6 +57,8 @@ public final class Interpreter {
   private static final int W_CONDITION = 3;
   private static final double TIME_EPS_SEC = 1e-9;
   private static final int MAX_SCREEN_LINES = 100;
+  /** Ports PULSE may drive. */
+  private static final IoKind[] PULSED = {IoKind.DO, IoKind.RO};
 
   final ProgramStore store;
   final Registers regs;
@@ -610,7 +612,7 @@ public final class Interpreter {
   }
 
   private void advancePulses(double dtSec) {
-    for (IoKind io : new IoKind[] {IoKind.DO, IoKind.RO}) {
+    for (IoKind io : PULSED) {
       double[] left = pulseLeftSec[io.ordinal()];
       for (int i = 1; i < left.length; i++) {
         if (left[i] > 0) {
@@ -691,6 +693,11 @@ public final class Interpreter {
     };
     if (cnt < 0 || cnt > 100) {
       throw new AlarmSignal(AlarmKind.BAD_VALUE, "CNT" + cnt + ": expected 0..100");
+    }
+    if (stepMode) {
+      // In STEP each motion line stops at its point, so CNT runs as FINE (as on the controller).
+      fine = true;
+      cnt = 0;
     }
     Optional<Position> offset = Optional.empty();
     Optional<Position> toolOffset = Optional.empty();

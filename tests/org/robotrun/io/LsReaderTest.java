@@ -158,6 +158,7 @@ class LsReaderTest {
         {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
         {"L P[1] max_speed FINE", "not supported: max_speed"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
         {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);
@@ -274,6 +275,19 @@ class LsReaderTest {
     assertThat(r.program().comment()).isEqualTo("hi");
     String written = LsWriter.write(r.program());
     assertThat(written).contains("OWNER\t\t= ME;\nCOMMENT\t\t= \"hi\";\n").contains("LINE_COUNT\t= 1;\n").contains("ZETA\t\t= 1;\n");
+  }
+
+  @Test
+  void aBadAttributeLineIsReportedAloneAndTheOthersKept() {
+    LsReadResult r = LsReader.parse("a.ls", "/PROG  A\n/ATTR\nOWNER\t= MNEDITOR\nCOMMENT\t= \"kept\";\nJUNK;\n"
+        + "TCD:  STACK_SIZE\t= 0,\n      TASK_PRIORITY\t= 40;\n/MN\n   1:  END ;\n/POS\n/END\n");
+    assertThat(messages(r)).containsExactly(
+        "a.ls:3: /ATTR entry does not end with ';': expected 'KEY = value;'",
+        "a.ls:5: expected 'KEY = value;' in /ATTR, found 'JUNK;'");
+    assertThat(r.program().comment()).isEqualTo("kept");
+    assertThat(r.program().attributes()).containsEntry("TCD", "STACK_SIZE = 0, TASK_PRIORITY = 40")
+        .containsEntry("OWNER", "MNEDITOR");
+    assertThat(LsWriter.write(r.program())).contains("TCD:  STACK_SIZE\t= 0,\n      TASK_PRIORITY\t= 40;\n");
   }
 
   @Test

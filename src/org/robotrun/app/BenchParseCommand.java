@@ -1,0 +1,72 @@
+package org.robotrun.app;
+
+import java.io.PrintWriter;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.robotrun.io.LsReadResult;
+import org.robotrun.io.LsReader;
+import org.robotrun.io.bench.LsBenchPrograms;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code robotrun bench parse}: a quick .LS parse throughput figure (the JMH class
+ * {@code org.robotrun.io.bench.LsParseBenchmark} is the careful one).
+ */
+@Command(
+    name = "parse",
+    mixinStandardHelpOptions = true,
+    description = {
+      "Measure .LS parse throughput: parses a generated program repeatedly after a warm-up and prints",
+      "lines_per_sec=X (best of the timed rounds) with the program size and time per parse."
+    })
+public final class BenchParseCommand implements Callable<Integer> {
+
+  @Spec CommandSpec spec;
+
+  @Option(names = "--lines", paramLabel = "N", defaultValue = "10000",
+      description = "Lines in the generated program (default: ${DEFAULT-VALUE}).")
+  int lines;
+
+  @Option(names = "--rounds", paramLabel = "N", defaultValue = "20",
+      description = "Timed parses after the warm-up (default: ${DEFAULT-VALUE}).")
+  int rounds;
+
+  @Option(names = "--warmup", paramLabel = "N", defaultValue = "20",
+      description = "Untimed warm-up parses, to let the JIT compile the parser (default: ${DEFAULT-VALUE}).")
+  int warmup;
+
+  @Override
+  public Integer call() {
+    if (lines < 1 || rounds < 1 || warmup < 0) {
+      throw new UserError("--lines and --rounds must be at least 1, --warmup at least 0");
+    }
+    String text = LsBenchPrograms.program(lines);
+    LsReadResult check = LsReader.parse("bench.ls", text);
+    if (!check.diagnostics().isEmpty()) {
+      throw new UserError("generated program has diagnostics: " + check.diagnostics().get(0), Main.EXIT_FAILED);
+    }
+    for (int i = 0; i < warmup; i++) {
+      LsReader.parse("bench.ls", text);
+    }
+    long best = Long.MAX_VALUE;
+    long total = 0;
+    for (int i = 0; i < rounds; i++) {
+      long t0 = System.nanoTime();
+      LsReadResult r = LsReader.parse("bench.ls", text);
+      long dt = System.nanoTime() - t0;
+      if (r.program().lineCount() != lines) {
+        throw new IllegalStateException("parsed " + r.program().lineCount() + " lines, expected " + lines);
+      }
+      best = Math.min(best, dt);
+      total += dt;
+    }
+    PrintWriter out = spec.commandLine().getOut();
+    out.println(String.format(Locale.ROOT, "lines_per_sec=%.0f lines=%d rounds=%d best_ms=%.3f mean_ms=%.3f",
+        lines / (best / 1e9), lines, rounds, best / 1e6, total / 1e6 / rounds));
+    out.flush();
+    return Main.EXIT_OK;
+  }
+}

@@ -1,0 +1,76 @@
+package org.robotrun.io;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.robotrun.io.LsToken.Kind;
+
+/**
+ * A position in a token list ending with {@link Kind#EOL}, with the look-ahead and "expected X,
+ * found Y" helpers both .LS parsers use. Reading past the end keeps returning the final EOL, so
+ * a parser never runs off its input.
+ */
+abstract class LsTokenCursor {
+  protected final List<LsToken> tokens;
+  private int pos;
+
+  /** @param tokens the tokens; must end with an {@link Kind#EOL} token */
+  protected LsTokenCursor(List<LsToken> tokens) {
+    this.tokens = tokens;
+  }
+
+  /** An empty cursor whose tokens are added later (the last one added must be an EOL). */
+  protected LsTokenCursor() {
+    this(new ArrayList<>());
+  }
+
+  protected final LsToken peek() {
+    return tokens.get(pos);
+  }
+
+  protected final LsToken peek(int ahead) {
+    return tokens.get(Math.min(pos + ahead, tokens.size() - 1));
+  }
+
+  protected final LsToken next() {
+    LsToken t = tokens.get(pos);
+    if (pos < tokens.size() - 1) {
+      pos++;
+    }
+    return t;
+  }
+
+  protected final boolean accept(Kind k) {
+    if (peek().is(k)) {
+      next();
+      return true;
+    }
+    return false;
+  }
+
+  protected final LsToken expect(Kind k, String what) {
+    if (!peek().is(k)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
+    return next();
+  }
+
+  protected final LsToken expectWord(String what) {
+    return expect(Kind.WORD, what);
+  }
+
+  protected final void expectWordNamed(String word, String what) {
+    if (!peek().isWord(word)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
+    next();
+  }
+
+  /** An error on the line of the next token. */
+  protected final LsSyntaxError error(String message) {
+    return new LsSyntaxError(peek().line(), message);
+  }
+
+  protected static LsSyntaxError error(LsToken at, String message) {
+    return new LsSyntaxError(at.line(), message);
+  }
+}
