@@ -175,11 +175,35 @@ public final class ClosedFormIk {
     if (X_BF != target) {
       System.arraycopy(X_BF, 0, target, 0, 12);
     }
-    double theta4Pref = sign[3] * qCurrent[3] - offset[3];
-    int valid = solveBase(target, theta4Pref);
+    int valid = solveBase(target, sign[3] * qCurrent[3] - offset[3]);
     if (valid == 0) {
       return outOfReach();
     }
+    if (!nearest(valid, qCurrent)) {
+      return limitsOnly();
+    }
+    return solved(best);
+  }
+
+  /**
+   * Whether a packed flange pose has a solution inside the limits, without building it: empty
+   * if so, else why not. Cheaper than a solve (no result, no FK check); for other solvers'
+   * quick rejection of unreachable targets.
+   */
+  public java.util.Optional<IkResult.Unreachable> reachability(double[] X_BF) {
+    System.arraycopy(X_BF, 0, target, 0, 12);
+    int valid = solveBase(target, 0);
+    if (valid == 0) {
+      return java.util.Optional.of(outOfReach());
+    }
+    for (int i = 0; i < 6; i++) {
+      cand[i] = 0;
+    }
+    return nearest(valid, cand) ? java.util.Optional.empty() : java.util.Optional.of(limitsOnly());
+  }
+
+  /** Puts into {@link #best} the in-limit variant nearest to {@code qCurrent}; false if none. */
+  private boolean nearest(int valid, double[] qCurrent) {
     double bestD = Double.POSITIVE_INFINITY;
     for (int k = 0; k < BASE_SOLUTIONS; k++) {
       if ((valid & (1 << k)) == 0) {
@@ -205,11 +229,12 @@ public final class ClosedFormIk {
         best[5] = q6;
       }
     }
-    if (bestD == Double.POSITIVE_INFINITY) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose is within reach but every solution has a joint outside its limits");
-    }
-    return solved(best);
+    return bestD != Double.POSITIVE_INFINITY;
+  }
+
+  private static IkResult.Unreachable limitsOnly() {
+    return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
+        "the pose is within reach but every solution has a joint outside its limits");
   }
 
   /**
@@ -434,7 +459,7 @@ public final class ClosedFormIk {
     return new IkResult.Solved(q.clone(), pos, rotationAngle(fk, target), 0);
   }
 
-  private IkResult outOfReach() {
+  private IkResult.Unreachable outOfReach() {
     return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
         "position (%.1f, %.1f, %.1f) mm is out of reach: the wrist centre is beyond the arm's "
             + "reach or closer to the shoulder than the folded arm allows",

@@ -182,6 +182,33 @@ class ClosedFormIkTest {
   }
 
   @Test
+  void j1TurnNumbersApplyWhenItsRangeExceedsHalfATurnEachWay() {
+    // The default arm with J1 widened to ±270 deg: a pose at J1 = 170 deg is also reachable at
+    // -190 deg, which FANUC labels turn -1.
+    List<JointSpec> joints = new java.util.ArrayList<>(robot.joints());
+    JointSpec j1 = joints.get(0);
+    joints.set(0, new JointSpec(j1.name(), j1.X_PJ(), j1.axis(), Math.toRadians(-270), Math.toRadians(270),
+        j1.maxSpeedRadPerSec()));
+    RobotModel wide = new RobotModel(robot.id(), robot.displayName(), joints, robot.X_6F(), robot.X_WB(),
+        robot.links(), robot.opw(), robot.coupledJ3());
+    ClosedFormIk wideIk = new ClosedFormIk(wide);
+    double[] q = Angles.toRadians(new double[] {170, 20, 10, 30, -60, 40});
+    Transform X_BF = ForwardKinematics.flangePoseInBase(wide, q);
+    Config c = wideIk.configOf(q);
+    assertThat(c.turn1()).isZero();
+    IkResult r = wideIk.solve(X_BF, c.withTurns(-1, c.turn4(), c.turn6()));
+    assertThat(r).isInstanceOfSatisfying(IkResult.Solved.class,
+        s -> assertThat(Math.toDegrees(s.q()[0])).isCloseTo(-190, org.assertj.core.api.Assertions.within(1e-9)));
+    assertThat(wideIk.allSolutions(X_BF)).anySatisfy(s -> assertThat(s.config().turn1()).isEqualTo(-1));
+    // Jogging from J1 = -185 deg stays on that side.
+    double[] near = q.clone();
+    near[0] = Math.toRadians(-185);
+    IkResult n = wideIk.solveNearest(X_BF, near);
+    assertThat(n).isInstanceOfSatisfying(IkResult.Solved.class,
+        s -> assertThat(Math.toDegrees(s.q()[0])).isCloseTo(-190, org.assertj.core.api.Assertions.within(1e-9)));
+  }
+
+  @Test
   void configParsesAndPrintsThePendantForm() {
     Config c = Config.parse("F D B, -1, 0, 1");
     assertThat(c).isEqualTo(new Config(true, false, false, -1, 0, 1));

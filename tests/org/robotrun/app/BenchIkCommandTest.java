@@ -1,0 +1,112 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+class BenchIkCommandTest {
+  @TempDir Path dir;
+
+  private record Run(int code, String out, String err) {}
+
+  private Run run(String... args) {
+    CommandLine cl = Main.commandLine();
+    StringWriter out = new StringWriter(), err = new StringWriter();
+    cl.setOut(new PrintWriter(out));
+    cl.setErr(new PrintWriter(err));
+    int code = cl.execute(args);
+    return new Run(code, out.toString(), err.toString());
+  }
+
+  /** The first {@code rows} targets of the reference file, to keep the test short. */
+  private Path smallTargets(int rows) throws Exception {
+    Path ref = Path.of(getClass().getResource("/ik_targets_lrmate200id.csv").toURI());
+    List<String> lines = Files.readAllLines(ref).subList(0, rows + 1);
+    Path f = dir.resolve("targets.csv");
+    Files.write(f, lines);
+    return f;
+  }
+
+  @Test
+  void closedFormPrintsOneSummaryLineAndWritesSolutions() throws Exception {
+    Path targets = smallTargets(50);
+    Path out = dir.resolve("solutions.csv");
+    Run r = run("bench", "ik", "--targets", targets.toString(), "--warmup", "1", "--out", out.toString());
+    assertThat(r.code()).isZero();
+    assertThat(r.out().lines()).hasSize(1);
+    assertThat(r.out()).matches(
+        "solved=50/50 in_limits=50/50 same_config=50/50 median_us=[0-9.]+ p99_us=[0-9.]+\\R");
+    List<String> written = Files.readAllLines(out);
+    assertThat(written).hasSize(51);
+    assertThat(written.get(0)).isEqualTo("id,q1,q2,q3,q4,q5,q6");
+    assertThat(written.get(1).split(",")).hasSize(7);
+  }
+
+  @Test
+  void numericFromEachStartSolvesEveryRow() throws Exception {
+    Path targets = smallTargets(50);
+    for (String start : List.of("home", "random", "near")) {
+      Run r = run("bench", "ik", "--targets", targets.toString(), "--solver", "numeric", "--start", start, "--warmup", "1");
+      assertThat(r.code()).as(start).isZero();
+      assertThat(r.out()).as(start).startsWith("solved=50/50 in_limits=50/50 same_config=");
+    }
+  }
+
+  @Test
+  void resolvedRatePrintsItsOwnLine() throws Exception {
+    Run r = run("bench", "ik", "--targets", smallTargets(20).toString(), "--solver", "resolved-rate", "--warmup", "1");
+    assertThat(r.code()).isZero();
+    assertThat(r.out()).matches("steps=20 damped=\\d+ median_us=[0-9.]+ p99_us=[0-9.]+\\R");
+  }
+
+  @Test
+  void unsolvedRowsLeaveEmptyFieldsInTheOutput() throws Exception {
+    // A row whose pose is far beyond reach: the solver fails and --out keeps the id only.
+    Path ref = smallTargets(2);
+    List<String> lines = Files.readAllLines(ref);
+    String[] f = lines.get(2).split(",");
+    f[7] = "3.0"; // x = 3 m
+    lines.set(2, String.join(",", f));
+    Files.write(ref, lines);
+    Path out = dir.resolve("s.csv");
+    Run r = run("bench", "ik", "--targets", ref.toString(), "--warmup", "0", "--out", out.toString());
+    assertThat(r.code()).isZero();
+    assertThat(r.out()).startsWith("solved=1/2 in_limits=1/2 same_config=1/2 ");
+    assertThat(Files.readAllLines(out).get(2)).isEqualTo(f[0] + ",,,,,,");
+  }
+
+  @Test
+  void badFileIsOneLineAndExitTwo() throws Exception {
+    Path bad = dir.resolve("bad.csv");
+    Files.writeString(bad, "id,q1\n1,2\n");
+    Run r = run("bench", "ik", "--targets", bad.toString());
+    assertThat(r.code()).isEqualTo(2);
+    assertThat(r.err().lines()).hasSize(1);
+    assertThat(r.err()).contains("bad.csv:1: header is missing column");
+
+    Run missing = run("bench", "ik", "--targets", dir.resolve("nope.csv").toString());
+    assertThat(missing.code()).isEqualTo(2);
+    assertThat(missing.err()).contains("nope.csv: no such file");
+  }
+
+  @Test
+  void unknownSolverIsABadArgument() throws Exception {
+    Run r = run("bench", "ik", "--targets", smallTargets(1).toString(), "--solver", "magic");
+    assertThat(r.code()).isEqualTo(2);
+    assertThat(r.err()).contains("--solver: expected closed-form, numeric or resolved-rate");
+  }
+
+  @Test
+  void helpListsEveryOption() {
+    Run r = run("bench", "ik", "--help");
+    assertThat(r.code()).isZero();
+    assertThat(r.out()).contains("--targets", "--start", "--solver", "--out", "--warmup", "resolved-rate");
+  }
+}
