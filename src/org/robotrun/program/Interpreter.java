@@ -57,6 +57,8 @@ public final class Interpreter {
   private static final int W_CONDITION = 3;
   private static final double TIME_EPS_SEC = 1e-9;
   private static final int MAX_SCREEN_LINES = 100;
+  /** Ports PULSE may drive. */
+  private static final IoKind[] PULSED = {IoKind.DO, IoKind.RO};
 
   final ProgramStore store;
   final Registers regs;
@@ -610,7 +612,7 @@ public final class Interpreter {
   }
 
   private void advancePulses(double dtSec) {
-    for (IoKind io : new IoKind[] {IoKind.DO, IoKind.RO}) {
+    for (IoKind io : PULSED) {
       double[] left = pulseLeftSec[io.ordinal()];
       for (int i = 1; i < left.length; i++) {
         if (left[i] > 0) {

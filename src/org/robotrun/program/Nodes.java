@@ -369,26 +369,27 @@ final class Nodes {
       if (y == 0) {
         throw new AlarmSignal(AlarmKind.DIVIDE_BY_ZERO, "division by zero in '" + op.symbol() + "'");
       }
-      switch (op) {
+      return switch (op) {
         case DIVIDE -> {
           m.kind = REAL;
-          return x / y;
+          yield x / y;
         }
         case DIV -> {
           // FANUC DIV: the integer part of the quotient, truncated toward zero (-7 DIV 2 = -3).
           double q = x / y;
           double r = q < 0 ? Math.ceil(q) : Math.floor(q);
           m.kind = numericKind(INT, INT, r);
-          return r;
+          yield r;
         }
-        default -> {
+        case MOD -> {
           // FANUC MOD: remainder with the sign of the dividend (-7 MOD 2 = -1), i.e. x - (x DIV y) * y;
           // Java's % on doubles is exactly that (IEEE fmod).
           double r = x % y;
           m.kind = numericKind(ka, kb, r);
-          return r;
+          yield r;
         }
-      }
+        case ADD, SUB, MUL, EQ, NE, LT, LE, GT, GE, AND, OR -> throw new IllegalStateException(op + " is not a division");
+      };
     }
   }
 
@@ -420,7 +421,7 @@ final class Nodes {
           case LE -> x <= y;
           case GT -> x > y;
           case GE -> x >= y;
-          default -> throw new IllegalStateException(op + " is not a comparison");
+          case ADD, SUB, MUL, DIVIDE, DIV, MOD, AND, OR -> throw new IllegalStateException(op + " is not a comparison");
         };
       } else if (ka == kb && (op == Expr.BinaryOp.EQ || op == Expr.BinaryOp.NE)) {
         boolean same = ka == STR ? sx.equals(m.str) : x == y;
