@@ -190,7 +190,8 @@ final class LsPositionParser extends LsTokenCursor {
             throw error(u, where + ": expected '" + unit + "' after the value of " + key + ", found " + u.describe());
           }
           next();
-          if (values.put(key, negative ? -v : v) != null) {
+          // -0.000 is read as 0 (the writer prints zero unsigned), so a round trip keeps the model.
+          if (values.put(key, negative && v != 0 ? -v : v) != null) {
             throw error(t, where + ": " + key + " appears twice");
           }
         }

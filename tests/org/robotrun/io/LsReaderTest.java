@@ -19,6 +19,7 @@ import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
+import org.robotrun.program.ProgramStore;
 
 class LsReaderTest {
 
@@ -195,6 +196,10 @@ class LsReaderTest {
     LsReadResult known = r.withCallTargetsChecked(Set.of("OTHER"));
     assertThat(messages(known)).contains("t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
     assertThat(messages(mn("   1:  CALL T ;\n").withCallTargetsChecked(Set.of()))).isEmpty();
+    assertThat(messages(r.withCallTargetsChecked(Set.of("nowhere")))).doesNotContain(
+        "t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
+    assertThat(messages(r.withCallTargetsChecked(ProgramStore.of(Program.of("NOWHERE", List.of()))))).doesNotContain(
+        "t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
   }
 
   @Test

@@ -86,8 +86,11 @@ class LsRobustnessTest {
           }
         }
         LsReadResult r = LsReader.parse(name, sb.toString());
-        // Whatever was read can be written and read again without an exception either.
-        LsReader.parse(name, LsWriter.write(r.program()));
+        // Whatever was read, even from a damaged file, writes and reads back as the same program.
+        String written = LsWriter.write(r.program());
+        LsReadResult again = LsReader.parse(name, written);
+        assertThat(again.program()).as("round %d of %s:%n%s", round, name, sb).isEqualTo(r.program());
+        assertThat(LsWriter.write(again.program())).isEqualTo(written);
       }
     }
   }
