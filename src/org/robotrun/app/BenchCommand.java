@@ -7,7 +7,7 @@ import picocli.CommandLine.Command;
     name = "bench",
     mixinStandardHelpOptions = true,
     description = "Measure speed: prints one summary line per run.",
-    subcommands = {BenchCollisionCommand.class, BenchBroadPhaseCommand.class})
+    subcommands = {BenchCollisionCommand.class, BenchBroadPhaseCommand.class, BenchScenarioCommand.class})
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
 

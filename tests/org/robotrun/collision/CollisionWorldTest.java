@@ -97,6 +97,18 @@ class CollisionWorldTest {
   }
 
   @Test
+  void newFilterTakesEffectAtTheNextUpdate() {
+    // A part held by the robot overlaps its gripper: no contact while held, a contact once released.
+    CollisionWorld world = new CollisionWorld(new StandardPairFilter(Map.of("p1", "r1")));
+    int tool = world.add(Body.robotLink("r1", Body.TOOL_LINK, "r1/tool"), Obb.axisAligned(0, 0, 0, 10, 10, 10));
+    int part = world.add(Body.part("p1", "p1"), Obb.axisAligned(0, 0, -15, 10, 10, 10));
+    assertThat(world.update()).isZero();
+    world.setFilter(StandardPairFilter.nothingHeld());
+    assertThat(world.update()).isEqualTo(1);
+    assertThat(world.contacts()).containsExactly(new Contact(world.body(tool), world.body(part)));
+  }
+
+  @Test
   void setPoseComposesLinkAndLocalFrames() {
     CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
     int h = world.add(Body.part("p", "p"), Obb.axisAligned(0, 0, 0, 1, 2, 3));
