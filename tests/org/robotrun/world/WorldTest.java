@@ -88,4 +88,20 @@ class WorldTest {
     assertThat(box.corner(7)[0]).isCloseTo(260, within(1e-9));
     assertThat(LocalBox.ofBox(Transform.IDENTITY, new Vec3(2, 4, 6)).hyMm()).isEqualTo(2);
   }
+
+  @Test
+  void worldObjectsBecomeCollisionBodiesThatFollowMoves() {
+    World w = new World(List.of(TABLE, JIG, PART));
+    org.robotrun.collision.CollisionWorld cw =
+        new org.robotrun.collision.CollisionWorld(org.robotrun.collision.PairFilter.DIFFERENT_OWNERS);
+    WorldBodies bodies = new WorldBodies(w, cw);
+    // The part rests on the jig and the jig on the table (DIFFERENT_OWNERS checks every pair).
+    assertThat(cw.box(bodies.handle("part"))).isEqualTo(w.collisionBox("part"));
+    World moved = w.with(w.find("part").orElseThrow().movedTo(Transform.translation(0, 0, 5000), Optional.empty()));
+    bodies.sync(moved, cw);
+    assertThat(cw.box(bodies.handle("part")).cz()).isEqualTo(5025);
+    cw.update();
+    assertThat(cw.isTouching(bodies.handle("part"))).isFalse();
+    assertThat(cw.isTouching(bodies.handle("jig"))).isTrue(); // the jig sits on the table
+  }
 }
