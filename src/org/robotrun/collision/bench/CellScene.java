@@ -13,6 +13,8 @@ import org.robotrun.math.Transform;
  * through the cell, and 200 objects — 20 tables (fixtures) carrying 180 parts — spread over
  * 3 m × 3 m. The robots are stand-ins (a chain of boxes driven by sines), so the benchmark
  * needs no kinematics; what it measures is the cost of one {@link CollisionWorld#update()}.
+ * {@code part0} counts as held by robot1, so the held-part rules are exercised too; it still
+ * lies on its table, which is the one contact reported every tick.
  */
 public final class CellScene {
   /** Boxes per robot. */
