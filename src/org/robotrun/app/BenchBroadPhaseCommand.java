@@ -31,18 +31,22 @@ public final class BenchBroadPhaseCommand implements Runnable {
       description = "Timed passes; the median is reported (default: ${DEFAULT-VALUE}).")
   int repeat;
 
+  @Option(names = "--warmup", defaultValue = "50000", paramLabel = "W",
+      description = "Untimed ticks first, so the JIT has compiled the check (default: ${DEFAULT-VALUE}).")
+  int warmup;
+
   @Option(names = "--seed", defaultValue = "1", paramLabel = "S",
       description = "Seed placing the tables and parts (default: ${DEFAULT-VALUE}).")
   long seed;
 
   @Override
   public void run() {
-    if (ticks < 1 || repeat < 1) {
-      throw new UserError("--ticks and --repeat must be at least 1");
+    if (ticks < 1 || repeat < 1 || warmup < 0) {
+      throw new UserError("--ticks and --repeat must be at least 1, --warmup at least 0");
     }
     CellScene scene = new CellScene(seed);
     long contacts = 0;
-    for (int t = 0; t < Math.max(ticks, 50_000); t++) {
+    for (int t = 0; t < warmup; t++) {
       contacts += scene.tick(t);
     }
     long[] ns = new long[repeat];

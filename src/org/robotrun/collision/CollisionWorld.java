@@ -146,6 +146,23 @@ public final class CollisionWorld {
     return contactCount;
   }
 
+  /**
+   * The bodies whose boxes overlap or touch {@code probe_W} and that {@code accept} lets
+   * through, by handle, at their current poses (no {@link #update()} needed). For one-off
+   * questions such as "which part is inside the gripper's pickup zone"; allocates its result.
+   */
+  public List<Integer> overlapping(Obb probe_W, java.util.function.Predicate<Body> accept) {
+    double[] probe = new double[Obb.STRIDE];
+    probe_W.writeTo(probe, 0);
+    List<Integer> out = new ArrayList<>();
+    for (int h = 0; h < bodies.size(); h++) {
+      if (accept.test(bodies.get(h)) && SeparatingAxisTest.overlap(probe, 0, boxes, h)) {
+        out.add(h);
+      }
+    }
+    return out;
+  }
+
   /** Number of touching pairs found by the last {@link #update()}. */
   public int contactCount() {
     return contactCount;

@@ -67,4 +67,14 @@ class BenchCollisionCommandTest {
     assertThat(r.exit()).isEqualTo(2);
     assertThat(r.err()).contains("nope.csv: no such file");
   }
+
+  @Test
+  void broadPhaseAndScenarioBenchmarksPrintTheirFigures() {
+    Run bp = run("bench", "broadphase", "--ticks", "50", "--repeat", "1", "--warmup", "10");
+    assertThat(bp.exit()).as(bp.err()).isZero();
+    assertThat(bp.out()).matches("bodies=216 ticks=50 contacts_per_tick=\\d+\\.\\d\\d us_per_tick=\\d+\\.\\d\\d\\R");
+    Run sc = run("bench", "scenario", "--file", "scenarios/pick-and-place.json", "--repeat", "2");
+    assertThat(sc.exit()).as(sc.err()).isZero();
+    assertThat(sc.out()).startsWith("file=scenarios/pick-and-place.json first_load_ms=");
+  }
 }

@@ -109,6 +109,19 @@ class CollisionWorldTest {
   }
 
   @Test
+  void probeQueryFindsTheOverlappingBodiesItAccepts() {
+    CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
+    world.add(Body.fixture("table", "table"), Obb.axisAligned(0, 0, -10, 500, 500, 10));
+    int near = world.add(Body.part("p1", "p1"), Obb.axisAligned(0, 0, 20, 20, 20, 20));
+    world.add(Body.part("p2", "p2"), Obb.axisAligned(300, 0, 20, 20, 20, 20));
+    // A pickup zone just above p1, touching its top face: p1 only, since the filter drops fixtures.
+    Obb zone = Obb.axisAligned(0, 0, 45, 10, 10, 5);
+    assertThat(world.overlapping(zone, b -> b.kind() == BodyKind.PART)).containsExactly(near);
+    assertThat(world.overlapping(zone, b -> true)).containsExactly(near);
+    assertThat(world.overlapping(Obb.axisAligned(0, 0, 0, 1, 1, 1), b -> true)).containsExactly(0, near);
+  }
+
+  @Test
   void setPoseComposesLinkAndLocalFrames() {
     CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
     int h = world.add(Body.part("p", "p"), Obb.axisAligned(0, 0, 0, 1, 2, 3));
