@@ -104,4 +104,22 @@ class WorldTest {
     assertThat(cw.isTouching(bodies.handle("part"))).isFalse();
     assertThat(cw.isTouching(bodies.handle("jig"))).isTrue(); // the jig sits on the table
   }
+
+  @Test
+  void robotBoxesFollowTheirLinksAndSkipAdjacentOnes() {
+    org.robotrun.collision.CollisionWorld cw = new org.robotrun.collision.CollisionWorld(
+        org.robotrun.collision.StandardPairFilter.nothingHeld());
+    // Three links folded onto each other: links 0 and 1 overlap (adjacent, ignored), 0 and 2 too (checked).
+    LocalBox box = LocalBox.ofBox(Transform.translation(0, 0, 50), new Vec3(40, 40, 100));
+    RobotBodies robot = new RobotBodies("r1", List.of(List.of(box), List.of(box), List.of(box, box)), cw);
+    assertThat(robot.size()).isEqualTo(4);
+    assertThat(cw.body(robot.handle(3)).name()).isEqualTo("r1/link2#2");
+    Transform[] X_WL = {Transform.IDENTITY, Transform.translation(0, 0, 30), Transform.translation(0, 0, 1000)};
+    robot.moveTo(X_WL, cw);
+    assertThat(cw.box(robot.handle(1)).cz()).isEqualTo(80);
+    assertThat(cw.update()).isZero();
+    X_WL[2] = Transform.translation(0, 0, 90);
+    robot.moveTo(X_WL, cw);
+    assertThat(cw.update()).isEqualTo(2); // both boxes of link 2 against link 0
+  }
 }
