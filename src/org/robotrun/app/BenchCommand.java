@@ -12,6 +12,9 @@ import picocli.CommandLine.Command;
       BenchIkCommand.class,
       BenchParseCommand.class,
       BenchInterpCommand.class,
+      BenchCollisionCommand.class,
+      BenchBroadPhaseCommand.class,
+      BenchScenarioCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

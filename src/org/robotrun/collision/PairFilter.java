@@ -1,9 +1,9 @@
 package org.robotrun.collision;
 
 /**
- * The exclusion rule: which pairs of bodies the collision check looks at. Called only for
- * pairs whose bounding boxes already overlap, so it should be cheap and must not allocate on
- * the common path. Must be symmetric.
+ * The exclusion rule: which pairs of bodies the collision check looks at. Must be symmetric
+ * and a pure function of the two bodies: {@link CollisionWorld} asks once per pair and keeps
+ * the answer until it is given a new filter (so a grip change means a new filter value).
  */
 @FunctionalInterface
 public interface PairFilter {

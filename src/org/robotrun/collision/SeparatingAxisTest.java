@@ -17,8 +17,8 @@ package org.robotrun.collision;
  * reported the same way every time. Boxes separated by more than the tolerance along one of
  * the 15 axes are disjoint.
  *
- * <p>No allocation: the test reads primitive fields ({@link Obb}) or a flat array
- * ({@link #overlap(double[], int, double[], int)}).
+ * <p>The hot path {@link #overlap(double[], int, double[], int)} reads boxes from flat arrays
+ * and allocates nothing; exits at the first separating axis.
  */
 public final class SeparatingAxisTest {
   /** A gap up to this size (mm) along the separating axis still counts as touching. */
@@ -32,13 +32,16 @@ public final class SeparatingAxisTest {
 
   private SeparatingAxisTest() {}
 
-  /** Whether the two boxes overlap or touch. */
+  /**
+   * Whether the two boxes overlap or touch. Copies both boxes into a small array first; loops
+   * over many boxes should keep them in flat arrays and call
+   * {@link #overlap(double[], int, double[], int)}.
+   */
   public static boolean overlap(Obb a, Obb b) {
-    return overlap(
-        a.cx(), a.cy(), a.cz(), a.hx(), a.hy(), a.hz(),
-        a.r00(), a.r01(), a.r02(), a.r10(), a.r11(), a.r12(), a.r20(), a.r21(), a.r22(),
-        b.cx(), b.cy(), b.cz(), b.hx(), b.hy(), b.hz(),
-        b.r00(), b.r01(), b.r02(), b.r10(), b.r11(), b.r12(), b.r20(), b.r21(), b.r22());
+    double[] both = new double[2 * Obb.STRIDE];
+    a.writeTo(both, 0);
+    b.writeTo(both, 1);
+    return overlap(both, 0, both, 1);
   }
 
   /**
@@ -48,22 +51,17 @@ public final class SeparatingAxisTest {
   public static boolean overlap(double[] a, int ia, double[] b, int ib) {
     int i = ia * Obb.STRIDE;
     int j = ib * Obb.STRIDE;
-    return overlap(
-        a[i], a[i + 1], a[i + 2], a[i + 3], a[i + 4], a[i + 5],
-        a[i + 6], a[i + 7], a[i + 8], a[i + 9], a[i + 10], a[i + 11], a[i + 12], a[i + 13], a[i + 14],
-        b[j], b[j + 1], b[j + 2], b[j + 3], b[j + 4], b[j + 5],
-        b[j + 6], b[j + 7], b[j + 8], b[j + 9], b[j + 10], b[j + 11], b[j + 12], b[j + 13], b[j + 14]);
-  }
-
-  // Parameters: centre, half extents, row-major rotation (columns = box axes), for A then B.
-  @SuppressWarnings("checkstyle:ParameterNumber")
-  static boolean overlap(
-      double acx, double acy, double acz, double ae0, double ae1, double ae2,
-      double a00, double a01, double a02, double a10, double a11, double a12,
-      double a20, double a21, double a22,
-      double bcx, double bcy, double bcz, double be0, double be1, double be2,
-      double b00, double b01, double b02, double b10, double b11, double b12,
-      double b20, double b21, double b22) {
+    // Loaded into locals once: centre, half extents, row-major rotation (columns = box axes).
+    double acx = a[i], acy = a[i + 1], acz = a[i + 2];
+    double ae0 = a[i + 3], ae1 = a[i + 4], ae2 = a[i + 5];
+    double a00 = a[i + 6], a01 = a[i + 7], a02 = a[i + 8];
+    double a10 = a[i + 9], a11 = a[i + 10], a12 = a[i + 11];
+    double a20 = a[i + 12], a21 = a[i + 13], a22 = a[i + 14];
+    double bcx = b[j], bcy = b[j + 1], bcz = b[j + 2];
+    double be0 = b[j + 3], be1 = b[j + 4], be2 = b[j + 5];
+    double b00 = b[j + 6], b01 = b[j + 7], b02 = b[j + 8];
+    double b10 = b[j + 9], b11 = b[j + 10], b12 = b[j + 11];
+    double b20 = b[j + 12], b21 = b[j + 13], b22 = b[j + 14];
     // R[i][j] = A axis i · B axis j (axes are the columns of each rotation).
     double r00 = a00 * b00 + a10 * b10 + a20 * b20;
     double r01 = a00 * b01 + a10 * b11 + a20 * b21;
@@ -133,6 +131,7 @@ public final class SeparatingAxisTest {
     }
     return !crossSeparates(Math.abs(t1 * r02 - t0 * r12) - (ae0 * q12 + ae1 * q02 + be0 * q21 + be1 * q20), r22);
   }
+
 
   /**
    * Whether a gap {@code d} measured along the unnormalised axis A_i × B_j (length

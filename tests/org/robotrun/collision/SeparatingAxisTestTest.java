@@ -22,11 +22,17 @@ class SeparatingAxisTestTest {
     // plus the construction's own answer for built contacts (gap 0 or ±1e-9 mm → overlap,
     // ≥ 1e-3 mm → apart). Tolerance: none — zero disagreements.
     List<LabeledPair> pairs = new ObbPairGenerator(20261122L).pairs(100_000);
+    double[] flatA = new double[pairs.size() * Obb.STRIDE];
+    double[] flatB = new double[pairs.size() * Obb.STRIDE];
+    for (int i = 0; i < pairs.size(); i++) {
+      pairs.get(i).a().writeTo(flatA, i);
+      pairs.get(i).b().writeTo(flatB, i);
+    }
     List<String> disagreements = new ArrayList<>();
     Map<Kind, int[]> tally = new EnumMap<>(Kind.class);
     for (int i = 0; i < pairs.size(); i++) {
       LabeledPair p = pairs.get(i);
-      boolean sat = SeparatingAxisTest.overlap(p.a(), p.b());
+      boolean sat = SeparatingAxisTest.overlap(flatA, i, flatB, i);
       boolean satSwapped = SeparatingAxisTest.overlap(p.b(), p.a());
       boolean ref = BruteForceOverlap.overlap(p.a(), p.b(), TOL);
       boolean expected = switch (p.expect()) {
