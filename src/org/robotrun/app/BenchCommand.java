@@ -15,6 +15,7 @@ import picocli.CommandLine.Command;
       BenchCollisionCommand.class,
       BenchBroadPhaseCommand.class,
       BenchScenarioCommand.class,
+      BenchSimCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

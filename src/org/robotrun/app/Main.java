@@ -19,6 +19,7 @@ import picocli.CommandLine.Command;
       RenderCommand.class,
       CheckCommand.class,
       PendantCommand.class,
+      RunCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })

@@ -1,0 +1,135 @@
+package org.robotrun.app;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.robotrun.io.LsReadResult;
+import org.robotrun.io.LsReader;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.math.Transform;
+import org.robotrun.motion.MotionLimits;
+import org.robotrun.motion.MotionListener;
+import org.robotrun.motion.MotionRunner;
+import org.robotrun.motion.MoveRequest;
+import org.robotrun.motion.Speed;
+import org.robotrun.motion.Termination;
+import org.robotrun.program.Program;
+import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.HeadlessRun;
+import org.robotrun.sim.Simulation;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code robotrun bench sim}: headless simulation speed and the per-tick cost of a linear move. */
+@Command(
+    name = "sim",
+    mixinStandardHelpOptions = true,
+    description = {
+      "Measure headless simulation speed on the default cell (4 ms ticks).",
+      "1) A pick-and-place program of about 60 s of simulated time (the example PICKPLACE, called 7 times) is run "
+          + "--repeats times after one warm-up run; prints simulated seconds per wall second (best and median).",
+      "2) A 500 mm linear move at 100 mm/s (1 250 ticks of resolved-rate tracking) is run --repeats times; prints "
+          + "the wall time per tick (best and median).",
+      "Output: sim_speed_x=B median_x=M sim_seconds=S ... and linear_tick_us=B median_us=M ticks=N"
+    })
+public final class BenchSimCommand implements Callable<Integer> {
+  /** How often BENCH60 calls PICKPLACE: 7 × 8.4 s ≈ 60 s. */
+  static final int CYCLES = 7;
+
+  @Option(names = "--repeats", defaultValue = "5", description = "Measured runs of each workload (default: ${DEFAULT-VALUE}).")
+  int repeats;
+
+  @Override
+  public Integer call() throws IOException {
+    if (repeats < 1 || repeats > 1000) {
+      throw new UserError("--repeats: expected 1..1000, got " + repeats);
+    }
+    RobotModel model = RobotDefinitions.defaultRobot();
+    Program pickPlace = example("PICKPLACE");
+    Program bench = parse("BENCH60", """
+        /PROG  BENCH60
+        /ATTR
+        /MN
+           1:  FOR R[5]=1 TO %d ;
+           2:  CALL PICKPLACE ;
+           3:  ENDFOR ;
+        /END
+        """.formatted(CYCLES));
+
+    double[] speed = new double[repeats];
+    double simSeconds = 0;
+    long ticks = 0;
+    for (int k = -1; k < repeats; k++) {
+      Simulation sim = DefaultCell.simulation(model);
+      Controller c = sim.controllers().get(0);
+      c.saveProgram(pickPlace);
+      c.saveProgram(bench);
+      long t0 = System.nanoTime();
+      HeadlessRun.Result r = HeadlessRun.run(sim, c, "BENCH60", 600, s -> {});
+      long ns = System.nanoTime() - t0;
+      if (r.status() != HeadlessRun.Status.FINISHED) {
+        throw new UserError("benchmark program did not finish: " + r.alarm().map(a -> a.display()).orElse("?"), Main.EXIT_FAILED);
+      }
+      if (k >= 0) {
+        speed[k] = r.simTimeSec() / (ns / 1e9);
+      }
+      simSeconds = r.simTimeSec();
+      ticks = r.ticks();
+    }
+    double[] sorted = speed.clone();
+    Arrays.sort(sorted);
+    System.out.printf(Locale.ROOT, "sim_speed_x=%.0f median_x=%.0f sim_seconds=%.3f ticks=%d repeats=%d%n",
+        sorted[sorted.length - 1], sorted[sorted.length / 2], simSeconds, ticks, repeats);
+
+    double[] tickUs = new double[repeats];
+    int linearTicks = 0;
+    for (int k = -3; k < repeats; k++) {
+      double[] q0 = {0, 0.2, -0.1, 0.3, -1.2, 0.4};
+      Transform tool = Transform.translation(0, 0, 100);
+      MotionRunner runner = new MotionRunner(model, MotionLimits.forModel(model), q0, MotionListener.NONE);
+      Transform X_WT = ForwardKinematics.flangePoseInWorld(model, q0).compose(tool);
+      Transform target = X_WT.withTranslation(X_WT.x(), X_WT.y() + 250, X_WT.z() - 433);
+      runner.enqueue(new MoveRequest.Linear(target, tool, Speed.mmPerSec(100), Termination.fine(), 1, 1));
+      int n = 0;
+      long t0 = System.nanoTime();
+      while (!runner.idle()) {
+        runner.tick(Simulation.DEFAULT_TICK_SEC);
+        n++;
+      }
+      long ns = System.nanoTime() - t0;
+      if (k >= 0) {
+        tickUs[k] = ns / 1e3 / n;
+      }
+      linearTicks = n;
+    }
+    double[] ts = tickUs.clone();
+    Arrays.sort(ts);
+    System.out.printf(Locale.ROOT, "linear_tick_us=%.2f median_us=%.2f ticks=%d repeats=%d%n",
+        ts[0], ts[ts.length / 2], linearTicks, repeats);
+    return Main.EXIT_OK;
+  }
+
+  /** A program shipped in the jar under /examples. */
+  static Program example(String name) throws IOException {
+    try (InputStream in = BenchSimCommand.class.getResourceAsStream("/examples/" + name + ".LS")) {
+      if (in == null) {
+        throw new UserError("missing resource /examples/" + name + ".LS", Main.EXIT_FAILED);
+      }
+      return parse(name, new String(in.readAllBytes(), StandardCharsets.UTF_8));
+    }
+  }
+
+  private static Program parse(String name, String text) {
+    LsReadResult r = LsReader.parse(name + ".LS", text);
+    if (r.hasErrors()) {
+      throw new UserError("built-in program " + name + ": " + r.diagnostics(), Main.EXIT_FAILED);
+    }
+    return r.program();
+  }
+}

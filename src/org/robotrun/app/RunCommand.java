@@ -1,0 +1,156 @@
+package org.robotrun.app;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.function.Consumer;
+import java.util.stream.Stream;
+import org.robotrun.io.Diagnostic;
+import org.robotrun.io.LsReadResult;
+import org.robotrun.io.LsReader;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.program.Program;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.HeadlessRun;
+import org.robotrun.sim.Simulation;
+import org.robotrun.sim.TraceWriter;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code robotrun run}: executes a program headless and reports how it ended. */
+@Command(
+    name = "run",
+    mixinStandardHelpOptions = true,
+    description = {
+      "Run a TP program with no window, as fast as the machine allows, in 4 ms simulation ticks.",
+      "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
+          + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
+          + "reports it closed 0.1 s later.",
+      "Exit codes: 0 the program reached its end, 1 an alarm stopped it (or the time limit passed), 2 bad input.",
+      "The JSON report is described in docs/run-report.md; the trace has one CSV row per tick (time, joints, TCP)."
+    })
+public final class RunCommand implements Callable<Integer> {
+  @Option(names = "--scenario", paramLabel = "FILE",
+      description = "Scenario JSON (robots, world, frames). Not supported in this build yet: omit it to use the default cell.")
+  Path scenario;
+
+  @Option(names = "--program", required = true, paramLabel = "NAME", description = "The program to run (its /PROG name).")
+  String program;
+
+  @Option(names = "--programs", arity = "1..*", paramLabel = "DIR|FILE.ls",
+      description = "Program files to load: .LS files, or directories whose .LS files are all loaded.")
+  List<Path> programs = new ArrayList<>();
+
+  @Option(names = "--override", defaultValue = "100", paramLabel = "PCT",
+      description = "Speed override in percent, 1..100 (default: ${DEFAULT-VALUE}).")
+  int overridePct;
+
+  @Option(names = "--max-sim-seconds", defaultValue = "600", paramLabel = "N",
+      description = "Stop with exit code 1 after this much simulated time (default: ${DEFAULT-VALUE}).")
+  double maxSimSeconds;
+
+  @Option(names = "--report", paramLabel = "out.json", description = "Write the JSON report here.")
+  Path report;
+
+  @Option(names = "--trace", paramLabel = "out.csv", description = "Write one CSV row per tick here.")
+  Path trace;
+
+  @Override
+  public Integer call() throws IOException {
+    if (scenario != null) {
+      throw new UserError("--scenario: scenario files are not supported in this build yet; omit --scenario to use the default cell");
+    }
+    if (overridePct < 1 || overridePct > 100) {
+      throw new UserError("--override: expected 1..100, got " + overridePct);
+    }
+    if (!(maxSimSeconds > 0) || Double.isInfinite(maxSimSeconds)) {
+      throw new UserError("--max-sim-seconds: expected a positive number, got " + maxSimSeconds);
+    }
+    checkOutput("--report", report);
+    checkOutput("--trace", trace);
+    List<Program> loaded = loadPrograms(programs);
+    if (loaded.stream().noneMatch(p -> p.name().equals(program))) {
+      throw new UserError("--program: no program named " + program + " among the loaded files"
+          + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
+              + String.join(", ", loaded.stream().map(Program::name).toList()) + ")"));
+    }
+    Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+    Controller c = sim.controllers().get(0);
+    loaded.forEach(c::saveProgram);
+    c.setOverridePct(overridePct);
+
+    HeadlessRun.Result result;
+    if (trace != null) {
+      try (Writer w = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
+        TraceWriter tw = new TraceWriter(w, sim.controllers());
+        tw.write(sim);
+        result = HeadlessRun.run(sim, c, program, maxSimSeconds, tw::write);
+      }
+    } else {
+      Consumer<Simulation> none = s -> {};
+      result = HeadlessRun.run(sim, c, program, maxSimSeconds, none);
+    }
+    if (report != null) {
+      RunReport.write(report, program, result, sim);
+    }
+    String summary = switch (result.status()) {
+      case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", program, result.cycleTimeSec());
+      case ALARM -> "alarm " + result.alarm().orElseThrow().display();
+    };
+    System.out.println(summary);
+    return result.status() == HeadlessRun.Status.FINISHED ? Main.EXIT_OK : Main.EXIT_FAILED;
+  }
+
+  private static void checkOutput(String option, Path file) {
+    if (file == null) {
+      return;
+    }
+    Path dir = file.toAbsolutePath().getParent();
+    if (dir == null || !Files.isDirectory(dir)) {
+      throw new UserError(option + ": the directory " + dir + " does not exist");
+    }
+    if (Files.isDirectory(file)) {
+      throw new UserError(option + ": " + file + " is a directory; give a file name");
+    }
+  }
+
+  /** Reads every .LS file named or found in the named directories; any error is bad input. */
+  static List<Program> loadPrograms(List<Path> paths) throws IOException {
+    List<Path> files = new ArrayList<>();
+    for (Path p : paths) {
+      if (Files.isDirectory(p)) {
+        try (Stream<Path> s = Files.list(p)) {
+          s.filter(f -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".ls"))
+              .filter(Files::isRegularFile)
+              .sorted()
+              .forEach(files::add);
+        }
+      } else if (Files.isRegularFile(p)) {
+        files.add(p);
+      } else {
+        throw new UserError("--programs: " + p + " does not exist");
+      }
+    }
+    List<Program> out = new ArrayList<>();
+    List<String> errors = new ArrayList<>();
+    for (Path f : files) {
+      LsReadResult r = LsReader.read(f);
+      r.diagnostics().stream().filter(Diagnostic::isError).map(Diagnostic::toString).forEach(errors::add);
+      if (!r.hasErrors()) {
+        out.add(r.program());
+      }
+    }
+    if (!errors.isEmpty()) {
+      throw new UserError(String.join(System.lineSeparator(), errors));
+    }
+    return out;
+  }
+}

@@ -1,0 +1,153 @@
+package org.robotrun.app;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Position;
+import org.robotrun.program.Registers;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerAlarm;
+import org.robotrun.sim.HeadlessRun;
+import org.robotrun.sim.MotionTiming;
+import org.robotrun.sim.Simulation;
+
+/** The JSON report of {@code robotrun run}; the schema is documented in docs/run-report.md. */
+final class RunReport {
+  private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+
+  private RunReport() {}
+
+  /** Writes atomically (temp file, then rename). */
+  static void write(Path file, String program, HeadlessRun.Result result, Simulation sim) throws IOException {
+    ObjectNode root = build(program, result, sim);
+    Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
+    JSON.writeValue(tmp.toFile(), root);
+    Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+  }
+
+  static ObjectNode build(String program, HeadlessRun.Result result, Simulation sim) {
+    ObjectNode root = JSON.createObjectNode();
+    root.put("status", result.status() == HeadlessRun.Status.FINISHED ? "finished" : "alarm");
+    if (result.alarm().isPresent()) {
+      ControllerAlarm a = result.alarm().get();
+      ObjectNode al = root.putObject("alarm");
+      al.put("code", a.code());
+      al.put("message", a.message());
+      al.put("program", a.program());
+      al.put("line", a.line());
+    } else {
+      root.putNull("alarm");
+    }
+    root.put("program", program);
+    root.put("simTimeSec", round(result.simTimeSec(), 6));
+    root.put("cycleTimeSec", round(result.cycleTimeSec(), 6));
+    ArrayNode robots = root.putArray("robots");
+    for (Controller c : sim.controllers()) {
+      robots.add(robot(c));
+    }
+    root.putArray("parts");
+    root.putArray("collisions");
+    return root;
+  }
+
+  private static ObjectNode robot(Controller c) {
+    ObjectNode r = JSON.createObjectNode();
+    r.put("name", c.name());
+    ArrayNode joints = r.putArray("joints_deg");
+    Position.Joint j = c.currentJoints();
+    for (int i = 1; i <= 6; i++) {
+      joints.add(round(j.element(i), 6));
+    }
+    Xyzwpr t = c.tcpInWorld();
+    ObjectNode tcp = r.putObject("tcp_world");
+    tcp.put("x", round(t.x(), 4));
+    tcp.put("y", round(t.y(), 4));
+    tcp.put("z", round(t.z(), 4));
+    tcp.put("w", round(t.wDeg(), 4));
+    tcp.put("p", round(t.pDeg(), 4));
+    tcp.put("r", round(t.rDeg(), 4));
+    r.put("utool", c.frames().active(FrameKind.TOOL));
+    r.put("uframe", c.frames().active(FrameKind.USER));
+    r.put("overridePct", c.overridePct());
+    Registers regs = c.registers();
+    ObjectNode registers = r.putObject("registers");
+    ObjectNode rr = registers.putObject("R");
+    for (int i = 1; i <= Registers.R_COUNT; i++) {
+      if (regs.number(i) != 0 || !regs.isInteger(i)) {
+        if (regs.isInteger(i)) {
+          rr.put(Integer.toString(i), (long) regs.number(i));
+        } else {
+          rr.put(Integer.toString(i), regs.number(i));
+        }
+      }
+    }
+    ObjectNode pr = registers.putObject("PR");
+    for (int i = 1; i <= Registers.PR_COUNT; i++) {
+      Position p = regs.position(i);
+      if (!p.equals(Position.Cartesian.ZERO)) {
+        pr.set(Integer.toString(i), position(p));
+      }
+    }
+    ObjectNode io = r.putObject("io");
+    for (IoKind k : IoKind.values()) {
+      ObjectNode ports = io.putObject(k.name());
+      for (int i = 1; i <= k.size(); i++) {
+        int v = regs.value(k, i);
+        if (v != 0) {
+          if (k.group()) {
+            ports.put(Integer.toString(i), v);
+          } else {
+            ports.put(Integer.toString(i), true);
+          }
+        }
+      }
+    }
+    ArrayNode motions = r.putArray("motions");
+    for (MotionTiming m : c.motionTimings()) {
+      ObjectNode o = motions.addObject();
+      o.put("program", m.program());
+      o.put("line", m.line());
+      o.put("startSec", round(m.startSec(), 6));
+      o.put("durationSec", round(m.durationSec(), 6));
+    }
+    return r;
+  }
+
+  private static ObjectNode position(Position p) {
+    ObjectNode o = JSON.createObjectNode();
+    switch (p) {
+      case Position.Cartesian c -> {
+        o.put("x", c.xMm());
+        o.put("y", c.yMm());
+        o.put("z", c.zMm());
+        o.put("w", c.wDeg());
+        o.put("p", c.pDeg());
+        o.put("r", c.rDeg());
+        var cf = c.config();
+        o.put("config", (cf.flip() ? "F" : "N") + " " + (cf.up() ? "U" : "D") + " " + (cf.top() ? "T" : "B")
+            + ", " + cf.turn1() + ", " + cf.turn2() + ", " + cf.turn3());
+      }
+      case Position.Joint j -> {
+        ArrayNode a = o.putArray("joints_deg");
+        for (int i = 1; i <= 6; i++) {
+          a.add(j.element(i));
+        }
+      }
+    }
+    return o;
+  }
+
+  private static double round(double v, int decimals) {
+    double s = Math.pow(10, decimals);
+    double r = Math.round(v * s) / s;
+    return r == 0 ? 0 : r;
+  }
+}

@@ -1,0 +1,162 @@
+package org.robotrun.motion;
+
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+import org.robotrun.robot.KinematicChain;
+import org.robotrun.robot.RobotModel;
+
+/**
+ * Turns the jog keys into arm motion, one tick at a time.
+ *
+ * <p>JOINT moves each joint at {@link #JOINT_JOG_FRACTION} of its maximum speed times the
+ * override, slowing so it comes to rest exactly at its limit. WORLD, TOOL and USER move a desired
+ * TCP pose along / about the frame's axes through the TCP (linear {@link #LINEAR_JOG_MM_PER_SEC},
+ * rotation {@link #ROTATION_JOG_RAD_PER_SEC}, times the override) and reach it with the
+ * resolved-rate {@link PoseTracker}; because the desired pose is integrated, not the joint
+ * rates, the TCP does not drift off the axis. Each axis ramps its speed up and down in
+ * {@link #RAMP_SEC}. A jog that would pass a joint limit, or that needs joints faster than
+ * their limits (a singularity), stops with a message and never jumps.
+ *
+ * <p>Not thread-safe; one per controller.
+ */
+public final class Jogger {
+  /** JOINT jog speed at 100% override, as a fraction of each joint's maximum. */
+  public static final double JOINT_JOG_FRACTION = 0.25;
+  /** Cartesian jog speed at 100% override (mm/s): the teach-mode limit of real controllers. */
+  public static final double LINEAR_JOG_MM_PER_SEC = 250;
+  /** Cartesian rotation jog speed at 100% override (rad/s): 60°/s. */
+  public static final double ROTATION_JOG_RAD_PER_SEC = Math.toRadians(60);
+  /** Time to reach full jog speed from rest and back (s). */
+  public static final double RAMP_SEC = 0.1;
+
+  private static final JogResult IDLE = new JogResult.Idle();
+  private static final JogResult MOVING = new JogResult.Moving();
+
+  private final RobotModel model;
+  private final MotionLimits limits;
+  private final PoseTracker tracker;
+  private final KinematicChain chain;
+  private final double[] speed = new double[6];
+  private final double[] qTry = new double[RobotModel.DOF];
+  private Transform X_WTdesired;
+  private JogFrame lastFrame;
+  private Transform lastTool;
+
+  public Jogger(RobotModel model, MotionLimits limits) {
+    this.model = model;
+    this.limits = limits;
+    this.tracker = new PoseTracker(model);
+    this.chain = tracker.chain();
+  }
+
+  /** Full speed of axis i at 100% override in the frame (rad/s or mm/s). */
+  double fullSpeed(JogFrame frame, int axis) {
+    return switch (frame) {
+      case JOINT -> JOINT_JOG_FRACTION * limits.jointSpeed(axis);
+      case WORLD, TOOL, USER -> axis < 3 ? LINEAR_JOG_MM_PER_SEC : ROTATION_JOG_RAD_PER_SEC;
+    };
+  }
+
+  /** Stops at once (HOLD, deadman, alarm): speeds to zero, keys off. */
+  public void stop(JogState keys) {
+    keys.stopAll();
+    java.util.Arrays.fill(speed, 0);
+    X_WTdesired = null;
+  }
+
+  /**
+   * One tick.
+   *
+   * @param q joints (rad, kinematic), updated in place
+   * @param overrideFraction 0.01..1
+   * @param X_FT active tool (TCP in the flange)
+   * @param X_WU active user frame in WORLD (used for USER)
+   */
+  public JogResult tick(double[] q, JogState keys, JogFrame frame, double overrideFraction, Transform X_FT,
+      Transform X_WU, double dtSec) {
+    if (frame != lastFrame || !X_FT.equals(lastTool)) {
+      java.util.Arrays.fill(speed, 0);
+      X_WTdesired = null;
+      lastFrame = frame;
+      lastTool = X_FT;
+    }
+    boolean any = false;
+    for (int i = 0; i < 6; i++) {
+      double full = fullSpeed(frame, i) * overrideFraction;
+      double target = keys.direction(i) * full;
+      double dv = full / RAMP_SEC * dtSec;
+      speed[i] = speed[i] < target ? Math.min(target, speed[i] + dv) : Math.max(target, speed[i] - dv);
+      any |= speed[i] != 0;
+    }
+    if (!any) {
+      X_WTdesired = null;
+      return IDLE;
+    }
+    return frame == JogFrame.JOINT ? jogJoints(q, keys, overrideFraction, dtSec) : jogCartesian(q, keys, frame, X_FT, X_WU, dtSec);
+  }
+
+  private JogResult jogJoints(double[] q, JogState keys, double overrideFraction, double dtSec) {
+    for (int i = 0; i < 6; i++) {
+      if (speed[i] == 0) {
+        continue;
+      }
+      double a = fullSpeed(JogFrame.JOINT, i) * overrideFraction / RAMP_SEC;
+      double room = speed[i] > 0 ? chain.upper(i) - q[i] : q[i] - chain.lower(i);
+      // Brake so the joint comes to rest at its limit: v ≤ sqrt(2·a·room).
+      double vMax = Math.sqrt(2 * a * Math.max(0, room));
+      double v = Math.signum(speed[i]) * Math.min(Math.abs(speed[i]), vMax);
+      speed[i] = v;
+      double next = q[i] + v * dtSec;
+      boolean atLimit = room <= 1e-9 || (speed[i] > 0 ? next >= chain.upper(i) : next <= chain.lower(i));
+      q[i] = Math.max(chain.lower(i), Math.min(chain.upper(i), next));
+      if (atLimit) {
+        String side = v > 0 || room <= 1e-9 && keys.direction(i) > 0 ? "upper" : "lower";
+        stop(keys);
+        return new JogResult.Stopped(String.format("J%d at its %s limit (%.1f deg)", i + 1, side,
+            Math.toDegrees(q[i])));
+      }
+    }
+    return MOVING;
+  }
+
+  private JogResult jogCartesian(double[] q, JogState keys, JogFrame frame, Transform X_FT, Transform X_WU,
+      double dtSec) {
+    Transform X_WT = org.robotrun.robot.ForwardKinematics.flangePoseInWorld(model, q).compose(X_FT);
+    if (X_WTdesired == null) {
+      X_WTdesired = X_WT;
+    }
+    Transform axes = switch (frame) {
+      case WORLD, JOINT -> Transform.IDENTITY;
+      case USER -> X_WU;
+      case TOOL -> X_WTdesired;
+    };
+    Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
+    Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
+    Vec3 p = X_WTdesired.translationVector().plus(v_W.times(dtSec));
+    Transform want = Rotations.exp(w_W, dtSec).compose(X_WTdesired.withTranslation(0, 0, 0))
+        .withTranslation(p.x(), p.y(), p.z());
+    System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
+    boolean ok = tracker.track(qTry, want, X_FT, 1e-3, 1e-6);
+    double ratio = 0;
+    for (int i = 0; i < 6 && ok; i++) {
+      ok = Double.isFinite(qTry[i]);
+      ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
+    }
+    if (!ok || ratio > 1 || MotionRunner.entersWristSingularity(q, qTry)) {
+      stop(keys);
+      return new JogResult.Stopped(Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))
+          ? String.format("stopped near the wrist singularity (J5 = %.1f deg): jog J5 in JOINT first", Math.toDegrees(q[4]))
+          : "stopped: singularity or edge of reach");
+    }
+    for (int i = 0; i < 6; i++) {
+      if (!(qTry[i] >= chain.lower(i) && qTry[i] <= chain.upper(i))) {
+        stop(keys);
+        return new JogResult.Stopped(String.format("J%d at its %s limit (%.1f deg)", i + 1,
+            qTry[i] > chain.upper(i) ? "upper" : "lower", Math.toDegrees(q[i])));
+      }
+    }
+    System.arraycopy(qTry, 0, q, 0, RobotModel.DOF);
+    X_WTdesired = want;
+    return MOVING;
+  }
+}

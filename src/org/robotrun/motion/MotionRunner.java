@@ -1,0 +1,553 @@
+package org.robotrun.motion;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+import org.robotrun.robot.ClosedFormIk;
+import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.robot.IkResult;
+import org.robotrun.robot.KinematicChain;
+import org.robotrun.robot.RobotModel;
+
+/**
+ * Executes moves on one arm, one fixed tick at a time: the motion queue of a controller.
+ *
+ * <p>Each move is planned when it starts, from where the previous one ends, as a trapezoidal
+ * {@link UnitProfile} under the speed, joint speed and acceleration limits. A CNT move lets the
+ * next queued move start during its deceleration (see {@link Termination.Cnt}); the two
+ * superimpose. Joint moves interpolate joints; linear and circular moves compute the desired
+ * TCP pose every tick and reach it with the resolved-rate {@link PoseTracker}; if that would
+ * need a joint faster than its limit (near a singularity) the path slows down for that tick,
+ * and if it cannot be followed at all the move fails with a {@link MotionFault} and the robot
+ * stops where it is. Moves of different kinds (joint vs. Cartesian) or with different tools do
+ * not blend: the next one starts when the previous has ended.
+ *
+ * <p>Time: the runner keeps its own simulated clock, advanced only by {@link #tick}. Override
+ * and HOLD scale the rate at which path time runs (ramped, so the arm never jumps).
+ * Deterministic: no wall clock, no randomness. Not thread-safe.
+ */
+public final class MotionRunner {
+  /** Time for the path rate to go from 0 to 100% (override changes, HOLD, resume), s. */
+  static final double RATE_RAMP_SEC = 0.2;
+  /** Path tolerance per tick: the tracker must land within this of the desired pose. */
+  static final double TRACK_TOL_MM = 0.01;
+  static final double TRACK_TOL_RAD = 1e-4;
+  /** Slowed below this fraction of the planned speed for {@link #STALL_SEC}: give up. */
+  static final double STALL_SCALE = 0.05;
+  static final double STALL_SEC = 0.5;
+  /** Halvings of a tick's path step before a point counts as impossible to reach. */
+  static final int MAX_RETRIES = 10;
+  /**
+   * A Cartesian move that brings J5 closer to 0 than this (the wrist singularity, J4 and J6 in
+   * line) stops with an alarm, as a controller without singularity avoidance does.
+   */
+  static final double WRIST_SINGULAR_RAD = Math.toRadians(1);
+
+  private final RobotModel model;
+  private final MotionLimits limits;
+  private final PoseTracker tracker;
+  private final Optional<ClosedFormIk> closedForm;
+  private final MotionListener listener;
+
+  private final double[] q;
+  private final double[] qTry = new double[RobotModel.DOF];
+  private final double[] qBase = new double[RobotModel.DOF];
+  private final ArrayDeque<MoveRequest> pending = new ArrayDeque<>();
+  private final List<Segment> active = new ArrayList<>();
+  private Transform X_WBase = Transform.IDENTITY;
+  private double timeSec;
+  private double rate;
+  private double overrideFraction = 1;
+  private boolean held;
+  private double pathScale = 1;
+  private double stallSec;
+
+  /**
+   * @param q0 starting joints (rad, kinematic convention)
+   * @param listener told when moves start, finish or fail
+   */
+  public MotionRunner(RobotModel model, MotionLimits limits, double[] q0, MotionListener listener) {
+    this.model = model;
+    this.limits = limits;
+    this.tracker = new PoseTracker(model);
+    this.closedForm = model.opw().map(p -> new ClosedFormIk(model));
+    this.listener = listener;
+    this.q = q0.clone();
+  }
+
+  // ---- state -------------------------------------------------------------------------------
+
+  /** Current joints (rad, kinematic), a copy. */
+  public double[] joints() {
+    return q.clone();
+  }
+
+  /** Sets the joints directly (jogging, teleport); only while no move runs. */
+  public void setJoints(double[] qNew) {
+    if (!idle()) {
+      throw new IllegalStateException("cannot set joints while moves run");
+    }
+    System.arraycopy(qNew, 0, q, 0, RobotModel.DOF);
+  }
+
+  /** The TCP pose in WORLD for the tool {@code X_FT}. */
+  public Transform tcpInWorld(Transform X_FT) {
+    return ForwardKinematics.flangePoseInWorld(model, q).compose(X_FT);
+  }
+
+  /** Simulated time of this runner's clock (s). */
+  public double timeSec() {
+    return timeSec;
+  }
+
+  /** Whether nothing runs and nothing waits. */
+  public boolean idle() {
+    return active.isEmpty() && pending.isEmpty();
+  }
+
+  /** Whether another move may be queued now: at most one waits behind the running ones. */
+  public boolean acceptsMove() {
+    return pending.isEmpty();
+  }
+
+  /** Tags of the moves being executed, oldest first. */
+  public List<Long> activeTags() {
+    List<Long> out = new ArrayList<>(active.size());
+    for (Segment s : active) {
+      out.add(s.tag);
+    }
+    return out;
+  }
+
+  /**
+   * Whether the running move {@code tag} has reached the point where a following move would
+   * start blending (CNT), or has finished. False for a queued move or one not known.
+   */
+  public boolean passedBlendPoint(long tag) {
+    for (Segment s : active) {
+      if (s.tag == tag) {
+        return s.tSec >= s.blendStartSec || s.finished();
+      }
+    }
+    return false;
+  }
+
+  /** Whether a move with this tag is queued or running. */
+  public boolean contains(long tag) {
+    for (Segment s : active) {
+      if (s.tag == tag) {
+        return true;
+      }
+    }
+    for (MoveRequest r : pending) {
+      if (r.tag() == tag) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /** Override as a fraction (0.01 .. 1). */
+  public void setOverride(double fraction) {
+    if (!(fraction > 0 && fraction <= 1)) {
+      throw new IllegalArgumentException("override must be in (0, 1], got " + fraction);
+    }
+    overrideFraction = fraction;
+  }
+
+  public double override() {
+    return overrideFraction;
+  }
+
+  /** HOLD: decelerate along the path to a stop and wait for {@link #resume}. */
+  public void hold() {
+    held = true;
+  }
+
+  /** Continue after {@link #hold}. */
+  public void resume() {
+    held = false;
+  }
+
+  public boolean held() {
+    return held;
+  }
+
+  /** Whether the arm is at rest (idle, or held and fully decelerated). */
+  public boolean atRest() {
+    return idle() || rate == 0;
+  }
+
+  /** Drops every move at once; the arm stays where it is (abort, alarm). */
+  public void stopNow() {
+    active.clear();
+    pending.clear();
+    rate = 0;
+    pathScale = 1;
+    stallSec = 0;
+    held = false;
+  }
+
+  /** Queues a move; check {@link #acceptsMove} first. */
+  public void enqueue(MoveRequest move) {
+    if (!acceptsMove()) {
+      throw new IllegalStateException("a move is already waiting");
+    }
+    pending.add(move);
+  }
+
+  // ---- tick --------------------------------------------------------------------------------
+
+  /** Advances by {@code dtSec} of simulated time. */
+  public void tick(double dtSec) {
+    timeSec += dtSec;
+    double target = held ? 0 : overrideFraction;
+    if (active.isEmpty()) {
+      rate = target;
+      startFromRest();
+      if (active.isEmpty()) {
+        return;
+      }
+    }
+    double step = dtSec / RATE_RAMP_SEC;
+    rate = rate < target ? Math.min(target, rate + step) : Math.max(target, rate - step);
+    startBlends();
+    if (active.isEmpty()) {
+      return;
+    }
+    boolean ok = active.get(0) instanceof Segment.JointSegment
+        ? advanceJoints(dtSec * rate)
+        : advanceCartesian(dtSec * rate, dtSec);
+    if (!ok) {
+      return;
+    }
+    retireFinished();
+    if (active.isEmpty()) {
+      startFromRest();
+    }
+  }
+
+  private void startFromRest() {
+    while (active.isEmpty() && !pending.isEmpty()) {
+      MoveRequest m = pending.poll();
+      Segment s = plan(m, null);
+      if (s == null) {
+        return;
+      }
+      if (s instanceof Segment.JointSegment) {
+        System.arraycopy(q, 0, qBase, 0, RobotModel.DOF);
+      } else if (s instanceof Segment.CartesianSegment c) {
+        X_WBase = c.X_WStart;
+      }
+      pathScale = 1;
+      stallSec = 0;
+      active.add(s);
+      listener.moveStarted(m.tag(), timeSec);
+      if (s.finished()) {
+        retireFinished();
+      }
+    }
+  }
+
+  private void startBlends() {
+    while (!pending.isEmpty() && !active.isEmpty()) {
+      Segment last = active.get(active.size() - 1);
+      MoveRequest next = pending.peek();
+      if (last.tSec < last.blendStartSec || !blends(last, next)) {
+        return;
+      }
+      pending.poll();
+      Segment s = plan(next, last);
+      if (s == null) {
+        return;
+      }
+      active.add(s);
+      listener.moveStarted(next.tag(), timeSec);
+    }
+  }
+
+  private static boolean blends(Segment last, MoveRequest next) {
+    return switch (next) {
+      case MoveRequest.Joint j -> last instanceof Segment.JointSegment;
+      case MoveRequest.Linear l -> last instanceof Segment.CartesianSegment c && c.X_FT.equals(l.X_FT());
+      case MoveRequest.Circular c -> last instanceof Segment.CartesianSegment s && s.X_FT.equals(c.X_FT());
+    };
+  }
+
+  private boolean advanceJoints(double dTau) {
+    double[] out = qTry;
+    System.arraycopy(qBase, 0, out, 0, RobotModel.DOF);
+    for (Segment s : active) {
+      s.tSec += dTau;
+      ((Segment.JointSegment) s).addDisplacement(s.tSec, out);
+    }
+    int bad = firstOutside(out);
+    if (bad >= 0) {
+      return fail(lastTag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, limitMessage(bad, out[bad])));
+    }
+    System.arraycopy(out, 0, q, 0, RobotModel.DOF);
+    return true;
+  }
+
+  private boolean advanceCartesian(double dTau, double dtSec) {
+    Segment.CartesianSegment first = (Segment.CartesianSegment) active.get(0);
+    double want = dTau * pathScale;
+    double frac = 1;
+    boolean accepted = false;
+    double step = 0;
+    for (int attempt = 0; attempt <= MAX_RETRIES && !accepted; attempt++) {
+      step = want * frac;
+      Transform X_WT = poseAt(step);
+      System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
+      if (!tracker.track(qTry, X_WT, first.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD) || !finite(qTry)) {
+        frac *= 0.5;
+        continue;
+      }
+      double ratio = 0;
+      for (int i = 0; i < RobotModel.DOF; i++) {
+        ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
+      }
+      if (ratio <= 1) {
+        accepted = true;
+      } else {
+        frac *= 0.9 / ratio;
+      }
+    }
+    if (!accepted) {
+      return fail(lastTag(), cannotFollow());
+    }
+    int bad = firstOutside(qTry);
+    if (bad >= 0) {
+      return fail(lastTag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, limitMessage(bad, qTry[bad])));
+    }
+    if (entersWristSingularity(q, qTry)) {
+      return fail(lastTag(), singularity());
+    }
+    for (Segment s : active) {
+      s.tSec += step;
+    }
+    System.arraycopy(qTry, 0, q, 0, RobotModel.DOF);
+    // Slow down as far as this tick needed, then recover gently (about 0.3 s back to full speed).
+    pathScale = frac < 1 ? Math.max(1e-4, pathScale * frac) : Math.min(1, pathScale * 1.05 + 1e-3);
+    stallSec = pathScale < STALL_SCALE && want > 0 ? stallSec + dtSec : 0;
+    if (stallSec > STALL_SEC) {
+      return fail(lastTag(), singularity());
+    }
+    return true;
+  }
+
+  /** The desired TCP pose if every active segment advanced by {@code step} of path time. */
+  private Transform poseAt(double step) {
+    Vec3 p = X_WBase.translationVector();
+    Transform R = X_WBase.withTranslation(0, 0, 0);
+    for (Segment s : active) {
+      Segment.CartesianSegment c = (Segment.CartesianSegment) s;
+      double u = c.profile.position(c.tSec + step);
+      p = p.plus(c.path.displacement(u));
+      R = Rotations.exp(c.rotation_W, u).compose(R);
+    }
+    return R.withTranslation(p.x(), p.y(), p.z());
+  }
+
+  private void retireFinished() {
+    while (!active.isEmpty() && active.get(0).finished()) {
+      Segment s = active.remove(0);
+      switch (s) {
+        case Segment.JointSegment j -> {
+          for (int i = 0; i < RobotModel.DOF; i++) {
+            qBase[i] += j.q1[i] - j.q0[i];
+          }
+        }
+        case Segment.CartesianSegment c -> {
+          Vec3 p = X_WBase.translationVector().plus(c.path.displacement(1));
+          X_WBase = Rotations.exp(c.rotation_W, 1).compose(X_WBase.withTranslation(0, 0, 0))
+              .withTranslation(p.x(), p.y(), p.z());
+        }
+      }
+      listener.moveFinished(s.tag, timeSec);
+    }
+    if (active.isEmpty()) {
+      // Land exactly: base bookkeeping could drift by rounding over long blends.
+      pathScale = 1;
+    }
+  }
+
+  // ---- planning ----------------------------------------------------------------------------
+
+  /** Plans a move from the end of {@code previous} (blending) or from the current state; null if it failed. */
+  private Segment plan(MoveRequest m, Segment previous) {
+    return switch (m) {
+      case MoveRequest.Joint j -> planJoint(j, previous == null ? q : ((Segment.JointSegment) previous).q1);
+      case MoveRequest.Linear l -> {
+        Transform start = previous == null ? tcpInWorld(l.X_FT()) : ((Segment.CartesianSegment) previous).X_WEnd;
+        if (!reachable(l.X_WTarget(), l.X_FT(), l.tag(), "the target")) {
+          yield null;
+        }
+        PathShape path = new PathShape.Line(l.X_WTarget().translationVector().minus(start.translationVector()));
+        yield planCartesian(m, path, start, l.X_WTarget(), l.X_FT());
+      }
+      case MoveRequest.Circular c -> {
+        Transform start = previous == null ? tcpInWorld(c.X_FT()) : ((Segment.CartesianSegment) previous).X_WEnd;
+        if (!reachable(c.X_WVia(), c.X_FT(), c.tag(), "the via point") || !reachable(c.X_WTarget(), c.X_FT(), c.tag(), "the target")) {
+          yield null;
+        }
+        PathShape.Arc arc = PathShape.Arc.through(
+            start.translationVector(), c.X_WVia().translationVector(), c.X_WTarget().translationVector());
+        if (arc == null) {
+          fail(c.tag(), new MotionFault(MotionFault.Kind.BAD_PATH,
+              "circular move: start, via and end point lie on one line or coincide"));
+          yield null;
+        }
+        yield planCartesian(m, arc, start, c.X_WTarget(), c.X_FT());
+      }
+    };
+  }
+
+  private Segment planJoint(MoveRequest.Joint m, double[] q0) {
+    double[] q1 = m.qTarget();
+    int bad = firstOutside(q1);
+    if (bad >= 0) {
+      fail(m.tag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, "target " + limitMessage(bad, q1[bad])));
+      return null;
+    }
+    double maxRate = Double.POSITIVE_INFINITY;
+    double maxAccel = Double.POSITIVE_INFINITY;
+    double fraction = switch (m.speed()) {
+      case Speed.JointPercent p -> p.fraction();
+      case Speed.Linear l -> Math.min(1, l.mmPerSec() / limits.linearMaxSpeedMmPerSec());
+      case Speed.Angular a -> Math.min(1, a.radPerSec() / limits.rotationMaxSpeedRadPerSec());
+      case Speed.Duration d -> 1;
+    };
+    for (int i = 0; i < RobotModel.DOF; i++) {
+      double d = Math.abs(q1[i] - q0[i]);
+      if (d > 1e-12) {
+        maxRate = Math.min(maxRate, fraction * limits.jointSpeed(i) / d);
+        maxAccel = Math.min(maxAccel, Math.min(1, m.accFraction()) * limits.jointAccel(i) / d);
+      }
+    }
+    return new Segment.JointSegment(m.tag(), profile(m.speed(), maxRate, maxAccel), m.termination(), q0, q1);
+  }
+
+  private Segment planCartesian(MoveRequest m, PathShape path, Transform start, Transform end, Transform X_FT) {
+    double lengthMm = path.lengthMm();
+    double angleRad = start.rotationAngleTo(end);
+    double acc = m.accFraction();
+    double linearSpeed = switch (m.speed()) {
+      case Speed.Linear l -> Math.min(l.mmPerSec(), limits.linearMaxSpeedMmPerSec());
+      case Speed.JointPercent p -> p.fraction() * limits.linearMaxSpeedMmPerSec();
+      case Speed.Angular a -> limits.linearMaxSpeedMmPerSec();
+      case Speed.Duration d -> limits.linearMaxSpeedMmPerSec();
+    };
+    double rotationSpeed = m.speed() instanceof Speed.Angular a
+        ? Math.min(a.radPerSec(), limits.rotationMaxSpeedRadPerSec())
+        : limits.rotationMaxSpeedRadPerSec();
+    double maxRate = Double.POSITIVE_INFINITY;
+    double maxAccel = Double.POSITIVE_INFINITY;
+    if (lengthMm > 1e-9) {
+      maxRate = linearSpeed / lengthMm;
+      maxAccel = acc * linearSpeed / MotionLimits.LINEAR_ACCEL_TIME_SEC / lengthMm;
+    }
+    if (angleRad > 1e-12) {
+      maxRate = Math.min(maxRate, rotationSpeed / angleRad);
+      maxAccel = Math.min(maxAccel, acc * rotationSpeed / MotionLimits.LINEAR_ACCEL_TIME_SEC / angleRad);
+    }
+    Transform endPose = end;
+    if (path instanceof PathShape.Arc arc) {
+      Vec3 p = start.translationVector().plus(arc.displacement(1));
+      endPose = end.withTranslation(p.x(), p.y(), p.z());
+    }
+    return new Segment.CartesianSegment(m.tag(), profile(m.speed(), maxRate, maxAccel), m.termination(), path, X_FT,
+        start, endPose);
+  }
+
+  private static UnitProfile profile(Speed speed, double maxRate, double maxAccel) {
+    if (maxAccel == Double.POSITIVE_INFINITY) {
+      return speed instanceof Speed.Duration d
+          ? UnitProfile.forDuration(d.seconds(), 1 / d.seconds() * 2, 4 / (d.seconds() * d.seconds()))
+          : UnitProfile.EMPTY;
+    }
+    return speed instanceof Speed.Duration d
+        ? UnitProfile.forDuration(d.seconds(), maxRate, maxAccel)
+        : UnitProfile.fastest(maxRate, maxAccel);
+  }
+
+  private boolean reachable(Transform X_WT, Transform X_FT, long tag, String what) {
+    if (closedForm.isEmpty()) {
+      return true;
+    }
+    Transform X_BF = model.X_WB().inverse().compose(X_WT).compose(X_FT.inverse());
+    IkResult r = closedForm.get().solveNearest(X_BF, q);
+    if (r instanceof IkResult.Unreachable u) {
+      MotionFault.Kind kind = u.reason() == IkResult.Reason.JOINT_LIMIT
+          ? MotionFault.Kind.JOINT_LIMIT : MotionFault.Kind.OUT_OF_REACH;
+      fail(tag, new MotionFault(kind, what + " is unreachable: " + u.message()));
+      return false;
+    }
+    return true;
+  }
+
+  // ---- faults ------------------------------------------------------------------------------
+
+  private boolean fail(long tag, MotionFault fault) {
+    stopNow();
+    listener.moveFailed(tag, fault);
+    return false;
+  }
+
+  private long lastTag() {
+    return active.isEmpty() ? -1 : active.get(active.size() - 1).tag;
+  }
+
+  /** Whether J5 heads into (or through) the wrist singularity between the two joint vectors. */
+  static boolean entersWristSingularity(double[] qFrom, double[] qTo) {
+    double from = Math.abs(Math.sin(qFrom[4]));
+    double to = Math.abs(Math.sin(qTo[4]));
+    boolean crosses = Math.signum(Math.sin(qFrom[4])) * Math.signum(Math.sin(qTo[4])) < 0;
+    return crosses || (to < Math.sin(WRIST_SINGULAR_RAD) && to < from);
+  }
+
+  private MotionFault cannotFollow() {
+    if (Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))) {
+      return singularity();
+    }
+    return new MotionFault(MotionFault.Kind.OUT_OF_REACH,
+        "the path leaves the arm's reach (or passes a singularity) here");
+  }
+
+  private MotionFault singularity() {
+    if (Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))) {
+      return new MotionFault(MotionFault.Kind.SINGULARITY, String.format(
+          "wrist singularity: J4 and J6 line up (J5 = %.1f deg); teach the path with the wrist bent or use a joint move",
+          Math.toDegrees(q[4])));
+    }
+    return new MotionFault(MotionFault.Kind.SINGULARITY,
+        "the path passes too close to a singularity: joints would exceed their speed");
+  }
+
+  private int firstOutside(double[] qq) {
+    for (int i = 0; i < RobotModel.DOF; i++) {
+      KinematicChain c = tracker.chain();
+      if (!(qq[i] >= c.lower(i) && qq[i] <= c.upper(i))) {
+        return i;
+      }
+    }
+    return -1;
+  }
+
+  private String limitMessage(int joint, double value) {
+    return String.format("J%d would reach %.1f deg, outside its limits %.1f..%.1f deg", joint + 1,
+        Math.toDegrees(value), Math.toDegrees(model.joint(joint).lowerRad()), Math.toDegrees(model.joint(joint).upperRad()));
+  }
+
+  private static boolean finite(double[] v) {
+    for (double x : v) {
+      if (!Double.isFinite(x)) {
+        return false;
+      }
+    }
+    return true;
+  }
+}

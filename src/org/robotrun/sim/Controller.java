@@ -1,0 +1,686 @@
+package org.robotrun.sim;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.TreeMap;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.motion.JogFrame;
+import org.robotrun.motion.JogResult;
+import org.robotrun.motion.JogState;
+import org.robotrun.motion.Jogger;
+import org.robotrun.motion.MotionFault;
+import org.robotrun.motion.MotionLimits;
+import org.robotrun.motion.MotionListener;
+import org.robotrun.motion.MotionRunner;
+import org.robotrun.motion.MoveRequest;
+import org.robotrun.motion.Speed;
+import org.robotrun.motion.Termination;
+import org.robotrun.program.Alarm;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Interpreter;
+import org.robotrun.program.InterpreterSettings;
+import org.robotrun.program.MotionPort;
+import org.robotrun.program.MotionRequest;
+import org.robotrun.program.Outcome;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
+import org.robotrun.robot.IkResult;
+import org.robotrun.robot.RobotModel;
+
+/**
+ * One robot's controller: programs, registers and I/O, frames, the interpreter, the motion queue,
+ * jogging, override and alarms. The {@link Simulation} advances it with {@link #tick}; a teach
+ * pendant drives it through the public methods below (units at this boundary are the pendant's:
+ * mm, degrees, FANUC's coupled J3; joint values inside are radians in the kinematic convention).
+ *
+ * <h2>For a pendant</h2>
+ * <ul>
+ *   <li>Programs: {@link #programNames}, {@link #program}, {@link #saveProgram}, {@link #deleteProgram}.
+ *   <li>Data: {@link #registers} (live R, PR, I/O, flags, timers), {@link #registerComment}.
+ *   <li>Frames: {@link #frames} ({@link FrameTable}: UTOOL/UFRAME 1..10 with comments, active numbers).
+ *   <li>Position: {@link #currentJoints}, {@link #currentPose}, {@link #tcpInWorld},
+ *       {@link #toJoints}, {@link #toCartesian}, {@link #moveTo} (MOVE_TO).
+ *   <li>Jog: {@link #setCoordSystem}, {@link #jogKeyDown}, {@link #jogKeyUp}, {@link #jogStop},
+ *       {@link #setDeadman}, {@link #jogMessage}.
+ *   <li>Execution: {@link #run} (SHIFT+FWD / SHIFT+BWD from a line), {@link #setStepMode},
+ *       {@link #hold}, {@link #abort}, {@link #reset}, {@link #status}, {@link #setOverridePct}.
+ *   <li>Alarms: {@link #activeAlarms}, {@link #alarmHistory}, {@link #raiseAlarm}.
+ *   <li>Timing: {@link #lastCycleTimeSec}, {@link #motionTimings}.
+ * </ul>
+ *
+ * <p>Motion semantics: a FINE move is done for the program when the arm stops at its point; a
+ * CNT move once the arm reaches its blend point, so the next move can blend in. HOLD decelerates
+ * along the path and resumes on SHIFT+FWD; an alarm stops the arm where it is and drops queued
+ * motion. Jogging works while no motion runs, with the deadman held and no alarm active.
+ *
+ * <p>Not thread-safe: the simulation thread owns it; a GUI posts commands to that thread.
+ * Deterministic: no wall clock.
+ */
+public final class Controller implements MotionPort {
+  /** Joint speed of MOVE_TO (fraction of max, before override). */
+  public static final double MOVE_TO_SPEED_FRACTION = 0.3;
+  private static final int HISTORY = 100;
+  private static final int TIMINGS = 10_000;
+
+  private final String name;
+  private final RobotModel model;
+  private final MotionLimits limits;
+  private final MotionRunner runner;
+  private final Jogger jogger;
+  private final JogState jogKeys = new JogState();
+  private final TargetResolver resolver;
+  private final FrameTable frames = new FrameTable();
+  private final Registers registers = new Registers();
+  private final Map<String, Program> programs = new TreeMap<>();
+  private final Map<String, String> comments = new HashMap<>();
+  private final Interpreter interpreter;
+  private final SimpleGripper gripper = new SimpleGripper();
+
+  private final Map<Long, MoveState> moves = new HashMap<>();
+  private final List<Vec3> arcHistory = new ArrayList<>();
+  private Transform lastTargetW;
+  private long nextHandle = 1;
+  private int overridePct = 100;
+  private JogFrame coord = JogFrame.JOINT;
+  private boolean deadman = true;
+  private String jogMessage = "";
+  private final List<ControllerAlarm> activeAlarms = new ArrayList<>();
+  private final Deque<ControllerAlarm> history = new ArrayDeque<>();
+  private final Deque<MotionTiming> timings = new ArrayDeque<>();
+  private Alarm lastInterpreterAlarm;
+  private double timeSec;
+  private double runStartSec = Double.NaN;
+  private double lastCycleTimeSec = Double.NaN;
+  private Interpreter.State lastState = Interpreter.State.IDLE;
+
+  /** Bookkeeping of one started motion. */
+  private static final class MoveState {
+    final String program;
+    final int line;
+    final boolean fine;
+    double startSec = Double.NaN;
+    boolean finished;
+    Start.Rejected failure;
+
+    MoveState(String program, int line, boolean fine) {
+      this.program = program;
+      this.line = line;
+      this.fine = fine;
+    }
+  }
+
+  /**
+   * A controller for {@code model} with the arm at {@code start}.
+   *
+   * @param name the robot's name in reports ("robot1")
+   * @param start joints (pendant degrees, coupled J3)
+   */
+  public Controller(String name, RobotModel model, Position.Joint start) {
+    this(name, model, start, InterpreterSettings.defaults());
+  }
+
+  public Controller(String name, RobotModel model, Position.Joint start, InterpreterSettings settings) {
+    this.name = Objects.requireNonNull(name, "name");
+    this.model = model;
+    this.limits = MotionLimits.forModel(model);
+    this.resolver = new TargetResolver(model);
+    double[] q0 = resolver.kinematicOf(start);
+    int bad = model.firstJointOutsideLimits(q0);
+    if (bad >= 0) {
+      throw new IllegalArgumentException(String.format("start position: J%d = %.1f deg is outside its limits", bad + 1,
+          start.element(bad + 1)));
+    }
+    this.runner = new MotionRunner(model, limits, q0, new Events());
+    this.jogger = new Jogger(model, limits);
+    this.interpreter = new Interpreter(n -> Optional.ofNullable(programs.get(n)), registers, this, settings);
+  }
+
+  public String name() {
+    return name;
+  }
+
+  public RobotModel model() {
+    return model;
+  }
+
+  // ================================================================ simulation
+
+  /** Advances by {@code dtSec}: the program runs, then the arm moves (program motion or jog). */
+  public void tick(double dtSec) {
+    timeSec += dtSec;
+    gripper.tick(registers, dtSec);
+    Outcome o = interpreter.tick(dtSec);
+    if (o instanceof Outcome.Alarmed a && a.alarm() != lastInterpreterAlarm) {
+      lastInterpreterAlarm = a.alarm();
+      Alarm al = a.alarm();
+      // A motion fault was raised when it happened; the interpreter reports it again on its poll.
+      boolean known = activeAlarms.stream().anyMatch(x -> x.code().equals(al.code()) && x.message().equals(al.message()));
+      if (!known) {
+        addAlarm(new ControllerAlarm(al.code(), al.message(), al.program(), al.line(), timeSec));
+      }
+      stopMotion();
+    }
+    if (!activeAlarms.isEmpty() && interpreter.state() == Interpreter.State.RUNNING) {
+      // An alarm the program did not see itself (a CNT move failing after the program moved on).
+      interpreter.hold();
+    }
+    Interpreter.State state = interpreter.state();
+    if (state == Interpreter.State.RUNNING && lastState == Interpreter.State.IDLE) {
+      runStartSec = timeSec - dtSec;
+    }
+    lastState = state;
+    boolean jogging = runner.idle() && jogKeys.anyOn();
+    runner.tick(dtSec);
+    if (runner.idle()) {
+      if (jogging && (!deadman || !activeAlarms.isEmpty())) {
+        jogger.stop(jogKeys);
+      }
+      double[] q = runner.joints();
+      JogResult r = jogger.tick(q, jogKeys, coord, overridePct / 100.0, frames.activeTool(), frames.activeUser(), dtSec);
+      switch (r) {
+        case JogResult.Moving m -> runner.setJoints(q);
+        case JogResult.Stopped s -> {
+          runner.setJoints(q);
+          jogMessage = s.message();
+        }
+        case JogResult.Idle i -> {
+        }
+      }
+    }
+    if (state == Interpreter.State.IDLE && !Double.isNaN(runStartSec) && runner.idle()) {
+      lastCycleTimeSec = timeSec - runStartSec;
+      runStartSec = Double.NaN;
+    }
+  }
+
+  /** Simulated time of this controller (s). */
+  public double timeSec() {
+    return timeSec;
+  }
+
+  /** Whether a program is active (running or paused) or the arm is moving. */
+  public boolean busy() {
+    return interpreter.state() == Interpreter.State.RUNNING || interpreter.state() == Interpreter.State.PAUSED
+        || !runner.idle();
+  }
+
+  // ================================================================ programs and data
+
+  /** Names of the stored programs, alphabetical. */
+  public List<String> programNames() {
+    return List.copyOf(programs.keySet());
+  }
+
+  public Optional<Program> program(String programName) {
+    return Optional.ofNullable(programs.get(programName));
+  }
+
+  /** Stores (creates or replaces) a program. */
+  public void saveProgram(Program p) {
+    programs.put(p.name(), p);
+  }
+
+  /** Deletes a program; refused while it is active. */
+  public CommandResult deleteProgram(String programName) {
+    if (busy() && interpreter.currentProgram().equals(programName)) {
+      return CommandResult.refused(programName + " is running or paused: ABORT it first");
+    }
+    return programs.remove(programName) == null
+        ? CommandResult.refused("no program " + programName)
+        : CommandResult.ok();
+  }
+
+  /** The live registers and I/O. */
+  public Registers registers() {
+    return registers;
+  }
+
+  /** Item comment of a register ({@code table} "R" or "PR"), "" when none. */
+  public String registerComment(String table, int index) {
+    return comments.getOrDefault(table + "[" + index + "]", "");
+  }
+
+  public void setRegisterComment(String table, int index, String comment) {
+    comments.put(table + "[" + index + "]", Objects.requireNonNull(comment));
+  }
+
+  /** Tool and user frames and the active numbers. */
+  public FrameTable frames() {
+    return frames;
+  }
+
+  // ================================================================ position
+
+  /** Joints in kinematic radians (renderer, trace). */
+  public double[] jointsRad() {
+    return runner.joints();
+  }
+
+  /** The current joints (pendant degrees). */
+  public Position.Joint currentJoints() {
+    return resolver.currentJoints(runner.joints());
+  }
+
+  /** The TCP of the active tool in WORLD. */
+  public Xyzwpr tcpInWorld() {
+    return Xyzwpr.fromTransform(resolver.tcp(runner.joints(), frames.activeTool()));
+  }
+
+  /** The TCP of tool frame {@code toolFrame} (0 = flange) in user frame {@code userFrame} (0 = WORLD), with CONFIG. */
+  public Position.Cartesian currentPose(int userFrame, int toolFrame) {
+    return resolver.lpos(runner.joints(), frames.transform(FrameKind.USER, userFrame),
+        frames.transform(FrameKind.TOOL, toolFrame));
+  }
+
+  /** A Cartesian position in the given frames as joints (its CONFIG), or why it has none. */
+  public IkResult toJoints(Position.Cartesian pose, int userFrame, int toolFrame) {
+    return resolver.jointsOf(pose, frames.transform(FrameKind.USER, userFrame), frames.transform(FrameKind.TOOL, toolFrame));
+  }
+
+  /** Joints as a Cartesian position of {@code toolFrame} in {@code userFrame}. */
+  public Position.Cartesian toCartesian(Position.Joint joints, int userFrame, int toolFrame) {
+    return resolver.cartesianOf(joints, frames.transform(FrameKind.USER, userFrame),
+        frames.transform(FrameKind.TOOL, toolFrame));
+  }
+
+  /**
+   * MOVE_TO: a FINE joint move to {@code target} at {@link #MOVE_TO_SPEED_FRACTION} of joint
+   * speed (times override). A Cartesian target is taken in {@code userFrame}/{@code toolFrame}.
+   */
+  public CommandResult moveTo(Position target, int userFrame, int toolFrame) {
+    if (!activeAlarms.isEmpty()) {
+      return CommandResult.refused("alarm active: RESET first");
+    }
+    if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
+      return CommandResult.refused("the robot is moving: HOLD and wait");
+    }
+    double[] q;
+    switch (target) {
+      case Position.Joint j -> q = resolver.kinematicOf(j);
+      case Position.Cartesian c -> {
+        IkResult r = toJoints(c, userFrame, toolFrame);
+        if (r instanceof IkResult.Unreachable u) {
+          return CommandResult.refused("unreachable: " + u.message());
+        }
+        q = ((IkResult.Solved) r).q();
+      }
+    }
+    int bad = model.firstJointOutsideLimits(q);
+    if (bad >= 0) {
+      return CommandResult.refused(String.format("J%d would be outside its limits", bad + 1));
+    }
+    long h = nextHandle++;
+    moves.put(h, new MoveState("", 0, true));
+    jogger.stop(jogKeys);
+    runner.resume();
+    runner.enqueue(new MoveRequest.Joint(q, new Speed.JointPercent(MOVE_TO_SPEED_FRACTION), Termination.fine(), 1, h));
+    return CommandResult.ok();
+  }
+
+  // ================================================================ jog
+
+  /** The jog coordinate system (COORD key). */
+  public JogFrame coordSystem() {
+    return coord;
+  }
+
+  public void setCoordSystem(JogFrame frame) {
+    if (frame != coord) {
+      jogger.stop(jogKeys);
+      coord = Objects.requireNonNull(frame);
+    }
+  }
+
+  /**
+   * A jog key goes down: axis 1..6 (J1..J6, or X, Y, Z, rotation about X, Y, Z), sign ±1, held
+   * (keyboard) or latched (on-screen click).
+   */
+  public CommandResult jogKeyDown(int axis, int sign, JogState.Press press) {
+    if (!activeAlarms.isEmpty()) {
+      return CommandResult.refused("alarm active: RESET first");
+    }
+    if (!deadman) {
+      return CommandResult.refused("hold SHIFT (deadman) to jog");
+    }
+    if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
+      return CommandResult.refused("cannot jog while the robot moves under a program");
+    }
+    jogMessage = "";
+    jogKeys.keyDown(axis - 1, sign, press);
+    return CommandResult.ok();
+  }
+
+  /** A jog key comes up (a held axis stops; latched axes go on). */
+  public void jogKeyUp(int axis, int sign) {
+    jogKeys.keyUp(axis - 1, sign);
+  }
+
+  /** Every jog axis off. */
+  public void jogStop() {
+    jogger.stop(jogKeys);
+  }
+
+  /** Which jog axes are on: −1, 0, +1 for axes 1..6 (latched keys show on the pendant). */
+  public int jogDirection(int axis) {
+    return jogKeys.direction(axis - 1);
+  }
+
+  /** The deadman (SHIFT) state: releasing it stops jogging and holds a running program. */
+  public void setDeadman(boolean held) {
+    deadman = held;
+    if (!held) {
+      jogger.stop(jogKeys);
+    }
+  }
+
+  /** Why the last jog stopped by itself ("" when it did not). */
+  public String jogMessage() {
+    return jogMessage;
+  }
+
+  // ================================================================ execution
+
+  public int overridePct() {
+    return overridePct;
+  }
+
+  /** Speed override 1..100 %: scales every motion, program and jog, at once (ramped). */
+  @Override
+  public void setOverridePct(int percent) {
+    if (percent < 1 || percent > 100) {
+      throw new IllegalArgumentException("override must be 1..100 %, got " + percent);
+    }
+    overridePct = percent;
+    runner.setOverride(percent / 100.0);
+  }
+
+  public boolean stepMode() {
+    return interpreter.stepMode();
+  }
+
+  public void setStepMode(boolean on) {
+    interpreter.setStepMode(on);
+  }
+
+  /**
+   * SHIFT+FWD (forward) or SHIFT+BWD: runs {@code programName} from {@code line}; a paused run of
+   * the same program resumes from where it stopped (a held motion continues).
+   */
+  public CommandResult run(String programName, int line, boolean forward) {
+    if (!activeAlarms.isEmpty()) {
+      return CommandResult.refused("alarm active: RESET first (" + activeAlarms.get(0).display() + ")");
+    }
+    Program p = programs.get(programName);
+    if (p == null) {
+      return CommandResult.refused("no program " + programName);
+    }
+    if (line < 1 || line > Math.max(1, p.lineCount())) {
+      return CommandResult.refused("line " + line + " is not in " + programName + " (1.." + p.lineCount() + ")");
+    }
+    jogger.stop(jogKeys);
+    switch (interpreter.state()) {
+      case RUNNING -> {
+        return CommandResult.refused(interpreter.currentProgram() + " is running");
+      }
+      case PAUSED -> {
+        if (!interpreter.currentProgram().equals(programName) && interpreter.callDepth() <= 1) {
+          return CommandResult.refused(interpreter.currentProgram() + " is paused: ABORT it first");
+        }
+        if (interpreter.cursorLine() != line && interpreter.callDepth() <= 1) {
+          interpreter.setCursor(line);
+        }
+      }
+      case IDLE, ALARMED -> {
+        interpreter.select(programName);
+        interpreter.setCursor(line);
+      }
+    }
+    runner.resume();
+    if (forward) {
+      interpreter.forward();
+    } else {
+      interpreter.backward();
+    }
+    String notice = interpreter.notice();
+    return new CommandResult.Ok(notice);
+  }
+
+  /** HOLD: the program pauses, the arm decelerates along its path, jogging stops. */
+  public void hold() {
+    interpreter.hold();
+    runner.hold();
+    jogger.stop(jogKeys);
+  }
+
+  /** FCTN ABORT: ends the program; the arm stops where it is. */
+  public void abort() {
+    interpreter.abort();
+    stopMotion();
+  }
+
+  /** RESET: clears the active alarms (the history keeps them). */
+  public void reset() {
+    activeAlarms.clear();
+    interpreter.reset();
+    lastInterpreterAlarm = null;
+  }
+
+  /** Where execution stands. */
+  public ExecutionStatus status() {
+    ExecutionStatus.State s = switch (interpreter.state()) {
+      case IDLE -> ExecutionStatus.State.IDLE;
+      case RUNNING -> ExecutionStatus.State.RUNNING;
+      case PAUSED -> ExecutionStatus.State.PAUSED;
+      case ALARMED -> ExecutionStatus.State.ALARMED;
+    };
+    return new ExecutionStatus(interpreter.currentProgram(), interpreter.cursorLine(), s);
+  }
+
+  /** The interpreter (user screen, notices); the controller owns its state. */
+  public Interpreter interpreter() {
+    return interpreter;
+  }
+
+  /** Simulated seconds of the last program run from SHIFT+FWD to its end (arm at rest); NaN before the first. */
+  public double lastCycleTimeSec() {
+    return lastCycleTimeSec;
+  }
+
+  /** Per-motion timings, oldest first (the last 10 000). */
+  public List<MotionTiming> motionTimings() {
+    return List.copyOf(timings);
+  }
+
+  // ================================================================ alarms
+
+  /** Whether any alarm is active (cheaper than {@link #activeAlarms} in a loop). */
+  public boolean hasActiveAlarm() {
+    return !activeAlarms.isEmpty();
+  }
+
+  /** Active alarms, oldest first. */
+  public List<ControllerAlarm> activeAlarms() {
+    return List.copyOf(activeAlarms);
+  }
+
+  /** Alarm history, newest first (the last 100). */
+  public List<ControllerAlarm> alarmHistory() {
+    return List.copyOf(history);
+  }
+
+  public void clearAlarmHistory() {
+    history.clear();
+  }
+
+  /**
+   * Raises an alarm from outside the program (collision, pendant): the arm stops, a running
+   * program pauses, jogging stops.
+   */
+  public void raiseAlarm(String code, String message) {
+    addAlarm(new ControllerAlarm(code, message, "", 0, timeSec));
+    interpreter.hold();
+    stopMotion();
+  }
+
+  private void addAlarm(ControllerAlarm a) {
+    activeAlarms.add(a);
+    history.addFirst(a);
+    while (history.size() > HISTORY) {
+      history.removeLast();
+    }
+    jogger.stop(jogKeys);
+  }
+
+  private void stopMotion() {
+    runner.stopNow();
+    arcHistory.clear();
+    lastTargetW = null;
+  }
+
+  // ================================================================ MotionPort (the interpreter's side)
+
+  @Override
+  public Start startMotion(MotionRequest request) {
+    if (!runner.acceptsMove()) {
+      return new Start.Rejected(MotionAlarms.QUEUE_BUSY, "a motion is already waiting");
+    }
+    long h = nextHandle++;
+    if (!TargetResolver.isArc(request)) {
+      arcHistory.clear();
+    } else if (arcHistory.isEmpty()) {
+      arcHistory.add((lastTargetW != null && !runner.idle() ? lastTargetW
+          : runner.tcpInWorld(frames.activeTool())).translationVector());
+    }
+    TargetResolver.Resolved r = resolver.resolve(request, frames, runner.joints(), arcHistory, h);
+    return switch (r) {
+      case TargetResolver.Refused no -> no.why();
+      case TargetResolver.Move m -> {
+        if (TargetResolver.isArc(request)) {
+          arcHistory.add(m.X_WTarget().translationVector());
+        }
+        lastTargetW = m.X_WTarget();
+        moves.put(h, new MoveState(request.program(), request.line(), request.fine()));
+        runner.enqueue(m.move());
+        yield new Start.Started(h);
+      }
+    };
+  }
+
+  @Override
+  public Status poll(long handle) {
+    MoveState m = moves.get(handle);
+    if (m == null) {
+      return Status.DONE;
+    }
+    if (m.failure != null) {
+      return Status.FAILED;
+    }
+    if (m.finished || (!m.fine && runner.passedBlendPoint(handle))) {
+      return Status.DONE;
+    }
+    return Status.RUNNING;
+  }
+
+  @Override
+  public Start.Rejected failure(long handle) {
+    MoveState m = moves.get(handle);
+    return m == null || m.failure == null ? new Start.Rejected(MotionAlarms.UNREACHABLE, "unknown motion") : m.failure;
+  }
+
+  @Override
+  public void hold(long handle) {
+    runner.hold();
+  }
+
+  @Override
+  public void resume(long handle) {
+    runner.resume();
+  }
+
+  @Override
+  public void cancel(long handle) {
+    stopMotion();
+    moves.remove(handle);
+  }
+
+  @Override
+  public Position.Cartesian currentLpos() {
+    return resolver.lpos(runner.joints(), frames.activeUser(), frames.activeTool());
+  }
+
+  @Override
+  public Position.Joint currentJpos() {
+    return currentJoints();
+  }
+
+  @Override
+  public int activeFrame(FrameKind kind) {
+    return frames.active(kind);
+  }
+
+  @Override
+  public void selectFrame(FrameKind kind, int number) {
+    frames.select(kind, number);
+  }
+
+  @Override
+  public Position.Cartesian frame(FrameKind kind, int number) {
+    return frames.position(kind, number);
+  }
+
+  @Override
+  public void setFrame(FrameKind kind, int number, Position.Cartesian value) {
+    frames.setPosition(kind, number, value);
+  }
+
+  /** Receives the motion runner's events. */
+  private final class Events implements MotionListener {
+    @Override
+    public void moveStarted(long tag, double simTimeSec) {
+      MoveState m = moves.get(tag);
+      if (m != null) {
+        m.startSec = timeSec;
+      }
+    }
+
+    @Override
+    public void moveFinished(long tag, double simTimeSec) {
+      MoveState m = moves.remove(tag);
+      if (m == null) {
+        return;
+      }
+      m.finished = true;
+      // Removed: poll answers DONE for a handle it no longer knows.
+      if (!Double.isNaN(m.startSec)) {
+        timings.addLast(new MotionTiming(m.program, m.line, m.startSec, timeSec));
+        while (timings.size() > TIMINGS) {
+          timings.removeFirst();
+        }
+      }
+    }
+
+    @Override
+    public void moveFailed(long tag, MotionFault fault) {
+      MoveState m = moves.get(tag);
+      Start.Rejected why = new Start.Rejected(MotionAlarms.codeOf(fault), fault.message());
+      arcHistory.clear();
+      lastTargetW = null;
+      if (m == null || m.program.isEmpty()) {
+        moves.remove(tag);
+        addAlarm(new ControllerAlarm(why.code(), why.message(), "", 0, timeSec));
+        return;
+      }
+      m.failure = why;
+      addAlarm(new ControllerAlarm(why.code(), why.message(), m.program, m.line, timeSec));
+    }
+  }
+}

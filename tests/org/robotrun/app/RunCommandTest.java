@@ -1,0 +1,81 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** {@code robotrun run}: exit codes, report and trace. */
+class RunCommandTest {
+  static final Path EXAMPLE = Path.of("resources/examples/PICKPLACE.LS");
+
+  @Test
+  void exampleProgramFinishesWithAReportAndATrace(@TempDir Path dir) throws Exception {
+    Path report = dir.resolve("r.json");
+    Path trace = dir.resolve("t.csv");
+    int code = Main.execute("run", "--program", "PICKPLACE", "--programs", EXAMPLE.toString(),
+        "--report", report.toString(), "--trace", trace.toString());
+    assertThat(code).isZero();
+    JsonNode r = new ObjectMapper().readTree(report.toFile());
+    assertThat(r.get("status").asText()).isEqualTo("finished");
+    assertThat(r.get("alarm").isNull()).isTrue();
+    JsonNode robot = r.get("robots").get(0);
+    assertThat(robot.get("registers").get("R").get("2").asInt()).isEqualTo(4);
+    assertThat(robot.get("joints_deg").get(4).asDouble()).isEqualTo(-90.0);
+    assertThat(robot.get("tcp_world").get("z").asDouble()).isEqualTo(185.0);
+    assertThat(r.get("parts").isArray()).isTrue();
+    // One row per tick plus the header and the row at time 0.
+    long rows = Files.readAllLines(trace).size();
+    assertThat(rows).isEqualTo(Math.round(r.get("simTimeSec").asDouble() / 0.004) + 2);
+  }
+
+  @Test
+  void alarmExitsWithOneAndNamesTheLine(@TempDir Path dir) throws Exception {
+    Path prog = dir.resolve("BAD.LS");
+    Files.writeString(prog, """
+        /PROG  BAD
+        /ATTR
+        /MN
+           1:  R[1]=1 ;
+           2:  R[2]=R[1]/0 ;
+        /END
+        """);
+    Path report = dir.resolve("r.json");
+    int code = Main.execute("run", "--program", "BAD", "--programs", dir.toString(), "--report", report.toString());
+    assertThat(code).isEqualTo(1);
+    JsonNode alarm = new ObjectMapper().readTree(report.toFile()).get("alarm");
+    assertThat(alarm.get("code").asText()).isEqualTo("INTP-202");
+    assertThat(alarm.get("line").asInt()).isEqualTo(2);
+    assertThat(alarm.get("program").asText()).isEqualTo("BAD");
+  }
+
+  @Test
+  void timeLimitExitsWithOne(@TempDir Path dir) throws Exception {
+    Path prog = dir.resolve("LOOP.LS");
+    Files.writeString(prog, """
+        /PROG  LOOP
+        /ATTR
+        /MN
+           1:  LBL[1] ;
+           2:  WAIT 1.00(sec) ;
+           3:  JMP LBL[1] ;
+        /END
+        """);
+    assertThat(Main.execute("run", "--program", "LOOP", "--programs", prog.toString(), "--max-sim-seconds", "3")).isEqualTo(1);
+  }
+
+  @Test
+  void badInputExitsWithTwo(@TempDir Path dir) throws Exception {
+    assertThat(Main.execute("run", "--program", "NOPE", "--programs", EXAMPLE.toString())).isEqualTo(2);
+    assertThat(Main.execute("run", "--program", "PICKPLACE", "--programs", EXAMPLE.toString(), "--override", "0")).isEqualTo(2);
+    assertThat(Main.execute("run", "--program", "PICKPLACE", "--programs", dir.resolve("missing").toString())).isEqualTo(2);
+    Path broken = dir.resolve("BROKEN.LS");
+    Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  R[1]=((1 ;\n/END\n");
+    assertThat(Main.execute("run", "--program", "BROKEN", "--programs", broken.toString())).isEqualTo(2);
+    assertThat(Main.execute("run", "--programs", EXAMPLE.toString())).isEqualTo(2);
+  }
+}

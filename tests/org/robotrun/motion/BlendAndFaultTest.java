@@ -1,0 +1,113 @@
+package org.robotrun.motion;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+
+/** CNT blending against FINE, and moves that cannot be followed. */
+class BlendAndFaultTest {
+  static final double DT = MotionRunnerTest.DT;
+  static final Transform TOOL = MotionRunnerTest.TOOL;
+
+  record Run(List<double[]> trace, MotionRunnerTest.Recorder rec) {}
+
+  static Run corner(Termination atCorner) {
+    Transform a = MotionRunnerTest.tcp(MotionRunnerTest.HOME);
+    Vec3 p = a.translationVector();
+    Transform b = a.withTranslation(p.x(), p.y() + 200, p.z());
+    Transform c = a.withTranslation(p.x(), p.y() + 200, p.z() - 200);
+    MotionRunnerTest.Recorder rec = new MotionRunnerTest.Recorder();
+    MotionRunner r = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, MotionRunnerTest.HOME, rec);
+    r.enqueue(new MoveRequest.Linear(b, TOOL, Speed.mmPerSec(400), atCorner, 1, 1));
+    List<double[]> trace = new java.util.ArrayList<>();
+    // The second move is queued as soon as the runner takes it, as the interpreter does.
+    boolean queued = false;
+    for (int i = 0; i < 10_000 && !(queued && r.idle()); i++) {
+      if (!queued && r.acceptsMove()) {
+        r.enqueue(new MoveRequest.Linear(c, TOOL, Speed.mmPerSec(400), Termination.fine(), 1, 2));
+        queued = true;
+      }
+      r.tick(DT);
+      trace.add(r.joints());
+    }
+    return new Run(trace, rec);
+  }
+
+  @Test
+  void cnt100CutsTheCornerAndIsFasterThanFine() {
+    Run fine = corner(Termination.fine());
+    Run cnt = corner(Termination.cnt(100));
+    Transform a = MotionRunnerTest.tcp(MotionRunnerTest.HOME);
+    Vec3 corner = a.translationVector().plus(new Vec3(0, 200, 0));
+    double fineClosest = Double.MAX_VALUE;
+    double cntClosest = Double.MAX_VALUE;
+    double maxOffPlane = 0;
+    for (double[] q : fine.trace()) {
+      fineClosest = Math.min(fineClosest, MotionRunnerTest.tcp(q).translationVector().distanceTo(corner));
+    }
+    for (double[] q : cnt.trace()) {
+      Vec3 p = MotionRunnerTest.tcp(q).translationVector();
+      cntClosest = Math.min(cntClosest, p.distanceTo(corner));
+      // The corner's plane is x = const.
+      maxOffPlane = Math.max(maxOffPlane, Math.abs(p.x() - corner.x()));
+    }
+    // FINE reaches the corner to 0.01 mm; CNT100 stays clear of it, in the plane, and is shorter.
+    assertThat(fineClosest).isLessThan(0.01);
+    assertThat(cntClosest).isGreaterThan(5);
+    assertThat(maxOffPlane).isLessThan(0.01);
+    assertThat(cnt.trace().size()).isLessThan(fine.trace().size() - 20);
+    assertThat(cnt.rec().events).containsExactly("start 1", "start 2", "end 1", "end 2");
+  }
+
+  @Test
+  void largerCntBlendsEarlier() {
+    Transform a = MotionRunnerTest.tcp(MotionRunnerTest.HOME);
+    Vec3 corner = a.translationVector().plus(new Vec3(0, 200, 0));
+    double prev = 0;
+    for (int n : new int[] {20, 50, 100}) {
+      double closest = Double.MAX_VALUE;
+      for (double[] q : corner(Termination.cnt(n)).trace()) {
+        closest = Math.min(closest, MotionRunnerTest.tcp(q).translationVector().distanceTo(corner));
+      }
+      assertThat(closest).isGreaterThan(prev);
+      prev = closest;
+    }
+  }
+
+  @Test
+  void linearMoveThroughTheWristSingularityStopsWithAnAlarmAndFiniteJoints() {
+    // Wrist straight ahead (J5 near 0), then a line that makes J4/J6 swap sides.
+    double[] q0 = {0, 0, 0, 0.3, Math.toRadians(-8), 0};
+    Transform start = MotionRunnerTest.tcp(q0);
+    double[] q1 = {0, 0, 0, 0.3, Math.toRadians(8), 0};
+    Transform end = MotionRunnerTest.tcp(q1);
+    MotionRunnerTest.Recorder rec = new MotionRunnerTest.Recorder();
+    MotionRunner r = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, q0, rec);
+    r.enqueue(new MoveRequest.Linear(end, TOOL, Speed.mmPerSec(100), Termination.fine(), 1, 5));
+    List<double[]> trace = MotionRunnerTest.run(r, 20_000);
+    assertThat(rec.fault).isNotNull();
+    assertThat(rec.fault.kind()).isEqualTo(MotionFault.Kind.SINGULARITY);
+    assertThat(rec.events).contains("fail 5");
+    for (double[] q : trace) {
+      for (double v : q) {
+        assertThat(Double.isFinite(v)).isTrue();
+      }
+    }
+    assertThat(start.distanceTo(end)).isGreaterThan(1);
+  }
+
+  @Test
+  void unreachableTargetIsAFaultBeforeMoving() {
+    Transform a = MotionRunnerTest.tcp(MotionRunnerTest.HOME);
+    Transform far = a.withTranslation(a.x() + 2000, a.y(), a.z());
+    MotionRunnerTest.Recorder rec = new MotionRunnerTest.Recorder();
+    MotionRunner r = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, MotionRunnerTest.HOME, rec);
+    r.enqueue(new MoveRequest.Linear(far, TOOL, Speed.mmPerSec(100), Termination.fine(), 1, 9));
+    List<double[]> trace = MotionRunnerTest.run(r, 1000);
+    assertThat(rec.fault.kind()).isEqualTo(MotionFault.Kind.OUT_OF_REACH);
+    assertThat(trace.get(trace.size() - 1)).containsExactly(MotionRunnerTest.HOME);
+  }
+}

@@ -1,0 +1,212 @@
+package org.robotrun.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.data.Offset.offset;
+
+import java.io.StringWriter;
+import org.junit.jupiter.api.Test;
+import org.robotrun.io.LsReadResult;
+import org.robotrun.io.LsReader;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.motion.JogFrame;
+import org.robotrun.motion.JogState;
+import org.robotrun.program.Program;
+import org.robotrun.robot.RobotModel;
+
+/** Programs run through the controller: motion, frames, alarms, HOLD, override, determinism. */
+class ControllerTest {
+  static final RobotModel MODEL = RobotDefinitions.defaultRobot();
+
+  static final String POS = """
+      /POS
+      P[1:"HOME"]{
+         GP1:
+      	UF : 1, UT : 1,
+      	J1=     0.000 deg,	J2=     0.000 deg,	J3=     0.000 deg,
+      	J4=     0.000 deg,	J5=   -90.000 deg,	J6=     0.000 deg
+      };
+      P[2:"A"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =   350.000  mm,	Y =  -120.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      P[3:"B"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =   350.000  mm,	Y =   150.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      P[4:"FAR"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =  1500.000  mm,	Y =     0.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      P[5:"UF2"]{
+         GP1:
+      	UF : 2, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =   350.000  mm,	Y =     0.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      /END
+      """;
+
+  static Program program(String name, String... lines) {
+    StringBuilder sb = new StringBuilder("/PROG  " + name + "\n/ATTR\n/MN\n");
+    for (int i = 0; i < lines.length; i++) {
+      sb.append(String.format("%4d:%s ;%n", i + 1, lines[i]));
+    }
+    sb.append(POS);
+    LsReadResult r = LsReader.parse(name + ".LS", sb.toString());
+    assertThat(r.diagnostics()).as("parse of test program").noneMatch(d -> d.toString().contains("error"));
+    return r.program();
+  }
+
+  static Program pickPlace() {
+    return program("PP",
+        "J P[1:HOME] 100% FINE",
+        "L P[2:A] 500mm/sec CNT100",
+        "L P[3:B] 500mm/sec FINE",
+        "RO[1]=ON",
+        "WAIT RI[1]=ON",
+        "J P[1:HOME] 50% CNT50",
+        "L P[2:A] 1000mm/sec FINE",
+        "RO[1]=OFF",
+        "R[1]=R[1]+1");
+  }
+
+  static Simulation cell() {
+    return DefaultCell.simulation(MODEL);
+  }
+
+  @Test
+  void programRunsToItsEndAndLandsOnTheLastPoint() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "PP", 60, s -> {});
+    assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
+    assertThat(c.registers().number(1)).isEqualTo(1);
+    Xyzwpr tcp = c.tcpInWorld();
+    // P[2] in UF1 (= WORLD) with UT1, to 0.01 mm after a FINE move.
+    assertThat(tcp.x()).isCloseTo(350, offset(0.01));
+    assertThat(tcp.y()).isCloseTo(-120, offset(0.01));
+    assertThat(tcp.z()).isCloseTo(40, offset(0.01));
+    assertThat(c.lastCycleTimeSec()).isCloseTo(r.cycleTimeSec(), offset(0.0041));
+    assertThat(c.motionTimings()).hasSize(5);
+    assertThat(c.motionTimings().get(1).line()).isEqualTo(2);
+  }
+
+  @Test
+  void sameProgramTwiceGivesByteIdenticalTraces() {
+    String[] traces = new String[2];
+    for (int k = 0; k < 2; k++) {
+      Simulation sim = cell();
+      Controller c = sim.controllers().get(0);
+      c.saveProgram(pickPlace());
+      StringWriter out = new StringWriter();
+      TraceWriter tw = new TraceWriter(out, sim.controllers());
+      HeadlessRun.run(sim, c, "PP", 60, tw::write);
+      traces[k] = out.toString();
+    }
+    assertThat(traces[0].lines().count()).isGreaterThan(300);
+    assertThat(traces[0]).isEqualTo(traces[1]);
+  }
+
+  @Test
+  void halfOverrideTakesLonger() {
+    double[] cycle = new double[2];
+    int k = 0;
+    for (int pct : new int[] {100, 50}) {
+      Simulation sim = cell();
+      Controller c = sim.controllers().get(0);
+      c.setOverridePct(pct);
+      c.saveProgram(pickPlace());
+      cycle[k++] = HeadlessRun.run(sim, c, "PP", 60, s -> {}).cycleTimeSec();
+    }
+    assertThat(cycle[1]).isGreaterThan(cycle[0] * 1.6);
+  }
+
+  @Test
+  void unreachablePointIsAnAlarmNamingTheLine() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("FARAWAY", "J P[1:HOME] 100% FINE", "L P[4:FAR] 100mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "FARAWAY", 60, s -> {});
+    assertThat(r.status()).isEqualTo(HeadlessRun.Status.ALARM);
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(MotionAlarms.UNREACHABLE);
+    assertThat(a.program()).isEqualTo("FARAWAY");
+    assertThat(a.line()).isEqualTo(2);
+    for (double v : c.jointsRad()) {
+      assertThat(Double.isFinite(v)).isTrue();
+    }
+    // RESET clears it; the history keeps it.
+    c.reset();
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.alarmHistory()).hasSize(1);
+  }
+
+  @Test
+  void positionTaughtInAnotherUserFrameIsAFrameMismatch() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("MISMATCH", "L P[5:UF2] 100mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "MISMATCH", 60, s -> {});
+    assertThat(r.alarm().orElseThrow().code()).isEqualTo(MotionAlarms.FRAME_MISMATCH);
+    assertThat(r.alarm().orElseThrow().line()).isEqualTo(1);
+  }
+
+  @Test
+  void holdStopsTheArmAndForwardResumes() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    c.run("PP", 1, true);
+    for (int i = 0; i < 150; i++) {
+      sim.step();
+    }
+    c.hold();
+    for (int i = 0; i < 100; i++) {
+      sim.step();
+    }
+    double[] held = c.jointsRad();
+    for (int i = 0; i < 50; i++) {
+      sim.step();
+    }
+    assertThat(c.jointsRad()).containsExactly(held);
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.PAUSED);
+    c.run("PP", c.status().line(), true);
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.registers().number(1)).isEqualTo(1);
+  }
+
+  @Test
+  void jogNeedsTheDeadmanAndMovesInWorld() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.setDeadman(false);
+    assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(CommandResult.Refused.class);
+    c.setDeadman(true);
+    c.setCoordSystem(JogFrame.WORLD);
+    Xyzwpr before = c.tcpInWorld();
+    assertThat(c.jogKeyDown(3, -1, JogState.Press.HELD)).isInstanceOf(CommandResult.Ok.class);
+    for (int i = 0; i < 100; i++) {
+      sim.step();
+    }
+    c.setDeadman(false);
+    for (int i = 0; i < 10; i++) {
+      sim.step();
+    }
+    Xyzwpr after = c.tcpInWorld();
+    assertThat(after.z()).isLessThan(before.z() - 10);
+    assertThat(after.x()).isCloseTo(before.x(), offset(0.01));
+    assertThat(after.y()).isCloseTo(before.y(), offset(0.01));
+    assertThat(c.jogDirection(3)).isZero();
+  }
+}
