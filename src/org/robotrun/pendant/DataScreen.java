@@ -164,7 +164,7 @@ final class DataScreen implements Screen {
     }
     CommentTable ct = table == Table.REGISTERS ? CommentTable.R : CommentTable.PR;
     if (column == 0 || table == Table.POSITION_REGISTERS && typed != null && !Character.isDigit(typed.charAt(0))) {
-      p.entry(ct + "[" + n + "] comment:", typed == null ? p.control().comment(ct, n) : typed, true, c -> {
+      p.entryOrTyped(ct + "[" + n + "] comment:", typed, p.control().comment(ct, n), true, c -> {
         p.control().setComment(ct, n, c.trim());
         return Optional.empty();
       });
@@ -174,7 +174,7 @@ final class DataScreen implements Screen {
       PositionScreen.openRegister(p, n);
       return;
     }
-    p.entry("R[" + n + "] value:", typed == null ? "" : typed, false, s -> {
+    p.entryOrTyped("R[" + n + "] value:", typed, "", false, s -> {
       String v = s.trim();
       Optional<Double> d = Pendant.parseNumber(v);
       if (d.isEmpty()) {

@@ -276,7 +276,7 @@ final class EditScreen implements Screen {
       p.message("Choose with ENTER or [CHOICE]");
       return;
     }
-    p.entry("Enter value:", typed == null ? edit.initial() : typed, false, t -> {
+    p.entryOrTyped("Enter value:", typed, edit.initial(), false, t -> {
       try {
         Instruction changed = edit.entry().apply(t);
         if (p.editProgram(programName, pr -> replaceLine(pr, cur, changed))) {

@@ -199,7 +199,7 @@ final class FrameScreen implements Screen {
     int n = number();
     FrameKind fk = kind;
     if (row == 0) {
-      p.entry(word() + " Frame " + n + " comment:", typed == null ? p.control().frameComment(fk, n) : typed, true, c -> {
+      p.entryOrTyped(word() + " Frame " + n + " comment:", typed, p.control().frameComment(fk, n), true, c -> {
         p.control().setFrameComment(fk, n, c.trim());
         return Optional.empty();
       });
@@ -210,7 +210,7 @@ final class FrameScreen implements Screen {
       return;
     }
     int j = row;
-    p.entry("Enter value:", typed == null ? "" : typed, false, s -> {
+    p.entryOrTyped("Enter value:", typed, "", false, s -> {
       Optional<Double> v = Pendant.parseNumber(s);
       if (v.isEmpty()) {
         return Optional.of("Bad number '" + s.trim() + "'");

@@ -54,9 +54,16 @@ public record Lcd(List<String> rows) {
     return " ".repeat(left) + s + " ".repeat(width - s.length() - left);
   }
 
-  /** Pads or cuts to exactly {@link #WIDTH} characters. */
+  /** A rounded negative zero ("-0.000"): a controller shows it without the sign. */
+  private static final java.util.regex.Pattern PADDED_NEGATIVE_ZERO =
+      java.util.regex.Pattern.compile("(?<=  )-(0\\.0+)(?![\\d])");
+  private static final java.util.regex.Pattern NEGATIVE_ZERO = java.util.regex.Pattern.compile("(?<![\\d.])-(0\\.0+)(?![\\d])");
+
+  /** Pads or cuts to exactly {@link #WIDTH} characters; "-0.0" shows as "0.0". */
   static String fit(String s) {
-    String one = s.replace('\n', ' ');
+    // in a padded column the sign's place becomes a blank so columns stay aligned
+    String one = PADDED_NEGATIVE_ZERO.matcher(s.replace('\n', ' ')).replaceAll(" $1");
+    one = NEGATIVE_ZERO.matcher(one).replaceAll("$1");
     return one.length() >= WIDTH ? one.substring(0, WIDTH) : one + " ".repeat(WIDTH - one.length());
   }
 

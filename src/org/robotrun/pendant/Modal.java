@@ -45,16 +45,20 @@ sealed interface Modal {
     /** The F-key group whose letter is still cycling (-1 for none). */
     int pendingGroup = -1;
     int pendingIndex;
+    /** The buffer still holds the offered value: the first typed character replaces it. */
+    boolean fresh;
 
-    Entry(String prompt, String initial, boolean letters, Function<String, Optional<String>> onEnter) {
+    Entry(String prompt, String initial, boolean fresh, boolean letters, Function<String, Optional<String>> onEnter) {
       this.prompt = Objects.requireNonNull(prompt, "prompt");
       this.buffer = new StringBuilder(initial);
+      this.fresh = fresh && !initial.isEmpty();
       this.letters = letters;
       this.onEnter = Objects.requireNonNull(onEnter, "onEnter");
     }
 
     /** F1..F5 (0..4) in letter mode. */
     void letterKey(int group) {
+      clearIfFresh();
       String g = LETTER_GROUPS.get(group);
       if (pendingGroup == group && buffer.length() > 0) {
         pendingIndex = (pendingIndex + 1) % g.length();
@@ -63,6 +67,20 @@ sealed interface Modal {
         pendingGroup = group;
         pendingIndex = 0;
         buffer.append(g.charAt(0));
+      }
+    }
+
+    /** Appends typed text (replacing an offered value). */
+    void append(String text) {
+      clearIfFresh();
+      settle();
+      buffer.append(text);
+    }
+
+    private void clearIfFresh() {
+      if (fresh) {
+        buffer.setLength(0);
+        fresh = false;
       }
     }
 

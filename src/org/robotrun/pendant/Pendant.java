@@ -133,8 +133,7 @@ public final class Pendant {
   public void type(String text) {
     keySinceShiftPress = true;
     if (modal instanceof Modal.Entry e) {
-      e.settle();
-      e.buffer.append(text);
+      e.append(text);
       return;
     }
     if (modal != null) {
@@ -365,8 +364,24 @@ public final class Pendant {
     modal = new Modal.Choice(title, options, onChoose);
   }
 
+  /** An entry offering {@code initial}: the first typed character replaces it, ENTER keeps it. */
   void entry(String prompt, String initial, boolean letters, Function<String, Optional<String>> onEnter) {
-    modal = new Modal.Entry(prompt, initial, letters, onEnter);
+    modal = new Modal.Entry(prompt, initial, true, letters, onEnter);
+  }
+
+  /** {@link #entryTyped} when the operator already typed something ({@code typed} non-null), else {@link #entry}. */
+  void entryOrTyped(String prompt, String typed, String offered, boolean letters,
+      Function<String, Optional<String>> onEnter) {
+    if (typed != null) {
+      entryTyped(prompt, typed, letters, onEnter);
+    } else {
+      entry(prompt, offered, letters, onEnter);
+    }
+  }
+
+  /** An entry that starts with text already typed (a keypad digit that opened it). */
+  void entryTyped(String prompt, String typed, boolean letters, Function<String, Optional<String>> onEnter) {
+    modal = new Modal.Entry(prompt, typed, false, letters, onEnter);
   }
 
   void confirm(String question, Runnable onYes) {
@@ -395,13 +410,13 @@ public final class Pendant {
       }
       case Modal.Entry e -> {
         if (k.keypadChar().isPresent()) {
-          e.settle();
-          e.buffer.append(k.keypadChar().get());
+          e.append(String.valueOf(k.keypadChar().get()));
           return;
         }
         switch (k) {
           case BACKSPACE -> {
             e.settle();
+            e.fresh = false;
             if (e.buffer.length() > 0) {
               e.buffer.setLength(e.buffer.length() - 1);
             }
@@ -476,6 +491,11 @@ public final class Pendant {
     if (after == null || after.equals(before.get())) {
       return false;
     }
+    Optional<String> dup = newDuplicateLabel(before.get(), after);
+    if (dup.isPresent()) {
+      message = dup.get();
+      return false;
+    }
     Deque<Program> stack = undo.computeIfAbsent(name, n -> new ArrayDeque<>());
     stack.push(before.get());
     while (stack.size() > UNDO_DEPTH) {
@@ -483,6 +503,31 @@ public final class Pendant {
     }
     control.saveProgram(after);
     return true;
+  }
+
+  /** A label number defined twice in {@code after} but not in {@code before}, as a message. */
+  static Optional<String> newDuplicateLabel(Program before, Program after) {
+    Map<Integer, Integer> seenBefore = labels(before);
+    Map<Integer, Integer> first = new HashMap<>();
+    for (int n = 1; n <= after.lineCount(); n++) {
+      if (after.line(n) instanceof org.robotrun.program.Instruction.Label l) {
+        Integer at = first.putIfAbsent(l.number(), n);
+        if (at != null && seenBefore.getOrDefault(l.number(), 0) < 2) {
+          return Optional.of("Duplicate label: LBL[" + l.number() + "] is already on line " + at);
+        }
+      }
+    }
+    return Optional.empty();
+  }
+
+  private static Map<Integer, Integer> labels(Program p) {
+    Map<Integer, Integer> count = new HashMap<>();
+    for (org.robotrun.program.Instruction in : p.lines()) {
+      if (in instanceof org.robotrun.program.Instruction.Label l) {
+        count.merge(l.number(), 1, Integer::sum);
+      }
+    }
+    return count;
   }
 
   /** Undoes the last edit of program {@code name}. */

@@ -188,7 +188,7 @@ final class PositionScreen implements Screen {
   private void edit(Pendant p, String typed) {
     Optional<Position> pos = position(p);
     if (row == 0) {
-      p.entry(name() + " comment:", typed == null ? comment(p) : typed, true, c -> {
+      p.entryOrTyped(name() + " comment:", typed, comment(p), true, c -> {
         store(p, pos.orElse(Position.Cartesian.ZERO), c.trim());
         return Optional.empty();
       });
@@ -199,7 +199,7 @@ final class PositionScreen implements Screen {
       return;
     }
     if (row == 7 && pos.get() instanceof Position.Cartesian c) {
-      p.entry("CONFIG (e.g. N U T, 0, 0, 0):", typed == null ? config(c.config()) : typed, true, t -> {
+      p.entryOrTyped("CONFIG (e.g. N U T, 0, 0, 0):", typed, config(c.config()), true, t -> {
         Optional<Config> cf = parseConfig(t);
         if (cf.isEmpty()) {
           return Optional.of("Bad CONFIG '" + t.trim() + "': expected F|N U|D T|B, t1, t2, t3");
@@ -210,7 +210,7 @@ final class PositionScreen implements Screen {
       return;
     }
     int j = row;
-    p.entry("Enter value:", typed == null ? "" : typed, false, t -> {
+    p.entryOrTyped("Enter value:", typed, "", false, t -> {
       Optional<Double> v = Pendant.parseNumber(t);
       if (v.isEmpty()) {
         return Optional.of("Bad number '" + t.trim() + "'");

@@ -467,7 +467,7 @@ public final class TpLine {
     return new Field(text, Field.Edit.both(List.of("JMP LBL[...]", "CALL ..."),
         k -> make.apply(k == 0 ? new Instruction.Jump(LabelRef.of(1))
             : new Instruction.Call(programs.isEmpty() ? "MAIN" : programs.get(0), List.of())),
-        text, t -> make.apply(parseBranch(t))));
+        text, t -> make.apply(parseBranch(t, b instanceof Instruction.Call))));
   }
 
   private static Field posSourceField(Instruction.AssignPosReg a) {
@@ -592,12 +592,19 @@ public final class TpLine {
     return parts;
   }
 
-  /** {@code JMP LBL[3]}, {@code CALL NAME(...)} (also just {@code 3} for a jump). */
-  static Instruction.Branch parseBranch(String text) throws BadText {
+  /**
+   * {@code JMP LBL[3]}, {@code CALL NAME(...)}; without the keyword a number is a jump and, when
+   * {@code callByDefault}, a name is a call.
+   */
+  static Instruction.Branch parseBranch(String text, boolean callByDefault) throws BadText {
     String t = text.trim();
     String u = t.toUpperCase(Locale.ROOT);
     if (u.startsWith("CALL")) {
       return parseCall(t.substring(4));
+    }
+    if (callByDefault && !u.startsWith("JMP")) {
+      // the field already holds a CALL: typed text names the program (and its arguments)
+      return parseCall(t);
     }
     if (u.startsWith("JMP")) {
       t = t.substring(3);

@@ -1,0 +1,74 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+class PendantCommandTest {
+  record Run(int exitCode, String out, String err) {}
+
+  static Run run(String... args) {
+    CommandLine cl = Main.commandLine();
+    StringWriter out = new StringWriter();
+    StringWriter err = new StringWriter();
+    cl.setOut(new PrintWriter(out));
+    cl.setErr(new PrintWriter(err));
+    int code = cl.execute(args);
+    return new Run(code, out.toString(), err.toString());
+  }
+
+  @Test
+  void scriptRunsAndEveryShowPrintsTheLcd(@TempDir Path dir) throws Exception {
+    Path keys = dir.resolve("demo.keys");
+    Files.writeString(keys, """
+        # make a program with one point and run it
+        SELECT
+        F1
+        TYPE DEMO
+        ENTER
+        SHIFT+F1
+        SHOW
+        SHIFT+FWD
+        WAIT 1
+        SHOW
+        """);
+    Run r = run("pendant", "--keys", keys.toString());
+    assertThat(r.exitCode()).isEqualTo(0);
+    assertThat(r.err()).isEmpty();
+    assertThat(r.out()).contains("-- SHOW (line 7, t=0.000 s) --").contains("-- SHOW (line 10, t=1.000 s) --")
+        .contains("J P[1] 100% FINE").contains("EDIT DEMO");
+  }
+
+  @Test
+  void malformedScriptIsExit2WithFileAndLine(@TempDir Path dir) throws Exception {
+    Path keys = dir.resolve("bad.keys");
+    Files.writeString(keys, "SELECT\nWAIT later\n");
+    Run r = run("pendant", "--keys", keys.toString());
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.out()).isEmpty();
+    assertThat(r.err().strip()).isEqualTo("robotrun: " + keys + ":2: WAIT needs seconds (e.g. WAIT 2.5), got 'later'");
+  }
+
+  @Test
+  void missingFilesAreExit2(@TempDir Path dir) {
+    Run r = run("pendant", "--keys", dir.resolve("none.keys").toString());
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.err()).contains("--keys: no such file");
+    Run s = run("pendant", "--keys", dir.resolve("none.keys").toString(), "--scenario", dir.resolve("x.json").toString());
+    assertThat(s.exitCode()).isEqualTo(2);
+    assertThat(s.err()).contains("--scenario: no such file");
+  }
+
+  @Test
+  void helpSaysWhichControllerItRuns() {
+    Run r = run("pendant", "--help");
+    assertThat(r.exitCode()).isEqualTo(0);
+    assertThat(r.out()).contains("--keys").contains("--scenario").contains("stand-in controller");
+  }
+}

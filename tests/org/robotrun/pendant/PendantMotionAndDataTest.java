@@ -1,0 +1,338 @@
+package org.robotrun.pendant;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+import static org.robotrun.pendant.PendantKeys.body;
+import static org.robotrun.pendant.PendantKeys.run;
+
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Position;
+
+/** Jogging, POSN, frames, position registers, I/O and alarms through keys (stand-in controller). */
+class PendantMotionAndDataTest {
+  private final StandInRobotControl control = new StandInRobotControl();
+  private final Pendant p = new Pendant(control);
+
+  /** The number after {@code label} on the POSN screen's WORLD rows. */
+  private static double posnValue(String body, String section, String axis) {
+    String part = body.substring(body.indexOf(section));
+    Matcher m = Pattern.compile("\\b" + axis + "\\s+(-?\\d+\\.\\d+)").matcher(part);
+    assertThat(m.find()).as(axis + " in " + section).isTrue();
+    return Double.parseDouble(m.group(1));
+  }
+
+  @Test
+  void jogInWorldMovesTheTcpAndPosnShowsIt() {
+    run(p, """
+        POSN
+        COORD
+        """);
+    assertThat(p.lcd().statusLine()).contains("WORLD");
+    double x0 = posnValue(body(p), "WORLD", "X");
+    double z0 = posnValue(body(p), "WORLD", "Z");
+    // 0.2 s at 250 mm/s (100 % override) along world +X
+    run(p, """
+        HOLD SHIFT
+        HOLD +X
+        WAIT 0.2
+        RELEASE +X
+        RELEASE SHIFT
+        """);
+    assertThat(posnValue(body(p), "WORLD", "X")).isCloseTo(x0 + 50, within(0.01));
+    assertThat(posnValue(body(p), "WORLD", "Z")).isCloseTo(z0, within(0.01));
+    // the orientation is kept in a linear world jog
+    assertThat(posnValue(body(p), "WORLD", "W")).isCloseTo(180, within(0.01));
+  }
+
+  @Test
+  void jogKeysNeedShiftAsDeadman() {
+    Position.Joint before = control.currentJoints();
+    run(p, """
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        """);
+    assertThat(control.currentJoints()).isEqualTo(before);
+    assertThat(p.lcd().promptLine()).contains("Hold SHIFT (deadman)");
+    // releasing SHIFT mid-jog stops the robot
+    run(p, """
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.2
+        RELEASE SHIFT
+        WAIT 0.5
+        RELEASE +X/J1
+        """);
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(0.2 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
+    // a SHIFT tap latches it: jogging works without holding it
+    run(p, """
+        SHIFT
+        HOLD -X/J1
+        WAIT 0.2
+        RELEASE -X/J1
+        SHIFT
+        """);
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(0, within(1e-9));
+  }
+
+  @Test
+  void overrideStepsFineAtTheBottomAndBigWithShift() {
+    run(p, "-% *30");
+    assertThat(control.overridePct()).isEqualTo(1);
+    run(p, "+%");
+    assertThat(control.overridePct()).isEqualTo(5);
+    run(p, "+% *2");
+    assertThat(control.overridePct()).isEqualTo(15);
+    assertThat(p.lcd().statusLine()).contains(" 15%");
+    run(p, "SHIFT++%");
+    assertThat(control.overridePct()).isEqualTo(50);
+    run(p, "SHIFT++%");
+    assertThat(control.overridePct()).isEqualTo(100);
+    run(p, "SHIFT+-%");
+    assertThat(control.overridePct()).isEqualTo(50);
+  }
+
+  @Test
+  void coordCyclesJointWorldToolUser() {
+    StringBuilder seen = new StringBuilder();
+    for (int i = 0; i < 4; i++) {
+      run(p, "COORD");
+      seen.append(p.coord()).append(' ');
+    }
+    assertThat(seen.toString().trim()).isEqualTo("WORLD TOOL USER JOINT");
+  }
+
+  @Test
+  void teachUserFrameByThreePointsShowsTheResult() {
+    run(p, """
+        MENU
+        5
+        F1
+        2
+        F2
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        COORD
+        HOLD SHIFT
+        HOLD +X
+        WAIT 0.4
+        RELEASE +X
+        RELEASE SHIFT
+        SHIFT+F5
+        HOLD SHIFT
+        HOLD +Y
+        WAIT 0.4
+        RELEASE +Y
+        RELEASE SHIFT
+        SHIFT+F5
+        """);
+    // origin at the first point, X toward the second, Y toward the third: world-aligned at (600, 0, 400)
+    assertThat(body(p)).contains("Taught: X 600.0 Y 0.0 Z 400.0 W 0.0 P 0.0 R 0.0");
+    assertThat(p.lcd().promptLine()).contains("User Frame 1 taught");
+    Position.Cartesian uf1 = control.frame(FrameKind.USER, 1);
+    assertThat(uf1.xMm()).isCloseTo(600, within(1e-6));
+    // MOVE_TO back to the origin point
+    run(p, """
+        UP *2
+        SHIFT+F4
+        WAIT 5
+        """);
+    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(600, within(1e-6));
+    // SETIND makes it active; POSN then shows the USER position relative to it
+    run(p, """
+        PREV
+        F5
+        POSN
+        """);
+    assertThat(control.activeFrame(FrameKind.USER)).isEqualTo(1);
+    assertThat(body(p)).contains("USER  Frame: 1");
+  }
+
+  @Test
+  void frameTeachingFailureShowsTheReason() {
+    run(p, """
+        MENU
+        5
+        F1
+        2
+        F2
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        SHIFT+F5
+        SHIFT+F5
+        """);
+    assertThat(body(p)).contains("Not taught: points too close together");
+  }
+
+  @Test
+  void toolFrameThreePointFindsTheTcp() {
+    // three flange orientations around one point 100 mm below a TCP at (0, 0, 100) in the flange
+    Position.Cartesian tcp = new Position.Cartesian(0, 0, 100, 0, 0, 0, org.robotrun.program.Config.DEFAULT);
+    control.setFrame(FrameKind.TOOL, 2, tcp);
+    control.selectFrame(FrameKind.TOOL, 2);
+    run(p, """
+        MENU
+        5
+        F2
+        DOWN
+        SHIFT+F5
+        COORD
+        COORD
+        HOLD SHIFT
+        HOLD +XR/J4
+        WAIT 0.5
+        RELEASE +XR/J4
+        RELEASE SHIFT
+        SHIFT+F5
+        HOLD SHIFT
+        HOLD +YR/J5
+        WAIT 0.5
+        RELEASE +YR/J5
+        RELEASE SHIFT
+        SHIFT+F5
+        """);
+    // rotations in TOOL coordinates pivot about the TCP, so the pivot fit finds it again
+    assertThat(body(p)).contains("Taught: X 0.0 Y 0.0 Z 100.0");
+  }
+
+  @Test
+  void positionRegisterEditedInJointForm() {
+    run(p, """
+        DATA
+        F1
+        2
+        SHIFT+F3
+        F2
+        F5
+        2
+        """);
+    assertThat(body(p)).contains("JOINT").contains("J1 {     0.000} deg").contains("J5      0.000 deg");
+    run(p, """
+        DOWN
+        TYPE 30
+        ENTER
+        DOWN
+        DOWN
+        TYPE -12.5
+        ENTER
+        """);
+    assertThat(body(p)).contains("J2     30.000 deg").contains("J4 {   -12.500} deg");
+    Position pr1 = control.registers().position(1);
+    Position.Joint expected = new Position.Joint(0, 30, 0, -12.5, 0, 0);
+    for (int j = 1; j <= 6; j++) {
+      assertThat(pr1.element(j)).as("J" + j).isCloseTo(expected.element(j), within(1e-9));
+    }
+    // bad number: a message, nothing changed
+    run(p, """
+        TYPE 1.2.3
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("Bad number '1.2.3'");
+    assertThat(control.registers().position(1)).isEqualTo(pr1);
+    // back to Cartesian through the controller's kinematics
+    run(p, """
+        F5
+        1
+        """);
+    assertThat(control.registers().position(1)).isInstanceOf(Position.Cartesian.class);
+    assertThat(((Position.Cartesian) control.registers().position(1)).yMm()).isCloseTo(300, within(1e-6));
+  }
+
+  @Test
+  void numericRegisterValueAndComment() {
+    run(p, """
+        DATA
+        DOWN *2
+        TYPE 42
+        ENTER
+        LEFT
+        ENTER
+        TYPE COUNT
+        ENTER
+        """);
+    assertThat(control.registers().number(3)).isEqualTo(42.0);
+    assertThat(control.registers().isInteger(3)).isTrue();
+    assertThat(body(p)).contains("R[  3:{COUNT       }]  = 42");
+  }
+
+  @Test
+  void ioOutputsToggleAndInputsAreSimulated() {
+    run(p, """
+        I/O
+        DOWN
+        F4
+        """);
+    assertThat(control.registers().bit(IoKind.DO, 2)).isTrue();
+    assertThat(body(p)).contains("DO[ 2]  {ON}");
+    run(p, """
+        F1
+        1
+        F4
+        """);
+    assertThat(control.registers().bit(IoKind.DI, 1)).isTrue();
+    assertThat(p.lcd().promptLine()).contains("simulated input");
+    run(p, "TOOL1");
+    assertThat(control.registers().bit(IoKind.RO, 1)).isTrue();
+  }
+
+  @Test
+  void alarmOnTheTopLineOfEveryScreenUntilReset() {
+    run(p, """
+        SELECT
+        F1
+        TYPE BADJMP
+        ENTER
+        F2
+        5
+        2
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        WAIT 0.1
+        """);
+    String alarm = p.lcd().alarmLine();
+    assertThat(alarm).contains("BADJMP, 1").contains("LBL[1]");
+    run(p, "DATA");
+    assertThat(p.lcd().alarmLine()).isEqualTo(alarm);
+    run(p, "STATUS");
+    assertThat(body(p)).contains("ACTIVE:").contains("History:");
+    // SHIFT+FWD is refused while the alarm stands
+    run(p, """
+        EDIT
+        SHIFT+FWD
+        """);
+    assertThat(p.lcd().promptLine()).contains("RESET");
+    run(p, "RESET");
+    assertThat(p.lcd().alarmLine()).isBlank();
+    run(p, "STATUS");
+    assertThat(body(p)).contains("(BADJMP, 1)");
+  }
+
+  @Test
+  void frameSelectionWithShiftCoord() {
+    run(p, """
+        SHIFT+COORD
+        1
+        TYPE 3
+        ENTER
+        """);
+    assertThat(control.activeFrame(FrameKind.TOOL)).isEqualTo(3);
+    assertThat(p.lcd().statusLine()).contains("T3");
+    run(p, """
+        SHIFT+COORD
+        2
+        TYPE 11
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("enter 0 to 10");
+  }
+}

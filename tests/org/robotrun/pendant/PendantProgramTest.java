@@ -1,0 +1,323 @@
+package org.robotrun.pendant;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+import static org.robotrun.pendant.PendantKeys.body;
+import static org.robotrun.pendant.PendantKeys.run;
+
+import org.junit.jupiter.api.Test;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+
+/** Key sequences that build, edit and run a program, read back from the LCD text (stand-in controller). */
+class PendantProgramTest {
+  private final StandInRobotControl control = new StandInRobotControl();
+  private final Pendant p = new Pendant(control);
+
+  /** Creates PICK1 and records three points, jogging J1 then J2 between them. */
+  private void createWithThreePoints() {
+    run(p, """
+        SELECT
+        F1
+        TYPE PICK1
+        ENTER
+        SHIFT+F1
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        RELEASE SHIFT
+        SHIFT+F1
+        HOLD SHIFT
+        HOLD +Y/J2
+        WAIT 0.5
+        RELEASE +Y/J2
+        RELEASE SHIFT
+        SHIFT+F1
+        """);
+  }
+
+  @Test
+  void createRecordEditInsertAndRunToTheEnd() {
+    createWithThreePoints();
+    assertThat(body(p)).contains("1:  J P[1] 100% FINE").contains("2:  J P[2] 100% FINE").contains("J P[3] 100% FINE");
+
+    // line 2 becomes L 200mm/sec CNT50: type by choice list, speed and CNT by typed entry
+    run(p, """
+        UP
+        RIGHT
+        ENTER
+        2
+        RIGHT
+        RIGHT
+        TYPE 200
+        ENTER
+        RIGHT
+        RIGHT
+        TYPE 50
+        ENTER
+        """);
+    assertThat(body(p)).contains("L P[2] 200mm/sec {CNT50}");
+
+    // a register statement and an IF at the end, through [INST]
+    run(p, """
+        DOWN *2
+        F2
+        1
+        2
+        DOWN
+        F2
+        3
+        1
+        TYPE R[1]>5
+        ENTER
+        """);
+    assertThat(body(p)).contains("4:  R[1]=R[1]+1").contains("5:  IF {R[1]>5},JMP LBL[1]");
+
+    // run from line 1
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        WAIT 0.1
+        """);
+    assertThat(p.lcd().statusLine()).contains("RUNNING");
+    run(p, "WAIT 5");
+    assertThat(p.lcd().statusLine()).doesNotContain("RUNNING").doesNotContain("PAUSED");
+    assertThat(p.lcd().alarmLine()).isBlank();
+    assertThat(control.registers().number(1)).isEqualTo(1.0);
+    // the robot stands at P[3]
+    Position.Cartesian p3 = (Position.Cartesian) control.program("PICK1").orElseThrow().position(3).orElseThrow().position();
+    Position.Cartesian here = control.currentPose(0, 0);
+    assertThat(here.xMm()).isCloseTo(p3.xMm(), within(1e-6));
+    assertThat(here.yMm()).isCloseTo(p3.yMm(), within(1e-6));
+    assertThat(here.zMm()).isCloseTo(p3.zMm(), within(1e-6));
+  }
+
+  @Test
+  void stepBackwardReturnsToThePreviousPoint() {
+    createWithThreePoints();
+    run(p, """
+        SHIFT+FWD
+        WAIT 0.1
+        """);
+    // cursor follows execution; the program runs all three moves
+    run(p, "WAIT 5");
+    double j2AtP3 = control.currentJoints().j2Deg();
+    assertThat(j2AtP3).isGreaterThan(10);
+    run(p, """
+        ITEM
+        TYPE 4
+        ENTER
+        SHIFT+BWD
+        WAIT 5
+        """);
+    // backed out of line 3: the robot is at P[2] (J2 = 0) and the cursor is on line 3
+    assertThat(control.currentJoints().j2Deg()).isCloseTo(0, within(1e-6));
+    assertThat(control.currentJoints().j1Deg()).isGreaterThan(10);
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+  }
+
+  @Test
+  void stepModeRunsOneLinePerShiftFwd() {
+    createWithThreePoints();
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        STEP
+        SHIFT+FWD
+        WAIT 3
+        """);
+    assertThat(p.lcd().statusLine()).contains("STEP").contains("PAUSED");
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("2:");
+    run(p, """
+        SHIFT+FWD
+        WAIT 3
+        """);
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+  }
+
+  @Test
+  void holdPausesAndShiftFwdResumes() {
+    createWithThreePoints();
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        WAIT 0.3
+        HOLD
+        """);
+    assertThat(p.lcd().statusLine()).contains("PAUSED");
+    Position.Joint held = control.currentJoints();
+    run(p, "WAIT 1");
+    assertThat(control.currentJoints()).isEqualTo(held);
+    run(p, """
+        SHIFT+FWD
+        WAIT 5
+        """);
+    assertThat(p.lcd().statusLine()).doesNotContain("PAUSED").doesNotContain("RUNNING");
+  }
+
+  @Test
+  void userErrorsAreMessagesOnThePromptLine() {
+    run(p, """
+        SELECT
+        F1
+        TYPE 1BAD
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("Bad name '1BAD'");
+    run(p, """
+        F1
+        TYPE MAIN
+        ENTER
+        SELECT
+        F1
+        TYPE MAIN
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("already taken");
+
+    // a bad number in a field
+    run(p, """
+        EDIT
+        SHIFT+F1
+        RIGHT
+        RIGHT
+        RIGHT
+        TYPE abc
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("Bad value").contains("abc");
+
+    // duplicate label
+    run(p, """
+        DOWN
+        F2
+        5
+        1
+        DOWN
+        F2
+        5
+        1
+        """);
+    assertThat(p.lcd().promptLine()).contains("Duplicate label: LBL[1]");
+    assertThat(control.program("MAIN").orElseThrow().lines().stream().filter(i -> i instanceof Instruction.Label))
+        .hasSize(1);
+
+    // deleting the running program
+    run(p, """
+        F2
+        4
+        1
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        HOLD
+        SELECT
+        F2
+        F4
+        """);
+    assertThat(p.lcd().promptLine()).contains("Cannot delete MAIN");
+    assertThat(control.program("MAIN")).isPresent();
+  }
+
+  @Test
+  void undoGoesBackAtLeastFiftySteps() {
+    run(p, """
+        SELECT
+        F1
+        TYPE UNDO1
+        ENTER
+        """);
+    for (int i = 0; i < 60; i++) {
+      run(p, """
+          F2
+          8
+          1
+          """);
+    }
+    assertThat(control.program("UNDO1").orElseThrow().lineCount()).isEqualTo(60);
+    for (int i = 0; i < 55; i++) {
+      run(p, """
+          NEXT
+          F4
+          NEXT
+          """);
+    }
+    assertThat(control.program("UNDO1").orElseThrow().lineCount()).isEqualTo(5);
+  }
+
+  @Test
+  void copyPasteReverseAndRenumber() {
+    createWithThreePoints();
+    // select lines 1-3 and copy, paste with new position numbers at [End]
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        F3
+        3
+        DOWN *2
+        F2
+        DOWN
+        F3
+        4
+        2
+        """);
+    Program prog = control.program("PICK1").orElseThrow();
+    assertThat(prog.lineCount()).isEqualTo(6);
+    assertThat(body(p)).contains("J P[4] 100% FINE").contains("J P[6] 100% FINE");
+    assertThat(prog.positions()).containsKeys(4, 5, 6);
+    // paste reversed: the last copied line comes first
+    run(p, """
+        ITEM
+        TYPE 7
+        ENTER
+        F3
+        4
+        3
+        """);
+    prog = control.program("PICK1").orElseThrow();
+    assertThat(prog.lineCount()).isEqualTo(9);
+    assertThat(((Instruction.Move) prog.line(7)).target()).isEqualTo(new org.robotrun.program.Motion.Local(3, ""));
+    // comment out line 1 and back
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        F3
+        8
+        """);
+    assertThat(body(p)).contains("//J P[1] 100% FINE");
+    run(p, """
+        F3
+        8
+        """);
+    assertThat(control.program("PICK1").orElseThrow().line(1)).isInstanceOf(Instruction.Move.class);
+    // find
+    run(p, """
+        F3
+        5
+        TYPE P[5]
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("Found 'P[5]' at line 5");
+    // replace speeds (replace works field by field: the number, not the unit)
+    run(p, """
+        F3
+        6
+        TYPE 100
+        ENTER
+        TYPE 50
+        ENTER
+        """);
+    assertThat(p.lcd().promptLine()).contains("9 field(s) replaced");
+    assertThat(body(p)).contains("J P[1] 50% FINE");
+  }
+}
