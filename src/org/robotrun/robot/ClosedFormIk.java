@@ -136,8 +136,8 @@ public final class ClosedFormIk {
       }
     }
     if (found < 0) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose has no solution in CONFIG '" + config + "' (that arm side is out of reach)");
+      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH,
+          "the pose is out of reach in CONFIG '" + config + "' (only the other arm side reaches it)");
     }
     int o = found * 6;
     for (int i = 0; i < 6; i++) {
