@@ -71,6 +71,8 @@ public final class NumericIk {
   private static final int SEEDS = 64;
   /** Seeds stay off the limits: the middle 80 % of each range. */
   private static final double SEED_MARGIN = 0.1;
+  /** Below this manipulability (|det| of the scaled Jacobian) a failed solve is SINGULAR. */
+  private static final double SINGULAR_MANIPULABILITY = 1e-4;
   /** λ0: keeps the normal equations positive definite at singularities. */
   private static final double BASE_DAMPING = 1e-9;
 
@@ -92,6 +94,7 @@ public final class NumericIk {
   private final double[] g = new double[6];
   private final double[] q = new double[6];
   private final double[] bestQ = new double[6];
+  private final int[] perm = new int[6];
   private final double[] j1Seeds = new double[8];
   private int j1SeedCount;
   /** Lowest ½|e|² seen in this solve, at {@link #bestQ}. */
@@ -409,7 +412,7 @@ public final class NumericIk {
 
   /** No convergence: say whether the best attempt was pinned at a limit or near a singularity. */
   private IkResult giveUp(int iterations, String why) {
-    chain.flangePose(bestQ, pose, null);
+    Jacobian.tcpJacobianInBase(chain, bestQ, null, jac, pose, scratch);
     double dx = pose[9] - target[9], dy = pose[10] - target[10], dz = pose[11] - target[11];
     double posErr = Math.sqrt(dx * dx + dy * dy + dz * dz);
     double rotErr = ClosedFormIk.rotationAngle(pose, target);
@@ -424,6 +427,17 @@ public final class NumericIk {
     if (atLimit >= 0) {
       return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
           "no solution found inside the joint limits; J" + (atLimit + 1) + " stopped at its limit; " + detail);
+    }
+    // Manipulability |det Js| of the best posture (scaled as in the iterations).
+    double invL = 1 / settings.lengthScaleMm();
+    for (int c = 0; c < 18; c++) {
+      jac[c] *= invL;
+    }
+    double w = Math.abs(ResolvedRate.luDecompose(jac, perm));
+    if (w < SINGULAR_MANIPULABILITY) {
+      return new IkResult.Unreachable(IkResult.Reason.SINGULAR,
+          "no solution found: the closest posture is singular (arm stretched, folded or wrist "
+              + "axes in line), typically just beyond reach; " + detail);
     }
     return new IkResult.Unreachable(IkResult.Reason.NO_CONVERGENCE, "no solution found: " + detail);
   }
