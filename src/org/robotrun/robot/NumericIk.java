@@ -55,14 +55,14 @@ public final class NumericIk {
     }
 
     /**
-     * 1e-6 mm, 1e-9 rad; 25 iterations per attempt, 2000 in all (about 1 ms), 5 ms CPU time
-     * as a safety net only (the iteration cap keeps results independent of machine speed);
-     * L = 300 mm, μ = 0.1,
-     * stall below 1 % progress per step. Tuned on the LR Mate reference targets (all three
-     * starts solve every row; p99 about 120 iterations).
+     * 1e-6 mm, 1e-9 rad; 25 iterations per attempt, 2000 in all (about 1 ms once compiled);
+     * 20 ms of CPU time as a safety net only (code the JIT has not compiled yet runs ~50 times
+     * slower, and the iteration cap keeps results independent of machine speed); L = 300 mm,
+     * μ = 0.1, stall below 1 % progress per step. Tuned on the LR Mate reference targets (all
+     * three starts solve every row; p99 about 120 iterations, worst about 250).
      */
     public static Settings defaults() {
-      return new Settings(1e-6, 1e-9, 25, 2000, 5_000_000, 300, 0.1, 0.99);
+      return new Settings(1e-6, 1e-9, 25, 2000, 20_000_000, 300, 0.1, 0.99);
     }
   }
 
@@ -71,6 +71,8 @@ public final class NumericIk {
   private static final int SEEDS = 64;
   /** Seeds stay off the limits: the middle 80 % of each range. */
   private static final double SEED_MARGIN = 0.1;
+  /** Below this manipulability (|det| of the scaled Jacobian) a failed solve is SINGULAR. */
+  private static final double SINGULAR_MANIPULABILITY = 1e-4;
   /** λ0: keeps the normal equations positive definite at singularities. */
   private static final double BASE_DAMPING = 1e-9;
 
@@ -89,9 +91,12 @@ public final class NumericIk {
   private final double[] scratch = new double[Jacobian.SCRATCH];
   private final double[] err = new double[6];
   private final double[] a = new double[36];
+  private final double[] jt = new double[36];
+  private final double[] invDiag = new double[6];
   private final double[] g = new double[6];
   private final double[] q = new double[6];
   private final double[] bestQ = new double[6];
+  private final int[] perm = new int[6];
   private final double[] j1Seeds = new double[8];
   private int j1SeedCount;
   /** Lowest ½|e|² seen in this solve, at {@link #bestQ}. */
@@ -285,49 +290,26 @@ public final class NumericIk {
 
   /** g = Δq from the normal equations with the locked joints' columns left out (Δq = 0 there). */
   private void solveNormalEquations(double lambda, int locked) {
+    // jt = Jsᵀ (rows contiguous), a locked joint's row zeroed: its Δq comes out 0.
     for (int r = 0; r < 6; r++) {
-      boolean lr = (locked & (1 << r)) != 0;
-      double gr = 0;
-      if (!lr) {
-        for (int k = 0; k < 6; k++) {
-          gr += jac[k * 6 + r] * err[k];
-        }
+      boolean l = (locked & (1 << r)) != 0;
+      int ro = r * 6;
+      for (int k = 0; k < 6; k++) {
+        jt[ro + k] = l ? 0 : jac[k * 6 + r];
       }
-      g[r] = gr;
+    }
+    for (int r = 0; r < 6; r++) {
+      int ro = r * 6;
+      double t0 = jt[ro], t1 = jt[ro + 1], t2 = jt[ro + 2], t3 = jt[ro + 3], t4 = jt[ro + 4], t5 = jt[ro + 5];
+      g[r] = t0 * err[0] + t1 * err[1] + t2 * err[2] + t3 * err[3] + t4 * err[4] + t5 * err[5];
       for (int c = 0; c <= r; c++) {
-        double sum = 0;
-        if (!lr && (locked & (1 << c)) == 0) {
-          for (int k = 0; k < 6; k++) {
-            sum += jac[k * 6 + r] * jac[k * 6 + c];
-          }
-        }
-        a[r * 6 + c] = r == c ? sum + lambda : sum;
+        int co = c * 6;
+        a[ro + c] = t0 * jt[co] + t1 * jt[co + 1] + t2 * jt[co + 2] + t3 * jt[co + 3]
+            + t4 * jt[co + 4] + t5 * jt[co + 5];
       }
+      a[ro + r] += lambda;
     }
-    // Cholesky (lower, in place) and two triangular solves.
-    for (int r = 0; r < 6; r++) {
-      for (int c = 0; c <= r; c++) {
-        double sum = a[r * 6 + c];
-        for (int k = 0; k < c; k++) {
-          sum -= a[r * 6 + k] * a[c * 6 + k];
-        }
-        a[r * 6 + c] = r == c ? Math.sqrt(sum) : sum / a[c * 6 + c];
-      }
-    }
-    for (int r = 0; r < 6; r++) {
-      double sum = g[r];
-      for (int k = 0; k < r; k++) {
-        sum -= a[r * 6 + k] * g[k];
-      }
-      g[r] = sum / a[r * 6 + r];
-    }
-    for (int r = 5; r >= 0; r--) {
-      double sum = g[r];
-      for (int k = r + 1; k < 6; k++) {
-        sum -= a[k * 6 + r] * g[k];
-      }
-      g[r] = sum / a[r * 6 + r];
-    }
+    Dense6.choleskySolve(a, g, invDiag);
   }
 
   /** Attempt 0 starts from the caller's joints; later ones from the seed list. */
@@ -409,7 +391,7 @@ public final class NumericIk {
 
   /** No convergence: say whether the best attempt was pinned at a limit or near a singularity. */
   private IkResult giveUp(int iterations, String why) {
-    chain.flangePose(bestQ, pose, null);
+    Jacobian.tcpJacobianInBase(chain, bestQ, null, jac, pose, scratch);
     double dx = pose[9] - target[9], dy = pose[10] - target[10], dz = pose[11] - target[11];
     double posErr = Math.sqrt(dx * dx + dy * dy + dz * dz);
     double rotErr = ClosedFormIk.rotationAngle(pose, target);
@@ -424,6 +406,17 @@ public final class NumericIk {
     if (atLimit >= 0) {
       return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
           "no solution found inside the joint limits; J" + (atLimit + 1) + " stopped at its limit; " + detail);
+    }
+    // Manipulability |det Js| of the best posture (scaled as in the iterations).
+    double invL = 1 / settings.lengthScaleMm();
+    for (int c = 0; c < 18; c++) {
+      jac[c] *= invL;
+    }
+    double w = Math.abs(Dense6.luDecompose(jac, perm));
+    if (w < SINGULAR_MANIPULABILITY) {
+      return new IkResult.Unreachable(IkResult.Reason.SINGULAR,
+          "no solution found: the closest posture is singular (arm stretched, folded or wrist "
+              + "axes in line), typically just beyond reach; " + detail);
     }
     return new IkResult.Unreachable(IkResult.Reason.NO_CONVERGENCE, "no solution found: " + detail);
   }
