@@ -101,7 +101,7 @@ public final class LsReader {
         diags.add(Diagnostic.error(file, 1, "empty file: expected an ASCII .LS program starting with '/PROG  NAME'"));
         return result();
       }
-      if (!lines[i].startsWith("/PROG")) {
+      if (!"/PROG".equals(sectionHeader(lines[i]))) {
         if (looksBinary(lines[i])) {
           diags.add(Diagnostic.error(file, i + 1, "not a text file: expected an ASCII .LS program starting with '/PROG  NAME'"));
           return result();

@@ -366,19 +366,21 @@ final class LsStatementParser extends LsTokenCursor {
     };
   }
 
+  /**
+   * {@code WAIT t(sec)} and {@code WAIT R[i]} wait a time; anything else is a condition. A
+   * constant without {@code (sec)} is neither.
+   */
   private Instruction waitStatement() {
-    if (peek().is(Kind.NUMBER)) {
-      double sec = number("wait time");
+    Expr e = expression();
+    if (peek().is(Kind.LPAREN) && peek(1).isWord("sec")) {
       expectSecUnit();
-      return new Instruction.WaitTime(new Expr.RealConst(sec));
+      return new Instruction.WaitTime(e instanceof Expr.IntConst i ? new Expr.RealConst(i.value()) : e);
     }
-    Expr cond = expression();
-    if (peek().is(Kind.LPAREN) && cond instanceof Expr.Register) {
-      expectSecUnit();
-      return new Instruction.WaitTime(cond);
+    if (e instanceof Expr.Register && peek().is(Kind.EOL)) {
+      return new Instruction.WaitTime(e);
     }
-    if (cond instanceof Expr.Register && peek().is(Kind.EOL)) {
-      return new Instruction.WaitTime(cond);
+    if (e instanceof Expr.IntConst || e instanceof Expr.RealConst) {
+      throw error("expected '(sec)' after the wait time, found " + peek().describe());
     }
     Optional<LabelRef> timeout = Optional.empty();
     if (peek().isWord("TIMEOUT")) {
@@ -387,7 +389,7 @@ final class LsStatementParser extends LsTokenCursor {
       expectWordNamed("LBL", "LBL[n] after TIMEOUT,");
       timeout = Optional.of(labelRef());
     }
-    return new Instruction.WaitCondition(cond, timeout);
+    return new Instruction.WaitCondition(e, timeout);
   }
 
   private void expectSecUnit() {

@@ -99,6 +99,24 @@ class LsReaderTest {
   }
 
   @Test
+  void waitTakesATimeOrACondition() {
+    assertThat(only("  WAIT 1(sec) ;")).isEqualTo(new Instruction.WaitTime(new Expr.RealConst(1)));
+    assertThat(only("  WAIT R[3] ;")).isEqualTo(new Instruction.WaitTime(new Expr.Register(Item.of(3))));
+    assertThat(only("  WAIT R[3]>2 ;")).isEqualTo(new Instruction.WaitCondition(
+        new Expr.Binary(BinaryOp.GT, new Expr.Register(Item.of(3)), new Expr.IntConst(2)), java.util.Optional.empty()));
+    assertThat(messages(mn("   1:  WAIT 5 ;\n"))).containsExactly("t.ls:4: expected '(sec)' after the wait time, found end of line");
+  }
+
+  @Test
+  void lowerCaseIsReadAndWrittenInUpperCase() {
+    LsReadResult r = LsReader.parse("low.ls", "/prog  low\n/mn\n   1:j pr[1] 30% fine    ;\n   2:  call beep ;\n"
+        + "   3:  wait di[1]=on timeout,lbl[1] ;\n   4:  lbl[1] ;\n/pos\n/end\n");
+    assertThat(messages(r)).isEmpty();
+    assertThat(LsWriter.write(r.program())).startsWith("/PROG  LOW\n").contains(
+        "   1:J PR[1] 30% FINE    ;\n   2:  CALL BEEP ;\n   3:  WAIT DI[1]=ON TIMEOUT,LBL[1] ;\n   4:  LBL[1] ;\n");
+  }
+
+  @Test
   void circularMotionTakesItsContinuationLine() {
     LsReadResult r = LsReader.parse("c.ls", HEAD
         + "   1:C P[1]    \n    :  P[2] 100mm/sec FINE    ;\n   2:  END ;\n"
