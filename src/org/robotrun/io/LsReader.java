@@ -384,7 +384,11 @@ public final class LsReader {
         }
         Instruction in;
         try {
-          in = LsStatementParser.parse(tokens);
+          LsStatementParser.Parsed parsed = LsStatementParser.parse(tokens);
+          in = parsed.instruction();
+          for (String w : parsed.warnings()) {
+            diags.add(Diagnostic.warning(file, line, w));
+          }
           if (!terminated) {
             diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
           }

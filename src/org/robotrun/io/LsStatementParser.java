@@ -16,6 +16,7 @@ import org.robotrun.program.Item;
 import org.robotrun.program.LabelRef;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
 
 /**
  * Recursive-descent parser for one /MN statement (TP-LANGUAGE.md, "Statements"). It sees the
@@ -76,6 +77,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   private int nesting;
   private int operators;
+  private final List<String> warnings = new ArrayList<>(0);
 
   private LsStatementParser(List<LsToken> tokens) {
     super(tokens);
@@ -88,14 +90,20 @@ final class LsStatementParser extends LsTokenCursor {
    *     {@code ;} already removed by the reader)
    * @throws LsSyntaxError naming the line and what was expected
    */
-  static Instruction parse(List<LsToken> tokens) {
+  static Parsed parse(List<LsToken> tokens) {
     LsStatementParser p = new LsStatementParser(tokens);
     Instruction in = p.statement();
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
     }
-    return in;
+    return new Parsed(in, List.copyOf(p.warnings));
   }
+
+  /**
+   * A statement and the warnings about it (a register number outside the controller's table:
+   * legal text, but running the line raises an alarm).
+   */
+  record Parsed(Instruction instruction, List<String> warnings) {}
 
   // ---- statements -------------------------------------------------------------------------
 
@@ -762,12 +770,15 @@ final class LsStatementParser extends LsTokenCursor {
   private Index indexValue(String what) {
     LsToken t = peek();
     if (t.is(Kind.NUMBER)) {
-      return new Index.Direct(intConst("index of " + what + "[...]"));
+      int n = intConst("index of " + what + "[...]");
+      checkRange(what, n);
+      return new Index.Direct(n);
     }
     if (t.isWord("R")) {
       next();
       expect(Kind.LBRACKET, "'[' after R");
       int reg = intConst("register number in R[...]");
+      checkRange("R", reg);
       String comment = itemCommentAndClose("R[...]");
       return new Index.Indirect(reg, comment);
     }
@@ -775,6 +786,21 @@ final class LsStatementParser extends LsTokenCursor {
       throw error(t, "not supported: an index through AR[] (use R[i])");
     }
     throw error("expected an index (a number or R[i]) inside " + what + "[...], found " + t.describe());
+  }
+
+  /** Table sizes of the controller RobotRun simulates (program.Registers); other items are not checked here. */
+  private void checkRange(String table, int n) {
+    int size = switch (table) {
+      case "R" -> Registers.R_COUNT;
+      case "PR" -> Registers.PR_COUNT;
+      case "F" -> Registers.FLAG_COUNT;
+      case "DI", "DO", "RI", "RO", "GI", "GO" -> Registers.IO_COUNT;
+      case "TIMER" -> Registers.TIMER_COUNT;
+      default -> 0;
+    };
+    if (size > 0 && (n < 1 || n > size)) {
+      warnings.add(table + "[" + n + "]: index out of range (expected 1.." + size + "); running this line raises an alarm");
+    }
   }
 
   /** Optional {@code :comment} then the closing bracket. */

@@ -99,6 +99,10 @@ class LsRandomProgramsTest {
     return new Item(new Index.Direct(1 + rnd.nextInt(64)), comment());
   }
 
+  private Item timer() {
+    return new Item(new Index.Direct(1 + rnd.nextInt(10)), comment());
+  }
+
   private LabelRef label() {
     return new LabelRef(new Index.Direct(1), comment());
   }
@@ -112,7 +116,7 @@ class LsRandomProgramsTest {
       case 3 -> new Expr.Register(item());
       case 4 -> new Expr.PosElement(item(), 1 + rnd.nextInt(6));
       case 5 -> new Expr.Io(IoKind.values()[rnd.nextInt(IoKind.values().length)], item());
-      case 6 -> new Expr.Timer(direct());
+      case 6 -> new Expr.Timer(timer());
       case 7 -> new Expr.Arg(new Index.Direct(1 + rnd.nextInt(10)));
       case 8 -> new Expr.Unary(Expr.UnaryOp.values()[rnd.nextInt(2)], expr(depth - 1));
       case 9 -> new Expr.Group(expr(depth - 1));
@@ -222,7 +226,7 @@ class LsRandomProgramsTest {
       case 11 -> new Instruction.If(expr(2), branch());
       case 12 -> new Instruction.WaitTime(rnd.nextBoolean() ? new Expr.RealConst(rnd.nextInt(1000) / 100.0) : new Expr.Register(direct()));
       case 13 -> new Instruction.WaitCondition(expr(2), rnd.nextBoolean() ? Optional.of(label()) : Optional.empty());
-      case 14 -> new Instruction.TimerSet(direct(), Instruction.TimerAction.values()[rnd.nextInt(3)]);
+      case 14 -> new Instruction.TimerSet(timer(), Instruction.TimerAction.values()[rnd.nextInt(3)]);
       case 15 -> new Instruction.SetIo(new IoKind[] {IoKind.DO, IoKind.RO, IoKind.GO, IoKind.F}[rnd.nextInt(4)], item(), expr(2));
       case 16 -> new Instruction.Pulse(rnd.nextBoolean() ? IoKind.DO : IoKind.RO, item(),
           rnd.nextBoolean() ? OptionalDouble.of(rnd.nextInt(100) / 10.0) : OptionalDouble.empty());

@@ -92,6 +92,18 @@ class LsReaderTest {
   }
 
   @Test
+  void indexesOutsideTheControllersTablesAreWarnings() {
+    LsReadResult r = mn("   1:  R[201]=TIMER[11]+DI[0]+R[R[300]]    ;\n   2:  PR[101,1]=F[200]    ;\n");
+    assertThat(messages(r)).containsExactly(
+        "t.ls:4: warning: R[201]: index out of range (expected 1..200); running this line raises an alarm",
+        "t.ls:4: warning: TIMER[11]: index out of range (expected 1..10); running this line raises an alarm",
+        "t.ls:4: warning: DI[0]: index out of range (expected 1..64); running this line raises an alarm",
+        "t.ls:4: warning: R[300]: index out of range (expected 1..200); running this line raises an alarm",
+        "t.ls:5: warning: PR[101]: index out of range (expected 1..100); running this line raises an alarm");
+    assertThat(r.hasErrors()).isFalse();
+  }
+
+  @Test
   void constantsKeepIntegerAndRealApart() {
     assertThat(only("  R[1]=.5    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.RealConst(0.5)));
     assertThat(only("  R[1]=-3    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.IntConst(-3)));
