@@ -155,6 +155,7 @@ final class LsStatementParser extends LsTokenCursor {
       case "PR" -> positionRegisterAssignment();
       case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
       case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
+      case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
