@@ -395,7 +395,8 @@ public final class LsReader {
         } catch (LsSyntaxError e) {
           diags.add(Diagnostic.error(file, e.line(), e.getMessage()));
           // Keep the numbering of the following lines: the bad line stays as commented-out text.
-          in = new Instruction.CommentedOut(text.substring(p + 1).strip());
+          String raw = text.substring(p + 1).strip();
+          in = new Instruction.CommentedOut(raw.endsWith(";") ? raw.substring(0, raw.length() - 1).stripTrailing() : raw);
         }
         instructions.add(in);
         sourceLines.add(line);

@@ -177,6 +177,7 @@ class LsReaderTest {
     // Bad lines keep their place, so line numbering of the rest holds.
     assertThat(r.program().lineCount()).isEqualTo(14);
     assertThat(r.program().line(8)).isInstanceOf(Instruction.AssignRegister.class);
+    assertThat(r.program().line(2)).isEqualTo(new Instruction.CommentedOut("R[1]="));
   }
 
   @Test
