@@ -694,6 +694,11 @@ public final class Interpreter {
     if (cnt < 0 || cnt > 100) {
       throw new AlarmSignal(AlarmKind.BAD_VALUE, "CNT" + cnt + ": expected 0..100");
     }
+    if (stepMode) {
+      // In STEP each motion line stops at its point, so CNT runs as FINE (as on the controller).
+      fine = true;
+      cnt = 0;
+    }
     Optional<Position> offset = Optional.empty();
     Optional<Position> toolOffset = Optional.empty();
     int acc = 100;

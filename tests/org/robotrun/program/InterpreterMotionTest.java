@@ -73,6 +73,19 @@ class InterpreterMotionTest {
   }
 
   @Test
+  void stepRunsCntMotionsAsFine() {
+    Instruction.Move cnt = Instruction.Move.of(Motion.Type.L, Tp.p(1), Tp.mmPerSec(100), new Motion.Cnt(50), List.of());
+    Rig stepping = new Rig(progWithPositions("C", 1, cnt));
+    stepping.interp.setStepMode(true);
+    stepping.run();
+    assertThat(stepping.port.requests().get(0).fine()).isTrue();
+    Rig running = new Rig(progWithPositions("C", 1, cnt));
+    running.run();
+    assertThat(running.port.requests().get(0).fine()).isFalse();
+    assertThat(running.port.requests().get(0).cnt()).isEqualTo(50);
+  }
+
+  @Test
   void stepGoesIntoACalledProgram() {
     Program main = Tp.prog("MAIN", call("SUB"), setR(1, num(1)));
     Program sub = Tp.prog("SUB", setR(2, num(2)), setR(3, num(3)));
@@ -104,6 +117,18 @@ class InterpreterMotionTest {
     assertThat(rig.port.isHeld(1)).isFalse();
     assertThat(rig.runUntilStopped(DT, 1000)).isInstanceOf(Outcome.Finished.class);
     assertThat(rig.port.requests()).hasSize(3);
+  }
+
+  @Test
+  void abortEndsTheProgramAndCancelsItsMotion() {
+    Rig rig = new Rig(threeMoves());
+    rig.interp.forward();
+    rig.tick(DT);
+    rig.interp.abort();
+    assertThat(rig.interp.state()).isEqualTo(Interpreter.State.IDLE);
+    assertThat(rig.port.cancelled()).containsExactly(1L);
+    assertThat(rig.tick(DT)).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.interp.cursorLine()).isEqualTo(1);
   }
 
   @Test
