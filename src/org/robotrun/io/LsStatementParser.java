@@ -73,7 +73,14 @@ final class LsStatementParser extends LsTokenCursor {
       Map.entry("TC_ONLINE", "TC_ONLINE"),
       Map.entry("SKIP_CONDITION", "SKIP CONDITION"),
       Map.entry("PTH", "PTH"),
-      Map.entry("MAX_SPEED", "max_speed"));
+      Map.entry("MAX_SPEED", "max_speed"),
+      Map.entry("WELD_SPEED", "arc welding speed WELD_SPEED"),
+      Map.entry("WEAVE", "arc welding weave"),
+      Map.entry("TRACK", "seam tracking"),
+      Map.entry("VOFFSET", "vision offset VOFFSET"),
+      Map.entry("VISION", "iRVision"),
+      Map.entry("COORD", "coordinated motion COORD"),
+      Map.entry("RTCP", "remote TCP (RTCP)"));
 
   private int nesting;
   private int operators;
@@ -419,6 +426,9 @@ final class LsStatementParser extends LsTokenCursor {
     Optional<Motion.Target> end = Optional.empty();
     if (type == Motion.Type.C) {
       if (!(peek().isWord("P") || peek().isWord("PR"))) {
+        if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
+          throw error("not supported: motion options on the via point of a C motion (found " + peek().describe() + ")");
+        }
         throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found " + peek().describe());
       }
       end = Optional.of(motionTarget());
@@ -576,6 +586,9 @@ final class LsStatementParser extends LsTokenCursor {
               throw error(t, "ACC" + acc + ": expected 0..150");
             }
             return new Motion.Acc(acc);
+          }
+          if (UNSUPPORTED.containsKey(w)) {
+            throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
           }
           if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
             throw error(t, "not supported: motion option " + t.text() + " (TIME BEFORE/AFTER, distance before)");

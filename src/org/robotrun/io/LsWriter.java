@@ -133,7 +133,8 @@ public final class LsWriter {
     sb.append(m.type().name()).append(' ');
     target(m.target(), sb);
     if (m.circularEnd().isPresent()) {
-      sb.append("\n    :  ");
+      // Controllers pad the via line with four blanks, as they do before a motion line's ';'.
+      sb.append("    \n    :  ");
       target(m.circularEnd().get(), sb);
     }
     sb.append(' ');

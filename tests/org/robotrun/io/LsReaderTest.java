@@ -199,6 +199,23 @@ class LsReaderTest {
   }
 
   @Test
+  void applicationMotionFormsAreNamed() {
+    LsReadResult r = mn(String.join("\n",
+        "   1:L P[1] WELD_SPEED FINE    ;",
+        "   2:J PR[2] 40% FINE",
+        "    :  Arc Start[1]    ;",
+        "   3:C P[2] Tool_Offset,PR[28]",
+        "    :  P[3] R[23]mm/sec CNT100    ;",
+        "   4:L PR[1] 500mm/sec CNT50 VOFFSET,VR[1]    ;",
+        ""));
+    assertThat(messages(r)).containsExactly(
+        "t.ls:4: not supported: arc welding speed WELD_SPEED",
+        "t.ls:6: not supported: arc welding (as a motion option)",
+        "t.ls:7: not supported: motion options on the via point of a C motion (found 'Tool_Offset')",
+        "t.ls:9: not supported: vision offset VOFFSET (as a motion option)");
+  }
+
+  @Test
   void lineNumbersOutOfOrderAreReported() {
     LsReadResult r = mn("   1:  R[1]=1 ;\n   3:  R[1]=2 ;\n   2:  R[1]=3 ;\n");
     assertThat(messages(r)).containsExactly(
