@@ -101,7 +101,7 @@ public final class LsReader {
         diags.add(Diagnostic.error(file, 1, "empty file: expected an ASCII .LS program starting with '/PROG  NAME'"));
         return result();
       }
-      if (!lines[i].startsWith("/PROG")) {
+      if (!"/PROG".equals(sectionHeader(lines[i]))) {
         if (looksBinary(lines[i])) {
           diags.add(Diagnostic.error(file, i + 1, "not a text file: expected an ASCII .LS program starting with '/PROG  NAME'"));
           return result();
@@ -384,14 +384,19 @@ public final class LsReader {
         }
         Instruction in;
         try {
-          in = LsStatementParser.parse(tokens);
+          LsStatementParser.Parsed parsed = LsStatementParser.parse(tokens);
+          in = parsed.instruction();
+          for (String w : parsed.warnings()) {
+            diags.add(Diagnostic.warning(file, line, w));
+          }
           if (!terminated) {
             diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
           }
         } catch (LsSyntaxError e) {
           diags.add(Diagnostic.error(file, e.line(), e.getMessage()));
           // Keep the numbering of the following lines: the bad line stays as commented-out text.
-          in = new Instruction.CommentedOut(text.substring(p + 1).strip());
+          String raw = text.substring(p + 1).strip();
+          in = new Instruction.CommentedOut(raw.endsWith(";") ? raw.substring(0, raw.length() - 1).stripTrailing() : raw);
         }
         instructions.add(in);
         sourceLines.add(line);
