@@ -207,6 +207,14 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void impossiblePathIsAnError() throws Exception {
+    String text = withObjects(TABLE).replace("\"objects\"", "\"programs\": [\"bad\\u0000name.LS\"],\n  \"objects\"");
+    ScenarioError e = onlyError(write("s.json", text));
+    assertThat(e.path()).isEqualTo("programs[0]");
+    assertThat(e.message()).startsWith("not a valid path");
+  }
+
+  @Test
   void notAnObjectAndMissingFileAreErrorsNotExceptions() throws Exception {
     assertThat(onlyError(write("a.json", "[1, 2]")).message()).isEqualTo("expected an object, got an array");
     assertThat(onlyError(write("e.json", "")).message()).startsWith("empty file");
