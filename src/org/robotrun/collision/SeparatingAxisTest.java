@@ -132,7 +132,6 @@ public final class SeparatingAxisTest {
     return !crossSeparates(Math.abs(t1 * r02 - t0 * r12) - (ae0 * q12 + ae1 * q02 + be0 * q21 + be1 * q20), r22);
   }
 
-
   /**
    * Whether a gap {@code d} measured along the unnormalised axis A_i × B_j (length
    * sqrt(1 − r²), r = A_i · B_j) exceeds the contact tolerance.

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -375,7 +376,10 @@ public final class ScenarioReader {
         return null;
       }
       int line = o.members().get("file").line();
-      Path meshFile = dir.resolve(rel.get()).normalize();
+      Path meshFile = resolve(rel.get(), line, at + ".file");
+      if (meshFile == null) {
+        return null;
+      }
       if (!Files.isRegularFile(meshFile)) {
         error(line, at + ".file", "mesh file not found: " + meshFile + " (paths are relative to the scenario file)");
         return null;
@@ -405,7 +409,10 @@ public final class ScenarioReader {
           error(v.line(), at, "expected a path to a .LS file, got " + v.describe());
           continue;
         }
-        Path p = dir.resolve(s.value()).normalize();
+        Path p = resolve(s.value(), v.line(), at);
+        if (p == null) {
+          continue;
+        }
         if (!s.value().toLowerCase(Locale.ROOT).endsWith(".ls")) {
           error(v.line(), at, "expected a .LS program file, got \"" + s.value() + "\"");
         } else if (!Files.isRegularFile(p)) {
@@ -439,8 +446,18 @@ public final class ScenarioReader {
       return Optional.of(main.get().toUpperCase(Locale.ROOT));
     }
 
+    /** {@code rel} against the scenario's folder, or null with an error when it is not a path. */
+    private Path resolve(String rel, int line, String path) {
+      try {
+        return dir.resolve(rel).normalize();
+      } catch (InvalidPathException e) {
+        error(line, path, "not a valid path: \"" + rel + "\"");
+        return null;
+      }
+    }
+
     private static String programName(String path) {
-      String base = Path.of(path).getFileName().toString();
+      String base = path.substring(Math.max(path.lastIndexOf('/'), path.lastIndexOf('\\')) + 1);
       int dot = base.lastIndexOf('.');
       return dot < 0 ? base : base.substring(0, dot);
     }

@@ -6,6 +6,9 @@ import com.fasterxml.jackson.core.util.DefaultIndenter;
 import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
 import java.io.IOException;
 import java.io.StringWriter;
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Map;
@@ -53,7 +56,7 @@ public final class ScenarioWriter {
         g.writeStringField("endEffector", r.endEffector().fileName());
         g.writeArrayFieldStart("jointsDeg");
         for (double q : r.initialJointsRad()) {
-          g.writeNumber(Math.toDegrees(q));
+          g.writeNumber(tidyText(Math.toDegrees(q)));
         }
         g.writeEndArray();
         g.writeEndObject();
@@ -77,7 +80,7 @@ public final class ScenarioWriter {
       if (!s.registers().isEmpty()) {
         g.writeObjectFieldStart("registers");
         for (Map.Entry<Integer, Double> e : s.registers().entrySet()) {
-          g.writeNumberField(e.getKey().toString(), e.getValue());
+          number(g, e.getKey().toString(), e.getValue());
         }
         g.writeEndObject();
       }
@@ -91,13 +94,13 @@ public final class ScenarioWriter {
         CameraView c = s.camera().get();
         g.writeObjectFieldStart("camera");
         g.writeObjectFieldStart("target");
-        g.writeNumberField("x", c.targetMm().x());
-        g.writeNumberField("y", c.targetMm().y());
-        g.writeNumberField("z", c.targetMm().z());
+        number(g, "x", c.targetMm().x());
+        number(g, "y", c.targetMm().y());
+        number(g, "z", c.targetMm().z());
         g.writeEndObject();
-        g.writeNumberField("distance", c.distanceMm());
-        g.writeNumberField("yawDeg", Math.toDegrees(c.yawRad()));
-        g.writeNumberField("pitchDeg", Math.toDegrees(c.pitchRad()));
+        number(g, "distance", c.distanceMm());
+        number(g, "yawDeg", Math.toDegrees(c.yawRad()));
+        number(g, "pitchDeg", Math.toDegrees(c.pitchRad()));
         g.writeEndObject();
       }
       g.writeEndObject();
@@ -116,20 +119,20 @@ public final class ScenarioWriter {
       case Shape.Box b -> {
         g.writeStringField("shape", "box");
         g.writeObjectFieldStart("size");
-        g.writeNumberField("x", b.lengthMm());
-        g.writeNumberField("y", b.widthMm());
-        g.writeNumberField("z", b.heightMm());
+        number(g, "x", b.lengthMm());
+        number(g, "y", b.widthMm());
+        number(g, "z", b.heightMm());
         g.writeEndObject();
       }
       case Shape.Cylinder c -> {
         g.writeStringField("shape", "cylinder");
-        g.writeNumberField("radius", c.radiusMm());
-        g.writeNumberField("height", c.heightMm());
+        number(g, "radius", c.radiusMm());
+        number(g, "height", c.heightMm());
       }
       case Shape.Mesh m -> {
         g.writeStringField("shape", "mesh");
         g.writeStringField("file", relative(dir, m.file()));
-        g.writeNumberField("scale", m.scale());
+        number(g, "scale", m.scale());
       }
     }
     g.writeStringField("color", o.colour().hex());
@@ -155,13 +158,31 @@ public final class ScenarioWriter {
   private static void pose(JsonGenerator g, String field, Transform t) throws IOException {
     Xyzwpr p = Xyzwpr.fromTransform(t);
     g.writeObjectFieldStart(field);
-    g.writeNumberField("x", p.x());
-    g.writeNumberField("y", p.y());
-    g.writeNumberField("z", p.z());
-    g.writeNumberField("w", p.wDeg());
-    g.writeNumberField("p", p.pDeg());
-    g.writeNumberField("r", p.rDeg());
+    number(g, "x", p.x());
+    number(g, "y", p.y());
+    number(g, "z", p.z());
+    number(g, "w", p.wDeg());
+    number(g, "p", p.pDeg());
+    number(g, "r", p.rDeg());
     g.writeEndObject();
+  }
+
+  /**
+   * Writes a number rounded to 15 significant digits, and below 1e-12 as 0, so that 15° does
+   * not come back as 14.999999999999998 after the trip through radians and a matrix; integral
+   * values are written without a fraction.
+   */
+  private static void number(JsonGenerator g, String field, double v) throws IOException {
+    g.writeFieldName(field);
+    g.writeNumber(tidyText(v));
+  }
+
+  private static String tidyText(double v) {
+    if (Math.abs(v) < 1e-12) {
+      return "0";
+    }
+    BigDecimal d = new BigDecimal(v).round(new MathContext(15, RoundingMode.HALF_EVEN)).stripTrailingZeros();
+    return d.signum() == 0 ? "0" : d.scale() <= 0 ? d.toBigInteger().toString() : d.toPlainString();
   }
 
   private static String relative(Path dir, Path file) {

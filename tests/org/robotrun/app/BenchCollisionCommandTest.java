@@ -73,6 +73,11 @@ class BenchCollisionCommandTest {
     Run bp = run("bench", "broadphase", "--ticks", "50", "--repeat", "1", "--warmup", "10");
     assertThat(bp.exit()).as(bp.err()).isZero();
     assertThat(bp.out()).matches("bodies=216 ticks=50 contacts_per_tick=\\d+\\.\\d\\d us_per_tick=\\d+\\.\\d\\d\\R");
+    // The pick-and-place cell: 5 objects and the LR Mate's 14 link shapes.
+    Run cell = run("bench", "broadphase", "--scenario", "scenarios/pick-and-place.json", "--ticks", "20",
+        "--repeat", "1", "--warmup", "0");
+    assertThat(cell.exit()).as(cell.err()).isZero();
+    assertThat(cell.out()).startsWith("bodies=19 ticks=20 ");
     Run sc = run("bench", "scenario", "--file", "scenarios/pick-and-place.json", "--repeat", "2");
     assertThat(sc.exit()).as(sc.err()).isZero();
     assertThat(sc.out()).startsWith("file=scenarios/pick-and-place.json first_load_ms=");

@@ -206,6 +206,49 @@ class ScenarioReaderTest {
     assertThat(e.get(1).message()).startsWith("program file not found");
   }
 
+  private static final String PUNCTUATION = "{}[]:,\"0a-. ";
+
+  @Test
+  void mangledFilesGiveErrorsNeverExceptions() throws Exception {
+    // Method: 500 seeded random edits of a valid scenario (drop, duplicate or replace a
+    // character, or swap a value for another type); each load must return a result, and a
+    // failed one must carry at least one error with a message.
+    String valid = Files.readString(Path.of("scenarios/pick-and-place.json"));
+    String[] values = {"NaN", "-1", "1e999", "\"x\"", "[]", "{}", "null", "true", "0"};
+    java.util.Random random = new java.util.Random(1234);
+    Path f = dir.resolve("m.json");
+    for (int i = 0; i < 500; i++) {
+      StringBuilder t = new StringBuilder(valid);
+      int at = random.nextInt(t.length());
+      switch (random.nextInt(4)) {
+        case 0 -> t.deleteCharAt(at);
+        case 1 -> t.insert(at, t.charAt(at));
+        case 2 -> t.setCharAt(at, PUNCTUATION.charAt(random.nextInt(PUNCTUATION.length())));
+        default -> {
+          int colon = t.indexOf(":", at);
+          int end = colon < 0 ? -1 : Math.min(t.indexOf(",", colon) < 0 ? t.length() : t.indexOf(",", colon),
+              t.indexOf("}", colon) < 0 ? t.length() : t.indexOf("}", colon));
+          if (colon >= 0 && end > colon) {
+            t.replace(colon + 1, end, " " + values[random.nextInt(values.length)]);
+          }
+        }
+      }
+      Files.writeString(f, t);
+      ScenarioLoad load = ScenarioReader.read(f);
+      if (load instanceof ScenarioLoad.Failed failed) {
+        assertThat(failed.errors()).allSatisfy(e -> assertThat(e.message()).isNotBlank());
+      }
+    }
+  }
+
+  @Test
+  void impossiblePathIsAnError() throws Exception {
+    String text = withObjects(TABLE).replace("\"objects\"", "\"programs\": [\"bad\\u0000name.LS\"],\n  \"objects\"");
+    ScenarioError e = onlyError(write("s.json", text));
+    assertThat(e.path()).isEqualTo("programs[0]");
+    assertThat(e.message()).startsWith("not a valid path");
+  }
+
   @Test
   void notAnObjectAndMissingFileAreErrorsNotExceptions() throws Exception {
     assertThat(onlyError(write("a.json", "[1, 2]")).message()).isEqualTo("expected an object, got an array");

@@ -45,6 +45,8 @@ class ScenarioWriterTest {
     Files.writeString(out, "old content");
     ScenarioWriter.write(loaded, out);
     assertThat(Files.readString(out)).contains("\"file\" : \"../../src/meshes/tri.stl\"");
+    // Angles come back as typed, not as 9.999999999999998 after the trip through a matrix.
+    assertThat(Files.readString(out)).contains("\"w\" : 10,", "\"p\" : -20,", "\"r\" : 170\n");
     Scenario reloaded = load(out);
     assertThat(reloaded).usingRecursiveComparison(CLOSE).isEqualTo(loaded);
     // Saving what was loaded gives the same bytes again.
