@@ -100,6 +100,45 @@ class BlendAndFaultTest {
   }
 
   @Test
+  void linearMoveNearTheWristSingularitySlowsInsteadOfWhippingTheWrist() {
+    // Wrist straight (J5 = 0) at q_mid; the line runs 15 mm beside that point with the orientation
+    // fixed, so J5 stays a few degrees from 0 while J4 and J6 must swing about 180 degrees.
+    double[] qMid = {0, 0.3, 0.2, 0, 0, 0};
+    Transform mid = MotionRunnerTest.tcp(qMid);
+    Transform start = mid.withTranslation(mid.x(), mid.y() - 50, mid.z() + 15);
+    Transform end = mid.withTranslation(mid.x(), mid.y() + 50, mid.z() + 15);
+    PoseTracker solver = new PoseTracker(MotionRunnerTest.MODEL);
+    double[] q0 = {0, 0.3, 0.2, -1.57, 0.1, 1.57};
+    assertThat(solver.track(q0, start, TOOL, 1e-6, 1e-9)).isTrue();
+    MotionRunnerTest.Recorder rec = new MotionRunnerTest.Recorder();
+    MotionRunner r = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, q0, rec);
+    r.enqueue(new MoveRequest.Linear(end, TOOL, Speed.mmPerSec(500), Termination.fine(), 1, 6));
+    List<double[]> trace = MotionRunnerTest.run(r, 20_000);
+    assertThat(rec.fault).isNull();
+    double minJ5 = Double.MAX_VALUE;
+    double maxJ4Speed = 0;
+    for (int k = 1; k < trace.size(); k++) {
+      for (int j = 0; j < 6; j++) {
+        double v = Math.abs(trace.get(k)[j] - trace.get(k - 1)[j]) / DT;
+        assertThat(v).isLessThanOrEqualTo(MotionRunnerTest.LIMITS.jointSpeed(j) * (1 + 1e-9));
+      }
+      minJ5 = Math.min(minJ5, Math.abs(trace.get(k)[4]));
+      maxJ4Speed = Math.max(maxJ4Speed, Math.abs(trace.get(k)[3] - trace.get(k - 1)[3]) / DT);
+      // On the line to 0.1 mm (the line is along WORLD y).
+      Transform x = MotionRunnerTest.tcp(trace.get(k));
+      assertThat(Math.hypot(x.x() - start.x(), x.z() - start.z())).isLessThanOrEqualTo(0.1);
+    }
+    double[] last = trace.get(trace.size() - 1);
+    assertThat(MotionRunnerTest.tcp(last).distanceTo(end)).isLessThan(0.01);
+    // The wrist really swung, J4 ran at its speed limit, and the move took longer than planned.
+    assertThat(Math.abs(last[3] - q0[3])).isGreaterThan(Math.toRadians(120));
+    assertThat(minJ5).isLessThan(Math.toRadians(10));
+    assertThat(maxJ4Speed).isGreaterThan(0.9 * MotionRunnerTest.LIMITS.jointSpeed(3));
+    double planned = UnitProfile.fastest(500 / 100.0, 500 / MotionLimits.LINEAR_ACCEL_TIME_SEC / 100).durationSec();
+    assertThat((trace.size() - 1) * DT).isGreaterThan(planned + 10 * DT);
+  }
+
+  @Test
   void unreachableTargetIsAFaultBeforeMoving() {
     Transform a = MotionRunnerTest.tcp(MotionRunnerTest.HOME);
     Transform far = a.withTranslation(a.x() + 2000, a.y(), a.z());
