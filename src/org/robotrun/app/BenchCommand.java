@@ -8,7 +8,7 @@ import picocli.CommandLine.Command;
     mixinStandardHelpOptions = true,
     description = "Measure speed: prints one summary line per run.",
     subcommands = {BenchRenderCommand.class, BenchParseCommand.class, BenchInterpCommand.class, BenchIkCommand.class,
-        BenchSimCommand.class})
+        BenchSimCommand.class, BenchCollisionCommand.class, BenchBroadPhaseCommand.class, BenchScenarioCommand.class})
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
 
