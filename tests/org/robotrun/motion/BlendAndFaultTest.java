@@ -62,6 +62,70 @@ class BlendAndFaultTest {
     assertThat(cnt.rec().events).containsExactly("start 1", "start 2", "end 1", "end 2");
   }
 
+  /** Runs the two moves, queuing the second as soon as the runner takes it; returns the joint trace. */
+  static Run pair(MoveRequest first, MoveRequest second, double[] q0) {
+    MotionRunnerTest.Recorder rec = new MotionRunnerTest.Recorder();
+    MotionRunner r = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, q0, rec);
+    r.enqueue(first);
+    List<double[]> trace = new java.util.ArrayList<>();
+    trace.add(r.joints());
+    boolean queued = false;
+    for (int i = 0; i < 10_000 && !(queued && r.idle()); i++) {
+      if (!queued && r.acceptsMove()) {
+        r.enqueue(second);
+        queued = true;
+      }
+      r.tick(DT);
+      trace.add(r.joints());
+    }
+    return new Run(trace, rec);
+  }
+
+  @Test
+  void jointMoveBlendsIntoALinearMoveWithoutStopping() {
+    double[] home = MotionRunnerTest.HOME;
+    double[] via = {0.5, 0.3, -0.2, 0.2, Math.toRadians(-70), 0.3};
+    Transform end = MotionRunnerTest.tcp(home).withTranslation(350, -120, 40);
+    Run fine = pair(new MoveRequest.Joint(via, Speed.percent(80), Termination.fine(), 1, 1),
+        new MoveRequest.Linear(end, TOOL, Speed.mmPerSec(600), Termination.fine(), 1, 2), home);
+    Run cnt = pair(new MoveRequest.Joint(via, Speed.percent(80), Termination.cnt(100), 1, 1),
+        new MoveRequest.Linear(end, TOOL, Speed.mmPerSec(600), Termination.fine(), 1, 2), home);
+    assertThat(cnt.rec().fault).isNull();
+    assertThat(cnt.rec().events).containsExactly("start 1", "start 2", "end 1", "end 2");
+    assertThat(cnt.trace().size()).isLessThan(fine.trace().size() - 20);
+    assertThat(MotionRunnerTest.tcp(cnt.trace().get(cnt.trace().size() - 1)).distanceTo(end)).isLessThan(0.01);
+    // Never at rest between the start and the end: the corner is blended, not stopped at.
+    double slowest = Double.MAX_VALUE;
+    List<double[]> t = cnt.trace();
+    for (int k = 20; k < t.size() - 20; k++) {
+      double v = MotionRunnerTest.tcp(t.get(k)).distanceTo(MotionRunnerTest.tcp(t.get(k - 1))) / DT;
+      slowest = Math.min(slowest, v);
+      for (int j = 0; j < 6; j++) {
+        assertThat(Math.abs(t.get(k)[j] - t.get(k - 1)[j]) / DT).isLessThanOrEqualTo(
+            MotionRunnerTest.LIMITS.jointSpeed(j) * (1 + 1e-6));
+      }
+    }
+    assertThat(slowest).isGreaterThan(20);
+  }
+
+  @Test
+  void linearMoveBlendsIntoAJointMoveAndEndsOnItsTarget() {
+    double[] home = MotionRunnerTest.HOME;
+    double[] target = {-0.6, 0.2, -0.1, -0.3, Math.toRadians(-60), -0.5};
+    Transform mid = MotionRunnerTest.tcp(home).withTranslation(350, 120, 40);
+    Run cnt = pair(new MoveRequest.Linear(mid, TOOL, Speed.mmPerSec(600), Termination.cnt(100), 1, 1),
+        new MoveRequest.Joint(target, Speed.percent(60), Termination.fine(), 1, 2), home);
+    Run fine = pair(new MoveRequest.Linear(mid, TOOL, Speed.mmPerSec(600), Termination.fine(), 1, 1),
+        new MoveRequest.Joint(target, Speed.percent(60), Termination.fine(), 1, 2), home);
+    assertThat(cnt.rec().fault).isNull();
+    assertThat(cnt.rec().events).containsExactly("start 1", "start 2", "end 1", "end 2");
+    double[] last = cnt.trace().get(cnt.trace().size() - 1);
+    for (int j = 0; j < 6; j++) {
+      assertThat(last[j]).isCloseTo(target[j], org.assertj.core.data.Offset.offset(1e-6));
+    }
+    assertThat(cnt.trace().size()).isLessThan(fine.trace().size() - 20);
+  }
+
   @Test
   void largerCntBlendsEarlier() {
     Transform a = MotionRunnerTest.tcp(MotionRunnerTest.HOME);
