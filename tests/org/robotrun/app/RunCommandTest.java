@@ -34,6 +34,39 @@ class RunCommandTest {
   }
 
   @Test
+  void scenarioSuppliesTheCellFramesAndParts(@TempDir Path dir) throws Exception {
+    Path prog = dir.resolve("ABOVE.LS");
+    Files.writeString(prog, """
+        /PROG  ABOVE
+        /ATTR
+        /MN
+           1:  UFRAME_NUM=1 ;
+           2:  UTOOL_NUM=1 ;
+           3:L P[1:ABOVE_PART1] 200mm/sec FINE ;
+        /POS
+        P[1:"ABOVE_PART1"]{
+           GP1:
+        	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+        	X =   120.000  mm,	Y =   170.000  mm,	Z =   100.000  mm,
+        	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+        };
+        /END
+        """);
+    Path report = dir.resolve("r.json");
+    int code = Main.execute("run", "--scenario", "scenarios/pick-and-place.json", "--program", "ABOVE",
+        "--programs", prog.toString(), "--report", report.toString());
+    assertThat(code).isZero();
+    JsonNode r = new ObjectMapper().readTree(report.toFile());
+    JsonNode tcp = r.get("robots").get(0).get("tcp_world");
+    // UFRAME[1] is the table corner at (220, -350, -100): the TCP ends 100 mm above part1's base.
+    assertThat(tcp.get("x").asDouble()).isEqualTo(340.0);
+    assertThat(tcp.get("y").asDouble()).isEqualTo(-180.0);
+    assertThat(tcp.get("z").asDouble()).isEqualTo(0.0);
+    assertThat(r.get("parts")).hasSize(3);
+    assertThat(r.get("parts").get(0).get("name").asText()).isEqualTo("part1");
+  }
+
+  @Test
   void alarmExitsWithOneAndNamesTheLine(@TempDir Path dir) throws Exception {
     Path prog = dir.resolve("BAD.LS");
     Files.writeString(prog, """

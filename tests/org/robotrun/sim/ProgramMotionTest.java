@@ -1,0 +1,165 @@
+package org.robotrun.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.data.Offset.offset;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.robotrun.io.LsReadResult;
+import org.robotrun.io.LsReader;
+import org.robotrun.math.Vec3;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.program.Program;
+
+/** C, A, Offset, Tool_Offset and INC motions as a program states them, checked on the TCP path. */
+class ProgramMotionTest {
+  static final String POS = """
+      /POS
+      P[1:"HOME"]{
+         GP1:
+      	UF : 1, UT : 1,
+      	J1=     0.000 deg,	J2=     0.000 deg,	J3=     0.000 deg,
+      	J4=     0.000 deg,	J5=   -90.000 deg,	J6=     0.000 deg
+      };
+      P[2:"A"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =   350.000  mm,	Y =  -120.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      P[3:"B"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =   350.000  mm,	Y =   150.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      P[4:"VIA"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =   450.000  mm,	Y =    15.000  mm,	Z =    40.000  mm,
+      	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      P[5:"STEP"]{
+         GP1:
+      	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+      	X =     0.000  mm,	Y =    20.000  mm,	Z =     0.000  mm,
+      	W =     0.000 deg,	P =     0.000 deg,	R =     0.000 deg
+      };
+      /END
+      """;
+
+  record Sample(double t, Vec3 p) {}
+
+  static Program program(String... lines) {
+    StringBuilder sb = new StringBuilder("/PROG  FORMS\n/ATTR\n/MN\n");
+    for (int i = 0; i < lines.length; i++) {
+      sb.append(String.format("%4d:%s ;%n", i + 1, lines[i]));
+    }
+    sb.append(POS);
+    LsReadResult r = LsReader.parse("FORMS.LS", sb.toString());
+    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    return r.program();
+  }
+
+  static List<Sample> run(Controller c, Simulation sim) {
+    List<Sample> samples = new ArrayList<>();
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "FORMS", 120,
+        s -> samples.add(new Sample(s.timeSec(), c.tcpInWorld().position())));
+    assertThat(r.status()).as(r.alarm().map(ControllerAlarm::display).orElse("")).isEqualTo(HeadlessRun.Status.FINISHED);
+    return samples;
+  }
+
+  /** Largest distance (mm) of the samples of program line {@code line} from the circle through a, b, c. */
+  static double offCircle(Controller c, List<Sample> samples, int line, Vec3 a, Vec3 b, Vec3 cc) {
+    MotionTiming m = c.motionTimings().stream().filter(x -> x.line() == line).findFirst().orElseThrow();
+    Vec3 u = b.minus(a);
+    Vec3 v = cc.minus(a);
+    Vec3 n = u.cross(v);
+    Vec3 o = n.cross(u).times(v.dot(v)).plus(v.cross(n).times(u.dot(u))).times(1 / (2 * n.dot(n)));
+    Vec3 center = a.plus(o);
+    double radius = o.norm();
+    Vec3 nHat = n.normalized();
+    double worst = 0;
+    for (Sample s : samples) {
+      if (s.t() >= m.startSec() && s.t() <= m.endSec()) {
+        Vec3 d = s.p().minus(center);
+        double inPlane = d.minus(nHat.times(d.dot(nHat))).norm();
+        worst = Math.max(worst, Math.hypot(inPlane - radius, d.dot(nHat)));
+      }
+    }
+    return worst;
+  }
+
+  static final Vec3 A = new Vec3(350, -120, 40);
+  static final Vec3 B = new Vec3(350, 150, 40);
+  static final Vec3 VIA = new Vec3(450, 15, 40);
+
+  @Test
+  void circularMoveFollowsTheCircleThroughItsThreePoints() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE", "C P[4:VIA]\n    :  P[3:B] 300mm/sec FINE"));
+    List<Sample> samples = run(c, sim);
+    assertThat(offCircle(c, samples, 3, A, VIA, B)).isLessThanOrEqualTo(0.1);
+    assertThat(c.tcpInWorld().position().distanceTo(B)).isLessThan(0.01);
+  }
+
+  @Test
+  void arcMovesContinueTheCircleThroughConsecutivePoints() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[3:B] 500mm/sec FINE",
+        "A P[2:A] 200mm/sec FINE", "A P[4:VIA] 200mm/sec FINE", "A P[3:B] 200mm/sec FINE"));
+    List<Sample> samples = run(c, sim);
+    // Lines 4 and 5 lie on the circle through B, A, VIA (= the circle through A, VIA, B).
+    assertThat(offCircle(c, samples, 4, B, A, VIA)).isLessThanOrEqualTo(0.1);
+    assertThat(offCircle(c, samples, 5, A, VIA, B)).isLessThanOrEqualTo(0.1);
+    assertThat(c.tcpInWorld().position().distanceTo(B)).isLessThan(0.01);
+  }
+
+  @Test
+  void offsetToolOffsetAndIncShiftTheTarget() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    // PAUSE after each stage: the test reads the TCP there and resumes.
+    c.saveProgram(program("PR[1,3]=50", "PR[2,3]=(-30)", "J P[1:HOME] 100% FINE",
+        "L P[2:A] 500mm/sec FINE Offset,PR[1]", "PAUSE",
+        "L P[2:A] 500mm/sec FINE Tool_Offset,PR[2]", "PAUSE",
+        "L P[5:STEP] 100mm/sec FINE INC"));
+    c.run("FORMS", 1, true);
+    List<Xyzwpr> atPauses = new ArrayList<>();
+    for (int i = 0; i < 50_000 && (c.busy() || atPauses.isEmpty()); i++) {
+      sim.step();
+      if (c.status().state() == ExecutionStatus.State.PAUSED) {
+        atPauses.add(c.tcpInWorld());
+        c.run("FORMS", c.status().line(), true);
+      }
+    }
+    assertThat(c.hasActiveAlarm()).isFalse();
+    assertThat(atPauses).hasSize(2);
+    // Offset adds PR[1] in the user frame: 50 mm up.
+    assertThat(atPauses.get(0).z()).isCloseTo(90, offset(0.01));
+    // Tool_Offset moves along the tool's z, which points down: −30 is 30 mm up.
+    assertThat(atPauses.get(1).z()).isCloseTo(70, offset(0.01));
+    assertThat(atPauses.get(1).x()).isCloseTo(350, offset(0.01));
+    // INC adds P[5] (20 mm in y) to where the arm is.
+    Xyzwpr end = c.tcpInWorld();
+    assertThat(end.y()).isCloseTo(-100, offset(0.01));
+    assertThat(end.z()).isCloseTo(70, offset(0.01));
+  }
+
+  @Test
+  void moveToGoesToATaughtPosition() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    var target = new org.robotrun.program.Position.Cartesian(350, -120, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
+    assertThat(c.moveTo(target, 1, 1)).isInstanceOf(CommandResult.Ok.class);
+    for (int i = 0; i < 5000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.tcpInWorld().position().distanceTo(A)).isLessThan(0.01);
+    var far = new org.robotrun.program.Position.Cartesian(3000, 0, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
+    assertThat(c.moveTo(far, 1, 1)).isInstanceOf(CommandResult.Refused.class);
+  }
+}
