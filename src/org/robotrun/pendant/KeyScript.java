@@ -18,6 +18,7 @@ import java.util.function.Consumer;
  * TYPE PICK1                typed text (the rest of the line, as written)
  * HOLD SHIFT                key down (stays down)
  * RELEASE SHIFT             key up
+ * CLICK +X                  an on-screen click: latches a jog key on (a second CLICK turns it off)
  * WAIT 2.5                  2.5 s of simulated time
  * SHOW                      print the LCD
  * </pre>
@@ -39,6 +40,9 @@ public final class KeyScript {
 
     /** Key up. */
     record Release(int line, Key key) implements Step {}
+
+    /** An on-screen click (latched jog). */
+    record Click(int line, Key key) implements Step {}
 
     /** Typed text. */
     record Type(int line, String text) implements Step {}
@@ -109,6 +113,13 @@ public final class KeyScript {
             return bad(file, n, "WAIT needs seconds (e.g. WAIT 2.5), got '" + rest + "'");
           }
         }
+        case "CLICK" -> {
+          Optional<Key> k = Key.parse(rest);
+          if (k.isEmpty()) {
+            return bad(file, n, "CLICK needs a key name, got '" + rest + "'");
+          }
+          steps.add(new Step.Click(n, k.get()));
+        }
         case "HOLD", "RELEASE" -> {
           if (rest.isEmpty()) {
             // HOLD alone is the HOLD key
@@ -147,7 +158,7 @@ public final class KeyScript {
           }
           if (k.isEmpty()) {
             return bad(file, n, "unknown key or command '" + keyText + "' (keys: F1..F5, ENTER, SHIFT+FWD, +X/J1...;"
-                + " commands: TYPE, HOLD, RELEASE, WAIT, SHOW)");
+                + " commands: TYPE, HOLD, RELEASE, CLICK, WAIT, SHOW)");
           }
           steps.add(new Step.Tap(n, k.get(), shift, times));
         }
@@ -190,6 +201,7 @@ public final class KeyScript {
         }
         case Step.Press p -> pendant.press(p.key());
         case Step.Release r -> pendant.release(r.key());
+        case Step.Click c -> pendant.click(c.key());
         case Step.Type t -> pendant.type(t.text());
         case Step.Wait w -> {
           pendant.advance(w.seconds());

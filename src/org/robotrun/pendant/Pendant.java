@@ -53,7 +53,8 @@ public final class Pendant {
   private boolean shiftLatched;
   private boolean keySinceShiftPress;
   private CoordSystem coord = CoordSystem.JOINT;
-  private Key jogKey;
+  /** Whether a jog key went down since the last stop (for the deadman message). */
+  private boolean jogging;
 
   /** The program the EDIT screen and SHIFT+FWD work on ("" before one is chosen). */
   String selectedProgram = "";
@@ -102,7 +103,7 @@ public final class Pendant {
     followExecution();
   }
 
-  /** A key comes up: jog keys stop; SHIFT released with no key between toggles the latch. */
+  /** A key comes up: a held jog key stops; SHIFT released with no key between toggles the latch. */
   public void release(Key k) {
     if (k == Key.SHIFT) {
       shiftHeld = false;
@@ -110,17 +111,29 @@ public final class Pendant {
         shiftLatched = !shiftLatched;
         message = shiftLatched ? "SHIFT latched on (deadman held)" : "SHIFT latch off";
       }
-      if (!shift() && jogKey != null) {
+      if (!shift() && jogging) {
         control.jogStop();
-        jogKey = null;
+        jogging = false;
         message = "Jog stopped: deadman (SHIFT) released";
       }
       return;
     }
-    if (k.isJog() && k == jogKey) {
-      control.jogStop();
-      jogKey = null;
+    if (k.isJog()) {
+      control.jogKeyUp(k.jogAxis(), k.jogSign());
     }
+  }
+
+  /**
+   * A click on an on-screen jog key: latched jogging (the axis runs until clicked again, or the
+   * deadman is released). Other keys: a tap.
+   */
+  public void click(Key k) {
+    if (!k.isJog()) {
+      tap(k);
+      return;
+    }
+    keySinceShiftPress = true;
+    jogDown(k, true);
   }
 
   /** Press and release. */
@@ -144,10 +157,18 @@ public final class Pendant {
     screen.text(this, text);
   }
 
-  /** Advances simulated time; the EDIT cursor follows the executing line. */
+  /** Slice of simulated time between two looks at the executing line. */
+  private static final double FOLLOW_SLICE_SEC = 0.02;
+
+  /** Advances simulated time; the EDIT cursor follows the executing line as it goes. */
   public void advance(double dtSec) {
-    control.advance(dtSec);
-    followExecution();
+    double left = dtSec;
+    while (left > 1e-12) {
+      double dt = Math.min(FOLLOW_SLICE_SEC, left);
+      control.advance(dt);
+      left -= dt;
+      followExecution();
+    }
   }
 
   /** Whether SHIFT is on (held or latched). */
@@ -161,14 +182,18 @@ public final class Pendant {
   }
 
   private void jogPress(Key k) {
+    jogDown(k, false);
+  }
+
+  private void jogDown(Key k, boolean latched) {
     if (!shift()) {
       message = "Hold SHIFT (deadman) to jog";
       return;
     }
-    Result r = control.jogStart(coord, k.jogAxis(), k.jogSign());
+    Result r = control.jogKeyDown(coord, k.jogAxis(), k.jogSign(), latched);
     switch (r) {
       case Result.Ok ok -> {
-        jogKey = k;
+        jogging = true;
         message = ok.message();
       }
       case Result.Refused no -> message = no.reason();
@@ -211,6 +236,8 @@ public final class Pendant {
           frameSelectMenu();
         } else {
           coord = CoordSystem.values()[(coord.ordinal() + 1) % CoordSystem.values().length];
+          control.jogStop();
+          jogging = false;
           message = "Jog coordinates: " + coord;
         }
       }
@@ -272,10 +299,15 @@ public final class Pendant {
 
   private void followExecution() {
     ExecutionStatus st = control.status();
-    if (st.state() != ExecState.IDLE && st.program().equals(editScreen.programName) && st.line() > 0) {
+    // follow while a program is active, and once more when it stops (so the cursor ends where it ended)
+    boolean justStopped = st.state() == ExecState.IDLE && lastFollowed != null && lastFollowed.state() != ExecState.IDLE;
+    if ((st.state() != ExecState.IDLE || justStopped) && st.program().equals(editScreen.programName) && st.line() > 0) {
       editScreen.follow(this, st.line());
     }
+    lastFollowed = st;
   }
+
+  private ExecutionStatus lastFollowed;
 
   private void menu() {
     List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm");
@@ -607,7 +639,7 @@ public final class Pendant {
     int line = st.program().isEmpty() || st.state() == ExecState.IDLE && !st.program().equals(selectedProgram)
         ? (selectedProgram.isEmpty() ? 0 : editScreen.cursorLine(this)) : st.line();
     String state = switch (st.state()) {
-      case IDLE -> "";
+      case IDLE -> "IDLE";
       case RUNNING -> "RUNNING";
       case PAUSED -> "PAUSED";
       case ABORTED -> "ABORTED";

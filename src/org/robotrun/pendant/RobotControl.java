@@ -179,12 +179,17 @@ public interface RobotControl {
   }
 
   /**
-   * Starts jogging axis {@code axis} (1..6: X,Y,Z,W,P,R or J1..J6) in direction {@code sign}
-   * (+1/-1) in {@code coord}. The jog runs while the key is held and the deadman is on.
+   * A jog key goes down: axis 1..6 (X,Y,Z,W,P,R or J1..J6), sign +1/-1, in {@code coord}. Held:
+   * the axis moves until {@link #jogKeyUp}; latched (an on-screen click): the first press turns it
+   * on, a second press of the same key turns it off. Keys of different axes combine. The pendant
+   * only sends this with the deadman (SHIFT) on.
    */
-  Result jogStart(CoordSystem coord, int axis, int sign);
+  Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched);
 
-  /** Stops any jog (key released, deadman released). */
+  /** A held jog key comes up (latched axes go on). */
+  void jogKeyUp(int axis, int sign);
+
+  /** Every jog axis off (deadman released, COORD changed, HOLD). */
   void jogStop();
 
   // ---- execution ---------------------------------------------------------------------------

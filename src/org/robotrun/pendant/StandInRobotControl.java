@@ -58,9 +58,10 @@ public final class StandInRobotControl implements RobotControl {
   private Alarm reportedAlarm;
   private final List<AlarmEntry> history = new ArrayList<>();
 
-  private CoordSystem jogCoord;
-  private int jogAxis;
-  private int jogSign;
+  private CoordSystem jogCoord = CoordSystem.JOINT;
+  /** Jog direction per axis 1..6 (index 0 unused): -1, 0, +1. */
+  private final int[] jogDirection = new int[7];
+  private final boolean[] jogLatched = new boolean[7];
 
   /** The one motion in progress (program motion or MOVE_TO), or null. */
   private Move move;
@@ -248,7 +249,7 @@ public final class StandInRobotControl implements RobotControl {
   // ---- jog ---------------------------------------------------------------------------------
 
   @Override
-  public Result jogStart(CoordSystem coord, int axis, int sign) {
+  public Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched) {
     if (interpreter.state() == Interpreter.State.RUNNING) {
       return Result.refused("Cannot jog while a program runs: HOLD first");
     }
@@ -258,19 +259,52 @@ public final class StandInRobotControl implements RobotControl {
     if (axis < 1 || axis > 6 || Math.abs(sign) != 1) {
       throw new IllegalArgumentException("jog axis " + axis + " sign " + sign);
     }
-    jogCoord = coord;
-    jogAxis = axis;
-    jogSign = sign;
+    if (coord != jogCoord) {
+      jogStop();
+      jogCoord = coord;
+    }
+    if (latched && jogLatched[axis] && jogDirection[axis] == sign) {
+      jogDirection[axis] = 0;
+      jogLatched[axis] = false;
+    } else {
+      jogDirection[axis] = sign;
+      jogLatched[axis] = latched;
+    }
     move = null;
     return Result.ok();
   }
 
   @Override
+  public void jogKeyUp(int axis, int sign) {
+    if (!jogLatched[axis] && jogDirection[axis] == sign) {
+      jogDirection[axis] = 0;
+    }
+  }
+
+  @Override
   public void jogStop() {
-    jogCoord = null;
+    java.util.Arrays.fill(jogDirection, 0);
+    java.util.Arrays.fill(jogLatched, false);
+  }
+
+  private boolean jogging() {
+    for (int d : jogDirection) {
+      if (d != 0) {
+        return true;
+      }
+    }
+    return false;
   }
 
   private void jogTick(double dt) {
+    for (int axis = 1; axis <= 6 && jogging(); axis++) {
+      if (jogDirection[axis] != 0) {
+        jogAxis(axis, jogDirection[axis], dt);
+      }
+    }
+  }
+
+  private void jogAxis(int jogAxis, int jogSign, double dt) {
     double scale = overridePct / 100.0;
     Position.Joint next;
     if (jogCoord == CoordSystem.JOINT) {
@@ -313,7 +347,7 @@ public final class StandInRobotControl implements RobotControl {
   private void jogLimit() {
     int j = ToyKinematics.jointOverLimit(joints);
     raise(new AlarmEntry("MOTN-017", "Limit error (" + (j == 0 ? "jog would pass a joint limit" : "J" + j) + ")", "", 0));
-    jogCoord = null;
+    jogStop();
   }
 
   // ---- execution ---------------------------------------------------------------------------
@@ -350,7 +384,7 @@ public final class StandInRobotControl implements RobotControl {
     if (line < 1 || line > count + (forward ? 0 : 1)) {
       return Result.refused("Line " + line + " is outside " + program + " (1.." + count + ")");
     }
-    jogCoord = null;
+    jogStop();
     Interpreter.State s = interpreter.state();
     if (s == Interpreter.State.RUNNING) {
       return Result.refused("Already running: HOLD first");
@@ -378,7 +412,7 @@ public final class StandInRobotControl implements RobotControl {
   @Override
   public void hold() {
     interpreter.hold();
-    jogCoord = null;
+    jogStop();
     if (move != null && move.handle == 0) {
       move = null;
     }
@@ -470,7 +504,7 @@ public final class StandInRobotControl implements RobotControl {
     // whole ticks; a remainder under half a tick is dropped so WAIT 2.5 means 625 ticks
     long ticks = Math.round(dtSec / TICK_SEC);
     for (long i = 0; i < ticks; i++) {
-      if (jogCoord != null) {
+      if (jogging()) {
         jogTick(TICK_SEC);
       }
       if (move != null && !move.held) {

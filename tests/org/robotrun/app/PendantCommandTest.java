@@ -46,6 +46,14 @@ class PendantCommandTest {
   }
 
   @Test
+  void theDocumentedTourRuns() {
+    Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys");
+    assertThat(r.exitCode()).isEqualTo(0);
+    assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]>5},JMP LBL[1]")
+        .contains("LINE 2    RUNNING").contains("LINE 5    IDLE").contains("R[  1:            ]  = {1}");
+  }
+
+  @Test
   void malformedScriptIsExit2WithFileAndLine(@TempDir Path dir) throws Exception {
     Path keys = dir.resolve("bad.keys");
     Files.writeString(keys, "SELECT\nWAIT later\n");
@@ -66,9 +74,39 @@ class PendantCommandTest {
   }
 
   @Test
+  void programsLoadFromLsFilesAndTheStandInCanBeChosen(@TempDir Path dir) throws Exception {
+    Path ls = dir.resolve("HELLO.LS");
+    Files.writeString(ls, """
+        /PROG  HELLO
+        /ATTR
+        COMMENT = "from a file";
+        /MN
+           1:  R[1]=7 ;
+        /POS
+        /END
+        """);
+    Path keys = dir.resolve("k.keys");
+    Files.writeString(keys, "SELECT\nSHOW\nENTER\nSHIFT+FWD\nWAIT 0.1\nDATA\nSHOW\n");
+    for (String controller : new String[] {"sim", "stand-in"}) {
+      Run r = run("pendant", "--program", ls.toString(), "--controller", controller, "--keys", keys.toString());
+      assertThat(r.exitCode()).as(controller).isEqualTo(0);
+      assertThat(r.out()).contains("HELLO").contains("from a file").contains("R[  1:            ]  = {7}");
+    }
+    Run bad = run("pendant", "--controller", "real", "--keys", keys.toString());
+    assertThat(bad.exitCode()).isEqualTo(2);
+    assertThat(bad.err()).contains("--controller: expected sim or stand-in, got 'real'");
+    Path broken = dir.resolve("BROKEN.LS");
+    Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  FROB ;\n/END\n");
+    Run b = run("pendant", "--program", broken.toString(), "--keys", keys.toString());
+    assertThat(b.exitCode()).isEqualTo(2);
+    assertThat(b.err()).contains("--program: ").contains("BROKEN.LS:");
+  }
+
+  @Test
   void helpSaysWhichControllerItRuns() {
     Run r = run("pendant", "--help");
     assertThat(r.exitCode()).isEqualTo(0);
-    assertThat(r.out()).contains("--keys").contains("--scenario").contains("stand-in controller");
+    assertThat(r.out()).contains("--keys").contains("--scenario").contains("--program").contains("--controller")
+        .contains("simulation's controller").contains("stand-in");
   }
 }

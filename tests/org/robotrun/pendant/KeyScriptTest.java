@@ -30,6 +30,7 @@ class KeyScriptTest {
         I/O
         +%
         J6-
+        CLICK -Y
         """);
     assertThat(r).isInstanceOf(KeyScript.Parsed.Ok.class);
     List<KeyScript.Step> s = ((KeyScript.Parsed.Ok) r).script().steps();
@@ -47,13 +48,14 @@ class KeyScriptTest {
         new KeyScript.Step.Show(13),
         new KeyScript.Step.Tap(14, Key.IO, false, 1),
         new KeyScript.Step.Tap(15, Key.OVERRIDE_UP, false, 1),
-        new KeyScript.Step.Tap(16, Key.JOG_MINUS_6, false, 1));
+        new KeyScript.Step.Tap(16, Key.JOG_MINUS_6, false, 1),
+        new KeyScript.Step.Click(17, Key.JOG_MINUS_2));
   }
 
   @Test
   void malformedLinesNameFileAndLine() {
     assertThat(bad("ENTER\nFROB\n")).isEqualTo("t.keys:2: unknown key or command 'FROB' (keys: F1..F5, ENTER, SHIFT+FWD, "
-        + "+X/J1...; commands: TYPE, HOLD, RELEASE, WAIT, SHOW)");
+        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, WAIT, SHOW)");
     assertThat(bad("WAIT soon")).isEqualTo("t.keys:1: WAIT needs seconds (e.g. WAIT 2.5), got 'soon'");
     assertThat(bad("WAIT -1")).startsWith("t.keys:1: WAIT seconds must be 0..3600");
     assertThat(bad("\n\nTYPE")).isEqualTo("t.keys:3: TYPE needs the text to type");

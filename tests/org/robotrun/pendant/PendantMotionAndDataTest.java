@@ -80,6 +80,45 @@ class PendantMotionAndDataTest {
   }
 
   @Test
+  void latchedJogRunsUntilClickedAgainAndKeysCombine() {
+    run(p, """
+        COORD
+        SHIFT
+        CLICK +X
+        WAIT 0.2
+        """);
+    Position.Cartesian a = control.currentPose(0, 0);
+    assertThat(a.xMm()).isCloseTo(650, within(1e-6));
+    run(p, """
+        CLICK +X
+        WAIT 0.2
+        """);
+    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(650, within(1e-6));
+    // two held keys of different axes move diagonally
+    run(p, """
+        HOLD +X
+        HOLD +Y
+        WAIT 0.2
+        RELEASE +X
+        RELEASE +Y
+        SHIFT
+        """);
+    Position.Cartesian b = control.currentPose(0, 0);
+    assertThat(b.xMm()).isCloseTo(700, within(1e-6));
+    assertThat(b.yMm()).isCloseTo(50, within(1e-6));
+    // a latched axis stops when the deadman goes off
+    run(p, """
+        HOLD SHIFT
+        CLICK -X
+        WAIT 0.2
+        RELEASE SHIFT
+        WAIT 0.2
+        """);
+    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(650, within(1e-6));
+    assertThat(p.lcd().promptLine()).contains("deadman");
+  }
+
+  @Test
   void overrideStepsFineAtTheBottomAndBigWithShift() {
     run(p, "-% *30");
     assertThat(control.overridePct()).isEqualTo(1);

@@ -1,0 +1,297 @@
+package org.robotrun.app;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.motion.JogFrame;
+import org.robotrun.motion.JogState;
+import org.robotrun.pendant.RobotControl;
+import org.robotrun.program.Config;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
+import org.robotrun.robot.FrameTeaching;
+import org.robotrun.robot.FrameTeachingException;
+import org.robotrun.robot.IkResult;
+import org.robotrun.robot.JointConvention;
+import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.CommandResult;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerAlarm;
+import org.robotrun.sim.Simulation;
+
+/**
+ * The pendant's {@link RobotControl} port on a real {@link Controller} of a {@link Simulation}:
+ * the robot model's kinematics, the motion planner, collision-free jog limits and the
+ * project's frame teaching ({@link FrameTeaching}). It lives in {@code app} (not
+ * {@code pendant}) because the controller's API speaks {@code motion} and {@code robot} types,
+ * which DESIGN.md keeps out of the pendant package.
+ */
+public final class SimRobotControl implements RobotControl {
+  private final Simulation simulation;
+  private final Controller controller;
+  private double pendingSec;
+
+  /** Drives {@code controller}; {@link #advance} steps {@code simulation} (which owns it). */
+  public SimRobotControl(Simulation simulation, Controller controller) {
+    this.simulation = Objects.requireNonNull(simulation, "simulation");
+    this.controller = Objects.requireNonNull(controller, "controller");
+    if (!simulation.controllers().contains(controller)) {
+      throw new IllegalArgumentException("controller " + controller.name() + " is not in the simulation");
+    }
+  }
+
+  private static Result result(CommandResult r) {
+    return switch (r) {
+      case CommandResult.Ok ok -> new Result.Ok(ok.message());
+      case CommandResult.Refused no -> new Result.Refused(no.reason());
+    };
+  }
+
+  // ---- programs, data, frames ----------------------------------------------------------------
+
+  @Override
+  public List<String> programNames() {
+    return controller.programNames();
+  }
+
+  @Override
+  public Optional<Program> program(String name) {
+    return controller.program(name);
+  }
+
+  @Override
+  public void saveProgram(Program program) {
+    controller.saveProgram(program);
+  }
+
+  @Override
+  public Result deleteProgram(String name) {
+    return result(controller.deleteProgram(name));
+  }
+
+  @Override
+  public Registers registers() {
+    return controller.registers();
+  }
+
+  @Override
+  public String comment(CommentTable table, int index) {
+    return controller.registerComment(table.name(), index);
+  }
+
+  @Override
+  public void setComment(CommentTable table, int index, String comment) {
+    controller.setRegisterComment(table.name(), index, comment);
+  }
+
+  @Override
+  public Position.Cartesian frame(FrameKind kind, int number) {
+    return controller.frames().position(kind, number);
+  }
+
+  @Override
+  public void setFrame(FrameKind kind, int number, Position.Cartesian value) {
+    controller.frames().setPosition(kind, number, value);
+  }
+
+  @Override
+  public String frameComment(FrameKind kind, int number) {
+    return controller.frames().comment(kind, number);
+  }
+
+  @Override
+  public void setFrameComment(FrameKind kind, int number, String comment) {
+    controller.frames().setComment(kind, number, comment);
+  }
+
+  @Override
+  public int activeFrame(FrameKind kind) {
+    return controller.frames().active(kind);
+  }
+
+  @Override
+  public void selectFrame(FrameKind kind, int number) {
+    controller.frames().select(kind, number);
+  }
+
+  @Override
+  public TeachResult teachFrame(FrameKind kind, int number, TeachMethod method, List<Position.Joint> points) {
+    if (method.kind() != kind) {
+      return new TeachResult.Failed(method.title() + " teaches " + method.kind() + " frames, not " + kind);
+    }
+    if (points.size() != method.pointNames().size()) {
+      return new TeachResult.Failed(method.title() + " needs " + method.pointNames().size() + " points, got " + points.size());
+    }
+    // flange poses X_WF for tool methods; TCP positions of the active tool in WORLD for user methods
+    List<Transform> X_WF = points.stream().map(q -> controller.toCartesian(q, 0, 0).toXyzwpr().toTransform()).toList();
+    int tool = activeFrame(FrameKind.TOOL);
+    List<Vec3> p_W = points.stream().map(q -> controller.toCartesian(q, 0, tool).toXyzwpr().position()).toList();
+    Transform frame;
+    try {
+      frame = switch (method) {
+        case TOOL_THREE_POINT -> FrameTeaching.toolThreePoint(X_WF);
+        case TOOL_SIX_POINT_XZ, TOOL_SIX_POINT_XY -> FrameTeaching.toolSixPoint(X_WF.subList(0, 3), X_WF.get(3),
+            X_WF.get(4), X_WF.get(5), method == TeachMethod.TOOL_SIX_POINT_XZ
+                ? FrameTeaching.SixPointVariant.XZ : FrameTeaching.SixPointVariant.XY);
+        case USER_THREE_POINT -> FrameTeaching.userThreePoint(p_W.get(0), p_W.get(1), p_W.get(2));
+        case USER_FOUR_POINT -> FrameTeaching.userFourPoint(p_W.get(0), p_W.get(1), p_W.get(2), p_W.get(3));
+        case DIRECT_ENTRY_TOOL, DIRECT_ENTRY_USER -> throw new FrameTeachingException("-", "direct entry has no points");
+      };
+    } catch (FrameTeachingException e) {
+      return new TeachResult.Failed(e.getMessage());
+    }
+    Position.Cartesian value = Position.Cartesian.of(Xyzwpr.fromTransform(frame), Config.DEFAULT);
+    setFrame(kind, number, value);
+    return new TeachResult.Taught(value, "");
+  }
+
+  // ---- position and jog ----------------------------------------------------------------------
+
+  @Override
+  public Position.Joint currentJoints() {
+    return controller.currentJoints();
+  }
+
+  @Override
+  public Position.Cartesian currentPose(int userFrame, int toolFrame) {
+    return controller.currentPose(userFrame, toolFrame);
+  }
+
+  @Override
+  public Conversion<Position.Joint> toJoints(Position.Cartesian pose, int userFrame, int toolFrame) {
+    return switch (controller.toJoints(pose, userFrame, toolFrame)) {
+      case IkResult.Solved s -> {
+        RobotModel model = controller.model();
+        double[] p = JointConvention.kinematicToPendant(model, s.q());
+        yield new Conversion.Ok<>(new Position.Joint(Math.toDegrees(p[0]), Math.toDegrees(p[1]), Math.toDegrees(p[2]),
+            Math.toDegrees(p[3]), Math.toDegrees(p[4]), Math.toDegrees(p[5])));
+      }
+      case IkResult.Unreachable u -> new Conversion.Failed<>(u.message());
+    };
+  }
+
+  @Override
+  public Position.Cartesian toCartesian(Position.Joint joints, int userFrame, int toolFrame) {
+    return controller.toCartesian(joints, userFrame, toolFrame);
+  }
+
+  @Override
+  public Result moveTo(Position target, int userFrame, int toolFrame) {
+    return result(controller.moveTo(target, userFrame, toolFrame));
+  }
+
+  @Override
+  public Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched) {
+    controller.setCoordSystem(JogFrame.valueOf(coord.name()));
+    return result(controller.jogKeyDown(axis, sign, latched ? JogState.Press.LATCHED : JogState.Press.HELD));
+  }
+
+  @Override
+  public void jogKeyUp(int axis, int sign) {
+    controller.jogKeyUp(axis, sign);
+  }
+
+  @Override
+  public void jogStop() {
+    controller.jogStop();
+  }
+
+  // ---- execution and alarms ------------------------------------------------------------------
+
+  @Override
+  public int overridePct() {
+    return controller.overridePct();
+  }
+
+  @Override
+  public void setOverridePct(int percent) {
+    controller.setOverridePct(Math.max(1, Math.min(100, percent)));
+  }
+
+  @Override
+  public boolean stepMode() {
+    return controller.stepMode();
+  }
+
+  @Override
+  public void setStepMode(boolean on) {
+    controller.setStepMode(on);
+  }
+
+  @Override
+  public Result run(String program, int line, boolean forward) {
+    return result(controller.run(program, line, forward));
+  }
+
+  @Override
+  public void hold() {
+    controller.hold();
+  }
+
+  @Override
+  public void abort() {
+    controller.abort();
+  }
+
+  @Override
+  public void reset() {
+    controller.reset();
+  }
+
+  @Override
+  public ExecutionStatus status() {
+    org.robotrun.sim.ExecutionStatus s = controller.status();
+    ExecState state = switch (s.state()) {
+      case IDLE -> ExecState.IDLE;
+      case RUNNING -> ExecState.RUNNING;
+      case PAUSED -> ExecState.PAUSED;
+      case ALARMED -> ExecState.ABORTED;
+    };
+    return new ExecutionStatus(s.program(), s.line(), state);
+  }
+
+  private static AlarmEntry entry(ControllerAlarm a) {
+    return new AlarmEntry(a.code(), a.message(), a.program(), a.line());
+  }
+
+  @Override
+  public Optional<AlarmEntry> activeAlarm() {
+    List<ControllerAlarm> active = controller.activeAlarms();
+    // the newest active alarm is the one a pendant shows on its top line
+    return active.isEmpty() ? Optional.empty() : Optional.of(entry(active.get(active.size() - 1)));
+  }
+
+  @Override
+  public List<AlarmEntry> alarmHistory() {
+    return controller.alarmHistory().stream().map(SimRobotControl::entry).toList();
+  }
+
+  @Override
+  public void clearAlarmHistory() {
+    controller.clearAlarmHistory();
+  }
+
+  @Override
+  public void raiseAlarm(AlarmEntry alarm) {
+    controller.raiseAlarm(alarm.code(), alarm.message());
+  }
+
+  /** Steps the simulation in whole ticks; a remainder under one tick carries over to the next call. */
+  @Override
+  public void advance(double dtSec) {
+    if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
+      throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);
+    }
+    pendingSec += dtSec;
+    double tick = simulation.tickSec();
+    while (pendingSec >= tick - 1e-12) {
+      simulation.step();
+      pendingSec -= tick;
+    }
+  }
+}

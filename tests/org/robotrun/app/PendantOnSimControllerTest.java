@@ -1,0 +1,238 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import java.util.List;
+import java.util.Locale;
+import org.junit.jupiter.api.Test;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.pendant.KeyScript;
+import org.robotrun.pendant.Pendant;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.Simulation;
+
+/**
+ * The issue's key-sequence scenarios on the real controller (default cell: HOME, UTOOL 1 a
+ * 100 mm pointer, UFRAME 1 = WORLD), read back from the LCD text.
+ */
+class PendantOnSimControllerTest {
+  private final Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+  private final Controller controller = sim.controllers().get(0);
+  private final SimRobotControl control = new SimRobotControl(sim, controller);
+  private final Pendant p = new Pendant(control, new LsLineParser());
+
+  private void keys(String script) {
+    KeyScript s = switch (KeyScript.parse("test.keys", script.lines().toList())) {
+      case KeyScript.Parsed.Ok ok -> ok.script();
+      case KeyScript.Parsed.Bad bad -> throw new AssertionError(bad.error().display());
+    };
+    s.run(p, text -> { });
+  }
+
+  private String body() {
+    return String.join("\n", p.lcd().body());
+  }
+
+  private void createWithThreePoints() {
+    keys("""
+        SELECT
+        F1
+        TYPE PICK1
+        ENTER
+        SHIFT+F1
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        RELEASE SHIFT
+        SHIFT+F1
+        HOLD SHIFT
+        HOLD +Y/J2
+        WAIT 0.5
+        RELEASE +Y/J2
+        RELEASE SHIFT
+        SHIFT+F1
+        """);
+  }
+
+  @Test
+  void createRecordEditInsertRunAndStepBack() {
+    createWithThreePoints();
+    keys("""
+        UP
+        RIGHT
+        ENTER
+        2
+        RIGHT *2
+        TYPE 200
+        ENTER
+        RIGHT *2
+        TYPE 50
+        ENTER
+        DOWN *2
+        F2
+        1
+        2
+        DOWN
+        F2
+        3
+        1
+        TYPE R[1]>5
+        ENTER
+        """);
+    assertThat(body()).contains("L P[2] 200mm/sec CNT50").contains("4:  R[1]=R[1]+1").contains("IF {R[1]>5},JMP LBL[1]");
+    Position.Cartesian p3 = (Position.Cartesian) control.program("PICK1").orElseThrow().position(3).orElseThrow().position();
+    keys("""
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        WAIT 0.2
+        """);
+    assertThat(p.lcd().statusLine()).contains("RUNNING");
+    keys("WAIT 10");
+    assertThat(p.lcd().statusLine()).contains("LINE 5").contains("IDLE");
+    assertThat(p.lcd().alarmLine()).isBlank();
+    assertThat(control.registers().number(1)).isEqualTo(1.0);
+    Position.Cartesian here = control.currentPose(1, 1);
+    assertThat(here.xMm()).isCloseTo(p3.xMm(), within(0.01));
+    assertThat(here.yMm()).isCloseTo(p3.yMm(), within(0.01));
+
+    // SHIFT+BWD from line 4 backs out of line 3: the robot returns to P[2]
+    Position.Cartesian p2 = (Position.Cartesian) control.program("PICK1").orElseThrow().position(2).orElseThrow().position();
+    keys("""
+        ITEM
+        TYPE 4
+        ENTER
+        SHIFT+BWD
+        WAIT 10
+        """);
+    here = control.currentPose(1, 1);
+    assertThat(here.xMm()).isCloseTo(p2.xMm(), within(0.01));
+    assertThat(here.yMm()).isCloseTo(p2.yMm(), within(0.01));
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+  }
+
+  @Test
+  void teachUserFrameByThreePoints() {
+    keys("""
+        MENU
+        5
+        F1
+        2
+        DOWN
+        F2
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        COORD
+        HOLD SHIFT
+        HOLD +X
+        WAIT 0.4
+        RELEASE +X
+        RELEASE SHIFT
+        SHIFT+F5
+        HOLD SHIFT
+        HOLD +Y
+        WAIT 0.4
+        RELEASE +Y
+        RELEASE SHIFT
+        """);
+    Position.Cartesian yPoint = control.currentPose(0, 1);
+    keys("SHIFT+F5");
+    assertThat(p.lcd().promptLine()).contains("User Frame 2 taught");
+    // origin at the first point (the TCP there), X along world X: the frame is world-aligned
+    Position.Cartesian uf2 = control.frame(FrameKind.USER, 2);
+    assertThat(uf2.wDeg()).isCloseTo(0, within(0.05));
+    assertThat(uf2.pDeg()).isCloseTo(0, within(0.05));
+    assertThat(uf2.rDeg()).isCloseTo(0, within(0.05));
+    assertThat(uf2.zMm()).isCloseTo(yPoint.zMm(), within(0.05));
+    assertThat(body()).contains(String.format(Locale.ROOT, "Taught: X %.1f", uf2.xMm())).contains("W 0.0 P 0.0 R 0.0");
+  }
+
+  @Test
+  void positionRegisterInJointForm() {
+    keys("""
+        DATA
+        F1
+        2
+        SHIFT+F3
+        F2
+        F5
+        2
+        DOWN
+        TYPE 30
+        ENTER
+        """);
+    Position pr = control.registers().position(1);
+    assertThat(pr).isInstanceOf(Position.Joint.class);
+    assertThat(pr.element(2)).isEqualTo(30.0);
+    assertThat(pr.element(5)).isCloseTo(-90, within(1e-6));
+    assertThat(body()).contains("J2 {    30.000} deg").contains("J5    -90.000 deg");
+  }
+
+  @Test
+  void jogInWorldChangesPosn() {
+    keys("""
+        POSN
+        COORD
+        """);
+    double x0 = control.currentPose(0, 1).xMm();
+    double z0 = control.currentPose(0, 1).zMm();
+    String before = body();
+    keys("""
+        HOLD SHIFT
+        HOLD +X
+        WAIT 0.5
+        RELEASE +X
+        RELEASE SHIFT
+        WAIT 0.5
+        """);
+    Position.Cartesian after = control.currentPose(0, 1);
+    assertThat(after.xMm()).isGreaterThan(x0 + 10);
+    assertThat(after.zMm()).isCloseTo(z0, within(0.1));
+    assertThat(body()).isNotEqualTo(before).contains(String.format(Locale.ROOT, "X %9.3f mm", after.xMm()));
+  }
+
+  @Test
+  void alarmOnTopLineClearedByReset() {
+    keys("""
+        SELECT
+        F1
+        TYPE BADJMP
+        ENTER
+        F2
+        5
+        2
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        WAIT 0.1
+        """);
+    assertThat(p.lcd().alarmLine()).contains("(BADJMP, 1)").contains("LBL[1]");
+    keys("POSN");
+    assertThat(p.lcd().alarmLine()).contains("(BADJMP, 1)");
+    keys("RESET");
+    assertThat(p.lcd().alarmLine()).isBlank();
+  }
+
+  @Test
+  void uncommentUsesTheLsReaderForLinesFromFiles() {
+    controller.saveProgram(org.robotrun.program.Program.of("FROMFILE", List.of(new Instruction.CommentedOut("R[2]=R[2]*3"))));
+    keys("""
+        SELECT
+        ENTER
+        NEXT
+        F5
+        """);
+    assertThat(control.program("FROMFILE").orElseThrow().line(1)).isInstanceOf(Instruction.AssignRegister.class);
+    assertThat(body()).contains("R[2]=R[2]*3").doesNotContain("//");
+  }
+}
