@@ -1,21 +1,28 @@
 package org.robotrun.app;
 
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.math.Angles;
 import org.robotrun.math.Xyzwpr;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.StandInRobotControl;
-import org.robotrun.program.Position;
+import org.robotrun.program.Program;
 import org.robotrun.render.GlUnavailableException;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
-import org.robotrun.sim.SceneSnapshots;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.ScenarioCell;
+import org.robotrun.sim.Simulation;
 import org.robotrun.ui.PendantKeyboard;
 import org.robotrun.ui.PendantPanel;
 import org.robotrun.ui.RobotStatusPanel;
 import org.robotrun.ui.SimulatorWindow;
+import org.robotrun.world.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -35,40 +42,57 @@ public final class GuiCommand implements Callable<Integer> {
   @Option(names = "--height", defaultValue = "800", description = "Window height (default: ${DEFAULT-VALUE}).")
   int height = 800;
 
+  @Option(names = "--scenario", paramLabel = "FILE.json",
+      description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs). Default: the default robot in an empty cell.")
+  Path scenario;
+
   @Override
   public Integer call() {
     RenderCommand.checkSize("--width", width);
     RenderCommand.checkSize("--height", height);
-    RobotModel robot = RobotDefinitions.defaultRobot();
-    Pendant pendant = new Pendant(new StandInRobotControl());
+    Simulation sim;
+    List<Program> programs = new ArrayList<>();
+    Scenario sc = null;
+    if (scenario == null) {
+      sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+    } else {
+      sc = ScenarioFiles.load(scenario);
+      try {
+        sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+        programs.addAll(RunCommand.loadPrograms(sc.programs()));
+      } catch (IllegalArgumentException e) {
+        throw new UserError(scenario + ": " + e.getMessage());
+      } catch (IOException e) {
+        throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
+      }
+    }
+    Controller controller = sim.controllers().get(0);
+    SimRobotControl control = new SimRobotControl(sim, controller);
+    programs.forEach(control::saveProgram);
+    Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);
-    try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + robot.displayName(), width, height)) {
+    RobotModel robot = controller.model();
+    try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height)) {
+      if (sc != null) {
+        sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
+      }
       w.setKeyHandler(new PendantKeyboard(pendant)::onKey);
       double[] last = {0};
       w.run(t -> {
+            // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
             pendant.advance(Math.min(0.1, t - last[0]));
             last[0] = t;
-            return SceneSnapshots.singleRobot(robot, kinematicJoints(robot, pendant), t);
+            return sim.snapshot().scene();
           },
           (fw, fh) -> {
-            double[] q = kinematicJoints(robot, pendant);
-            RobotStatusPanel.draw("Robot", Angles.toDegrees(JointConvention.kinematicToPendant(robot, q)),
-                Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
+            double[] q = controller.jointsRad();
+            double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
+            RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
             pendantPanel.draw(fw, fh);
           });
     } catch (GlUnavailableException e) {
       throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
     }
     return Main.EXIT_OK;
-  }
-
-  /** The controller's joints (pendant degrees) as kinematic radians. */
-  private static double[] kinematicJoints(RobotModel robot, Pendant pendant) {
-    Position.Joint j = pendant.control().currentJoints();
-    double[] deg = new double[RobotModel.DOF];
-    for (int i = 0; i < deg.length; i++) {
-      deg[i] = j.element(i + 1);
-    }
-    return JointConvention.pendantToKinematic(robot, Angles.toRadians(deg));
   }
 }
