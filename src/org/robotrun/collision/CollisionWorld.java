@@ -26,6 +26,8 @@ public final class CollisionWorld {
   private double[] boxes = new double[16 * Obb.STRIDE];
   /** Axis-aligned bounds per body: minX, maxX, minY, maxY, minZ, maxZ. */
   private double[] bounds = new double[16 * 6];
+  /** {@link #bounds} copied into {@link #order}'s order at each update. */
+  private double[] sortedBounds = new double[16 * 6];
   /** Body handles sorted by minX (kept between updates). */
   private int[] order = new int[16];
   private boolean[] touching = new boolean[16];
@@ -120,22 +122,24 @@ public final class CollisionWorld {
     int n = bodies.size();
     computeBounds(n);
     sortByMinX(n);
+    gatherSortedBounds(n);
     Arrays.fill(touching, 0, n, false);
     contactCount = 0;
+    double[] sb = sortedBounds;
     for (int s = 0; s < n; s++) {
-      int i = order[s];
-      int bi = i * 6;
-      double maxX = bounds[bi + 1];
+      int o = s * 6;
+      double maxX = sb[o + 1], minY = sb[o + 2], maxY = sb[o + 3], minZ = sb[o + 4], maxZ = sb[o + 5];
+      // Candidates follow in minX order; the first one starting beyond maxX ends the run.
       for (int u = s + 1; u < n; u++) {
-        int j = order[u];
-        int bj = j * 6;
-        if (bounds[bj] > maxX) {
+        int q = u * 6;
+        if (sb[q] > maxX) {
           break;
         }
-        if (bounds[bj + 2] > bounds[bi + 3] || bounds[bi + 2] > bounds[bj + 3]
-            || bounds[bj + 4] > bounds[bi + 5] || bounds[bi + 4] > bounds[bj + 5]) {
+        if (sb[q + 2] > maxY || minY > sb[q + 3] || sb[q + 4] > maxZ || minZ > sb[q + 5]) {
           continue;
         }
+        int i = order[s];
+        int j = order[u];
         int lo = Math.min(i, j);
         int hi = Math.max(i, j);
         if (mayCollide(lo, hi) && SeparatingAxisTest.overlap(boxes, i, boxes, j)) {
@@ -144,6 +148,16 @@ public final class CollisionWorld {
       }
     }
     return contactCount;
+  }
+
+  // The bounds in sweep order, so the inner loop reads memory front to back.
+  private void gatherSortedBounds(int n) {
+    if (sortedBounds.length < n * 6) {
+      sortedBounds = new double[order.length * 6];
+    }
+    for (int s = 0; s < n; s++) {
+      System.arraycopy(bounds, order[s] * 6, sortedBounds, s * 6, 6);
+    }
   }
 
   /**
