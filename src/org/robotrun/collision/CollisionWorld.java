@@ -14,8 +14,9 @@ import org.robotrun.math.Transform;
  * the order from the last tick is repaired by insertion sort, which is linear when little
  * moved. Pairs whose bounds overlap in x, y and z and that the {@link PairFilter} allows go to
  * the {@link SeparatingAxisTest}. The filter's answers are cached per pair (one byte per pair
- * of handles, so n² bytes: 47 KB for 216 bodies) until {@link #setFilter} is called again. Nothing is allocated by {@code setPose} or {@code update}
- * once the contact buffer has grown to its working size.
+ * of handles, so n² bytes: 47 KB for 216 bodies) until {@link #setFilter} is called again.
+ * Once every pair has been asked and the contact buffer has grown to its working size,
+ * {@code setPose} and {@code update} allocate nothing.
  *
  * <p>Not thread-safe: one simulation owns one world.
  */
@@ -103,6 +104,7 @@ public final class CollisionWorld {
     Transform b = X_LB;
     int o = handle * Obb.STRIDE;
     double[] f = boxes;
+    // X_WB = X_WL · X_LB: centre p_W = R_WL·p_LB + p_WL, axes R_WB = R_WL·R_LB.
     f[o] = a.r00() * b.x() + a.r01() * b.y() + a.r02() * b.z() + a.x();
     f[o + 1] = a.r10() * b.x() + a.r11() * b.y() + a.r12() * b.z() + a.y();
     f[o + 2] = a.r20() * b.x() + a.r21() * b.y() + a.r22() * b.z() + a.z();
