@@ -20,8 +20,8 @@ import picocli.CommandLine.Model.CommandSpec;
     name = "broadphase",
     mixinStandardHelpOptions = true,
     description = {
-      "Time one collision update (sort-and-sweep broad phase, pair filter, separating-axis test)",
-      "on a synthetic cell of 2 robots x 8 boxes and 200 objects, or on a scenario's cell;",
+      "Time one collision update (sort-and-sweep broad phase, pair filter, SAT) on a",
+      "synthetic cell of 2 robots x 8 boxes and 200 objects, or on a scenario's cell;",
       "prints the median per tick."
     })
 public final class BenchBroadPhaseCommand implements Runnable {
