@@ -100,10 +100,14 @@ public final class BenchCollisionCommand implements Runnable {
   }
 
   private double time(ObbPairsCsv.Pairs pairs, boolean[] overlap, BenchClock clock) {
-    // Warm up for at least ~1 s of work (or 50 passes) so the JIT has compiled the test.
+    // Warm up with at least 2 million tests and half a second (at most 5 s), so that the JIT's
+    // optimised code is in place even when the compiler thread has to wait for a core.
     long warmStart = System.nanoTime();
-    for (int pass = 0; pass < 50 && System.nanoTime() - warmStart < 1_000_000_000L; pass++) {
+    long tested = 0;
+    while ((tested < 2_000_000 || System.nanoTime() - warmStart < 500_000_000L)
+        && System.nanoTime() - warmStart < 5_000_000_000L) {
       pass(pairs, overlap);
+      tested += overlap.length;
     }
     long[] ns = new long[repeat];
     for (int r = 0; r < repeat; r++) {
