@@ -2,6 +2,7 @@ package org.robotrun.robot;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.robotrun.math.Transform;
 
 /**
@@ -190,16 +191,16 @@ public final class ClosedFormIk {
    * if so, else why not. Cheaper than a solve (no result, no FK check); for other solvers'
    * quick rejection of unreachable targets.
    */
-  public java.util.Optional<IkResult.Unreachable> reachability(double[] X_BF) {
+  public Optional<IkResult.Unreachable> reachability(double[] X_BF) {
     System.arraycopy(X_BF, 0, target, 0, 12);
     int valid = solveBase(target, 0);
     if (valid == 0) {
-      return java.util.Optional.of(outOfReach());
+      return Optional.of(outOfReach());
     }
     for (int i = 0; i < 6; i++) {
       cand[i] = 0;
     }
-    return nearest(valid, cand) ? java.util.Optional.empty() : java.util.Optional.of(limitsOnly());
+    return nearest(valid, cand) ? Optional.empty() : Optional.of(limitsOnly());
   }
 
   /** Puts into {@link #best} the in-limit variant nearest to {@code qCurrent}; false if none. */

@@ -114,12 +114,13 @@ public final class NumericIk {
     this.reachCheck = model.opw().map(p -> new ClosedFormIk(model));
     this.lower = model.lowerLimits();
     this.upper = model.upperLimits();
-    // Reach sphere: J2's origin (at q1 = 0) plus every later offset, flange included.
+    // Reach: no point is farther from the circle J2's origin sweeps about the J1 axis than the
+    // sum of the offsets from J2 on, flange included (a loose but safe bound for any arm).
     Transform j2 = model.joint(0).X_PJ().compose(model.joint(1).X_PJ());
     shoulder[0] = j2.x();
     shoulder[1] = j2.y();
     shoulder[2] = j2.z();
-    double r = Math.hypot(j2.x(), j2.y());
+    double r = 0;
     for (int i = 2; i < RobotModel.DOF; i++) {
       r += model.joint(i).X_PJ().translationVector().norm();
     }
@@ -153,9 +154,9 @@ public final class NumericIk {
     for (int attempt = 0; attempt <= SEEDS; attempt++) {
       if (attempt == 1) {
         // The start did not lead there: before restarting, reject what cannot be reached.
-        IkResult.Unreachable early = precheck();
-        if (early != null) {
-          return early;
+        Optional<IkResult.Unreachable> early = precheck();
+        if (early.isPresent()) {
+          return early.get();
         }
       }
       startFrom(attempt, qStart);
@@ -367,20 +368,21 @@ public final class NumericIk {
     }
   }
 
-  private IkResult.Unreachable precheck() {
+  /** Why the target cannot be reached, if that is known without iterating. */
+  private Optional<IkResult.Unreachable> precheck() {
     if (reachCheck.isPresent()) {
       // Only the verdict is used: the numeric solve below never sees the closed-form joints.
-      return reachCheck.get().reachability(target).orElse(null);
+      return reachCheck.get().reachability(target);
     }
     double dx = target[9], dy = target[10], dz = target[11] - shoulder[2];
     double horizontal = Math.sqrt(dx * dx + dy * dy);
     double d = Math.hypot(horizontal - Math.hypot(shoulder[0], shoulder[1]), dz);
     if (d > reachRadiusMm) {
-      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
+      return Optional.of(new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
           "position (%.1f, %.1f, %.1f) mm is %.0f mm from the shoulder, beyond the %.0f mm reach",
-          target[9], target[10], target[11], d, reachRadiusMm));
+          target[9], target[10], target[11], d, reachRadiusMm)));
     }
-    return null;
+    return Optional.empty();
   }
 
   private IkResult solved(int iterations) {
