@@ -13,13 +13,15 @@ import org.robotrun.math.Transform;
  *
  * <p>Method. The error is {@code e = [(p_d − p)/L; log(R_d·Rᵀ)]} (position scaled by a
  * characteristic length L so millimetres and radians weigh alike). Each step solves
- * {@code (Jsᵀ·Js + λI)·Δq = Jsᵀ·e} with {@code λ = ½|e|² + λ0}: the damping follows the error,
- * after Sugihara, "Solvability-unconcerned inverse kinematics by the Levenberg–Marquardt
+ * {@code (Jsᵀ·Js + λI)·Δq = Jsᵀ·e} with {@code λ = μ·½|e|² + λ0}: the damping follows the
+ * error, after Sugihara, "Solvability-unconcerned inverse kinematics by the Levenberg–Marquardt
  * method" (IEEE T-RO 2011), so far from the target the step is short and steady and near it the
- * solve becomes Gauss–Newton with quadratic convergence. An attempt is abandoned when the error
- * stops falling (local minimum, often pinned at a limit) or after a per-attempt iteration
- * budget; the next seed then starts: the caller's start, then seeds spread over the joint
- * ranges (a Halton sequence) with J1 turned toward the target, front side first.
+ * solve becomes Gauss–Newton with quadratic convergence. A joint at a limit that the step would
+ * push further out is taken out of the step (its column dropped) so the others make up for it.
+ * An attempt is abandoned when the error stops falling (local minimum, often pinned at a limit)
+ * or after a per-attempt iteration budget; the next seed then starts: the caller's start, then
+ * 64 seeds spread over the joint ranges (a Halton sequence), two of every three with J1 turned
+ * toward or away from the target, with twins across J1's limit gap.
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
