@@ -173,6 +173,9 @@ public final class ClosedFormIk {
 
   /** As {@link #solveNearest(Transform, double[])} for a packed pose. */
   public IkResult solveNearest(double[] X_BF, double[] qCurrent) {
+    if (qCurrent.length != RobotModel.DOF) {
+      throw new IllegalArgumentException("expected 6 current joint values, got " + qCurrent.length);
+    }
     if (X_BF != target) {
       System.arraycopy(X_BF, 0, target, 0, 12);
     }

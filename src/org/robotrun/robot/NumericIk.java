@@ -147,6 +147,9 @@ public final class NumericIk {
   }
 
   private IkResult solvePacked(double[] qStart) {
+    if (qStart.length != RobotModel.DOF) {
+      throw new IllegalArgumentException("expected 6 start joint values, got " + qStart.length);
+    }
     long t0 = -1;
     double invL = 1 / settings.lengthScaleMm();
     double tolP = settings.positionToleranceMm() * invL;
