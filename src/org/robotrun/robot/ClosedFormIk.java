@@ -29,7 +29,8 @@ import org.robotrun.math.Transform;
  *       The two J1 solutions differ by 180° (b = 0), so one is T and one B.
  * </ul>
  * So the eight solutions map one to one onto the eight flag triples (a test checks this on
- * every reference pose). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
+ * every reference pose, and another checks each flag against its geometric meaning from the
+ * link frames: the wrist centre in link 1's and link 2's frames). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
  * J1 when its range exceeds ±180°) get every ±2π variant inside the limits.
  *
  * <p>Not thread-safe (scratch arrays); allocation-free apart from the result object.
