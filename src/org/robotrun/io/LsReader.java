@@ -172,8 +172,17 @@ public final class LsReader {
               }
             }
           }
-          default -> diags.add(Diagnostic.warning(file, headerLine,
-              "not supported: section " + header + " (its " + (end - start) + " lines are ignored)"));
+          default -> {
+            // Controllers write an empty /APPL into most files; only content is worth a word.
+            int content = 0;
+            for (int k = start; k < end; k++) {
+              content += lines[k].isBlank() ? 0 : 1;
+            }
+            if (content > 0) {
+              diags.add(Diagnostic.warning(file, headerLine,
+                  "not supported: section " + header + " (its " + content + " lines are ignored)"));
+            }
+          }
         }
         if (sawEnd) {
           break;
