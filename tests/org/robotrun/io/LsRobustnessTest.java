@@ -127,6 +127,15 @@ class LsRobustnessTest {
   }
 
   @Test
+  void aMegabyteLineGivesAShortMessage() {
+    String huge = "X".repeat(1_000_000);
+    LsReadResult r = LsReader.parse("h.ls", "/PROG  H\n/MN\n   1:  R[1:" + huge + "]=" + huge + " ;\n/POS\n/END\n");
+    assertThat(messages(r)).containsExactly(
+        "h.ls:3: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found '"
+            + "X".repeat(40) + "...'");
+  }
+
+  @Test
   void unreadableFilesAreIoExceptionsNotDiagnostics() {
     org.assertj.core.api.Assertions.assertThatThrownBy(() -> LsReader.read(Path.of("tests/resources/programs/NOPE.LS")))
         .isInstanceOf(IOException.class);
