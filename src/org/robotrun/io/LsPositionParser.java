@@ -295,7 +295,7 @@ final class LsPositionParser extends LsTokenCursor {
     try {
       return Integer.parseInt(t.text());
     } catch (NumberFormatException e) {
-      throw error(t, "number " + t.text() + " is too large");
+      throw error(t, "number " + LsToken.clip(t.text()) + " is too large");
     }
   }
 }

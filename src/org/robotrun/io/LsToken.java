@@ -70,7 +70,7 @@ public record LsToken(Kind kind, String text, int line, int column) {
   }
 
   /** Messages quote at most 40 characters of a token, however long the line. */
-  private static String clip(String s) {
+  static String clip(String s) {
     return s.length() <= 40 ? s : s.substring(0, 40) + "...";
   }
 
