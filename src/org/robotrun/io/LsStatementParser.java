@@ -150,7 +150,7 @@ final class LsStatementParser extends LsTokenCursor {
       return motion();
     }
     if (w.startsWith("$")) {
-      throw error("not supported: system variable assignment (" + t.text() + ")");
+      throw error("not supported: system variable assignment (" + LsToken.clip(t.text()) + ")");
     }
     next();
     return switch (w) {
@@ -248,7 +248,7 @@ final class LsStatementParser extends LsTokenCursor {
     if (name != null) {
       return error(t, "not supported: " + name);
     }
-    return error(t, "unknown statement '" + t.text()
+    return error(t, "unknown statement '" + LsToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
 
@@ -318,7 +318,7 @@ final class LsStatementParser extends LsTokenCursor {
   private Instruction call() {
     LsToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
-      throw error(name, "'" + name.text() + "' is not a program name: expected letters, digits and '_', starting with a letter");
+      throw error(name, "'" + LsToken.clip(name.text()) + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
     List<Expr> args = new ArrayList<>();
     if (peek().is(Kind.LPAREN)) {
@@ -591,9 +591,9 @@ final class LsStatementParser extends LsTokenCursor {
             throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
           }
           if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
-            throw error(t, "not supported: motion option " + t.text() + " (TIME BEFORE/AFTER, distance before)");
+            throw error(t, "not supported: motion option " + LsToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
           }
-          throw error(t, "not supported: motion option '" + t.text()
+          throw error(t, "not supported: motion option '" + LsToken.clip(t.text())
               + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
         }
       }
@@ -745,7 +745,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return new Expr.IntConst(Integer.parseInt(s));
     } catch (NumberFormatException e) {
-      throw error(t, "integer " + s + " is too large: expected at most " + Integer.MAX_VALUE);
+      throw error(t, "integer " + LsToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
     }
   }
 
@@ -881,7 +881,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return Integer.parseInt(digits);
     } catch (NumberFormatException e) {
-      throw error(t, "number " + digits + " is too large");
+      throw error(t, "number " + LsToken.clip(digits) + " is too large");
     }
   }
 

@@ -346,11 +346,11 @@ class LsReaderTest {
 
   @Test
   void sectionsAreCheckedAndExtraSectionsFlagged() {
-    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
+    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
         .containsExactly(
             "s.ls:1: warning: not supported: program sub-type 'Macro' (read as a normal program)",
-            "s.ls:3: warning: not supported: section /APPL (its 1 lines are ignored)",
-            "s.ls:9: warning: text after /END is ignored");
+            "s.ls:4: warning: not supported: section /APPL (its 1 lines are ignored)",
+            "s.ls:10: warning: text after /END is ignored");
     assertThat(messages(LsReader.parse("n.ls", "/PROG  1BAD\n/MN\n/POS\n/END\n")))
         .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', starting with a letter, at most 36 characters");
   }
