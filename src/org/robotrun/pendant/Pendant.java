@@ -271,7 +271,9 @@ public final class Pendant {
   }
 
   private void run(boolean forward) {
-    String name = selectedProgram;
+    // the program in the editor (a callee the cursor followed into), else the selected one
+    String name = !editScreen.programName.isEmpty() && control.program(editScreen.programName).isPresent()
+        ? editScreen.programName : selectedProgram;
     if (!shift()) {
       message = "Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run";
       return;
@@ -299,8 +301,18 @@ public final class Pendant {
 
   private void followExecution() {
     ExecutionStatus st = control.status();
-    // follow while a program is active, and once more when it stops (so the cursor ends where it ended)
+    // follow only when execution moved (so a paused program's cursor can be moved by the operator),
+    // and once more when it stops (so the cursor ends where it ended)
+    if (st.equals(lastFollowed)) {
+      return;
+    }
     boolean justStopped = st.state() == ExecState.IDLE && lastFollowed != null && lastFollowed.state() != ExecState.IDLE;
+    boolean active = st.state() == ExecState.RUNNING || st.state() == ExecState.PAUSED;
+    if (active && !editScreen.programName.isEmpty() && !st.program().equals(editScreen.programName)
+        && control.program(st.program()).isPresent()) {
+      // into a CALLed program and back out: the editor shows the program that executes
+      editScreen.open(this, st.program());
+    }
     if ((st.state() != ExecState.IDLE || justStopped) && st.program().equals(editScreen.programName) && st.line() > 0) {
       editScreen.follow(this, st.line());
     }

@@ -396,6 +396,7 @@ public final class StandInRobotControl implements RobotControl {
       interpreter.select(program);
       interpreter.setCursor(line);
     } else if (interpreter.cursorLine() != line) {
+      // a paused program moves on from the cursor line, as on the controller
       interpreter.setCursor(line);
     }
     aborted = false;
