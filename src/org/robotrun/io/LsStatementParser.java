@@ -100,6 +100,9 @@ final class LsStatementParser extends LsTokenCursor {
   static Parsed parse(List<LsToken> tokens) {
     LsStatementParser p = new LsStatementParser(tokens);
     Instruction in = p.statement();
+    if (p.peek().is(Kind.SEMICOLON)) {
+      throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
+    }
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
     }
