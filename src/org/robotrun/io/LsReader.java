@@ -195,7 +195,8 @@ public final class LsReader {
               diags.add(Diagnostic.error(file, headerLine, "second /POS section"));
             }
             if (!sawMn) {
-              diags.add(Diagnostic.error(file, headerLine, "/POS before /MN: expected /PROG, /ATTR, /MN, /POS, /END in that order"));
+              diags.add(Diagnostic.error(file, headerLine,
+                  "/POS before /MN: expected /PROG, /ATTR, /MN, /POS, /END in that order"));
             }
             sawPos = true;
             List<String> body = new ArrayList<>(end - start);
@@ -246,7 +247,8 @@ public final class LsReader {
     private LsReadResult result() {
       if (declaredLineCount >= 0 && declaredLineCount != instructions.size()) {
         diags.add(Diagnostic.warning(file, lineCountLine,
-            "LINE_COUNT = " + declaredLineCount + " but /MN has " + instructions.size() + " lines; using " + instructions.size()));
+            "LINE_COUNT = " + declaredLineCount + " but /MN has " + instructions.size() + " lines; using "
+                + instructions.size()));
       }
       Map<String, String> attrs = new LinkedHashMap<>(attributes);
       for (Map.Entry<String, String> d : LsAttributes.DEFAULTS.entrySet()) {
@@ -267,13 +269,15 @@ public final class LsReader {
         return;
       }
       if (!Program.isValidName(words[0])) {
-        diags.add(Diagnostic.error(file, line, "'" + clip(words[0]) + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
+        diags.add(Diagnostic.error(file, line, "'" + clip(words[0])
+            + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
             + Program.MAX_NAME_LENGTH + " characters"));
       } else {
         name = words[0].toUpperCase(Locale.ROOT);
       }
       if (words.length > 1) {
-        diags.add(Diagnostic.warning(file, line, "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
+        diags.add(Diagnostic.warning(file, line,
+            "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
       }
     }
 
@@ -334,7 +338,8 @@ public final class LsReader {
         for (String sub : body.substring(colon + 1).split(",")) {
           int e = sub.indexOf('=');
           if (e < 0 || !isKey(sub.substring(0, e).strip())) {
-            diags.add(Diagnostic.error(file, line, "/ATTR " + key + ": expected 'NAME = value' entries separated by ',', found '" + clip(sub.strip()) + "'"));
+            diags.add(Diagnostic.error(file, line, "/ATTR " + key
+                + ": expected 'NAME = value' entries separated by ',', found '" + clip(sub.strip()) + "'"));
             return;
           }
           parts.add(sub.substring(0, e).strip() + " = " + sub.substring(e + 1).strip());
@@ -404,7 +409,8 @@ public final class LsReader {
           if (p == digitsStart && p < text.length() && text.charAt(p) == ':') {
             diags.add(Diagnostic.error(file, line, "continuation line ':  ...' without a C motion line before it"));
           } else {
-            diags.add(Diagnostic.error(file, line, "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
+            diags.add(Diagnostic.error(file, line,
+                "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
           }
           continue;
         }
@@ -416,7 +422,8 @@ public final class LsReader {
         }
         int expected = instructions.size() + 1;
         if (number != expected) {
-          diags.add(Diagnostic.error(file, line, "line number " + text.substring(digitsStart, p) + " out of order: expected " + expected));
+          diags.add(Diagnostic.error(file, line,
+              "line number " + clip(text.substring(digitsStart, p)) + " out of order: expected " + expected));
         }
         Body body = body(text, p + 1, line);
         List<LsToken> tokens = body.tokens;

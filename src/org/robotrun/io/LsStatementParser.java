@@ -37,6 +37,9 @@ final class LsStatementParser extends LsTokenCursor {
   /** Most operators in one statement; keeps trees shallow enough for recursive walkers. */
   static final int MAX_OPERATORS = 1000;
 
+  private static final String VALUE_EXPECTED =
+      "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found ";
+
   /** FANUC statements RobotRun knows by name but does not implement: first word → name. */
   private static final Map<String, String> UNSUPPORTED = Map.ofEntries(
       Map.entry("SKIP", "SKIP CONDITION"),
@@ -100,6 +103,9 @@ final class LsStatementParser extends LsTokenCursor {
   static Parsed parse(List<LsToken> tokens) {
     LsStatementParser p = new LsStatementParser(tokens);
     Instruction in = p.statement();
+    if (p.peek().is(Kind.SEMICOLON)) {
+      throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
+    }
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
     }
@@ -318,7 +324,8 @@ final class LsStatementParser extends LsTokenCursor {
   private Instruction call() {
     LsToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
-      throw error(name, "'" + LsToken.clip(name.text()) + "' is not a program name: expected letters, digits and '_', starting with a letter");
+      throw error(name, "'" + LsToken.clip(name.text())
+          + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
     List<Expr> args = new ArrayList<>();
     if (peek().is(Kind.LPAREN)) {
@@ -429,7 +436,8 @@ final class LsStatementParser extends LsTokenCursor {
         if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
           throw error("not supported: motion options on the via point of a C motion (found " + peek().describe() + ")");
         }
-        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found " + peek().describe());
+        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found "
+            + peek().describe());
       }
       end = Optional.of(motionTarget());
     }
@@ -715,11 +723,11 @@ final class LsStatementParser extends LsTokenCursor {
             if (name != null) {
               throw error(t, "not supported: " + name);
             }
-            throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+            throw error(t, VALUE_EXPECTED + t.describe());
           }
         };
       }
-      default -> throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+      default -> throw error(t, VALUE_EXPECTED + t.describe());
     }
   }
 

@@ -190,6 +190,7 @@ class LsReaderTest {
         {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
         {"L P[1] max_speed FINE", "not supported: max_speed"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
         {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
