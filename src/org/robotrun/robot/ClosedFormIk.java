@@ -19,7 +19,8 @@ import org.robotrun.math.Transform;
  * <ul>
  *   <li><b>F/N</b> (wrist): F when J5 &gt; 0, N when J5 ≤ 0. The two wrist solutions of one arm
  *       have opposite J5 ({@code θ5' = −θ5}), so each arm has one F and one N solution.
- *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'.)
+ *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'; the same sign
+ *       rule as ROS-Industrial tesseract's {@code getRobotConfig} for FANUC arms.)
  *   <li><b>U/D</b> (elbow): U when {@code sin(θ3 + atan2(a2, c3)) > 0}, i.e. the wrist centre is
  *       on the forward side of the upper arm (for the LR Mate: kinematic J3 &lt; 84.0°, where
  *       the forearm and upper arm line up, the elbow singularity). The OPW elbow pairs are
