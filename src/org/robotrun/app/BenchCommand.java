@@ -7,8 +7,16 @@ import picocli.CommandLine.Command;
     name = "bench",
     mixinStandardHelpOptions = true,
     description = "Measure speed: prints one summary line per run.",
-    subcommands = {BenchRenderCommand.class, BenchParseCommand.class, BenchInterpCommand.class, BenchIkCommand.class,
-        BenchSimCommand.class})
+    subcommands = {
+      BenchRenderCommand.class,
+      BenchIkCommand.class,
+      BenchParseCommand.class,
+      BenchInterpCommand.class,
+      BenchCollisionCommand.class,
+      BenchBroadPhaseCommand.class,
+      BenchScenarioCommand.class,
+      BenchSimCommand.class,
+    })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
 

@@ -1,11 +1,28 @@
 package org.robotrun.app;
 
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.math.Angles;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.pendant.Pendant;
+import org.robotrun.program.Program;
 import org.robotrun.render.GlUnavailableException;
+import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
-import org.robotrun.sim.SceneSnapshots;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.ScenarioCell;
+import org.robotrun.sim.Simulation;
+import org.robotrun.ui.PendantKeyboard;
+import org.robotrun.ui.PendantPanel;
+import org.robotrun.ui.RobotStatusPanel;
 import org.robotrun.ui.SimulatorWindow;
+import org.robotrun.world.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -14,8 +31,9 @@ import picocli.CommandLine.Option;
     name = "gui",
     mixinStandardHelpOptions = true,
     description = {
-      "Open the simulator window (what 'robotrun' with no subcommand does).",
-      "Mouse: left drag orbits, right or middle drag pans, wheel zooms. Home or R resets the view; Escape closes the window."
+      "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant.",
+      "Mouse: left drag orbits, right or middle drag pans, wheel zooms; Home resets the view.",
+      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys."
     })
 public final class GuiCommand implements Callable<Integer> {
   @Option(names = "--width", defaultValue = "1280", description = "Window width (default: ${DEFAULT-VALUE}).")
@@ -24,18 +42,54 @@ public final class GuiCommand implements Callable<Integer> {
   @Option(names = "--height", defaultValue = "800", description = "Window height (default: ${DEFAULT-VALUE}).")
   int height = 800;
 
-  @Option(names = "--joints", paramLabel = "J1,...,J6",
-      description = "Starting joint angles in degrees as the pendant shows them. Default: all 0.")
-  String joints;
+  @Option(names = "--scenario", paramLabel = "FILE.json",
+      description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs). Default: the default robot in an empty cell.")
+  Path scenario;
 
   @Override
   public Integer call() {
     RenderCommand.checkSize("--width", width);
     RenderCommand.checkSize("--height", height);
-    RobotModel robot = RobotDefinitions.defaultRobot();
-    double[] q = joints == null ? new double[RobotModel.DOF] : JointsOption.parseToKinematic(joints, robot);
-    try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + robot.displayName(), width, height)) {
-      w.run(t -> SceneSnapshots.singleRobot(robot, q, t));
+    Simulation sim;
+    List<Program> programs = new ArrayList<>();
+    Scenario sc = null;
+    if (scenario == null) {
+      sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+    } else {
+      sc = ScenarioFiles.load(scenario);
+      try {
+        sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+        programs.addAll(RunCommand.loadPrograms(sc.programs()));
+      } catch (IllegalArgumentException e) {
+        throw new UserError(scenario + ": " + e.getMessage());
+      } catch (IOException e) {
+        throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
+      }
+    }
+    Controller controller = sim.controllers().get(0);
+    SimRobotControl control = new SimRobotControl(sim, controller);
+    programs.forEach(control::saveProgram);
+    Pendant pendant = new Pendant(control, new LsLineParser());
+    PendantPanel pendantPanel = new PendantPanel(pendant);
+    RobotModel robot = controller.model();
+    try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height)) {
+      if (sc != null) {
+        sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
+      }
+      w.setKeyHandler(new PendantKeyboard(pendant)::onKey);
+      double[] last = {0};
+      w.run(t -> {
+            // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
+            pendant.advance(Math.min(0.1, t - last[0]));
+            last[0] = t;
+            return sim.snapshot().scene();
+          },
+          (fw, fh) -> {
+            double[] q = controller.jointsRad();
+            double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
+            RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
+            pendantPanel.draw(fw, fh);
+          });
     } catch (GlUnavailableException e) {
       throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
     }

@@ -18,8 +18,8 @@ import picocli.CommandLine.Command;
       GuiCommand.class,
       RenderCommand.class,
       CheckCommand.class,
-      RunCommand.class,
       PendantCommand.class,
+      RunCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })

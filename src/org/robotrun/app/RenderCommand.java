@@ -8,7 +8,9 @@ import org.robotrun.render.GlUnavailableException;
 import org.robotrun.render.HeadlessRenderer;
 import org.robotrun.render.OrbitCamera;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.SceneSnapshot;
 import org.robotrun.sim.SceneSnapshots;
+import org.robotrun.world.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -32,8 +34,12 @@ public final class RenderCommand implements Callable<Integer> {
   int height;
 
   @Option(names = "--joints", paramLabel = "J1,...,J6",
-      description = "Joint angles in degrees as the pendant shows them (J3 coupled to J2). Default: all 0.")
+      description = "Joint angles in degrees as the pendant shows them (J3 coupled to J2), for the first robot. Default: the scenario's initial joints, or all 0.")
   String joints;
+
+  @Option(names = "--scenario", paramLabel = "FILE.json",
+      description = "Draw this scenario's cell (robots, fixtures, parts) from its camera view. Default: the default robot alone.")
+  Path scenario;
 
   @Override
   public Integer call() {
@@ -46,10 +52,19 @@ public final class RenderCommand implements Callable<Integer> {
     if (Files.isDirectory(out)) {
       throw new UserError("--out: " + out + " is a directory; give a file name ending in .png");
     }
-    RobotModel robot = RobotDefinitions.defaultRobot();
-    double[] q = joints == null ? new double[RobotModel.DOF] : JointsOption.parseToKinematic(joints, robot);
+    OrbitCamera camera = new OrbitCamera();
+    SceneSnapshot scene;
+    if (scenario == null) {
+      RobotModel robot = RobotDefinitions.defaultRobot();
+      double[] q = joints == null ? new double[RobotModel.DOF] : JointsOption.parseToKinematic(joints, robot);
+      scene = SceneSnapshots.singleRobot(robot, q, 0);
+    } else {
+      Scenario sc = ScenarioFiles.load(scenario);
+      scene = ScenarioFiles.initialScene(sc, joints);
+      sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, camera));
+    }
     try (HeadlessRenderer r = new HeadlessRenderer(width, height)) {
-      r.renderPng(SceneSnapshots.singleRobot(robot, q, 0), new OrbitCamera(), out);
+      r.renderPng(scene, camera, out);
     } catch (GlUnavailableException e) {
       throw new UserError("cannot render: " + e.getMessage(), Main.EXIT_FAILED);
     } catch (java.io.UncheckedIOException e) {

@@ -13,6 +13,11 @@ import java.util.concurrent.Callable;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.io.FileFormatException;
+import org.robotrun.io.ScenarioLoad;
+import org.robotrun.io.ScenarioReader;
+import org.robotrun.world.Scenario;
+import org.robotrun.sim.ScenarioCell;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.RobotDefinitions;
@@ -31,6 +36,8 @@ import picocli.CommandLine.Option;
     mixinStandardHelpOptions = true,
     description = {
       "Run a TP program with no window, as fast as the machine allows, in 4 ms simulation ticks.",
+      "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
+          + "before --programs; --program defaults to its main program); the program runs on the first robot.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
           + "reports it closed 0.1 s later.",
@@ -39,10 +46,11 @@ import picocli.CommandLine.Option;
     })
 public final class RunCommand implements Callable<Integer> {
   @Option(names = "--scenario", paramLabel = "FILE",
-      description = "Scenario JSON (robots, world, frames). Not supported in this build yet: omit it to use the default cell.")
+      description = "Scenario JSON (robots, world, frames, registers, programs; docs/scenario-format.md). Default: the default cell.")
   Path scenario;
 
-  @Option(names = "--program", required = true, paramLabel = "NAME", description = "The program to run (its /PROG name).")
+  @Option(names = "--program", paramLabel = "NAME",
+      description = "The program to run (its /PROG name). Default: the scenario's main program.")
   String program;
 
   @Option(names = "--programs", arity = "1..*", paramLabel = "DIR|FILE.ls",
@@ -65,9 +73,6 @@ public final class RunCommand implements Callable<Integer> {
 
   @Override
   public Integer call() throws IOException {
-    if (scenario != null) {
-      throw new UserError("--scenario: scenario files are not supported in this build yet; omit --scenario to use the default cell");
-    }
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
     }
@@ -76,13 +81,36 @@ public final class RunCommand implements Callable<Integer> {
     }
     checkOutput("--report", report);
     checkOutput("--trace", trace);
-    List<Program> loaded = loadPrograms(programs);
+    Simulation sim;
+    List<Path> programFiles = new ArrayList<>();
+    if (scenario != null) {
+      Scenario sc = switch (ScenarioReader.read(scenario)) {
+        case ScenarioLoad.Loaded l -> l.scenario();
+        case ScenarioLoad.Failed f -> throw new UserError(f.message());
+      };
+      try {
+        sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      } catch (FileFormatException | IllegalArgumentException e) {
+        throw new UserError(scenario + ": " + e.getMessage());
+      }
+      programFiles.addAll(sc.programs());
+      if (program == null) {
+        program = sc.mainProgram().orElseThrow(() -> new UserError(
+            "--program: name the program to run (the scenario " + scenario + " names no main program)"));
+      }
+    } else {
+      sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+      if (program == null) {
+        throw new UserError("--program: name the program to run (required without --scenario)");
+      }
+    }
+    programFiles.addAll(programs);
+    List<Program> loaded = loadPrograms(programFiles);
     if (loaded.stream().noneMatch(p -> p.name().equals(program))) {
       throw new UserError("--program: no program named " + program + " among the loaded files"
           + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
               + String.join(", ", loaded.stream().map(Program::name).toList()) + ")"));
     }
-    Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     Controller c = sim.controllers().get(0);
     loaded.forEach(c::saveProgram);
     c.setOverridePct(overridePct);

@@ -17,7 +17,11 @@ import org.robotrun.sim.Controller;
 import org.robotrun.sim.ControllerAlarm;
 import org.robotrun.sim.HeadlessRun;
 import org.robotrun.sim.MotionTiming;
+import org.robotrun.sim.CollisionEvent;
 import org.robotrun.sim.Simulation;
+import org.robotrun.world.ObjectKind;
+import org.robotrun.world.World;
+import org.robotrun.world.WorldObject;
 
 /** The JSON report of {@code robotrun run}; the schema is documented in docs/run-report.md. */
 final class RunReport {
@@ -53,8 +57,35 @@ final class RunReport {
     for (Controller c : sim.controllers()) {
       robots.add(robot(c));
     }
-    root.putArray("parts");
-    root.putArray("collisions");
+    ArrayNode parts = root.putArray("parts");
+    World world = sim.world();
+    for (WorldObject o : world.objects()) {
+      if (o.kind() != ObjectKind.PART) {
+        continue;
+      }
+      ObjectNode part = parts.addObject();
+      part.put("name", o.name());
+      Xyzwpr p = Xyzwpr.fromTransform(world.poseInCell(o.name()));
+      ObjectNode pose = part.putObject("pose_cell");
+      pose.put("x", round(p.x(), 4));
+      pose.put("y", round(p.y(), 4));
+      pose.put("z", round(p.z(), 4));
+      pose.put("w", round(p.wDeg(), 4));
+      pose.put("p", round(p.pDeg(), 4));
+      pose.put("r", round(p.rDeg(), 4));
+      if (o.parent().isPresent()) {
+        part.put("parent", o.parent().get());
+      } else {
+        part.putNull("parent");
+      }
+    }
+    ArrayNode collisions = root.putArray("collisions");
+    for (CollisionEvent e : sim.collisionEvents()) {
+      ObjectNode o = collisions.addObject();
+      o.put("timeSec", round(e.simTimeSec(), 6));
+      o.put("a", e.bodyA());
+      o.put("b", e.bodyB());
+    }
     return root;
   }
 

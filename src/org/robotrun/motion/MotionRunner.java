@@ -55,6 +55,10 @@ public final class MotionRunner {
   private final double[] q;
   private final double[] qTry = new double[RobotModel.DOF];
   private final double[] qBase = new double[RobotModel.DOF];
+  /** Cartesian lead: the joints that put the TCP on the superimposed Cartesian pose. */
+  private final double[] qCart = new double[RobotModel.DOF];
+  private final double[] qCartTry = new double[RobotModel.DOF];
+  private final double[] qsTry = new double[RobotModel.DOF];
   private final ArrayDeque<MoveRequest> pending = new ArrayDeque<>();
   private final List<Segment> active = new ArrayList<>();
   private Transform X_WBase = Transform.IDENTITY;
@@ -218,10 +222,7 @@ public final class MotionRunner {
     if (active.isEmpty()) {
       return;
     }
-    boolean ok = active.get(0) instanceof Segment.JointSegment
-        ? advanceJoints(dtSec * rate)
-        : advanceCartesian(dtSec * rate, dtSec);
-    if (!ok) {
+    if (!advance(dtSec * rate, dtSec)) {
       return;
     }
     retireFinished();
@@ -237,9 +238,9 @@ public final class MotionRunner {
       if (s == null) {
         return;
       }
-      if (s instanceof Segment.JointSegment) {
-        System.arraycopy(q, 0, qBase, 0, RobotModel.DOF);
-      } else if (s instanceof Segment.CartesianSegment c) {
+      System.arraycopy(q, 0, qBase, 0, RobotModel.DOF);
+      System.arraycopy(q, 0, qCart, 0, RobotModel.DOF);
+      if (s instanceof Segment.CartesianSegment c) {
         X_WBase = c.X_WStart;
       }
       pathScale = 1;
@@ -264,45 +265,59 @@ public final class MotionRunner {
       if (s == null) {
         return;
       }
+      if (s instanceof Segment.CartesianSegment c && last instanceof Segment.JointSegment j) {
+        c.shadow = true;
+        c.qs0 = j.q1.clone();
+        c.qs = j.q1.clone();
+      }
       active.add(s);
       listener.moveStarted(next.tag(), timeSec);
     }
   }
 
-  private static boolean blends(Segment last, MoveRequest next) {
-    return switch (next) {
-      case MoveRequest.Joint j -> last instanceof Segment.JointSegment;
-      case MoveRequest.Linear l -> last instanceof Segment.CartesianSegment c && c.X_FT.equals(l.X_FT());
-      case MoveRequest.Circular c -> last instanceof Segment.CartesianSegment s && s.X_FT.equals(c.X_FT());
+  /** Whether the first active move is a joint move (joints are the lead space). */
+  private boolean jointLead() {
+    return active.get(0) instanceof Segment.JointSegment;
+  }
+
+  /**
+   * Which moves may start blending behind {@code last}. Joint moves blend with joint moves;
+   * Cartesian moves with Cartesian moves of the same tool (the path stays in the corner's plane).
+   * Mixed corners blend in joint space: a joint move behind Cartesian moves adds its joint
+   * displacement; a Cartesian move behind joint moves runs as a shadow (see
+   * {@link Segment.CartesianSegment#shadow}) and takes no follower until the joint moves end.
+   */
+  private boolean blends(Segment last, MoveRequest next) {
+    boolean cartesianNext = !(next instanceof MoveRequest.Joint);
+    boolean anyCartesian = active.stream().anyMatch(a -> a instanceof Segment.CartesianSegment);
+    return switch (last) {
+      case Segment.JointSegment j -> cartesianNext ? !anyCartesian : true;
+      case Segment.CartesianSegment c -> {
+        if (c.shadow) {
+          yield false;
+        }
+        if (!cartesianNext) {
+          yield true;
+        }
+        Transform tool = next instanceof MoveRequest.Linear l ? l.X_FT() : ((MoveRequest.Circular) next).X_FT();
+        yield c.X_FT.equals(tool);
+      }
     };
   }
 
-  private boolean advanceJoints(double dTau) {
-    double[] out = qTry;
-    System.arraycopy(qBase, 0, out, 0, RobotModel.DOF);
-    for (Segment s : active) {
-      s.tSec += dTau;
-      ((Segment.JointSegment) s).addDisplacement(s.tSec, out);
-    }
-    int bad = firstOutside(out);
-    if (bad >= 0) {
-      return fail(lastTag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, limitMessage(bad, out[bad])));
-    }
-    System.arraycopy(out, 0, q, 0, RobotModel.DOF);
-    return true;
-  }
-
-  private boolean advanceCartesian(double dTau, double dtSec) {
-    Segment.CartesianSegment first = (Segment.CartesianSegment) active.get(0);
+  /**
+   * Advances every active move by up to {@code dTau} of path time. The joints for the step are
+   * computed; if they would need a joint faster than its limit, or the pose cannot be reached,
+   * the step shrinks (the arm slows) and is tried again.
+   */
+  private boolean advance(double dTau, double dtSec) {
     double want = dTau * pathScale;
     double frac = 1;
     boolean accepted = false;
     double step = 0;
     for (int attempt = 0; attempt <= MAX_RETRIES && !accepted; attempt++) {
       step = want * frac;
-      Transform X_WT = poseAt(step);
-      System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
-      if (!tracker.track(qTry, X_WT, first.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD) || !finite(qTry)) {
+      if (!candidate(step) || !finite(qTry)) {
         frac *= 0.5;
         continue;
       }
@@ -310,7 +325,8 @@ public final class MotionRunner {
       for (int i = 0; i < RobotModel.DOF; i++) {
         ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
       }
-      if (ratio <= 1) {
+      // 1e-9: a planned joint move runs exactly at its limit; rounding must not slow it.
+      if (ratio <= 1 + 1e-9) {
         accepted = true;
       } else {
         frac *= 0.9 / ratio;
@@ -323,13 +339,20 @@ public final class MotionRunner {
     if (bad >= 0) {
       return fail(lastTag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, limitMessage(bad, qTry[bad])));
     }
-    if (entersWristSingularity(q, qTry)) {
+    boolean cartesian = !jointLead() || active.size() > 1 && active.get(active.size() - 1) instanceof Segment.CartesianSegment;
+    if (cartesian && entersWristSingularity(q, qTry)) {
       return fail(lastTag(), singularity());
     }
     for (Segment s : active) {
       s.tSec += step;
+      if (s instanceof Segment.CartesianSegment c && c.shadow) {
+        System.arraycopy(qsTry, 0, c.qs, 0, RobotModel.DOF);
+      }
     }
     System.arraycopy(qTry, 0, q, 0, RobotModel.DOF);
+    if (!jointLead()) {
+      System.arraycopy(qCartTry, 0, qCart, 0, RobotModel.DOF);
+    }
     // Slow down as far as this tick needed, then recover gently (about 0.3 s back to full speed).
     pathScale = frac < 1 ? Math.max(1e-4, pathScale * frac) : Math.min(1, pathScale * 1.05 + 1e-3);
     stallSec = pathScale < STALL_SCALE && want > 0 ? stallSec + dtSec : 0;
@@ -339,12 +362,53 @@ public final class MotionRunner {
     return true;
   }
 
+  /**
+   * Fills {@link #qTry} with the joints after advancing every active move by {@code step}:
+   * joint lead: {@code qBase + Σ joint displacements (+ shadow's qs − qs0)}; Cartesian lead:
+   * the tracked joints of the superimposed Cartesian pose plus the joint displacements of joint
+   * moves blending in behind. False if a pose cannot be reached.
+   */
+  private boolean candidate(double step) {
+    if (jointLead()) {
+      System.arraycopy(qBase, 0, qTry, 0, RobotModel.DOF);
+      for (Segment s : active) {
+        switch (s) {
+          case Segment.JointSegment j -> j.addDisplacement(j.tSec + step, qTry);
+          case Segment.CartesianSegment c -> {
+            System.arraycopy(c.qs, 0, qsTry, 0, RobotModel.DOF);
+            if (!tracker.track(qsTry, c.ownPoseAt(c.tSec + step), c.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD)) {
+              return false;
+            }
+            for (int i = 0; i < RobotModel.DOF; i++) {
+              qTry[i] += qsTry[i] - c.qs0[i];
+            }
+          }
+        }
+      }
+      return true;
+    }
+    Segment.CartesianSegment first = (Segment.CartesianSegment) active.get(0);
+    System.arraycopy(qCart, 0, qCartTry, 0, RobotModel.DOF);
+    if (!tracker.track(qCartTry, poseAt(step), first.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD)) {
+      return false;
+    }
+    System.arraycopy(qCartTry, 0, qTry, 0, RobotModel.DOF);
+    for (Segment s : active) {
+      if (s instanceof Segment.JointSegment j) {
+        j.addDisplacement(j.tSec + step, qTry);
+      }
+    }
+    return true;
+  }
+
   /** The desired TCP pose if every active segment advanced by {@code step} of path time. */
   private Transform poseAt(double step) {
     Vec3 p = X_WBase.translationVector();
     Transform R = X_WBase.withTranslation(0, 0, 0);
     for (Segment s : active) {
-      Segment.CartesianSegment c = (Segment.CartesianSegment) s;
+      if (!(s instanceof Segment.CartesianSegment c)) {
+        continue;
+      }
       double u = c.profile.position(c.tSec + step);
       p = p.plus(c.path.displacement(u));
       R = Rotations.exp(c.rotation_W, u).compose(R);
@@ -368,10 +432,27 @@ public final class MotionRunner {
         }
       }
       listener.moveFinished(s.tag, timeSec);
+      changeLead(s);
     }
     if (active.isEmpty()) {
-      // Land exactly: base bookkeeping could drift by rounding over long blends.
       pathScale = 1;
+    }
+  }
+
+  /** After {@code retired} left the front, hands the lead to the new front move's space. */
+  private void changeLead(Segment retired) {
+    if (active.isEmpty()) {
+      return;
+    }
+    Segment front = active.get(0);
+    if (front instanceof Segment.CartesianSegment c && c.shadow) {
+      // The joint moves have ended: the shadow becomes the Cartesian lead, from where it is.
+      c.shadow = false;
+      X_WBase = c.X_WStart;
+      System.arraycopy(c.qs, 0, qCart, 0, RobotModel.DOF);
+    } else if (front instanceof Segment.JointSegment && retired instanceof Segment.CartesianSegment) {
+      // The Cartesian moves have ended: the joints they reached become the joint base.
+      System.arraycopy(qCart, 0, qBase, 0, RobotModel.DOF);
     }
   }
 
@@ -380,9 +461,16 @@ public final class MotionRunner {
   /** Plans a move from the end of {@code previous} (blending) or from the current state; null if it failed. */
   private Segment plan(MoveRequest m, Segment previous) {
     return switch (m) {
-      case MoveRequest.Joint j -> planJoint(j, previous == null ? q : ((Segment.JointSegment) previous).q1);
+      case MoveRequest.Joint j -> {
+        double[] q0 = switch (previous) {
+          case null -> q;
+          case Segment.JointSegment pj -> pj.q1;
+          case Segment.CartesianSegment pc -> jointsAtEnd(pc, j.tag());
+        };
+        yield q0 == null ? null : planJoint(j, q0);
+      }
       case MoveRequest.Linear l -> {
-        Transform start = previous == null ? tcpInWorld(l.X_FT()) : ((Segment.CartesianSegment) previous).X_WEnd;
+        Transform start = startPose(previous, l.X_FT());
         if (!reachable(l.X_WTarget(), l.X_FT(), l.tag(), "the target")) {
           yield null;
         }
@@ -390,7 +478,7 @@ public final class MotionRunner {
         yield planCartesian(m, path, start, l.X_WTarget(), l.X_FT());
       }
       case MoveRequest.Circular c -> {
-        Transform start = previous == null ? tcpInWorld(c.X_FT()) : ((Segment.CartesianSegment) previous).X_WEnd;
+        Transform start = startPose(previous, c.X_FT());
         if (!reachable(c.X_WVia(), c.X_FT(), c.tag(), "the via point") || !reachable(c.X_WTarget(), c.X_FT(), c.tag(), "the target")) {
           yield null;
         }
@@ -404,6 +492,30 @@ public final class MotionRunner {
         yield planCartesian(m, arc, start, c.X_WTarget(), c.X_FT());
       }
     };
+  }
+
+  /** Where a Cartesian move starts: the current TCP, or the end of the move it blends out of. */
+  private Transform startPose(Segment previous, Transform X_FT) {
+    return switch (previous) {
+      case null -> tcpInWorld(X_FT);
+      case Segment.CartesianSegment pc -> pc.X_WEnd;
+      case Segment.JointSegment pj -> ForwardKinematics.flangePoseInWorld(model, pj.q1).compose(X_FT);
+    };
+  }
+
+  /** The joints at the end of a Cartesian move (closed form, the branch nearest the current joints); null after a fault. */
+  private double[] jointsAtEnd(Segment.CartesianSegment c, long tag) {
+    if (closedForm.isEmpty()) {
+      double[] qq = qCart.clone();
+      return tracker.track(qq, c.X_WEnd, c.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD) ? qq : null;
+    }
+    Transform X_BF = model.X_WB().inverse().compose(c.X_WEnd).compose(c.X_FT.inverse());
+    IkResult r = closedForm.get().solveNearest(X_BF, qCart);
+    if (r instanceof IkResult.Solved sol) {
+      return sol.q();
+    }
+    fail(tag, new MotionFault(MotionFault.Kind.OUT_OF_REACH, "the end of the previous move has no joint solution"));
+    return null;
   }
 
   private Segment planJoint(MoveRequest.Joint m, double[] q0) {

@@ -59,6 +59,15 @@ abstract sealed class Segment permits Segment.JointSegment, Segment.CartesianSeg
     final Transform X_FT;
     final Transform X_WStart;
     final Transform X_WEnd;
+    /**
+     * A Cartesian move blending out of a joint move runs as a shadow: it tracks its own path
+     * from the joint move's end joints ({@code qs}, starting at {@code qs0}) and adds
+     * {@code qs − qs0} to the joints. Once the joint move has ended it becomes an ordinary
+     * Cartesian move (the runner promotes it).
+     */
+    boolean shadow;
+    double[] qs;
+    double[] qs0;
 
     CartesianSegment(long tag, UnitProfile profile, Termination termination, PathShape path, Transform X_FT,
         Transform X_WStart, Transform X_WEnd) {
@@ -68,6 +77,13 @@ abstract sealed class Segment permits Segment.JointSegment, Segment.CartesianSeg
       this.X_WStart = X_WStart;
       this.X_WEnd = X_WEnd;
       this.rotation_W = Rotations.between(X_WEnd, X_WStart);
+    }
+
+    /** This move's own desired pose at path time t (ignoring other moves). */
+    Transform ownPoseAt(double t) {
+      double u = profile.position(t);
+      Vec3 p = X_WStart.translationVector().plus(path.displacement(u));
+      return Rotations.exp(rotation_W, u).compose(X_WStart.withTranslation(0, 0, 0)).withTranslation(p.x(), p.y(), p.z());
     }
   }
 }

@@ -80,11 +80,11 @@ public final class SceneRenderer implements AutoCloseable {
       int uModel = solid.uniform("uModel");
       int uColor = solid.uniform("uColor");
 
-      // World axes on the floor below the WORLD origin: X red, Y green, Z blue.
+      // World X (red) and Y (green) on the floor below the WORLD origin. Z is up the J1 axis,
+      // inside the robot's base, so it is not drawn.
       float half = AXIS_LENGTH / 2;
       drawBar(uModel, uColor, half, 0, floorZ + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK, 0.85f, 0.15f, 0.12f);
       drawBar(uModel, uColor, 0, half, floorZ + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK, 0.15f, 0.65f, 0.2f);
-      drawBar(uModel, uColor, 0, 0, floorZ + half, AXIS_THICK, AXIS_THICK, AXIS_LENGTH, 0.15f, 0.3f, 0.9f);
 
       for (DrawItem item : scene.items()) {
         GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);

@@ -2,6 +2,9 @@ package org.robotrun.ui;
 
 import static org.lwjgl.glfw.GLFW.*;
 
+import imgui.ImGui;
+import imgui.gl3.ImGuiImplGl3;
+import imgui.glfw.ImGuiImplGlfw;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 import org.lwjgl.system.Configuration;
@@ -13,8 +16,9 @@ import org.robotrun.sim.SceneSnapshot;
 
 /**
  * The desktop window: a GLFW window with an OpenGL 3.3 core context showing the cell. The mouse
- * moves the camera (left drag orbits, right or middle drag pans, wheel zooms); Home or R resets
- * the view; Escape closes the window.
+ * moves the camera (left drag orbits, right or middle drag pans, wheel zooms); Home resets the
+ * view. Other keys go to a {@link KeyHandler} (the pendant keyboard). Panels (the pendant, status) are Dear ImGui windows drawn
+ * over the scene; while the mouse is over a panel the camera ignores it.
  */
 public final class SimulatorWindow implements AutoCloseable {
   /** Supplies the scene to draw each frame. */
@@ -26,10 +30,20 @@ public final class SimulatorWindow implements AutoCloseable {
   private final long window;
   private final OrbitCamera camera = new OrbitCamera();
   private final SceneRenderer renderer;
+  private final ImGuiImplGlfw imguiGlfw = new ImGuiImplGlfw();
+  private final ImGuiImplGl3 imguiGl3 = new ImGuiImplGl3();
   private double lastX;
   private double lastY;
   private boolean orbiting;
   private boolean panning;
+  private KeyHandler keyHandler = (key, action) -> false;
+
+  /** Receives keyboard events that no panel text field wants. */
+  @FunctionalInterface
+  public interface KeyHandler {
+    /** Returns whether the key was used. */
+    boolean onKey(int glfwKey, int action);
+  }
 
   public SimulatorWindow(String title, int width, int height) {
     GLFWErrorCallback.createPrint(System.err).set();
@@ -56,11 +70,20 @@ public final class SimulatorWindow implements AutoCloseable {
     GL.createCapabilities();
     renderer = new SceneRenderer();
     installInput();
+    // ImGui chains to the callbacks installed above.
+    ImGui.createContext();
+    ImGui.getIO().setIniFilename(null);
+    ImGui.styleColorsDark();
+    imguiGlfw.init(window, true);
+    imguiGl3.init("#version 330 core");
   }
 
   private void installInput() {
     glfwSetMouseButtonCallback(window, (w, button, action, mods) -> {
       boolean down = action == GLFW_PRESS;
+      if (down && ImGui.getIO().getWantCaptureMouse()) {
+        return;
+      }
       if (button == GLFW_MOUSE_BUTTON_LEFT) {
         orbiting = down;
       } else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
@@ -79,21 +102,37 @@ public final class SimulatorWindow implements AutoCloseable {
         camera.pan((float) (dx / wh[0]), (float) (dy / wh[0]));
       }
     });
-    glfwSetScrollCallback(window, (w, sx, sy) -> camera.zoom((float) Math.pow(0.88, sy)));
-    glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
-      if (action != GLFW_PRESS) {
-        return;
-      }
-      if (key == GLFW_KEY_HOME || key == GLFW_KEY_R) {
-        camera.reset();
-      } else if (key == GLFW_KEY_ESCAPE) {
-        glfwSetWindowShouldClose(window, true);
+    glfwSetScrollCallback(window, (w, sx, sy) -> {
+      if (!ImGui.getIO().getWantCaptureMouse()) {
+        camera.zoom((float) Math.pow(0.88, sy));
       }
     });
+    glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
+      // Releases always go through, so a key held while a text field took focus still stops.
+      if (action != GLFW_RELEASE && ImGui.getIO().getWantCaptureKeyboard()) {
+        return;
+      }
+      if (key == GLFW_KEY_HOME && action == GLFW_PRESS) {
+        camera.reset();
+        return;
+      }
+      keyHandler.onKey(key, action);
+    });
+  }
+
+  /** Draws ImGui panels; called once per frame between ImGui's newFrame and render. */
+  @FunctionalInterface
+  public interface Panels {
+    void draw(int framebufferWidth, int framebufferHeight);
   }
 
   /** Runs the event and render loop until the window is closed. */
   public void run(SceneSource scene) {
+    run(scene, (w, h) -> {});
+  }
+
+  /** Runs the event and render loop, with panels over the scene, until the window is closed. */
+  public void run(SceneSource scene, Panels panels) {
     long start = System.nanoTime();
     int[] fw = new int[1], fh = new int[1];
     while (!glfwWindowShouldClose(window)) {
@@ -101,11 +140,20 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
         renderer.render(scene.snapshot((System.nanoTime() - start) / 1e9), camera, fw[0], fh[0]);
+        imguiGlfw.newFrame();
+        ImGui.newFrame();
+        panels.draw(fw[0], fh[0]);
+        ImGui.render();
+        imguiGl3.renderDrawData(ImGui.getDrawData());
         glfwSwapBuffers(window);
       } else {
         glfwWaitEventsTimeout(0.1);
       }
     }
+  }
+
+  public void setKeyHandler(KeyHandler handler) {
+    keyHandler = handler;
   }
 
   public OrbitCamera camera() {
@@ -114,6 +162,9 @@ public final class SimulatorWindow implements AutoCloseable {
 
   @Override
   public void close() {
+    imguiGl3.dispose();
+    imguiGlfw.dispose();
+    ImGui.destroyContext();
     renderer.close();
     GL.setCapabilities(null);
     glfwDestroyWindow(window);

@@ -63,4 +63,27 @@ class RenderCommandTest {
     assertThat(img.getWidth()).isEqualTo(200);
     assertThat(img.getHeight()).isEqualTo(120);
   }
+
+  @Test
+  void rendersEveryExampleScenario(@TempDir Path dir) throws Exception {
+    GlTestSupport.rendererOrSkip(16, 16).close();
+    try (var files = Files.list(Path.of("scenarios"))) {
+      for (Path sc : files.filter(p -> p.toString().endsWith(".json")).toList()) {
+        Path out = dir.resolve(sc.getFileName() + ".png");
+        Run r = run("render", "--scenario", sc.toString(), "--out", out.toString(), "--width", "160", "--height", "100");
+        assertThat(r.exitCode()).as(sc + ": " + r.err()).isZero();
+        assertThat(Files.size(out)).isPositive();
+      }
+    }
+  }
+
+  @Test
+  void brokenScenarioIsAnErrorNamingFileLineAndField(@TempDir Path dir) throws Exception {
+    Path bad = dir.resolve("bad.json");
+    Files.writeString(bad, "{\n  \"format\": 1,\n  \"robots\": \"nope\"\n}\n");
+    Run r = run("render", "--scenario", bad.toString(), "--out", dir.resolve("x.png").toString());
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.err()).contains("bad.json").contains("robots").doesNotContain("\tat ");
+    assertThat(Files.exists(dir.resolve("x.png"))).isFalse();
+  }
 }

@@ -59,6 +59,24 @@ class JoggerTest {
   }
 
   @Test
+  void userJogFollowsTheUserFrameAxes() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = start();
+    Transform before = MotionRunnerTest.tcp(q);
+    // A user frame turned 30 degrees about WORLD z and moved: its +Y is (−sin 30°, cos 30°, 0).
+    Transform X_WU = Transform.rotation(0, 0, 1, Math.toRadians(30)).withTranslation(100, 50, -20);
+    keys.keyDown(1, +1, JogState.Press.HELD);
+    for (int i = 0; i < 150; i++) {
+      jog.tick(q, keys, JogFrame.USER, 0.4, TOOL, X_WU, DT);
+    }
+    Vec3 moved = MotionRunnerTest.tcp(q).translationVector().minus(before.translationVector());
+    Vec3 userY = X_WU.axis(1);
+    assertThat(moved.dot(userY)).isGreaterThan(40);
+    assertThat(moved.minus(userY.times(moved.dot(userY))).norm()).isLessThan(0.01);
+  }
+
+  @Test
   void toolRotationKeepsTheTcpInPlace() {
     Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
     JogState keys = new JogState();

@@ -1,0 +1,67 @@
+package org.robotrun.app;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+import org.robotrun.io.FileFormatException;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.ScenarioLoad;
+import org.robotrun.io.ScenarioReader;
+import org.robotrun.render.OrbitCamera;
+import org.robotrun.robot.JointConvention;
+import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.SceneSnapshot;
+import org.robotrun.sim.SceneSnapshots;
+import org.robotrun.world.CameraView;
+import org.robotrun.world.RobotSetup;
+import org.robotrun.world.Scenario;
+
+/** Loading a scenario for a command, with every problem as a {@link UserError}. */
+final class ScenarioFiles {
+  private ScenarioFiles() {}
+
+  /** Reads the scenario or throws one error listing every problem found (file:line: path: what). */
+  static Scenario load(Path file) {
+    if (!Files.isRegularFile(file)) {
+      throw new UserError("--scenario: no such file " + file);
+    }
+    return switch (ScenarioReader.read(file)) {
+      case ScenarioLoad.Loaded l -> l.scenario();
+      case ScenarioLoad.Failed f -> throw new UserError(f.errors().stream()
+          .map(Object::toString).collect(Collectors.joining(System.lineSeparator())));
+    };
+  }
+
+  /** The robot model a setup names. */
+  static RobotModel model(RobotSetup setup) {
+    try {
+      return RobotDefinitions.load(setup.modelId());
+    } catch (FileFormatException e) {
+      throw new UserError("robot '" + setup.name() + "': " + e.getMessage());
+    }
+  }
+
+  /**
+   * The cell as loaded: every robot at its initial joints; {@code jointsOverride} (pendant
+   * degrees, may be null) replaces the first robot's.
+   */
+  static SceneSnapshot initialScene(Scenario sc, String jointsOverride) {
+    List<SceneSnapshots.PlacedRobot> robots = new ArrayList<>();
+    for (int i = 0; i < sc.robots().size(); i++) {
+      RobotSetup setup = sc.robots().get(i);
+      RobotModel model = model(setup);
+      double[] q = i == 0 && jointsOverride != null
+          ? JointsOption.parseToKinematic(jointsOverride, model)
+          : JointConvention.pendantToKinematic(model, setup.initialJoints());
+      robots.add(new SceneSnapshots.PlacedRobot(setup.name(), model, setup.X_CB(), q));
+    }
+    return SceneSnapshots.cell(sc.world(), robots, 0);
+  }
+
+  static void applyCamera(CameraView v, OrbitCamera camera) {
+    camera.set((float) v.targetMm().x(), (float) v.targetMm().y(), (float) v.targetMm().z(),
+        (float) v.distanceMm(), (float) v.yawRad(), (float) v.pitchRad());
+  }
+}

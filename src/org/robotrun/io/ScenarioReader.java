@@ -1,0 +1,668 @@
+package org.robotrun.io;
+
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import java.util.TreeMap;
+import org.robotrun.io.LocatedJson.JArray;
+import org.robotrun.io.LocatedJson.JNumber;
+import org.robotrun.io.LocatedJson.JObject;
+import org.robotrun.io.LocatedJson.JString;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.robot.JointConvention;
+import org.robotrun.robot.RobotModel;
+import org.robotrun.world.CameraView;
+import org.robotrun.world.EndEffectorType;
+import org.robotrun.world.ObjectKind;
+import org.robotrun.world.Rgb;
+import org.robotrun.world.RobotSetup;
+import org.robotrun.world.Scenario;
+import org.robotrun.world.Shape;
+import org.robotrun.world.World;
+import org.robotrun.world.WorldObject;
+
+/**
+ * Reads scenario files ({@code "format": 1}, see docs/scenario-format.md). Degrees become
+ * radians here, once; relative paths are resolved against the scenario's folder.
+ *
+ * <p>Every problem is collected with its JSON path and line — unknown fields, wrong types,
+ * non-finite or out-of-range numbers, missing files, duplicate names, bad parents — and the
+ * result is either the whole scenario or the list of errors ({@link ScenarioLoad}); a syntax
+ * error stops at the first one, since nothing after it can be trusted.
+ */
+public final class ScenarioReader {
+  /** The format this reader understands. */
+  public static final int FORMAT = 1;
+
+  /** Largest scenario file accepted (meshes are separate files). */
+  public static final long MAX_FILE_BYTES = 16L << 20;
+
+  /** Highest register index a scenario may preset. */
+  public static final int MAX_REGISTER = 200;
+
+  /** Highest tool or user frame number. */
+  public static final int MAX_FRAME = 10;
+
+  private static final Set<String> TOP = Set.of(
+      "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera");
+  private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg");
+  private static final Set<String> OBJECT = Set.of(
+      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent");
+  private static final Map<String, Set<String>> SHAPE_FIELDS = Map.of(
+      "box", Set.of("size"), "cylinder", Set.of("radius", "height"), "mesh", Set.of("file", "scale"));
+  private static final Set<String> POSE = Set.of("x", "y", "z", "w", "p", "r");
+  private static final Set<String> XYZ = Set.of("x", "y", "z");
+  private static final Set<String> CAMERA = Set.of("target", "distance", "yawDeg", "pitchDeg");
+
+  private ScenarioReader() {}
+
+  /** Loads a scenario file. Never throws for bad content: errors come back in the result. */
+  public static ScenarioLoad read(Path file) {
+    String name = file.toString();
+    String text;
+    try {
+      long size = Files.size(file);
+      if (size > MAX_FILE_BYTES) {
+        return fail(name, 0, "file is " + size + " bytes; scenario files are limited to " + MAX_FILE_BYTES + " bytes");
+      }
+      text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
+    } catch (NoSuchFileException e) {
+      return fail(name, 0, "no such file");
+    } catch (CharacterCodingException e) {
+      return fail(name, 0, "not UTF-8 text");
+    } catch (IOException e) {
+      return fail(name, 0, "cannot read: " + e.getMessage());
+    }
+    Path dir = file.toAbsolutePath().normalize().getParent();
+    return new Session(name, dir).read(text);
+  }
+
+  private static ScenarioLoad fail(String file, int line, String message) {
+    return new ScenarioLoad.Failed(List.of(new ScenarioError(file, line, "", message)));
+  }
+
+  /** One load: the file, its folder and the errors found so far. */
+  private static final class Session {
+    private final String file;
+    private final Path dir;
+    private final List<ScenarioError> errors = new ArrayList<>();
+    private final Map<String, RobotModel> models = new HashMap<>();
+    /** Where each name was first defined, for duplicate messages. */
+    private final Map<String, String> definedAt = new HashMap<>();
+
+    Session(String file, Path dir) {
+      this.file = file;
+      this.dir = dir;
+    }
+
+    ScenarioLoad read(String text) {
+      List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
+      LocatedJson root;
+      try {
+        root = LocatedJson.parse(text, duplicates);
+      } catch (LocatedJson.SyntaxError e) {
+        return new ScenarioLoad.Failed(List.of(new ScenarioError(file, e.line, "", e.getMessage())));
+      }
+      for (LocatedJson.DuplicateKey d : duplicates) {
+        errors.add(new ScenarioError(file, d.line(), d.key(), "field given twice"));
+      }
+      JObject top = object(root, "", TOP);
+      if (top == null) {
+        return new ScenarioLoad.Failed(errors);
+      }
+      checkFormat(top);
+      String title = string(top, "name", "", false).orElse("");
+      String description = string(top, "description", "", false).orElse("");
+      List<RobotSetup> robots = robots(top);
+      List<WorldObject> objects = objects(top);
+      List<Path> programs = programs(top);
+      Optional<String> mainProgram = mainProgram(top, programs);
+      TreeMap<Integer, Double> registers = registers(top);
+      TreeMap<Integer, Transform> toolFrames = new TreeMap<>();
+      TreeMap<Integer, Transform> userFrames = new TreeMap<>();
+      frames(top, toolFrames, userFrames);
+      Optional<CameraView> camera = camera(top);
+      if (!errors.isEmpty()) {
+        errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
+        return new ScenarioLoad.Failed(errors);
+      }
+      try {
+        return new ScenarioLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
+            mainProgram, registers, toolFrames, userFrames, camera));
+      } catch (IllegalArgumentException e) {
+        // The checks above should catch everything; this keeps a missed case a clean error.
+        return new ScenarioLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
+      }
+    }
+
+    private void checkFormat(JObject top) {
+      LocatedJson f = top.members().get("format");
+      if (f == null) {
+        error(top.line(), "format", "missing: expected \"format\": " + FORMAT);
+      } else if (!(f instanceof JNumber n) || !n.integral()) {
+        error(f.line(), "format", "expected the integer " + FORMAT + ", got " + f.describe());
+      } else if (n.value() != FORMAT) {
+        error(f.line(), "format", "unsupported format " + n.text() + ": this RobotRun reads format " + FORMAT);
+      }
+    }
+
+    // ---- robots ---------------------------------------------------------------------------
+
+    private List<RobotSetup> robots(JObject top) {
+      List<RobotSetup> out = new ArrayList<>();
+      JArray arr = array(top, "robots", "", true);
+      if (arr == null) {
+        return out;
+      }
+      if (arr.items().isEmpty()) {
+        error(arr.line(), "robots", "expected at least one robot");
+      }
+      for (int i = 0; i < arr.items().size(); i++) {
+        String at = "robots[" + i + "]";
+        JObject r = object(arr.items().get(i), at, ROBOT);
+        if (r == null) {
+          continue;
+        }
+        String robotName = string(r, "name", at, false).orElse("robot" + (i + 1));
+        defineName(robotName, at + ".name", r.keyLines().getOrDefault("name", r.line()));
+        Optional<RobotModel> model = string(r, "model", at, true).flatMap(m -> model(m, r, at));
+        Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
+        EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
+        double[] jointsRad = joints(r, at, model);
+        if (model.isPresent() && X_CB != null && tool != null && jointsRad != null) {
+          out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
+              Arrays.stream(jointsRad).boxed().toList()));
+        }
+      }
+      return out;
+    }
+
+    private Optional<RobotModel> model(String id, JObject r, String at) {
+      if (models.containsKey(id)) {
+        return Optional.of(models.get(id));
+      }
+      try {
+        RobotModel m = RobotDefinitions.load(id);
+        models.put(id, m);
+        return Optional.of(m);
+      } catch (FileFormatException e) {
+        error(r.members().get("model").line(), at + ".model", "unknown robot model '" + id + "' (e.g. \""
+            + RobotDefinitions.DEFAULT_ROBOT + "\")");
+        return Optional.empty();
+      }
+    }
+
+    private EndEffectorType endEffector(String s, JObject r, String at) {
+      for (EndEffectorType t : EndEffectorType.values()) {
+        if (t.fileName().equals(s)) {
+          return t;
+        }
+      }
+      error(r.members().get("endEffector").line(), at + ".endEffector", "unknown end effector '" + s
+          + "': expected one of " + Arrays.stream(EndEffectorType.values()).map(EndEffectorType::fileName).toList());
+      return null;
+    }
+
+    private double[] joints(JObject r, String at, Optional<RobotModel> model) {
+      LocatedJson v = r.members().get("jointsDeg");
+      if (v == null) {
+        return new double[6];
+      }
+      String path = at + ".jointsDeg";
+      if (!(v instanceof JArray a) || a.items().size() != 6) {
+        error(v.line(), path, "expected an array of 6 joint angles (degrees), got " + describeArray(v));
+        return null;
+      }
+      double[] q = new double[6];
+      boolean ok = true;
+      for (int k = 0; k < 6; k++) {
+        Double d = finite(a.items().get(k), path + "[" + k + "]");
+        ok &= d != null;
+        q[k] = d == null ? 0 : Math.toRadians(d);
+      }
+      if (!ok || model.isEmpty()) {
+        return ok ? q : null;
+      }
+      RobotModel m = model.get();
+      int bad = m.firstJointOutsideLimits(JointConvention.pendantToKinematic(m, q));
+      if (bad >= 0) {
+        error(a.items().get(bad).line(), path + "[" + bad + "]", String.format(Locale.ROOT,
+            "J%d = %s deg puts the robot outside its joint limits (J%d must lie in [%.0f, %.0f] deg%s)",
+            bad + 1, ((JNumber) a.items().get(bad)).text(), bad + 1,
+            Math.toDegrees(m.joint(bad).lowerRad()), Math.toDegrees(m.joint(bad).upperRad()),
+            m.coupledJ3() && bad == 2 ? " after adding J2: the pendant's J3 is coupled" : ""));
+        return null;
+      }
+      return q;
+    }
+
+    // ---- objects --------------------------------------------------------------------------
+
+    private record Parented(String name, String parent, String path, int line) {}
+
+    private List<WorldObject> objects(JObject top) {
+      List<WorldObject> out = new ArrayList<>();
+      JArray arr = array(top, "objects", "", false);
+      if (arr == null) {
+        return out;
+      }
+      Map<String, ObjectKind> kinds = new LinkedHashMap<>();
+      List<Parented> parented = new ArrayList<>();
+      for (int i = 0; i < arr.items().size(); i++) {
+        String at = "objects[" + i + "]";
+        JObject o = object(arr.items().get(i), at, OBJECT);
+        if (o == null) {
+          continue;
+        }
+        Optional<String> objName = string(o, "name", at, true);
+        objName.ifPresent(n -> {
+          if (n.isBlank()) {
+            error(o.members().get("name").line(), at + ".name", "expected a non-empty name");
+          } else {
+            defineName(n, at + ".name", o.members().get("name").line());
+          }
+        });
+        Optional<ObjectKind> kind = string(o, "kind", at, true).flatMap(k -> switch (k) {
+          case "fixture" -> Optional.of(ObjectKind.FIXTURE);
+          case "part" -> Optional.of(ObjectKind.PART);
+          default -> {
+            error(o.members().get("kind").line(), at + ".kind", "expected \"fixture\" or \"part\", got \"" + k + "\"");
+            yield Optional.empty();
+          }
+        });
+        Shape shape = shape(o, at);
+        Rgb colour = string(o, "color", at, false).map(c -> {
+          Optional<Rgb> rgb = Rgb.parse(c);
+          if (rgb.isEmpty()) {
+            error(o.members().get("color").line(), at + ".color", "expected a colour as \"#rrggbb\", got \"" + c + "\"");
+          }
+          return rgb.orElse(Rgb.GREY);
+        }).orElse(Rgb.GREY);
+        Transform pose = pose(o, "pose", at);
+        Optional<String> parent = string(o, "parent", at, false);
+        if (objName.isPresent() && kind.isPresent()) {
+          kinds.putIfAbsent(objName.get(), kind.get());
+          parent.ifPresent(p -> parented.add(new Parented(objName.get(), p, at + ".parent", o.members().get("parent").line())));
+        }
+        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null) {
+          out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent));
+        }
+      }
+      checkParents(kinds, parented);
+      return out;
+    }
+
+    private void checkParents(Map<String, ObjectKind> kinds, List<Parented> parented) {
+      Map<String, String> parentOf = new HashMap<>();
+      for (Parented p : parented) {
+        parentOf.put(p.name(), p.parent());
+      }
+      for (Parented p : parented) {
+        ObjectKind k = kinds.get(p.parent());
+        if (k == null) {
+          error(p.line(), p.path(), "no object named '" + p.parent() + "' to be relative to");
+        } else if (k != ObjectKind.FIXTURE) {
+          error(p.line(), p.path(), "'" + p.parent() + "' is a part; only a fixture can be a parent");
+        } else {
+          // Follow the chain; coming back to p.name() is a loop.
+          String at = p.parent();
+          for (int steps = 0; at != null && steps <= parented.size(); steps++) {
+            if (at.equals(p.name())) {
+              error(p.line(), p.path(), "parents form a loop through '" + p.name() + "'");
+              break;
+            }
+            at = parentOf.get(at);
+          }
+        }
+      }
+    }
+
+    private Shape shape(JObject o, String at) {
+      Optional<String> type = string(o, "shape", at, true);
+      if (type.isEmpty()) {
+        return null;
+      }
+      Set<String> own = SHAPE_FIELDS.get(type.get());
+      if (own == null) {
+        error(o.members().get("shape").line(), at + ".shape", "expected \"box\", \"cylinder\" or \"mesh\", got \"" + type.get() + "\"");
+        return null;
+      }
+      for (Map.Entry<String, Set<String>> e : SHAPE_FIELDS.entrySet()) {
+        for (String f : e.getValue()) {
+          if (!own.contains(f) && o.members().containsKey(f)) {
+            error(o.keyLines().get(f), at + "." + f, "does not apply to a " + type.get() + " (it belongs to a " + e.getKey() + ")");
+          }
+        }
+      }
+      return switch (type.get()) {
+        case "box" -> {
+          JObject size = member(o, "size", at, XYZ, true);
+          if (size == null) {
+            yield null;
+          }
+          Double x = positive(size, "x", at + ".size");
+          Double y = positive(size, "y", at + ".size");
+          Double z = positive(size, "z", at + ".size");
+          yield x == null || y == null || z == null ? null : new Shape.Box(x, y, z);
+        }
+        case "cylinder" -> {
+          Double r = positive(o, "radius", at);
+          Double h = positive(o, "height", at);
+          yield r == null || h == null ? null : new Shape.Cylinder(r, h);
+        }
+        default -> mesh(o, at);
+      };
+    }
+
+    private Shape mesh(JObject o, String at) {
+      Double scale = o.members().containsKey("scale") ? positive(o, "scale", at) : Double.valueOf(1);
+      Optional<String> rel = string(o, "file", at, true);
+      if (rel.isEmpty() || scale == null) {
+        return null;
+      }
+      int line = o.members().get("file").line();
+      Path meshFile = resolve(rel.get(), line, at + ".file");
+      if (meshFile == null) {
+        return null;
+      }
+      if (!Files.isRegularFile(meshFile)) {
+        error(line, at + ".file", "mesh file not found: " + meshFile + " (paths are relative to the scenario file)");
+        return null;
+      }
+      try {
+        return new Shape.Mesh(meshFile, scale, StlReader.read(meshFile, scale));
+      } catch (FileFormatException e) {
+        error(line, at + ".file", "bad mesh: " + e.getMessage());
+      } catch (IOException e) {
+        error(line, at + ".file", "cannot read mesh " + meshFile + ": " + e.getMessage());
+      }
+      return null;
+    }
+
+    // ---- programs, registers, frames, camera ----------------------------------------------
+
+    private List<Path> programs(JObject top) {
+      List<Path> out = new ArrayList<>();
+      JArray arr = array(top, "programs", "", false);
+      if (arr == null) {
+        return out;
+      }
+      for (int i = 0; i < arr.items().size(); i++) {
+        String at = "programs[" + i + "]";
+        LocatedJson v = arr.items().get(i);
+        if (!(v instanceof JString s)) {
+          error(v.line(), at, "expected a path to a .LS file, got " + v.describe());
+          continue;
+        }
+        Path p = resolve(s.value(), v.line(), at);
+        if (p == null) {
+          continue;
+        }
+        if (!s.value().toLowerCase(Locale.ROOT).endsWith(".ls")) {
+          error(v.line(), at, "expected a .LS program file, got \"" + s.value() + "\"");
+        } else if (!Files.isRegularFile(p)) {
+          error(v.line(), at, "program file not found: " + p + " (paths are relative to the scenario file)");
+        } else {
+          out.add(p);
+        }
+      }
+      return out;
+    }
+
+    private Optional<String> mainProgram(JObject top, List<Path> programs) {
+      Optional<String> main = string(top, "mainProgram", "", false);
+      if (main.isEmpty()) {
+        return main;
+      }
+      int line = top.members().get("mainProgram").line();
+      boolean listed = false;
+      JArray listedPrograms = top.members().get("programs") instanceof JArray a ? a : null;
+      if (listedPrograms != null) {
+        for (LocatedJson v : listedPrograms.items()) {
+          if (v instanceof JString s && programName(s.value()).equalsIgnoreCase(main.get())) {
+            listed = true;
+          }
+        }
+      }
+      if (!listed) {
+        error(line, "mainProgram", "'" + main.get() + "' is not one of the programs listed in \"programs\"");
+        return Optional.empty();
+      }
+      return Optional.of(main.get().toUpperCase(Locale.ROOT));
+    }
+
+    /** {@code rel} against the scenario's folder, or null with an error when it is not a path. */
+    private Path resolve(String rel, int line, String path) {
+      try {
+        return dir.resolve(rel).normalize();
+      } catch (InvalidPathException e) {
+        error(line, path, "not a valid path: \"" + rel + "\"");
+        return null;
+      }
+    }
+
+    private static String programName(String path) {
+      String base = path.substring(Math.max(path.lastIndexOf('/'), path.lastIndexOf('\\')) + 1);
+      int dot = base.lastIndexOf('.');
+      return dot < 0 ? base : base.substring(0, dot);
+    }
+
+    private TreeMap<Integer, Double> registers(JObject top) {
+      TreeMap<Integer, Double> out = new TreeMap<>();
+      JObject regs = member(top, "registers", "", null, false);
+      if (regs == null) {
+        return out;
+      }
+      for (Map.Entry<String, LocatedJson> e : regs.members().entrySet()) {
+        String at = "registers." + e.getKey();
+        Integer index = index(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
+        Double v = finite(e.getValue(), at);
+        if (index != null && v != null) {
+          out.put(index, v);
+        }
+      }
+      return out;
+    }
+
+    private void frames(JObject top, Map<Integer, Transform> tool, Map<Integer, Transform> user) {
+      JObject frames = member(top, "frames", "", Set.of("tool", "user"), false);
+      if (frames == null) {
+        return;
+      }
+      for (String kind : List.of("tool", "user")) {
+        JObject set = member(frames, kind, "frames", null, false);
+        if (set == null) {
+          continue;
+        }
+        for (String key : set.members().keySet()) {
+          String at = "frames." + kind + "." + key;
+          Integer n = index(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
+          Transform pose = pose(set, key, "frames." + kind);
+          if (n != null && pose != null) {
+            (kind.equals("tool") ? tool : user).put(n, pose);
+          }
+        }
+      }
+    }
+
+    private Optional<CameraView> camera(JObject top) {
+      JObject c = member(top, "camera", "", CAMERA, false);
+      if (c == null) {
+        return Optional.empty();
+      }
+      JObject target = member(c, "target", "camera", XYZ, true);
+      Double x = target == null ? null : finiteField(target, "x", "camera.target", true);
+      Double y = target == null ? null : finiteField(target, "y", "camera.target", true);
+      Double z = target == null ? null : finiteField(target, "z", "camera.target", true);
+      Double distance = positive(c, "distance", "camera");
+      Double yaw = c.members().containsKey("yawDeg") ? finiteField(c, "yawDeg", "camera", true) : Double.valueOf(0);
+      Double pitch = c.members().containsKey("pitchDeg") ? finiteField(c, "pitchDeg", "camera", true) : Double.valueOf(30);
+      if (pitch != null && Math.abs(pitch) > 89) {
+        error(c.members().get("pitchDeg").line(), "camera.pitchDeg", "expected -89 .. 89 degrees, got " + pitch);
+        pitch = null;
+      }
+      if (x == null || y == null || z == null || distance == null || yaw == null || pitch == null) {
+        return Optional.empty();
+      }
+      return Optional.of(new CameraView(new Vec3(x, y, z), distance, Math.toRadians(yaw), Math.toRadians(pitch)));
+    }
+
+    // ---- typed access that records errors ---------------------------------------------------
+
+    private void error(int line, String path, String message) {
+      errors.add(new ScenarioError(file, line, path, message));
+    }
+
+    private void defineName(String name, String path, int line) {
+      String first = definedAt.putIfAbsent(name, path + " (line " + line + ")");
+      if (first != null) {
+        error(line, path, "duplicate name '" + name + "': already used by " + first.replace(".name", ""));
+      }
+    }
+
+    private static String join(String at, String key) {
+      return at.isEmpty() ? key : at + "." + key;
+    }
+
+    /** {@code v} as an object whose keys are all in {@code allowed} (null = any key). */
+    private JObject object(LocatedJson v, String path, Set<String> allowed) {
+      if (!(v instanceof JObject o)) {
+        error(v.line(), path, "expected an object, got " + v.describe());
+        return null;
+      }
+      if (allowed != null) {
+        for (Map.Entry<String, Integer> k : o.keyLines().entrySet()) {
+          if (!allowed.contains(k.getKey())) {
+            error(k.getValue(), join(path, k.getKey()), "unknown field (expected one of: "
+                + String.join(", ", allowed.stream().sorted().toList()) + ")");
+          }
+        }
+      }
+      return o;
+    }
+
+    private JObject member(JObject o, String key, String at, Set<String> allowed, boolean required) {
+      LocatedJson v = o.members().get(key);
+      if (v == null) {
+        if (required) {
+          error(o.line(), join(at, key), "missing: expected an object");
+        }
+        return null;
+      }
+      return object(v, join(at, key), allowed);
+    }
+
+    private JArray array(JObject o, String key, String at, boolean required) {
+      LocatedJson v = o.members().get(key);
+      if (v == null) {
+        if (required) {
+          error(o.line(), join(at, key), "missing: expected an array");
+        }
+        return null;
+      }
+      if (!(v instanceof JArray a)) {
+        error(v.line(), join(at, key), "expected an array, got " + v.describe());
+        return null;
+      }
+      return a;
+    }
+
+    private Optional<String> string(JObject o, String key, String at, boolean required) {
+      LocatedJson v = o.members().get(key);
+      if (v == null) {
+        if (required) {
+          error(o.line(), join(at, key), "missing: expected a string");
+        }
+        return Optional.empty();
+      }
+      if (!(v instanceof JString s)) {
+        error(v.line(), join(at, key), "expected a string, got " + v.describe());
+        return Optional.empty();
+      }
+      return Optional.of(s.value());
+    }
+
+    /** A finite number, or null with an error. */
+    private Double finite(LocatedJson v, String path) {
+      if (!(v instanceof JNumber n)) {
+        error(v.line(), path, "expected a number, got " + v.describe());
+        return null;
+      }
+      if (!Double.isFinite(n.value())) {
+        error(v.line(), path, "expected a finite number, got " + n.text());
+        return null;
+      }
+      return n.value();
+    }
+
+    private Double finiteField(JObject o, String key, String at, boolean required) {
+      LocatedJson v = o.members().get(key);
+      if (v == null) {
+        if (required) {
+          error(o.line(), join(at, key), "missing: expected a number");
+        }
+        return null;
+      }
+      return finite(v, join(at, key));
+    }
+
+    private Double positive(JObject o, String key, String at) {
+      Double d = finiteField(o, key, at, true);
+      if (d != null && !(d > 0)) {
+        error(o.members().get(key).line(), join(at, key), "expected a size > 0 (mm), got " + d);
+        return null;
+      }
+      return d;
+    }
+
+    /** A pose object {x, y, z (mm), w, p, r (deg, default 0)}; null with errors when bad. */
+    private Transform pose(JObject o, String key, String at) {
+      JObject p = member(o, key, at, POSE, true);
+      if (p == null) {
+        return null;
+      }
+      String path = join(at, key);
+      double[] v = new double[6];
+      boolean ok = true;
+      String[] names = {"x", "y", "z", "w", "p", "r"};
+      for (int k = 0; k < 6; k++) {
+        Double d = k < 3 || p.members().containsKey(names[k]) ? finiteField(p, names[k], path, true) : Double.valueOf(0);
+        ok &= d != null;
+        v[k] = d == null ? 0 : d;
+      }
+      return ok ? Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform() : null;
+    }
+
+    private Integer index(String key, int max, int line, String path, String what) {
+      try {
+        int n = Integer.parseInt(key);
+        if (n >= 1 && n <= max) {
+          return n;
+        }
+      } catch (NumberFormatException e) {
+        // reported below
+      }
+      error(line, path, "expected a " + what + " number 1.." + max + " as the key, got \"" + key + "\"");
+      return null;
+    }
+
+    private static String describeArray(LocatedJson v) {
+      return v instanceof JArray a ? "an array of " + a.items().size() : v.describe();
+    }
+  }
+}

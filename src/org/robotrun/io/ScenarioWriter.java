@@ -1,0 +1,196 @@
+package org.robotrun.io;
+
+import com.fasterxml.jackson.core.JsonFactory;
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.util.DefaultIndenter;
+import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
+import java.io.IOException;
+import java.io.StringWriter;
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.math.RoundingMode;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Map;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.world.CameraView;
+import org.robotrun.world.RobotSetup;
+import org.robotrun.world.Scenario;
+import org.robotrun.world.Shape;
+import org.robotrun.world.WorldObject;
+
+/**
+ * Writes scenarios in format 1 (what {@link ScenarioReader} reads), atomically. Mesh and
+ * program paths are written relative to the new file's folder, with '/' separators.
+ */
+public final class ScenarioWriter {
+  private ScenarioWriter() {}
+
+  /** Saves {@code scenario} to {@code file}: a crash leaves either the old file or the new one. */
+  public static void write(Scenario scenario, Path file) throws IOException {
+    Path dir = file.toAbsolutePath().normalize().getParent();
+    AtomicFiles.write(file, toJson(scenario, dir).getBytes(StandardCharsets.UTF_8));
+  }
+
+  /** The JSON text, with paths relative to {@code dir}. */
+  public static String toJson(Scenario s, Path dir) throws IOException {
+    StringWriter text = new StringWriter();
+    DefaultPrettyPrinter pretty = new DefaultPrettyPrinter().withObjectIndenter(new DefaultIndenter("  ", "\n"));
+    try (JsonGenerator g = new JsonFactory().createGenerator(text)) {
+      g.setPrettyPrinter(pretty);
+      g.writeStartObject();
+      g.writeNumberField("format", ScenarioReader.FORMAT);
+      if (!s.name().isEmpty()) {
+        g.writeStringField("name", s.name());
+      }
+      if (!s.description().isEmpty()) {
+        g.writeStringField("description", s.description());
+      }
+      g.writeArrayFieldStart("robots");
+      for (RobotSetup r : s.robots()) {
+        g.writeStartObject();
+        g.writeStringField("name", r.name());
+        g.writeStringField("model", r.modelId());
+        pose(g, "basePose", r.X_CB());
+        g.writeStringField("endEffector", r.endEffector().fileName());
+        g.writeArrayFieldStart("jointsDeg");
+        for (double q : r.initialJointsRad()) {
+          g.writeNumber(tidyText(Math.toDegrees(q)));
+        }
+        g.writeEndArray();
+        g.writeEndObject();
+      }
+      g.writeEndArray();
+      g.writeArrayFieldStart("objects");
+      for (WorldObject o : s.world().objects()) {
+        object(g, o, dir);
+      }
+      g.writeEndArray();
+      if (!s.programs().isEmpty()) {
+        g.writeArrayFieldStart("programs");
+        for (Path p : s.programs()) {
+          g.writeString(relative(dir, p));
+        }
+        g.writeEndArray();
+      }
+      if (s.mainProgram().isPresent()) {
+        g.writeStringField("mainProgram", s.mainProgram().get());
+      }
+      if (!s.registers().isEmpty()) {
+        g.writeObjectFieldStart("registers");
+        for (Map.Entry<Integer, Double> e : s.registers().entrySet()) {
+          number(g, e.getKey().toString(), e.getValue());
+        }
+        g.writeEndObject();
+      }
+      if (!s.toolFrames().isEmpty() || !s.userFrames().isEmpty()) {
+        g.writeObjectFieldStart("frames");
+        frameSet(g, "tool", s.toolFrames());
+        frameSet(g, "user", s.userFrames());
+        g.writeEndObject();
+      }
+      if (s.camera().isPresent()) {
+        CameraView c = s.camera().get();
+        g.writeObjectFieldStart("camera");
+        g.writeObjectFieldStart("target");
+        number(g, "x", c.targetMm().x());
+        number(g, "y", c.targetMm().y());
+        number(g, "z", c.targetMm().z());
+        g.writeEndObject();
+        number(g, "distance", c.distanceMm());
+        number(g, "yawDeg", Math.toDegrees(c.yawRad()));
+        number(g, "pitchDeg", Math.toDegrees(c.pitchRad()));
+        g.writeEndObject();
+      }
+      g.writeEndObject();
+    }
+    return text + "\n";
+  }
+
+  private static void object(JsonGenerator g, WorldObject o, Path dir) throws IOException {
+    g.writeStartObject();
+    g.writeStringField("name", o.name());
+    g.writeStringField("kind", switch (o.kind()) {
+      case FIXTURE -> "fixture";
+      case PART -> "part";
+    });
+    switch (o.shape()) {
+      case Shape.Box b -> {
+        g.writeStringField("shape", "box");
+        g.writeObjectFieldStart("size");
+        number(g, "x", b.lengthMm());
+        number(g, "y", b.widthMm());
+        number(g, "z", b.heightMm());
+        g.writeEndObject();
+      }
+      case Shape.Cylinder c -> {
+        g.writeStringField("shape", "cylinder");
+        number(g, "radius", c.radiusMm());
+        number(g, "height", c.heightMm());
+      }
+      case Shape.Mesh m -> {
+        g.writeStringField("shape", "mesh");
+        g.writeStringField("file", relative(dir, m.file()));
+        number(g, "scale", m.scale());
+      }
+    }
+    g.writeStringField("color", o.colour().hex());
+    // A scenario stores where things start; a saved cell starts where its objects are now.
+    pose(g, "pose", o.pose());
+    if (o.parent().isPresent()) {
+      g.writeStringField("parent", o.parent().get());
+    }
+    g.writeEndObject();
+  }
+
+  private static void frameSet(JsonGenerator g, String name, Map<Integer, Transform> frames) throws IOException {
+    if (frames.isEmpty()) {
+      return;
+    }
+    g.writeObjectFieldStart(name);
+    for (Map.Entry<Integer, Transform> e : frames.entrySet()) {
+      pose(g, e.getKey().toString(), e.getValue());
+    }
+    g.writeEndObject();
+  }
+
+  private static void pose(JsonGenerator g, String field, Transform t) throws IOException {
+    Xyzwpr p = Xyzwpr.fromTransform(t);
+    g.writeObjectFieldStart(field);
+    number(g, "x", p.x());
+    number(g, "y", p.y());
+    number(g, "z", p.z());
+    number(g, "w", p.wDeg());
+    number(g, "p", p.pDeg());
+    number(g, "r", p.rDeg());
+    g.writeEndObject();
+  }
+
+  /**
+   * Writes a number rounded to 15 significant digits, and below 1e-12 as 0, so that 15° does
+   * not come back as 14.999999999999998 after the trip through radians and a matrix; integral
+   * values are written without a fraction.
+   */
+  private static void number(JsonGenerator g, String field, double v) throws IOException {
+    g.writeFieldName(field);
+    g.writeNumber(tidyText(v));
+  }
+
+  private static String tidyText(double v) {
+    if (Math.abs(v) < 1e-12) {
+      return "0";
+    }
+    BigDecimal d = new BigDecimal(v).round(new MathContext(15, RoundingMode.HALF_EVEN)).stripTrailingZeros();
+    return d.signum() == 0 ? "0" : d.scale() <= 0 ? d.toBigInteger().toString() : d.toPlainString();
+  }
+
+  private static String relative(Path dir, Path file) {
+    Path abs = file.toAbsolutePath().normalize();
+    // Different roots (another drive on Windows) cannot be made relative.
+    if (dir.getRoot() == null || !dir.getRoot().equals(abs.getRoot())) {
+      return abs.toString().replace('\\', '/');
+    }
+    return dir.relativize(abs).toString().replace('\\', '/');
+  }
+}

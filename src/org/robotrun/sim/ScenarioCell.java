@@ -1,0 +1,61 @@
+package org.robotrun.sim;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+import org.robotrun.math.Transform;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
+import org.robotrun.robot.RobotModel;
+import org.robotrun.world.RobotSetup;
+import org.robotrun.world.Scenario;
+
+/**
+ * Builds a {@link Simulation} from a loaded {@link Scenario}: one controller per robot at its
+ * initial joints, placed in the cell; the first robot gets the scenario's registers and frames.
+ * Programs are files and are loaded by the caller ({@code io} reads them; {@code sim} does not).
+ * The active frame numbers stay 0 (WORLD, flange): programs select theirs with UFRAME_NUM /
+ * UTOOL_NUM.
+ */
+public final class ScenarioCell {
+  private ScenarioCell() {}
+
+  /**
+   * @param models the robot model for a model id (the caller loads robot definitions)
+   * @throws IllegalArgumentException if a robot's initial joints are outside its limits
+   */
+  public static Simulation build(Scenario scenario, Function<String, RobotModel> models, double tickSec) {
+    List<Controller> controllers = new ArrayList<>();
+    List<Transform> placements = new ArrayList<>();
+    double floorZ = Double.POSITIVE_INFINITY;
+    for (RobotSetup r : scenario.robots()) {
+      RobotModel model = models.apply(r.modelId());
+      double[] j = r.initialJoints();
+      Position.Joint start = new Position.Joint(Math.toDegrees(j[0]), Math.toDegrees(j[1]), Math.toDegrees(j[2]),
+          Math.toDegrees(j[3]), Math.toDegrees(j[4]), Math.toDegrees(j[5]));
+      Controller c;
+      try {
+        c = new Controller(r.name(), model, start);
+      } catch (IllegalArgumentException e) {
+        throw new IllegalArgumentException("robot " + r.name() + ": " + e.getMessage(), e);
+      }
+      controllers.add(c);
+      // The robot's WORLD in the cell: X_CW = X_CB · X_BW.
+      placements.add(r.X_CB().compose(model.X_WB().inverse()));
+      floorZ = Math.min(floorZ, r.X_CB().z());
+    }
+    Controller first = controllers.get(0);
+    for (Map.Entry<Integer, Double> e : scenario.registers().entrySet()) {
+      double v = e.getValue();
+      if (v == Math.rint(v) && Math.abs(v) <= Integer.MAX_VALUE) {
+        first.registers().setInteger(e.getKey(), (int) v);
+      } else {
+        first.registers().setReal(e.getKey(), v);
+      }
+    }
+    scenario.toolFrames().forEach((n, X_FT) -> first.frames().setTransform(FrameKind.TOOL, n, X_FT));
+    scenario.userFrames().forEach((n, X_WU) -> first.frames().setTransform(FrameKind.USER, n, X_WU));
+    return new Simulation(controllers, placements, scenario.world(), floorZ, tickSec);
+  }
+}

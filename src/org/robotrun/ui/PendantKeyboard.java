@@ -1,0 +1,71 @@
+package org.robotrun.ui;
+
+import static org.lwjgl.glfw.GLFW.*;
+
+import java.util.Map;
+import java.util.Optional;
+import org.robotrun.pendant.Key;
+import org.robotrun.pendant.Pendant;
+
+/**
+ * The computer keyboard as pendant keys. Keys act while held, as on a real pendant: a jog key
+ * moves the arm from press to release, and SHIFT (either Shift key) is the deadman.
+ *
+ * <pre>
+ * Shift          SHIFT (deadman)      F1..F5          F1..F5
+ * arrows         cursor               Enter, Backspace ENTER, BACKSPACE
+ * 0-9 . - ,      keypad               Escape          PREV
+ * Q W E R T Y    +X/J1 ... +ZR/J6     A S D F G H     -X/J1 ... -ZR/J6
+ * F6 NEXT  F7 COORD  F8 STEP  F9 FWD  F10 BWD  F11 HOLD  F12 RESET
+ * Page Up / Page Down   +% / -%      Insert SELECT  Delete EDIT  End DATA
+ * </pre>
+ */
+public final class PendantKeyboard {
+  private static final Map<Integer, Key> KEYS = Map.ofEntries(
+      Map.entry(GLFW_KEY_LEFT_SHIFT, Key.SHIFT), Map.entry(GLFW_KEY_RIGHT_SHIFT, Key.SHIFT),
+      Map.entry(GLFW_KEY_F1, Key.F1), Map.entry(GLFW_KEY_F2, Key.F2), Map.entry(GLFW_KEY_F3, Key.F3),
+      Map.entry(GLFW_KEY_F4, Key.F4), Map.entry(GLFW_KEY_F5, Key.F5),
+      Map.entry(GLFW_KEY_UP, Key.UP), Map.entry(GLFW_KEY_DOWN, Key.DOWN),
+      Map.entry(GLFW_KEY_LEFT, Key.LEFT), Map.entry(GLFW_KEY_RIGHT, Key.RIGHT),
+      Map.entry(GLFW_KEY_ENTER, Key.ENTER), Map.entry(GLFW_KEY_KP_ENTER, Key.ENTER),
+      Map.entry(GLFW_KEY_BACKSPACE, Key.BACKSPACE), Map.entry(GLFW_KEY_ESCAPE, Key.PREV),
+      Map.entry(GLFW_KEY_0, Key.D0), Map.entry(GLFW_KEY_1, Key.D1), Map.entry(GLFW_KEY_2, Key.D2),
+      Map.entry(GLFW_KEY_3, Key.D3), Map.entry(GLFW_KEY_4, Key.D4), Map.entry(GLFW_KEY_5, Key.D5),
+      Map.entry(GLFW_KEY_6, Key.D6), Map.entry(GLFW_KEY_7, Key.D7), Map.entry(GLFW_KEY_8, Key.D8),
+      Map.entry(GLFW_KEY_9, Key.D9), Map.entry(GLFW_KEY_PERIOD, Key.DOT), Map.entry(GLFW_KEY_MINUS, Key.MINUS),
+      Map.entry(GLFW_KEY_COMMA, Key.COMMA),
+      Map.entry(GLFW_KEY_Q, Key.JOG_PLUS_1), Map.entry(GLFW_KEY_W, Key.JOG_PLUS_2), Map.entry(GLFW_KEY_E, Key.JOG_PLUS_3),
+      Map.entry(GLFW_KEY_R, Key.JOG_PLUS_4), Map.entry(GLFW_KEY_T, Key.JOG_PLUS_5), Map.entry(GLFW_KEY_Y, Key.JOG_PLUS_6),
+      Map.entry(GLFW_KEY_A, Key.JOG_MINUS_1), Map.entry(GLFW_KEY_S, Key.JOG_MINUS_2), Map.entry(GLFW_KEY_D, Key.JOG_MINUS_3),
+      Map.entry(GLFW_KEY_F, Key.JOG_MINUS_4), Map.entry(GLFW_KEY_G, Key.JOG_MINUS_5), Map.entry(GLFW_KEY_H, Key.JOG_MINUS_6),
+      Map.entry(GLFW_KEY_F6, Key.NEXT), Map.entry(GLFW_KEY_F7, Key.COORD), Map.entry(GLFW_KEY_F8, Key.STEP),
+      Map.entry(GLFW_KEY_F9, Key.FWD), Map.entry(GLFW_KEY_F10, Key.BWD), Map.entry(GLFW_KEY_F11, Key.HOLD),
+      Map.entry(GLFW_KEY_F12, Key.RESET),
+      Map.entry(GLFW_KEY_PAGE_UP, Key.OVERRIDE_UP), Map.entry(GLFW_KEY_PAGE_DOWN, Key.OVERRIDE_DOWN),
+      Map.entry(GLFW_KEY_INSERT, Key.SELECT), Map.entry(GLFW_KEY_DELETE, Key.EDIT), Map.entry(GLFW_KEY_END, Key.DATA));
+
+  private final Pendant pendant;
+
+  public PendantKeyboard(Pendant pendant) {
+    this.pendant = pendant;
+  }
+
+  /** The pendant key a GLFW key stands for, if any. */
+  public static Optional<Key> keyFor(int glfwKey) {
+    return Optional.ofNullable(KEYS.get(glfwKey));
+  }
+
+  /** Feeds a GLFW key event to the pendant; returns whether it was a pendant key. */
+  public boolean onKey(int glfwKey, int action) {
+    Optional<Key> k = keyFor(glfwKey);
+    if (k.isEmpty() || action == GLFW_REPEAT) {
+      return k.isPresent();
+    }
+    if (action == GLFW_PRESS) {
+      pendant.press(k.get());
+    } else if (action == GLFW_RELEASE) {
+      pendant.release(k.get());
+    }
+    return true;
+  }
+}

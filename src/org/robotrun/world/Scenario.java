@@ -1,0 +1,48 @@
+package org.robotrun.world;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+import java.util.SortedMap;
+import java.util.TreeMap;
+import org.robotrun.math.Transform;
+
+/**
+ * A cell as an instructor ships it: robots, world objects and what to preload into the
+ * (first) robot's controller. All lengths mm, angles rad; files use degrees (see
+ * docs/scenario-format.md). Paths are absolute here; files store them relative to themselves.
+ *
+ * @param name a title for menus, may be empty
+ * @param description what the exercise is about, may be empty
+ * @param robots at least one
+ * @param world the fixtures and parts
+ * @param programs .LS files to load
+ * @param mainProgram the program {@code robotrun run --scenario} runs when none is named
+ * @param registers numeric registers R[i] to preset, by index
+ * @param toolFrames tool frames UT[i] (pose of the TCP in the flange frame), by number
+ * @param userFrames user frames UF[i] (pose in WORLD), by number
+ * @param camera the initial view, if given
+ */
+public record Scenario(
+    String name,
+    String description,
+    List<RobotSetup> robots,
+    World world,
+    List<Path> programs,
+    Optional<String> mainProgram,
+    SortedMap<Integer, Double> registers,
+    SortedMap<Integer, Transform> toolFrames,
+    SortedMap<Integer, Transform> userFrames,
+    Optional<CameraView> camera) {
+
+  public Scenario {
+    robots = List.copyOf(robots);
+    programs = programs.stream().map(p -> p.toAbsolutePath().normalize()).toList();
+    registers = java.util.Collections.unmodifiableSortedMap(new TreeMap<>(registers));
+    toolFrames = java.util.Collections.unmodifiableSortedMap(new TreeMap<>(toolFrames));
+    userFrames = java.util.Collections.unmodifiableSortedMap(new TreeMap<>(userFrames));
+    if (robots.isEmpty()) {
+      throw new IllegalArgumentException("a scenario needs at least one robot");
+    }
+  }
+}
