@@ -82,9 +82,22 @@ class PendantCommandTest {
     Run r = run("pendant", "--keys", dir.resolve("none.keys").toString());
     assertThat(r.exitCode()).isEqualTo(2);
     assertThat(r.err()).contains("--keys: no such file");
-    Run s = run("pendant", "--keys", dir.resolve("none.keys").toString(), "--scenario", dir.resolve("x.json").toString());
+  }
+
+  @Test
+  void scenarioCellsLoadForTheSimulationControllerOnly(@TempDir Path dir) throws Exception {
+    Path keys = dir.resolve("k.keys");
+    Files.writeString(keys, "POSN\nSHOW\nMENU\n5\nSHOW\n");
+    Run r = run("pendant", "--scenario", "scenarios/frame-teaching.json", "--keys", keys.toString());
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(0);
+    assertThat(r.out()).contains("POSITION  (live)").contains("J5   -90.000").contains("SETUP Frames");
+    Run s = run("pendant", "--keys", keys.toString(), "--scenario", dir.resolve("x.json").toString());
     assertThat(s.exitCode()).isEqualTo(2);
     assertThat(s.err()).contains("--scenario: no such file");
+    Run t = run("pendant", "--keys", keys.toString(), "--scenario", "scenarios/frame-teaching.json", "--controller",
+        "stand-in");
+    assertThat(t.exitCode()).isEqualTo(2);
+    assertThat(t.err()).contains("--scenario needs the simulation controller");
   }
 
   @Test
