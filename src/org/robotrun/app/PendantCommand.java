@@ -105,7 +105,7 @@ public final class PendantCommand implements Callable<Integer> {
         if (scenario != null) {
           throw new UserError("--scenario needs the simulation controller (--controller sim)");
         }
-        yield new StandInRobotControl();
+        yield new StandInRobotControl(new RobotFrameTeacher());
       }
       default -> throw new UserError("--controller: expected sim or stand-in, got '" + controller + "'");
     };

@@ -5,17 +5,13 @@ import java.util.Objects;
 import java.util.Optional;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import org.robotrun.math.Xyzwpr;
 import org.robotrun.motion.JogFrame;
 import org.robotrun.motion.JogState;
 import org.robotrun.pendant.RobotControl;
-import org.robotrun.program.Config;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 import org.robotrun.program.Registers;
-import org.robotrun.robot.FrameTeaching;
-import org.robotrun.robot.FrameTeachingException;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
@@ -27,7 +23,7 @@ import org.robotrun.sim.Simulation;
 /**
  * The pendant's {@link RobotControl} port on a real {@link Controller} of a {@link Simulation}:
  * the robot model's kinematics, the motion planner, collision-free jog limits and the
- * project's frame teaching ({@link FrameTeaching}). It lives in {@code app} (not
+ * project's frame teaching ({@link RobotFrameTeacher}). It lives in {@code app} (not
  * {@code pendant}) because the controller's API speaks {@code motion} and {@code robot} types,
  * which DESIGN.md keeps out of the pendant package.
  */
@@ -35,6 +31,7 @@ public final class SimRobotControl implements RobotControl {
   private final Simulation simulation;
   private final Controller controller;
   private double pendingSec;
+  private final RobotFrameTeacher teacher = new RobotFrameTeacher();
 
   /** Drives {@code controller}; {@link #advance} steps {@code simulation} (which owns it). */
   public SimRobotControl(Simulation simulation, Controller controller) {
@@ -131,23 +128,11 @@ public final class SimRobotControl implements RobotControl {
     List<Transform> X_WF = points.stream().map(q -> controller.toCartesian(q, 0, 0).toXyzwpr().toTransform()).toList();
     int tool = activeFrame(FrameKind.TOOL);
     List<Vec3> p_W = points.stream().map(q -> controller.toCartesian(q, 0, tool).toXyzwpr().position()).toList();
-    Transform frame;
-    try {
-      frame = switch (method) {
-        case TOOL_THREE_POINT -> FrameTeaching.toolThreePoint(X_WF);
-        case TOOL_SIX_POINT_XZ, TOOL_SIX_POINT_XY -> FrameTeaching.toolSixPoint(X_WF.subList(0, 3), X_WF.get(3),
-            X_WF.get(4), X_WF.get(5), method == TeachMethod.TOOL_SIX_POINT_XZ
-                ? FrameTeaching.SixPointVariant.XZ : FrameTeaching.SixPointVariant.XY);
-        case USER_THREE_POINT -> FrameTeaching.userThreePoint(p_W.get(0), p_W.get(1), p_W.get(2));
-        case USER_FOUR_POINT -> FrameTeaching.userFourPoint(p_W.get(0), p_W.get(1), p_W.get(2), p_W.get(3));
-        case DIRECT_ENTRY_TOOL, DIRECT_ENTRY_USER -> throw new FrameTeachingException("-", "direct entry has no points");
-      };
-    } catch (FrameTeachingException e) {
-      return new TeachResult.Failed(e.getMessage());
+    TeachResult r = teacher.teach(method, X_WF, p_W);
+    if (r instanceof TeachResult.Taught t) {
+      setFrame(kind, number, t.frame());
     }
-    Position.Cartesian value = Position.Cartesian.of(Xyzwpr.fromTransform(frame), Config.DEFAULT);
-    setFrame(kind, number, value);
-    return new TeachResult.Taught(value, "");
+    return r;
   }
 
   // ---- position and jog ----------------------------------------------------------------------

@@ -69,8 +69,14 @@ public final class StandInRobotControl implements RobotControl {
   private long nextHandle = 1;
   private final Map<Long, MotionPort.Start.Rejected> failures = new HashMap<>();
 
-  /** An empty controller: no programs, registers zero, frames zero, robot at all joints 0. */
-  public StandInRobotControl() {
+  private final FrameTeacher teacher;
+
+  /**
+   * An empty controller: no programs, registers zero, frames zero, robot at all joints 0;
+   * frame teaching by {@code teacher}.
+   */
+  public StandInRobotControl(FrameTeacher teacher) {
+    this.teacher = Objects.requireNonNull(teacher, "teacher");
     for (CommentTable t : CommentTable.values()) {
       comments.put(t, new HashMap<>());
     }
@@ -191,7 +197,7 @@ public final class StandInRobotControl implements RobotControl {
     List<Transform> flanges = points.stream().map(ToyKinematics::flangeInWorld).toList();
     Transform tool = toolFrame(activeFrame(FrameKind.TOOL));
     List<Vec3> tcps = flanges.stream().map(f -> f.compose(tool).translationVector()).toList();
-    TeachResult r = StandInFrameTeaching.teach(method, flanges, tcps);
+    TeachResult r = teacher.teach(method, flanges, tcps);
     if (r instanceof TeachResult.Taught t) {
       setFrame(kind, number, t.frame());
     }

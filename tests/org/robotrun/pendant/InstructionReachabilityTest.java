@@ -15,7 +15,7 @@ import org.robotrun.program.Program;
 
 /** Every statement of the program model (one record per TP statement) can be entered with keys. */
 class InstructionReachabilityTest {
-  private final StandInRobotControl control = new StandInRobotControl();
+  private final StandInRobotControl control = StandIn.control();
   private final Pendant p = new Pendant(control);
 
   private static Set<Class<?>> statementTypes() {

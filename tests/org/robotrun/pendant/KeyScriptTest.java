@@ -73,7 +73,7 @@ class KeyScriptTest {
   void showPrintsTheLcdWithTime() {
     KeyScript s = ((KeyScript.Parsed.Ok) parse("WAIT 0.5\nSHOW\n")).script();
     StringBuilder out = new StringBuilder();
-    s.run(new Pendant(new StandInRobotControl()), out::append);
+    s.run(new Pendant(StandIn.control()), out::append);
     assertThat(out.toString()).startsWith("-- SHOW (line 2, t=0.500 s) --").contains("SELECT");
     assertThat(out.toString().lines().filter(l -> l.startsWith("|"))).hasSize(Lcd.HEIGHT);
   }

@@ -14,7 +14,7 @@ import org.robotrun.program.Position;
 
 /** Jogging, POSN, frames, position registers, I/O and alarms through keys (stand-in controller). */
 class PendantMotionAndDataTest {
-  private final StandInRobotControl control = new StandInRobotControl();
+  private final StandInRobotControl control = StandIn.control();
   private final Pendant p = new Pendant(control);
 
   /** The number after {@code label} on the POSN screen's WORLD rows. */
@@ -208,12 +208,12 @@ class PendantMotionAndDataTest {
         SHIFT+F5
         SHIFT+F5
         """);
-    assertThat(body(p)).contains("Not taught: points too close together");
+    assertThat(body(p)).contains("Not taught: re-teach the X direction point: it is 0.00 mm from");
   }
 
   @Test
   void toolFrameThreePointFindsTheTcp() {
-    // three flange orientations around one point 100 mm below a TCP at (0, 0, 100) in the flange
+    // three flange orientations 30 deg apart around the tip of a TCP at (0, 0, 100) in the flange
     Position.Cartesian tcp = new Position.Cartesian(0, 0, 100, 0, 0, 0, org.robotrun.program.Config.DEFAULT);
     control.setFrame(FrameKind.TOOL, 2, tcp);
     control.selectFrame(FrameKind.TOOL, 2);
@@ -227,13 +227,13 @@ class PendantMotionAndDataTest {
         COORD
         HOLD SHIFT
         HOLD +XR/J4
-        WAIT 0.5
+        WAIT 1.0
         RELEASE +XR/J4
         RELEASE SHIFT
         SHIFT+F5
         HOLD SHIFT
         HOLD +YR/J5
-        WAIT 0.5
+        WAIT 1.0
         RELEASE +YR/J5
         RELEASE SHIFT
         SHIFT+F5

@@ -12,7 +12,7 @@ import org.robotrun.program.Program;
 
 /** Key sequences that build, edit and run a program, read back from the LCD text (stand-in controller). */
 class PendantProgramTest {
-  private final StandInRobotControl control = new StandInRobotControl();
+  private final StandInRobotControl control = StandIn.control();
   private final Pendant p = new Pendant(control);
 
   /** Creates PICK1 and records three points, jogging J1 then J2 between them. */

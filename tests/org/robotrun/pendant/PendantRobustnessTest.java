@@ -22,7 +22,7 @@ class PendantRobustnessTest {
     Key[] keys = Key.values();
     for (long seed = 1; seed <= 4; seed++) {
       Random rnd = new Random(seed);
-      StandInRobotControl control = new StandInRobotControl();
+      StandInRobotControl control = StandIn.control();
       control.saveProgram(sample());
       Pendant p = new Pendant(control);
       p.tap(Key.SELECT);
@@ -59,7 +59,7 @@ class PendantRobustnessTest {
         Key.PREV, Key.ITEM, Key.D1, Key.D2, Key.D3, Key.D5, Key.D9, Key.MINUS, Key.DOT, Key.BACKSPACE, Key.EDIT};
     for (long seed = 100; seed < 104; seed++) {
       Random rnd = new Random(seed);
-      StandInRobotControl control = new StandInRobotControl();
+      StandInRobotControl control = StandIn.control();
       control.saveProgram(sample());
       Pendant p = new Pendant(control);
       p.tap(Key.SELECT);
