@@ -25,10 +25,11 @@ import org.robotrun.program.Program;
 import org.robotrun.program.Registers;
 
 /**
- * An in-memory controller for the pendant until {@code sim.Controller} is wired: programs run on
- * the real {@link Interpreter}, but the arm is {@link ToyKinematics} (a gantry with a wrist)
- * moving in joint interpolation at the commanded speed, with no collision. Good for scripts,
- * tutorials of the pendant itself and tests; not a model of the real arm.
+ * An in-memory controller for the pendant without the simulation: programs run on the real
+ * {@link Interpreter}, but the arm is {@link ToyKinematics} (a gantry with a wrist) moving in
+ * joint interpolation at the commanded speed, with no collision; frames are taught by the
+ * {@link FrameTeacher} it is given. Its numbers are easy to check by hand, which is what the
+ * pendant's own tests need; it is not a model of the real arm ({@code app.SimRobotControl} is).
  *
  * <p>Time advances only through {@link #advance(double)}, in fixed 4 ms ticks.
  */
