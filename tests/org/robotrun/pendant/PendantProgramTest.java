@@ -277,6 +277,24 @@ class PendantProgramTest {
   }
 
   @Test
+  void namesCanBeEnteredWithPendantStyleLetters() {
+    // F1 cycles A..F, F3 M..R, F5 Y Z _ @ *; RIGHT (or another group) accepts the letter
+    run(p, """
+        SELECT
+        F1
+        F1 *2
+        RIGHT
+        F1 *5
+        F3 *2
+        F5 *3
+        1
+        ENTER
+        """);
+    assertThat(control.program("BEN_1")).isPresent();
+    assertThat(p.lcd().row(2)).startsWith("EDIT BEN_1");
+  }
+
+  @Test
   void undoGoesBackAtLeastFiftySteps() {
     run(p, """
         SELECT
