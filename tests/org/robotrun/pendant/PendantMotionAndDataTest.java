@@ -194,6 +194,33 @@ class PendantMotionAndDataTest {
   }
 
   @Test
+  void toolFrameByDirectEntryWithComment() {
+    run(p, """
+        MENU
+        5
+        DOWN
+        F2
+        F2
+        4
+        ENTER
+        TYPE GRIPPER
+        ENTER
+        DOWN *3
+        TYPE 150
+        ENTER
+        DOWN *2
+        TYPE -90
+        ENTER
+        PREV
+        """);
+    Position.Cartesian ut2 = control.frame(FrameKind.TOOL, 2);
+    assertThat(ut2.zMm()).isEqualTo(150.0);
+    assertThat(ut2.pDeg()).isCloseTo(-90, within(1e-9));
+    assertThat(control.frameComment(FrameKind.TOOL, 2)).isEqualTo("GRIPPER");
+    assertThat(body(p)).contains(" 2     0.0     0.0   150.0    0.0  -90.0    0.0 GRIPPER");
+  }
+
+  @Test
   void frameTeachingFailureShowsTheReason() {
     run(p, """
         MENU
