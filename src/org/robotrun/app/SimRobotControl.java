@@ -262,8 +262,8 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
-  public void raiseAlarm(AlarmEntry alarm) {
-    controller.raiseAlarm(alarm.code(), alarm.message());
+  public List<String> userMessages() {
+    return controller.interpreter().userScreen();
   }
 
   /** Steps the simulation in whole ticks; a remainder under one tick carries over to the next call. */

@@ -43,6 +43,7 @@ public final class Pendant {
   final PosnScreen posnScreen = new PosnScreen();
   final FrameScreen frameScreen = new FrameScreen();
   final AlarmScreen alarmScreen = new AlarmScreen();
+  final UserScreen userScreen = new UserScreen();
 
   private Screen screen = selectScreen;
   private final Deque<Screen> history = new ArrayDeque<>();
@@ -304,6 +305,12 @@ public final class Pendant {
   }
 
   private void followExecution() {
+    int messages = control.userMessages().size();
+    if (messages > seenMessages && messages > 0) {
+      // a program wrote MESSAGE[]: show it on the prompt line (the USER screen keeps them all)
+      message = "MESSAGE: " + control.userMessages().get(messages - 1);
+    }
+    seenMessages = messages;
     ExecutionStatus st = control.status();
     // follow only when execution moved (so a paused program's cursor can be moved by the operator),
     // and once more when it stops (so the cursor ends where it ended)
@@ -324,9 +331,10 @@ public final class Pendant {
   }
 
   private ExecutionStatus lastFollowed;
+  private int seenMessages;
 
   private void menu() {
-    List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm");
+    List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm", "USER");
     choose("MENU", items, i -> {
       switch (i) {
         case 0 -> show(selectScreen);
@@ -335,7 +343,8 @@ public final class Pendant {
         case 3 -> show(ioScreen);
         case 4 -> show(frameScreen);
         case 5 -> show(posnScreen);
-        default -> show(alarmScreen);
+        case 6 -> show(alarmScreen);
+        default -> show(userScreen);
       }
     });
   }

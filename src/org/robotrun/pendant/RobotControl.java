@@ -252,8 +252,8 @@ public interface RobotControl {
   /** Clears the alarm history (the active alarm stays until RESET). */
   void clearAlarmHistory();
 
-  /** Raises an alarm (e.g. a pendant operation the controller refuses in the middle of a run). */
-  void raiseAlarm(AlarmEntry alarm);
+  /** MESSAGE[] texts the programs wrote (the user screen), oldest first. */
+  List<String> userMessages();
 
   /**
    * One alarm as the pendant shows it: {@code SRVO-062 ...}, {@code INTP-311 (PICK, 4) ...}.

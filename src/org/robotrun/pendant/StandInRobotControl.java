@@ -476,11 +476,6 @@ public final class StandInRobotControl implements RobotControl {
     history.clear();
   }
 
-  @Override
-  public void raiseAlarm(AlarmEntry alarm) {
-    raise(alarm);
-  }
-
   private void raise(AlarmEntry a) {
     ownAlarm = a;
     history.add(0, a);
@@ -498,8 +493,8 @@ public final class StandInRobotControl implements RobotControl {
     }
   }
 
-  /** MESSAGE[] lines the program wrote (the user screen). */
-  public List<String> userScreen() {
+  @Override
+  public List<String> userMessages() {
     return interpreter.userScreen();
   }
 

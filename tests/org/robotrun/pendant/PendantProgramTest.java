@@ -190,6 +190,26 @@ class PendantProgramTest {
   }
 
   @Test
+  void programMessagesShowOnThePromptLineAndTheUserScreen() {
+    control.saveProgram(Program.of("HELLO", java.util.List.of(new Instruction.Message("PART READY"),
+        new Instruction.Message("DONE"))));
+    run(p, """
+        SELECT
+        ENTER
+        SHIFT+FWD
+        WAIT 0.1
+        """);
+    assertThat(p.lcd().promptLine()).startsWith("MESSAGE: DONE");
+    run(p, """
+        MENU
+        8
+        """);
+    assertThat(p.lcd().row(2)).startsWith("USER");
+    assertThat(p.lcd().body().get(0)).startsWith(" PART READY");
+    assertThat(p.lcd().body().get(1)).startsWith(" DONE");
+  }
+
+  @Test
   void holdPausesAndShiftFwdResumes() {
     createWithThreePoints();
     run(p, """
