@@ -7,6 +7,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Function;
 import java.util.function.IntConsumer;
@@ -15,6 +16,7 @@ import org.robotrun.pendant.RobotControl.CoordSystem;
 import org.robotrun.pendant.RobotControl.ExecState;
 import org.robotrun.pendant.RobotControl.ExecutionStatus;
 import org.robotrun.pendant.RobotControl.Result;
+import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Program;
@@ -61,14 +63,14 @@ public final class Pendant {
   String selectedProgram = "";
   final Map<String, Deque<Program>> undo = new HashMap<>();
   /** Lines commented out on this pendant, by program and text, so uncomment restores them exactly. */
-  final Map<String, org.robotrun.program.Instruction> commentMemo = new HashMap<>();
-  List<org.robotrun.program.Instruction> clipboard = List.of();
+  final Map<String, Instruction> commentMemo = new HashMap<>();
+  List<Instruction> clipboard = List.of();
   DefaultMotion defaultMotion = DefaultMotion.STANDARD.get(0);
 
   /** A pendant on {@code control}; uncommenting lines not commented here needs a parser (may be {@link LineParser#NONE}). */
   public Pendant(RobotControl control, LineParser lineParser) {
-    this.control = java.util.Objects.requireNonNull(control, "control");
-    this.lineParser = java.util.Objects.requireNonNull(lineParser, "lineParser");
+    this.control = Objects.requireNonNull(control, "control");
+    this.lineParser = Objects.requireNonNull(lineParser, "lineParser");
   }
 
   /** A pendant without a TP line parser. */
@@ -567,7 +569,7 @@ public final class Pendant {
     Map<Integer, Integer> seenBefore = labels(before);
     Map<Integer, Integer> first = new HashMap<>();
     for (int n = 1; n <= after.lineCount(); n++) {
-      if (after.line(n) instanceof org.robotrun.program.Instruction.Label l) {
+      if (after.line(n) instanceof Instruction.Label l) {
         Integer at = first.putIfAbsent(l.number(), n);
         if (at != null && seenBefore.getOrDefault(l.number(), 0) < 2) {
           return Optional.of("Duplicate label: LBL[" + l.number() + "] is already on line " + at);
@@ -579,8 +581,8 @@ public final class Pendant {
 
   private static Map<Integer, Integer> labels(Program p) {
     Map<Integer, Integer> count = new HashMap<>();
-    for (org.robotrun.program.Instruction in : p.lines()) {
-      if (in instanceof org.robotrun.program.Instruction.Label l) {
+    for (Instruction in : p.lines()) {
+      if (in instanceof Instruction.Label l) {
         count.merge(l.number(), 1, Integer::sum);
       }
     }

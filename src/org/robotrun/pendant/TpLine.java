@@ -1,10 +1,13 @@
 package org.robotrun.pendant;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.OptionalDouble;
+import java.util.function.BiFunction;
+import java.util.function.Function;
 import org.robotrun.pendant.ExprText.BadText;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
@@ -242,7 +245,7 @@ public final class TpLine {
       case Motion.SpeedRegister r -> ExprText.item("R", r.register());
     };
     f.add(new Field(speed, Field.Edit.entry(speed, t -> withSpeed(m, new Motion.Speed(speedValue(t), m.speed().unit())))));
-    List<Motion.SpeedUnit> units = java.util.Arrays.stream(Motion.SpeedUnit.values()).filter(u -> u.fits(m.type())).toList();
+    List<Motion.SpeedUnit> units = Arrays.stream(Motion.SpeedUnit.values()).filter(u -> u.fits(m.type())).toList();
     f.add(new Field(unit(m.speed().unit()), Field.Edit.choice(units.stream().map(TpLine::unit).toList(),
         k -> withSpeed(m, new Motion.Speed(m.speed().value(), units.get(k))))));
     f.add(Field.fixed(" "));
@@ -350,7 +353,7 @@ public final class TpLine {
     };
   }
 
-  private static Field targetField(Motion.Target t, Program program, java.util.function.Function<Motion.Target, Instruction> make) {
+  private static Field targetField(Motion.Target t, Program program, Function<Motion.Target, Instruction> make) {
     String text = targetText(t, program);
     String initial = switch (t) {
       case Motion.Local l -> Integer.toString(l.number());
@@ -419,14 +422,14 @@ public final class TpLine {
 
   // ---- shared field builders -----------------------------------------------------------------
 
-  private static Field itemField(String kind, Item item, java.util.function.Function<Item, Instruction> make) {
+  private static Field itemField(String kind, Item item, Function<Item, Instruction> make) {
     String text = ExprText.item(kind, item);
     return new Field(text, Field.Edit.entry(ExprText.index(item.index()), t -> make.apply(ExprText.parseItem(kind, t))));
   }
 
-  private static Field ioField(IoKind kind, Item port, java.util.function.BiFunction<IoKind, Item, Instruction> make) {
+  private static Field ioField(IoKind kind, Item port, BiFunction<IoKind, Item, Instruction> make) {
     String text = ExprText.item(kind.name(), port);
-    List<IoKind> outs = java.util.Arrays.stream(IoKind.values()).filter(IoKind::writable).toList();
+    List<IoKind> outs = Arrays.stream(IoKind.values()).filter(IoKind::writable).toList();
     return new Field(text, Field.Edit.both(outs.stream().map(k -> k.name() + "[...]").toList(),
         k -> make.apply(outs.get(k), port), ExprText.index(port.index()), t -> {
           String u = t.trim().toUpperCase(Locale.ROOT);
@@ -441,30 +444,30 @@ public final class TpLine {
         }));
   }
 
-  private static Field exprField(Expr e, java.util.function.Function<Expr, Instruction> make) {
+  private static Field exprField(Expr e, Function<Expr, Instruction> make) {
     String text = ExprText.format(e);
     return new Field(text, Field.Edit.entry(text, t -> make.apply(ExprText.parse(t))));
   }
 
-  private static Field indexField(Index i, java.util.function.Function<Index, Instruction> make) {
+  private static Field indexField(Index i, Function<Index, Instruction> make) {
     String text = ExprText.index(i);
     return new Field(text, Field.Edit.entry(text, t -> make.apply(ExprText.parseIndex(t))));
   }
 
-  private static Field labelField(LabelRef l, java.util.function.Function<LabelRef, Instruction> make) {
+  private static Field labelField(LabelRef l, Function<LabelRef, Instruction> make) {
     String text = ExprText.label(l);
     return new Field(text, Field.Edit.entry(ExprText.index(l.index()), t -> make.apply(parseLabel(t))));
   }
 
   private static Field callField(Instruction.Call c, List<String> programs,
-      java.util.function.Function<Instruction.Call, Instruction> make) {
+      Function<Instruction.Call, Instruction> make) {
     String text = callText(c);
     return new Field(text, Field.Edit.both(programs, k -> make.apply(new Instruction.Call(programs.get(k), c.args())),
         text, t -> make.apply(parseCall(t))));
   }
 
   private static Field branchField(Instruction.Branch b, List<String> programs,
-      java.util.function.Function<Instruction.Branch, Instruction> make) {
+      Function<Instruction.Branch, Instruction> make) {
     String text = switch (b) {
       case Instruction.Jump j -> "JMP " + ExprText.label(j.label());
       case Instruction.Call c -> "CALL " + callText(c);
