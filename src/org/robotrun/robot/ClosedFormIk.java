@@ -2,6 +2,7 @@ package org.robotrun.robot;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.robotrun.math.Transform;
 
 /**
@@ -18,7 +19,8 @@ import org.robotrun.math.Transform;
  * <ul>
  *   <li><b>F/N</b> (wrist): F when J5 &gt; 0, N when J5 ≤ 0. The two wrist solutions of one arm
  *       have opposite J5 ({@code θ5' = −θ5}), so each arm has one F and one N solution.
- *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'.)
+ *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'; the same sign
+ *       rule as ROS-Industrial tesseract's {@code getRobotConfig} for FANUC arms.)
  *   <li><b>U/D</b> (elbow): U when {@code sin(θ3 + atan2(a2, c3)) > 0}, i.e. the wrist centre is
  *       on the forward side of the upper arm (for the LR Mate: kinematic J3 &lt; 84.0°, where
  *       the forearm and upper arm line up, the elbow singularity). The OPW elbow pairs are
@@ -28,7 +30,8 @@ import org.robotrun.math.Transform;
  *       The two J1 solutions differ by 180° (b = 0), so one is T and one B.
  * </ul>
  * So the eight solutions map one to one onto the eight flag triples (a test checks this on
- * every reference pose). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
+ * every reference pose, and another checks each flag against its geometric meaning from the
+ * link frames: the wrist centre in link 1's and link 2's frames). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
  * J1 when its range exceeds ±180°) get every ±2π variant inside the limits.
  *
  * <p>Not thread-safe (scratch arrays); allocation-free apart from the result object.
@@ -125,19 +128,19 @@ public final class ClosedFormIk {
     if (X_BF != target) {
       System.arraycopy(X_BF, 0, target, 0, 12);
     }
-    int valid = solveBase(target, 0);
+    // The arm is known from the flags alone: T is the front J1 solution, U the +acos elbow
+    // (see the class comment), so only that arm's wrist is computed.
+    int arm = (config.top() ? 0 : 2) + (config.up() ? 0 : 1);
+    int valid = solveBase(target, 0, 1 << arm);
     if (valid == 0) {
-      return outOfReach();
+      return solveBase(target, 0) == 0 ? outOfReach() : new IkResult.Unreachable(
+          IkResult.Reason.OUT_OF_REACH,
+          "the pose is out of reach in CONFIG '" + config + "' (only the other arm side reaches it)");
     }
-    int found = -1;
-    for (int k = 0; k < BASE_SOLUTIONS && found < 0; k++) {
-      if ((valid & (1 << k)) != 0 && matches(k, config)) {
-        found = k;
-      }
-    }
-    if (found < 0) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose has no solution in CONFIG '" + config + "' (that arm side is out of reach)");
+    // F/N: the wrist whose J5 has the asked sign (either one at the wrist singularity).
+    int found = 2 * arm;
+    if (!singularWrist[found] && (base[found * 6 + 4] > 0) != config.flip()) {
+      found++;
     }
     int o = found * 6;
     for (int i = 0; i < 6; i++) {
@@ -172,6 +175,9 @@ public final class ClosedFormIk {
 
   /** As {@link #solveNearest(Transform, double[])} for a packed pose. */
   public IkResult solveNearest(double[] X_BF, double[] qCurrent) {
+    if (qCurrent.length != RobotModel.DOF) {
+      throw new IllegalArgumentException("expected 6 current joint values, got " + qCurrent.length);
+    }
     if (X_BF != target) {
       System.arraycopy(X_BF, 0, target, 0, 12);
     }
@@ -190,16 +196,16 @@ public final class ClosedFormIk {
    * if so, else why not. Cheaper than a solve (no result, no FK check); for other solvers'
    * quick rejection of unreachable targets.
    */
-  public java.util.Optional<IkResult.Unreachable> reachability(double[] X_BF) {
+  public Optional<IkResult.Unreachable> reachability(double[] X_BF) {
     System.arraycopy(X_BF, 0, target, 0, 12);
     int valid = solveBase(target, 0);
     if (valid == 0) {
-      return java.util.Optional.of(outOfReach());
+      return Optional.of(outOfReach());
     }
     for (int i = 0; i < 6; i++) {
       cand[i] = 0;
     }
-    return nearest(valid, cand) ? java.util.Optional.empty() : java.util.Optional.of(limitsOnly());
+    return nearest(valid, cand) ? Optional.empty() : Optional.of(limitsOnly());
   }
 
   /** Puts into {@link #best} the in-limit variant nearest to {@code qCurrent}; false if none. */
@@ -293,6 +299,14 @@ public final class ClosedFormIk {
 
   /** Fills {@link #base}; returns the validity mask. Brandstötter et al. 2014, eqs. for θ1..θ6. */
   private int solveBase(double[] X, double theta4Singular) {
+    return solveBase(X, theta4Singular, 0b1111);
+  }
+
+  /**
+   * As {@link #solveBase(double[], double)} for the arms in {@code arms} only (bit i: arm i,
+   * i.e. solutions 2i and 2i+1; arms 0, 1 front elbow up/down, arms 2, 3 back elbow up/down).
+   */
+  private int solveBase(double[] X, double theta4Singular, int arms) {
     double r00 = X[0], r01 = X[1], r02 = X[2];
     double r10 = X[3], r11 = X[4], r12 = X[5];
     double r20 = X[6], r21 = X[7], r22 = X[8];
@@ -316,22 +330,30 @@ public final class ClosedFormIk {
     // Front arm (θ1 = φ − β), elbows i and ii.
     double s1 = Math.sqrt(s1sq);
     double cosA = (s1sq - c2sq - k2) / (2 * c2 * kappa);
-    if (s1 > 0 && Math.abs(cosA) <= 1 + ACOS_SLACK) {
+    if ((arms & 0b0011) != 0 && s1 > 0 && Math.abs(cosA) <= 1 + ACOS_SLACK) {
       double g = Math.acos(clamp((s1sq + c2sq - k2) / (2 * s1 * c2)));
       double e = Math.atan2(nx1, dz);
       double a = Math.acos(clamp(cosA));
-      valid |= arm(0, th1Front, -g + e, a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
-      valid |= arm(2, th1Front, g + e, -a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      if ((arms & 0b0001) != 0) {
+        valid |= arm(0, th1Front, -g + e, a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      }
+      if ((arms & 0b0010) != 0) {
+        valid |= arm(2, th1Front, g + e, -a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      }
     }
     // Back arm (θ1 = φ + β − π), elbows iii and iv.
     double s2 = Math.sqrt(s2sq);
     double cosB = (s2sq - c2sq - k2) / (2 * c2 * kappa);
-    if (s2 > 0 && Math.abs(cosB) <= 1 + ACOS_SLACK) {
+    if ((arms & 0b1100) != 0 && s2 > 0 && Math.abs(cosB) <= 1 + ACOS_SLACK) {
       double g = Math.acos(clamp((s2sq + c2sq - k2) / (2 * s2 * c2)));
       double e = Math.atan2(nx2, dz);
       double a = Math.acos(clamp(cosB));
-      valid |= arm(4, th1Back, -g - e, a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
-      valid |= arm(6, th1Back, g - e, -a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      if ((arms & 0b0100) != 0) {
+        valid |= arm(4, th1Back, -g - e, a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      }
+      if ((arms & 0b1000) != 0) {
+        valid |= arm(6, th1Back, g - e, -a - psi, r00, r01, r02, r10, r11, r12, r20, r21, r22, theta4Singular);
+      }
     }
     return valid;
   }
@@ -386,19 +408,6 @@ public final class ClosedFormIk {
     base[o + 3] = wrap(sign[3] * (t4 + offset[3]));
     base[o + 4] = wrap(sign[4] * (t5 + offset[4]));
     base[o + 5] = wrap(sign[5] * (t6 + offset[5]));
-  }
-
-  /** Whether base solution k has the flags of {@code c}, allowing a flag exactly at its boundary. */
-  private boolean matches(int k, Config c) {
-    int o = k * 6;
-    for (int i = 0; i < 6; i++) {
-      cand[i] = base[o + i];
-    }
-    double mf = flipMargin(cand), mu = upMargin(cand), mt = topMargin(cand);
-    boolean fOk = (mf > 0) == c.flip() || singularWrist[k] || Math.abs(mf) < 1e-9;
-    boolean uOk = (mu > 0) == c.up() || Math.abs(mu) < 1e-9;
-    boolean tOk = (mt > 0) == c.top() || Math.abs(mt) < 1e-6;
-    return fOk && uOk && tOk;
   }
 
   /** F/N margin: J5 itself (F when positive). */

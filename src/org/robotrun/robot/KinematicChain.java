@@ -1,5 +1,6 @@
 package org.robotrun.robot;
 
+import org.robotrun.math.SinCos;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 
@@ -14,7 +15,8 @@ import org.robotrun.math.Vec3;
  * <p>Why: {@link ForwardKinematics} builds immutable {@link Transform}s per joint, clear but
  * about ten allocations per call; here each joint's {@code X_PJ · Rot(axis, q)} is precomputed
  * as {@code P + cos(q)·Q + sin(q)·S} (Rodrigues: {@code Rot = I + sin·K + (1−cos)·K²}), so a
- * joint costs one sin/cos pair and two 3x3 products.
+ * joint costs one sin/cos pair and two 3x3 products, and a joint about an unrotated ±x/±y/±z
+ * axis only turns two columns.
  */
 public final class KinematicChain {
   private static final int DOF = RobotModel.DOF;
@@ -27,6 +29,10 @@ public final class KinematicChain {
   // Per joint i: its axis in the joint frame, rotated by X_PJ's rotation (axis in the parent link).
   private final double[] axisInParent = new double[DOF * 3];
   private final double[] x6f = new double[12];
+  // Per joint: 0 for a general joint frame; 1, 2, 3 when the joint frame is not rotated and the
+  // axis is ±x, ±y, ±z (every URDF arm we ship), which needs 12 multiplications instead of 54.
+  private final int[] kind = new int[DOF];
+  private final double[] axisSign = new double[DOF];
   private final double[] lower = new double[DOF];
   private final double[] upper = new double[DOF];
 
@@ -58,6 +64,14 @@ public final class KinematicChain {
       axisInParent[i * 3 + 2] = ap.z();
       lower[i] = j.lowerRad();
       upper[i] = j.upperRad();
+      boolean unrotated = j.X_PJ().rotationAngleTo(Transform.IDENTITY) == 0;
+      double[] comps = {a.x(), a.y(), a.z()};
+      for (int c = 0; c < 3 && unrotated; c++) {
+        if (Math.abs(comps[c]) == 1) {
+          kind[i] = c + 1;
+          axisSign[i] = comps[c];
+        }
+      }
     }
     pack(model.X_6F(), x6f, 0);
   }
@@ -68,6 +82,10 @@ public final class KinematicChain {
    * origin x, y, z at [6i..6i+2] (mm) and unit direction at [6i+3..6i+5]).
    */
   public void flangePose(double[] q, double[] X_BF, double[] axes) {
+    // X_BF is written last, so it holds the six (sin, cos) pairs meanwhile: no allocation.
+    for (int i = 0; i < DOF; i++) {
+      SinCos.sinCos(q[i], X_BF, 2 * i);
+    }
     double r00 = 1, r01 = 0, r02 = 0, r10 = 0, r11 = 1, r12 = 0, r20 = 0, r21 = 0, r22 = 1;
     double px = 0, py = 0, pz = 0;
     for (int i = 0; i < DOF; i++) {
@@ -87,29 +105,57 @@ public final class KinematicChain {
         axes[o6 + 4] = r10 * ax + r11 * ay + r12 * az;
         axes[o6 + 5] = r20 * ax + r21 * ay + r22 * az;
       }
-      double c = Math.cos(q[i]), sn = Math.sin(q[i]);
-      int o9 = i * 9;
-      double m00 = p[o9] + c * qm[o9] + sn * s[o9];
-      double m01 = p[o9 + 1] + c * qm[o9 + 1] + sn * s[o9 + 1];
-      double m02 = p[o9 + 2] + c * qm[o9 + 2] + sn * s[o9 + 2];
-      double m10 = p[o9 + 3] + c * qm[o9 + 3] + sn * s[o9 + 3];
-      double m11 = p[o9 + 4] + c * qm[o9 + 4] + sn * s[o9 + 4];
-      double m12 = p[o9 + 5] + c * qm[o9 + 5] + sn * s[o9 + 5];
-      double m20 = p[o9 + 6] + c * qm[o9 + 6] + sn * s[o9 + 6];
-      double m21 = p[o9 + 7] + c * qm[o9 + 7] + sn * s[o9 + 7];
-      double m22 = p[o9 + 8] + c * qm[o9 + 8] + sn * s[o9 + 8];
-      double n00 = r00 * m00 + r01 * m10 + r02 * m20;
-      double n01 = r00 * m01 + r01 * m11 + r02 * m21;
-      double n02 = r00 * m02 + r01 * m12 + r02 * m22;
-      double n10 = r10 * m00 + r11 * m10 + r12 * m20;
-      double n11 = r10 * m01 + r11 * m11 + r12 * m21;
-      double n12 = r10 * m02 + r11 * m12 + r12 * m22;
-      double n20 = r20 * m00 + r21 * m10 + r22 * m20;
-      double n21 = r20 * m01 + r21 * m11 + r22 * m21;
-      double n22 = r20 * m02 + r21 * m12 + r22 * m22;
-      r00 = n00; r01 = n01; r02 = n02;
-      r10 = n10; r11 = n11; r12 = n12;
-      r20 = n20; r21 = n21; r22 = n22;
+      double sn = X_BF[2 * i], c = X_BF[2 * i + 1];
+      switch (kind[i]) {
+        case 1 -> {
+          // R·Rx(±q): columns 1 and 2 turn.
+          double s1 = axisSign[i] * sn;
+          double n01 = r01 * c + r02 * s1, n02 = r02 * c - r01 * s1;
+          double n11 = r11 * c + r12 * s1, n12 = r12 * c - r11 * s1;
+          double n21 = r21 * c + r22 * s1, n22 = r22 * c - r21 * s1;
+          r01 = n01; r02 = n02; r11 = n11; r12 = n12; r21 = n21; r22 = n22;
+        }
+        case 2 -> {
+          // R·Ry(±q): columns 0 and 2 turn.
+          double s1 = axisSign[i] * sn;
+          double n00 = r00 * c - r02 * s1, n02 = r02 * c + r00 * s1;
+          double n10 = r10 * c - r12 * s1, n12 = r12 * c + r10 * s1;
+          double n20 = r20 * c - r22 * s1, n22 = r22 * c + r20 * s1;
+          r00 = n00; r02 = n02; r10 = n10; r12 = n12; r20 = n20; r22 = n22;
+        }
+        case 3 -> {
+          // R·Rz(±q): columns 0 and 1 turn.
+          double s1 = axisSign[i] * sn;
+          double n00 = r00 * c + r01 * s1, n01 = r01 * c - r00 * s1;
+          double n10 = r10 * c + r11 * s1, n11 = r11 * c - r10 * s1;
+          double n20 = r20 * c + r21 * s1, n21 = r21 * c - r20 * s1;
+          r00 = n00; r01 = n01; r10 = n10; r11 = n11; r20 = n20; r21 = n21;
+        }
+        default -> {
+          int o9 = i * 9;
+          double m00 = p[o9] + c * qm[o9] + sn * s[o9];
+          double m01 = p[o9 + 1] + c * qm[o9 + 1] + sn * s[o9 + 1];
+          double m02 = p[o9 + 2] + c * qm[o9 + 2] + sn * s[o9 + 2];
+          double m10 = p[o9 + 3] + c * qm[o9 + 3] + sn * s[o9 + 3];
+          double m11 = p[o9 + 4] + c * qm[o9 + 4] + sn * s[o9 + 4];
+          double m12 = p[o9 + 5] + c * qm[o9 + 5] + sn * s[o9 + 5];
+          double m20 = p[o9 + 6] + c * qm[o9 + 6] + sn * s[o9 + 6];
+          double m21 = p[o9 + 7] + c * qm[o9 + 7] + sn * s[o9 + 7];
+          double m22 = p[o9 + 8] + c * qm[o9 + 8] + sn * s[o9 + 8];
+          double n00 = r00 * m00 + r01 * m10 + r02 * m20;
+          double n01 = r00 * m01 + r01 * m11 + r02 * m21;
+          double n02 = r00 * m02 + r01 * m12 + r02 * m22;
+          double n10 = r10 * m00 + r11 * m10 + r12 * m20;
+          double n11 = r10 * m01 + r11 * m11 + r12 * m21;
+          double n12 = r10 * m02 + r11 * m12 + r12 * m22;
+          double n20 = r20 * m00 + r21 * m10 + r22 * m20;
+          double n21 = r20 * m01 + r21 * m11 + r22 * m21;
+          double n22 = r20 * m02 + r21 * m12 + r22 * m22;
+          r00 = n00; r01 = n01; r02 = n02;
+          r10 = n10; r11 = n11; r12 = n12;
+          r20 = n20; r21 = n21; r22 = n22;
+        }
+      }
     }
     // Flange: X_B6 · X_6F.
     double[] f = x6f;

@@ -13,13 +13,15 @@ import org.robotrun.math.Transform;
  *
  * <p>Method. The error is {@code e = [(p_d − p)/L; log(R_d·Rᵀ)]} (position scaled by a
  * characteristic length L so millimetres and radians weigh alike). Each step solves
- * {@code (Jsᵀ·Js + λI)·Δq = Jsᵀ·e} with {@code λ = ½|e|² + λ0}: the damping follows the error,
- * after Sugihara, "Solvability-unconcerned inverse kinematics by the Levenberg–Marquardt
+ * {@code (Jsᵀ·Js + λI)·Δq = Jsᵀ·e} with {@code λ = μ·½|e|² + λ0}: the damping follows the
+ * error, after Sugihara, "Solvability-unconcerned inverse kinematics by the Levenberg–Marquardt
  * method" (IEEE T-RO 2011), so far from the target the step is short and steady and near it the
- * solve becomes Gauss–Newton with quadratic convergence. An attempt is abandoned when the error
- * stops falling (local minimum, often pinned at a limit) or after a per-attempt iteration
- * budget; the next seed then starts: the caller's start, then seeds spread over the joint
- * ranges (a Halton sequence) with J1 turned toward the target, front side first.
+ * solve becomes Gauss–Newton with quadratic convergence. A joint at a limit that the step would
+ * push further out is taken out of the step (its column dropped) so the others make up for it.
+ * An attempt is abandoned when the error stops falling (local minimum, often pinned at a limit)
+ * or after a per-attempt iteration budget; the next seed then starts: the caller's start, then
+ * 64 seeds spread over the joint ranges (a Halton sequence), two of every three with J1 turned
+ * toward or away from the target, with twins across J1's limit gap.
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
@@ -55,14 +57,15 @@ public final class NumericIk {
     }
 
     /**
-     * 1e-6 mm, 1e-9 rad; 25 iterations per attempt, 2000 in all (about 1 ms), 5 ms CPU time
-     * as a safety net only (the iteration cap keeps results independent of machine speed);
-     * L = 300 mm, μ = 0.1,
-     * stall below 1 % progress per step. Tuned on the LR Mate reference targets (all three
-     * starts solve every row; p99 about 120 iterations).
+     * 1e-6 mm, 1e-9 rad; 20 iterations per attempt, 2000 in all (about 1 ms once compiled);
+     * 20 ms of CPU time as a safety net only (code the JIT has not compiled yet runs ~50 times
+     * slower, and the iteration cap keeps results independent of machine speed); L = 300 mm,
+     * μ = 0.1, stalled after three steps gaining less than 5 % each. Tuned on the LR Mate
+     * reference targets: all three starts solve every row; from a random start the median is
+     * 15 iterations, p99 about 110, worst about 220.
      */
     public static Settings defaults() {
-      return new Settings(1e-6, 1e-9, 25, 2000, 5_000_000, 300, 0.1, 0.99);
+      return new Settings(1e-6, 1e-9, 20, 2000, 20_000_000, 300, 0.1, 0.95);
     }
   }
 
@@ -71,6 +74,8 @@ public final class NumericIk {
   private static final int SEEDS = 64;
   /** Seeds stay off the limits: the middle 80 % of each range. */
   private static final double SEED_MARGIN = 0.1;
+  /** Below this manipulability (|det| of the scaled Jacobian) a failed solve is SINGULAR. */
+  private static final double SINGULAR_MANIPULABILITY = 1e-4;
   /** λ0: keeps the normal equations positive definite at singularities. */
   private static final double BASE_DAMPING = 1e-9;
 
@@ -89,9 +94,12 @@ public final class NumericIk {
   private final double[] scratch = new double[Jacobian.SCRATCH];
   private final double[] err = new double[6];
   private final double[] a = new double[36];
+  private final double[] jt = new double[36];
+  private final double[] invDiag = new double[6];
   private final double[] g = new double[6];
   private final double[] q = new double[6];
   private final double[] bestQ = new double[6];
+  private final int[] perm = new int[6];
   private final double[] j1Seeds = new double[8];
   private int j1SeedCount;
   /** Lowest ½|e|² seen in this solve, at {@link #bestQ}. */
@@ -109,12 +117,13 @@ public final class NumericIk {
     this.reachCheck = model.opw().map(p -> new ClosedFormIk(model));
     this.lower = model.lowerLimits();
     this.upper = model.upperLimits();
-    // Reach sphere: J2's origin (at q1 = 0) plus every later offset, flange included.
+    // Reach: no point is farther from the circle J2's origin sweeps about the J1 axis than the
+    // sum of the offsets from J2 on, flange included (a loose but safe bound for any arm).
     Transform j2 = model.joint(0).X_PJ().compose(model.joint(1).X_PJ());
     shoulder[0] = j2.x();
     shoulder[1] = j2.y();
     shoulder[2] = j2.z();
-    double r = Math.hypot(j2.x(), j2.y());
+    double r = 0;
     for (int i = 2; i < RobotModel.DOF; i++) {
       r += model.joint(i).X_PJ().translationVector().norm();
     }
@@ -138,6 +147,9 @@ public final class NumericIk {
   }
 
   private IkResult solvePacked(double[] qStart) {
+    if (qStart.length != RobotModel.DOF) {
+      throw new IllegalArgumentException("expected 6 start joint values, got " + qStart.length);
+    }
     long t0 = -1;
     double invL = 1 / settings.lengthScaleMm();
     double tolP = settings.positionToleranceMm() * invL;
@@ -148,9 +160,9 @@ public final class NumericIk {
     for (int attempt = 0; attempt <= SEEDS; attempt++) {
       if (attempt == 1) {
         // The start did not lead there: before restarting, reject what cannot be reached.
-        IkResult.Unreachable early = precheck();
-        if (early != null) {
-          return early;
+        Optional<IkResult.Unreachable> early = precheck();
+        if (early.isPresent()) {
+          return early.get();
         }
       }
       startFrom(attempt, qStart);
@@ -285,49 +297,26 @@ public final class NumericIk {
 
   /** g = Δq from the normal equations with the locked joints' columns left out (Δq = 0 there). */
   private void solveNormalEquations(double lambda, int locked) {
+    // jt = Jsᵀ (rows contiguous), a locked joint's row zeroed: its Δq comes out 0.
     for (int r = 0; r < 6; r++) {
-      boolean lr = (locked & (1 << r)) != 0;
-      double gr = 0;
-      if (!lr) {
-        for (int k = 0; k < 6; k++) {
-          gr += jac[k * 6 + r] * err[k];
-        }
+      boolean l = (locked & (1 << r)) != 0;
+      int ro = r * 6;
+      for (int k = 0; k < 6; k++) {
+        jt[ro + k] = l ? 0 : jac[k * 6 + r];
       }
-      g[r] = gr;
+    }
+    for (int r = 0; r < 6; r++) {
+      int ro = r * 6;
+      double t0 = jt[ro], t1 = jt[ro + 1], t2 = jt[ro + 2], t3 = jt[ro + 3], t4 = jt[ro + 4], t5 = jt[ro + 5];
+      g[r] = t0 * err[0] + t1 * err[1] + t2 * err[2] + t3 * err[3] + t4 * err[4] + t5 * err[5];
       for (int c = 0; c <= r; c++) {
-        double sum = 0;
-        if (!lr && (locked & (1 << c)) == 0) {
-          for (int k = 0; k < 6; k++) {
-            sum += jac[k * 6 + r] * jac[k * 6 + c];
-          }
-        }
-        a[r * 6 + c] = r == c ? sum + lambda : sum;
+        int co = c * 6;
+        a[ro + c] = t0 * jt[co] + t1 * jt[co + 1] + t2 * jt[co + 2] + t3 * jt[co + 3]
+            + t4 * jt[co + 4] + t5 * jt[co + 5];
       }
+      a[ro + r] += lambda;
     }
-    // Cholesky (lower, in place) and two triangular solves.
-    for (int r = 0; r < 6; r++) {
-      for (int c = 0; c <= r; c++) {
-        double sum = a[r * 6 + c];
-        for (int k = 0; k < c; k++) {
-          sum -= a[r * 6 + k] * a[c * 6 + k];
-        }
-        a[r * 6 + c] = r == c ? Math.sqrt(sum) : sum / a[c * 6 + c];
-      }
-    }
-    for (int r = 0; r < 6; r++) {
-      double sum = g[r];
-      for (int k = 0; k < r; k++) {
-        sum -= a[r * 6 + k] * g[k];
-      }
-      g[r] = sum / a[r * 6 + r];
-    }
-    for (int r = 5; r >= 0; r--) {
-      double sum = g[r];
-      for (int k = r + 1; k < 6; k++) {
-        sum -= a[k * 6 + r] * g[k];
-      }
-      g[r] = sum / a[r * 6 + r];
-    }
+    Dense6.choleskySolve(a, g, invDiag);
   }
 
   /** Attempt 0 starts from the caller's joints; later ones from the seed list. */
@@ -385,20 +374,21 @@ public final class NumericIk {
     }
   }
 
-  private IkResult.Unreachable precheck() {
+  /** Why the target cannot be reached, if that is known without iterating. */
+  private Optional<IkResult.Unreachable> precheck() {
     if (reachCheck.isPresent()) {
       // Only the verdict is used: the numeric solve below never sees the closed-form joints.
-      return reachCheck.get().reachability(target).orElse(null);
+      return reachCheck.get().reachability(target);
     }
     double dx = target[9], dy = target[10], dz = target[11] - shoulder[2];
     double horizontal = Math.sqrt(dx * dx + dy * dy);
     double d = Math.hypot(horizontal - Math.hypot(shoulder[0], shoulder[1]), dz);
     if (d > reachRadiusMm) {
-      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
+      return Optional.of(new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
           "position (%.1f, %.1f, %.1f) mm is %.0f mm from the shoulder, beyond the %.0f mm reach",
-          target[9], target[10], target[11], d, reachRadiusMm));
+          target[9], target[10], target[11], d, reachRadiusMm)));
     }
-    return null;
+    return Optional.empty();
   }
 
   private IkResult solved(int iterations) {
@@ -409,7 +399,7 @@ public final class NumericIk {
 
   /** No convergence: say whether the best attempt was pinned at a limit or near a singularity. */
   private IkResult giveUp(int iterations, String why) {
-    chain.flangePose(bestQ, pose, null);
+    Jacobian.tcpJacobianInBase(chain, bestQ, null, jac, pose, scratch);
     double dx = pose[9] - target[9], dy = pose[10] - target[10], dz = pose[11] - target[11];
     double posErr = Math.sqrt(dx * dx + dy * dy + dz * dz);
     double rotErr = ClosedFormIk.rotationAngle(pose, target);
@@ -424,6 +414,17 @@ public final class NumericIk {
     if (atLimit >= 0) {
       return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
           "no solution found inside the joint limits; J" + (atLimit + 1) + " stopped at its limit; " + detail);
+    }
+    // Manipulability |det Js| of the best posture (scaled as in the iterations).
+    double invL = 1 / settings.lengthScaleMm();
+    for (int c = 0; c < 18; c++) {
+      jac[c] *= invL;
+    }
+    double w = Math.abs(Dense6.luDecompose(jac, perm));
+    if (w < SINGULAR_MANIPULABILITY) {
+      return new IkResult.Unreachable(IkResult.Reason.SINGULAR,
+          "no solution found: the closest posture is singular (arm stretched, folded or wrist "
+              + "axes in line), typically just beyond reach; " + detail);
     }
     return new IkResult.Unreachable(IkResult.Reason.NO_CONVERGENCE, "no solution found: " + detail);
   }

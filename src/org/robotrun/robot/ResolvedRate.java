@@ -47,6 +47,7 @@ public final class ResolvedRate {
   private final double[] scratch = new double[Jacobian.SCRATCH];
   private final double[] rhs = new double[6];
   private final int[] perm = new int[6];
+  private final double[] invDiag = new double[6];
   private double lastDamping;
   private double lastManipulability;
 
@@ -78,7 +79,7 @@ public final class ResolvedRate {
       rhs[r] = r < 3 ? twist_B[r] * invL : twist_B[r];
     }
     System.arraycopy(j, 0, lu, 0, 36);
-    double det = luDecompose(lu, perm);
+    double det = Dense6.luDecompose(lu, perm);
     double w = Math.abs(det);
     double w0 = settings.manipulabilityThreshold();
     double lambda2 = 0;
@@ -89,43 +90,20 @@ public final class ResolvedRate {
     lastManipulability = w;
     lastDamping = Math.sqrt(lambda2);
     if (lambda2 == 0) {
-      luSolve(lu, perm, rhs, qDot);
+      Dense6.luSolve(lu, perm, rhs, qDot);
       return w;
     }
-    // A = Js·Jsᵀ + λ²I (symmetric positive definite for λ > 0), Cholesky in place (lower).
+    // A = Js·Jsᵀ + λ²I (symmetric positive definite for λ > 0): solve A·y = rhs, q̇ = Jsᵀ·y.
     for (int r = 0; r < 6; r++) {
+      int ro = r * 6;
+      double j0 = j[ro], j1 = j[ro + 1], j2 = j[ro + 2], j3 = j[ro + 3], j4 = j[ro + 4], j5 = j[ro + 5];
       for (int c = 0; c <= r; c++) {
-        double sum = 0;
-        for (int k = 0; k < 6; k++) {
-          sum += j[r * 6 + k] * j[c * 6 + k];
-        }
-        a[r * 6 + c] = r == c ? sum + lambda2 : sum;
+        int co = c * 6;
+        a[ro + c] = j0 * j[co] + j1 * j[co + 1] + j2 * j[co + 2] + j3 * j[co + 3] + j4 * j[co + 4] + j5 * j[co + 5];
       }
+      a[ro + r] += lambda2;
     }
-    for (int r = 0; r < 6; r++) {
-      for (int c = 0; c <= r; c++) {
-        double sum = a[r * 6 + c];
-        for (int k = 0; k < c; k++) {
-          sum -= a[r * 6 + k] * a[c * 6 + k];
-        }
-        a[r * 6 + c] = r == c ? Math.sqrt(sum) : sum / a[c * 6 + c];
-      }
-    }
-    // Solve L·Lᵀ·y = rhs, then q̇ = Jsᵀ·y.
-    for (int r = 0; r < 6; r++) {
-      double sum = rhs[r];
-      for (int k = 0; k < r; k++) {
-        sum -= a[r * 6 + k] * rhs[k];
-      }
-      rhs[r] = sum / a[r * 6 + r];
-    }
-    for (int r = 5; r >= 0; r--) {
-      double sum = rhs[r];
-      for (int k = r + 1; k < 6; k++) {
-        sum -= a[k * 6 + r] * rhs[k];
-      }
-      rhs[r] = sum / a[r * 6 + r];
-    }
+    Dense6.choleskySolve(a, rhs, invDiag);
     for (int c = 0; c < 6; c++) {
       double sum = 0;
       for (int r = 0; r < 6; r++) {
@@ -148,66 +126,5 @@ public final class ResolvedRate {
 
   public Settings settings() {
     return settings;
-  }
-
-  /** In-place LU with partial pivoting of a 6x6; returns the determinant (0 if singular). */
-  static double luDecompose(double[] m, int[] perm) {
-    double det = 1;
-    for (int i = 0; i < 6; i++) {
-      perm[i] = i;
-    }
-    for (int k = 0; k < 6; k++) {
-      int p = k;
-      double max = Math.abs(m[k * 6 + k]);
-      for (int r = k + 1; r < 6; r++) {
-        double v = Math.abs(m[r * 6 + k]);
-        if (v > max) {
-          max = v;
-          p = r;
-        }
-      }
-      if (max == 0) {
-        return 0;
-      }
-      if (p != k) {
-        for (int c = 0; c < 6; c++) {
-          double tmp = m[k * 6 + c];
-          m[k * 6 + c] = m[p * 6 + c];
-          m[p * 6 + c] = tmp;
-        }
-        int tp = perm[k];
-        perm[k] = perm[p];
-        perm[p] = tp;
-        det = -det;
-      }
-      double pivot = m[k * 6 + k];
-      det *= pivot;
-      for (int r = k + 1; r < 6; r++) {
-        double f = m[r * 6 + k] / pivot;
-        m[r * 6 + k] = f;
-        for (int c = k + 1; c < 6; c++) {
-          m[r * 6 + c] -= f * m[k * 6 + c];
-        }
-      }
-    }
-    return det;
-  }
-
-  /** Solves with an LU from {@link #luDecompose}: x = A⁻¹·b (b not modified). */
-  static void luSolve(double[] m, int[] perm, double[] b, double[] x) {
-    for (int r = 0; r < 6; r++) {
-      double sum = b[perm[r]];
-      for (int k = 0; k < r; k++) {
-        sum -= m[r * 6 + k] * x[k];
-      }
-      x[r] = sum;
-    }
-    for (int r = 5; r >= 0; r--) {
-      double sum = x[r];
-      for (int k = r + 1; k < 6; k++) {
-        sum -= m[r * 6 + k] * x[k];
-      }
-      x[r] = sum / m[r * 6 + r];
-    }
   }
 }

@@ -111,6 +111,24 @@ class NumericIkTest {
         .isInstanceOf(IkResult.Solved.class);
   }
 
+  @Test
+  void justBeyondTheStretchedArmIsSingularWithoutTheClosedForm() {
+    // Straight up, flange facing up: the stretched arm puts the flange at z = 330 + 330 +
+    // sqrt(335² + 35²) + 80 = 1076.8 mm above x = 50 mm. Ask 2 mm higher: inside the reach
+    // sphere, so the solver iterates and ends on the elbow singularity.
+    RobotModel noOpw = new RobotModel(robot.id(), robot.displayName(), robot.joints(), robot.X_6F(),
+        robot.X_WB(), robot.links(), Optional.empty(), robot.coupledJ3());
+    Transform up = Xyzwpr.ofDegrees(50, 0, 1078.8, 0, 0, 0).toTransform();
+    IkResult r = new NumericIk(noOpw).solve(up, new double[6]);
+    assertThat(r).isInstanceOfSatisfying(IkResult.Unreachable.class, u -> {
+      assertThat(u.reason()).isEqualTo(IkResult.Reason.SINGULAR);
+      assertThat(u.message()).contains("singular");
+    });
+    // With the closed form's verdict the same target is simply out of reach.
+    assertThat(ik.solve(up, new double[6])).isInstanceOfSatisfying(IkResult.Unreachable.class,
+        u -> assertThat(u.reason()).isEqualTo(IkResult.Reason.OUT_OF_REACH));
+  }
+
   /**
    * The issue bounds the time to recognise an unreachable target at 1 ms. Timed after a
    * warm-up; the best of five runs is asserted so a descheduled thread on a busy machine does
