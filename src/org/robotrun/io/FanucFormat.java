@@ -19,7 +19,16 @@ public final class FanucFormat {
    */
   public static String positionValue(double v) {
     String s = String.format(Locale.ROOT, "%10.3f", v);
-    return s.equals("    -0.000") ? "     0.000" : s;
+    if (s.equals("    -0.000") && v == 0) {
+      return "     0.000";
+    }
+    // A value taught elsewhere may carry more digits than a controller prints; keep them all
+    // (still right-aligned) so that writing never changes a position.
+    if (Double.parseDouble(s) == v) {
+      return s;
+    }
+    String e = exact(v, 3);
+    return e.length() < 10 ? pad(e, 10) : " " + e;
   }
 
   /**
@@ -28,6 +37,9 @@ public final class FanucFormat {
    */
   public static String waitSeconds(double seconds) {
     String s = String.format(Locale.ROOT, "%.2f", seconds);
+    if (Double.parseDouble(s) != seconds) {
+      s = exact(seconds, 2);
+    }
     if (s.startsWith("0.")) {
       s = s.substring(1);
     } else if (s.startsWith("-0.")) {
@@ -43,7 +55,7 @@ public final class FanucFormat {
    */
   public static String real(double v) {
     if (v == 0) {
-      return "0.0";
+      return 1 / v < 0 ? "-0.0" : "0.0";
     }
     String s = BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
     return s.indexOf('.') < 0 ? s + ".0" : s;
@@ -77,6 +89,15 @@ public final class FanucFormat {
       col = (col / 8 + 1) * 8;
     } while (col < ATTR_VALUE_COLUMN);
     return sb.toString();
+  }
+
+  /** The shortest decimal that reads back as {@code v}, with at least {@code minDecimals} decimals. */
+  private static String exact(double v, int minDecimals) {
+    BigDecimal d = BigDecimal.valueOf(v);
+    if (d.scale() < minDecimals) {
+      d = d.setScale(minDecimals);
+    }
+    return d.toPlainString();
   }
 
   private static String pad(String s, int width) {

@@ -4,12 +4,10 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Deque;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import java.util.Set;
+import java.util.function.Predicate;
 import org.robotrun.program.Index;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.LabelRef;
@@ -59,20 +57,19 @@ final class LsProgramChecks {
     return out;
   }
 
-  /** A diagnostic for each CALL whose target is not among {@code known} (nor the program itself). */
-  static List<Diagnostic> unknownCalls(LsReadResult r, Set<String> known) {
-    Set<String> names = new HashSet<>();
-    for (String k : known) {
-      names.add(k.toUpperCase(Locale.ROOT));
-    }
-    names.add(r.program().name().toUpperCase(Locale.ROOT));
+  /** A diagnostic for each CALL whose target is not {@code known} (the program itself always is). */
+  static List<Diagnostic> unknownCalls(LsReadResult r, Predicate<String> known) {
+    String self = r.program().name();
     List<Diagnostic> out = new ArrayList<>();
     List<Instruction> lines = r.program().lines();
     for (int i = 0; i < lines.size(); i++) {
       Optional<Instruction.Call> call = callIn(lines.get(i));
-      if (call.isPresent() && !names.contains(call.get().program().toUpperCase(Locale.ROOT))) {
-        out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
-            "CALL " + call.get().program() + ": no program named " + call.get().program() + " is known"));
+      if (call.isPresent()) {
+        String target = call.get().program();
+        if (!target.equalsIgnoreCase(self) && !known.test(target)) {
+          out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
+              "CALL " + target + ": no program named " + target + " is known"));
+        }
       }
     }
     return out;

@@ -2,10 +2,14 @@ package org.robotrun.io;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Locale;
 import java.util.Objects;
 import java.util.Set;
+import java.util.function.Predicate;
 import org.robotrun.program.Program;
+import org.robotrun.program.ProgramStore;
 
 /**
  * What reading a .LS file gives: the program (as much of it as could be read: a bad /MN line
@@ -43,8 +47,21 @@ public record LsReadResult(String file, Program program, List<Diagnostic> diagno
    * (names compared ignoring case; the program itself always counts as known).
    */
   public LsReadResult withCallTargetsChecked(Set<String> knownPrograms) {
+    Set<String> upper = new HashSet<>();
+    for (String k : knownPrograms) {
+      upper.add(k.toUpperCase(Locale.ROOT));
+    }
+    return withCallsCheckedBy(name -> upper.contains(name.toUpperCase(Locale.ROOT)));
+  }
+
+  /** As {@link #withCallTargetsChecked(Set)}, with the programs of a store (the interpreter's view). */
+  public LsReadResult withCallTargetsChecked(ProgramStore store) {
+    return withCallsCheckedBy(name -> store.find(name).isPresent());
+  }
+
+  private LsReadResult withCallsCheckedBy(Predicate<String> known) {
     List<Diagnostic> all = new ArrayList<>(diagnostics);
-    all.addAll(LsProgramChecks.unknownCalls(this, knownPrograms));
+    all.addAll(LsProgramChecks.unknownCalls(this, known));
     return new LsReadResult(file, program, all, sourceLines);
   }
 }

@@ -16,6 +16,7 @@ import org.robotrun.program.Item;
 import org.robotrun.program.LabelRef;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
 
 /**
  * Recursive-descent parser for one /MN statement (TP-LANGUAGE.md, "Statements"). It sees the
@@ -35,6 +36,9 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** Most operators in one statement; keeps trees shallow enough for recursive walkers. */
   static final int MAX_OPERATORS = 1000;
+
+  private static final String VALUE_EXPECTED =
+      "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found ";
 
   /** FANUC statements RobotRun knows by name but does not implement: first word → name. */
   private static final Map<String, String> UNSUPPORTED = Map.ofEntries(
@@ -72,10 +76,18 @@ final class LsStatementParser extends LsTokenCursor {
       Map.entry("TC_ONLINE", "TC_ONLINE"),
       Map.entry("SKIP_CONDITION", "SKIP CONDITION"),
       Map.entry("PTH", "PTH"),
-      Map.entry("MAX_SPEED", "max_speed"));
+      Map.entry("MAX_SPEED", "max_speed"),
+      Map.entry("WELD_SPEED", "arc welding speed WELD_SPEED"),
+      Map.entry("WEAVE", "arc welding weave"),
+      Map.entry("TRACK", "seam tracking"),
+      Map.entry("VOFFSET", "vision offset VOFFSET"),
+      Map.entry("VISION", "iRVision"),
+      Map.entry("COORD", "coordinated motion COORD"),
+      Map.entry("RTCP", "remote TCP (RTCP)"));
 
   private int nesting;
   private int operators;
+  private final List<String> warnings = new ArrayList<>(0);
 
   private LsStatementParser(List<LsToken> tokens) {
     super(tokens);
@@ -88,14 +100,23 @@ final class LsStatementParser extends LsTokenCursor {
    *     {@code ;} already removed by the reader)
    * @throws LsSyntaxError naming the line and what was expected
    */
-  static Instruction parse(List<LsToken> tokens) {
+  static Parsed parse(List<LsToken> tokens) {
     LsStatementParser p = new LsStatementParser(tokens);
     Instruction in = p.statement();
+    if (p.peek().is(Kind.SEMICOLON)) {
+      throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
+    }
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
     }
-    return in;
+    return new Parsed(in, List.copyOf(p.warnings));
   }
+
+  /**
+   * A statement and the warnings about it (a register number outside the controller's table:
+   * legal text, but running the line raises an alarm).
+   */
+  record Parsed(Instruction instruction, List<String> warnings) {}
 
   // ---- statements -------------------------------------------------------------------------
 
@@ -135,7 +156,7 @@ final class LsStatementParser extends LsTokenCursor {
       return motion();
     }
     if (w.startsWith("$")) {
-      throw error("not supported: system variable assignment (" + t.text() + ")");
+      throw error("not supported: system variable assignment (" + LsToken.clip(t.text()) + ")");
     }
     next();
     return switch (w) {
@@ -147,6 +168,7 @@ final class LsStatementParser extends LsTokenCursor {
       case "PR" -> positionRegisterAssignment();
       case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
       case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
+      case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
@@ -232,7 +254,7 @@ final class LsStatementParser extends LsTokenCursor {
     if (name != null) {
       return error(t, "not supported: " + name);
     }
-    return error(t, "unknown statement '" + t.text()
+    return error(t, "unknown statement '" + LsToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
 
@@ -302,7 +324,8 @@ final class LsStatementParser extends LsTokenCursor {
   private Instruction call() {
     LsToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
-      throw error(name, "'" + name.text() + "' is not a program name: expected letters, digits and '_', starting with a letter");
+      throw error(name, "'" + LsToken.clip(name.text())
+          + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
     List<Expr> args = new ArrayList<>();
     if (peek().is(Kind.LPAREN)) {
@@ -366,19 +389,21 @@ final class LsStatementParser extends LsTokenCursor {
     };
   }
 
+  /**
+   * {@code WAIT t(sec)} and {@code WAIT R[i]} wait a time; anything else is a condition. A
+   * constant without {@code (sec)} is neither.
+   */
   private Instruction waitStatement() {
-    if (peek().is(Kind.NUMBER)) {
-      double sec = number("wait time");
+    Expr e = expression();
+    if (peek().is(Kind.LPAREN) && peek(1).isWord("sec")) {
       expectSecUnit();
-      return new Instruction.WaitTime(new Expr.RealConst(sec));
+      return new Instruction.WaitTime(e instanceof Expr.IntConst i ? new Expr.RealConst(i.value()) : e);
     }
-    Expr cond = expression();
-    if (peek().is(Kind.LPAREN) && cond instanceof Expr.Register) {
-      expectSecUnit();
-      return new Instruction.WaitTime(cond);
+    if (e instanceof Expr.Register && peek().is(Kind.EOL)) {
+      return new Instruction.WaitTime(e);
     }
-    if (cond instanceof Expr.Register && peek().is(Kind.EOL)) {
-      return new Instruction.WaitTime(cond);
+    if (e instanceof Expr.IntConst || e instanceof Expr.RealConst) {
+      throw error("expected '(sec)' after the wait time, found " + peek().describe());
     }
     Optional<LabelRef> timeout = Optional.empty();
     if (peek().isWord("TIMEOUT")) {
@@ -387,7 +412,7 @@ final class LsStatementParser extends LsTokenCursor {
       expectWordNamed("LBL", "LBL[n] after TIMEOUT,");
       timeout = Optional.of(labelRef());
     }
-    return new Instruction.WaitCondition(cond, timeout);
+    return new Instruction.WaitCondition(e, timeout);
   }
 
   private void expectSecUnit() {
@@ -408,7 +433,11 @@ final class LsStatementParser extends LsTokenCursor {
     Optional<Motion.Target> end = Optional.empty();
     if (type == Motion.Type.C) {
       if (!(peek().isWord("P") || peek().isWord("PR"))) {
-        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found " + peek().describe());
+        if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
+          throw error("not supported: motion options on the via point of a C motion (found " + peek().describe() + ")");
+        }
+        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found "
+            + peek().describe());
       }
       end = Optional.of(motionTarget());
     }
@@ -566,10 +595,13 @@ final class LsStatementParser extends LsTokenCursor {
             }
             return new Motion.Acc(acc);
           }
-          if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
-            throw error(t, "not supported: motion option " + t.text() + " (TIME BEFORE/AFTER, distance before)");
+          if (UNSUPPORTED.containsKey(w)) {
+            throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
           }
-          throw error(t, "not supported: motion option '" + t.text()
+          if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
+            throw error(t, "not supported: motion option " + LsToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
+          }
+          throw error(t, "not supported: motion option '" + LsToken.clip(t.text())
               + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
         }
       }
@@ -691,11 +723,11 @@ final class LsStatementParser extends LsTokenCursor {
             if (name != null) {
               throw error(t, "not supported: " + name);
             }
-            throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+            throw error(t, VALUE_EXPECTED + t.describe());
           }
         };
       }
-      default -> throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+      default -> throw error(t, VALUE_EXPECTED + t.describe());
     }
   }
 
@@ -721,7 +753,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return new Expr.IntConst(Integer.parseInt(s));
     } catch (NumberFormatException e) {
-      throw error(t, "integer " + s + " is too large: expected at most " + Integer.MAX_VALUE);
+      throw error(t, "integer " + LsToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
     }
   }
 
@@ -760,12 +792,15 @@ final class LsStatementParser extends LsTokenCursor {
   private Index indexValue(String what) {
     LsToken t = peek();
     if (t.is(Kind.NUMBER)) {
-      return new Index.Direct(intConst("index of " + what + "[...]"));
+      int n = intConst("index of " + what + "[...]");
+      checkRange(what, n);
+      return new Index.Direct(n);
     }
     if (t.isWord("R")) {
       next();
       expect(Kind.LBRACKET, "'[' after R");
       int reg = intConst("register number in R[...]");
+      checkRange("R", reg);
       String comment = itemCommentAndClose("R[...]");
       return new Index.Indirect(reg, comment);
     }
@@ -773,6 +808,21 @@ final class LsStatementParser extends LsTokenCursor {
       throw error(t, "not supported: an index through AR[] (use R[i])");
     }
     throw error("expected an index (a number or R[i]) inside " + what + "[...], found " + t.describe());
+  }
+
+  /** Table sizes of the controller RobotRun simulates (program.Registers); other items are not checked here. */
+  private void checkRange(String table, int n) {
+    int size = switch (table) {
+      case "R" -> Registers.R_COUNT;
+      case "PR" -> Registers.PR_COUNT;
+      case "F" -> Registers.FLAG_COUNT;
+      case "DI", "DO", "RI", "RO", "GI", "GO" -> Registers.IO_COUNT;
+      case "TIMER" -> Registers.TIMER_COUNT;
+      default -> 0;
+    };
+    if (size > 0 && (n < 1 || n > size)) {
+      warnings.add(table + "[" + n + "]: index out of range (expected 1.." + size + "); running this line raises an alarm");
+    }
   }
 
   /** Optional {@code :comment} then the closing bracket. */
@@ -839,7 +889,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return Integer.parseInt(digits);
     } catch (NumberFormatException e) {
-      throw error(t, "number " + digits + " is too large");
+      throw error(t, "number " + LsToken.clip(digits) + " is too large");
     }
   }
 

@@ -133,7 +133,8 @@ public final class LsWriter {
     sb.append(m.type().name()).append(' ');
     target(m.target(), sb);
     if (m.circularEnd().isPresent()) {
-      sb.append("\n    :  ");
+      // Controllers pad the via line with four blanks, as they do before a motion line's ';'.
+      sb.append("    \n    :  ");
       target(m.circularEnd().get(), sb);
     }
     sb.append(' ');
@@ -283,12 +284,20 @@ public final class LsWriter {
         switch (w.seconds()) {
           case Expr.RealConst c -> sb.append(FanucFormat.waitSeconds(c.value())).append("(sec)");
           case Expr.IntConst c -> sb.append(FanucFormat.waitSeconds(c.value())).append("(sec)");
-          default -> expr(w.seconds(), sb);
+          case Expr.Register r -> expr(r, sb);
+          default -> {
+            expr(w.seconds(), sb);
+            sb.append("(sec)");
+          }
         }
       }
       case Instruction.WaitCondition w -> {
         sb.append("WAIT ");
-        expr(w.condition(), sb);
+        // A bare constant (-5 included) or register would read back as a time: parenthesise it.
+        Expr c = w.condition();
+        boolean timeLike = c instanceof Expr.IntConst || c instanceof Expr.RealConst || c instanceof Expr.Register
+            || c instanceof Expr.Unary;
+        operand(c, timeLike, sb);
         w.timeoutLabel().ifPresent(l -> {
           sb.append(" TIMEOUT,");
           label(l, sb);
@@ -310,8 +319,9 @@ public final class LsWriter {
           sb.append(',').append(FanucFormat.plain(p.widthSec().getAsDouble())).append("sec");
         }
       }
-      case Instruction.Comment c -> sb.append('!').append(c.text());
-      case Instruction.CommentedOut c -> sb.append("//").append(c.text());
+      // Trailing blanks would merge with the " ;" and not read back; the reader strips them too.
+      case Instruction.Comment c -> sb.append('!').append(c.text().stripTrailing());
+      case Instruction.CommentedOut c -> sb.append("//").append(c.text().stripTrailing());
       case Instruction.Message m -> sb.append("MESSAGE[").append(m.text()).append(']');
       case Instruction.UserAlarm u -> {
         sb.append("UALM[");
@@ -360,7 +370,16 @@ public final class LsWriter {
     return switch (e) {
       case Expr.Binary b -> b.op().precedence();
       case Expr.Unary u -> 6;
-      default -> 7;
+      case Expr.IntConst c -> 7;
+      case Expr.RealConst c -> 7;
+      case Expr.OnOff c -> 7;
+      case Expr.StringConst c -> 7;
+      case Expr.Register r -> 7;
+      case Expr.PosElement p -> 7;
+      case Expr.Io io -> 7;
+      case Expr.Timer t -> 7;
+      case Expr.Arg a -> 7;
+      case Expr.Group g -> 7;
     };
   }
 

@@ -10,8 +10,16 @@ class FanucFormatTest {
   void positionValuesHaveThreeDecimalsInTenColumns() {
     assertThat(FanucFormat.positionValue(350)).isEqualTo("   350.000");
     assertThat(FanucFormat.positionValue(-90)).isEqualTo("   -90.000");
-    assertThat(FanucFormat.positionValue(-0.0001)).isEqualTo("     0.000");
-    assertThat(FanucFormat.positionValue(1234.5678)).isEqualTo("  1234.568");
+    assertThat(FanucFormat.positionValue(-0.0)).isEqualTo("     0.000");
+    assertThat(FanucFormat.positionValue(1234.5)).isEqualTo("  1234.500");
+  }
+
+  @Test
+  void valuesWithMoreDigitsThanTheFormatKeepThemAll() {
+    assertThat(FanucFormat.positionValue(1234.5678)).isEqualTo(" 1234.5678");
+    assertThat(FanucFormat.positionValue(424.654999)).isEqualTo(" 424.654999");
+    assertThat(FanucFormat.waitSeconds(1.234)).isEqualTo(" 1.234");
+    assertThat(FanucFormat.real(-0.0)).isEqualTo("-0.0");
   }
 
   @Test

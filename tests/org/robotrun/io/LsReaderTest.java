@@ -19,6 +19,7 @@ import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
+import org.robotrun.program.ProgramStore;
 
 class LsReaderTest {
 
@@ -91,10 +92,40 @@ class LsReaderTest {
   }
 
   @Test
+  void indexesOutsideTheControllersTablesAreWarnings() {
+    LsReadResult r = mn("   1:  R[201]=TIMER[11]+DI[0]+R[R[300]]    ;\n   2:  PR[101,1]=F[200]    ;\n");
+    assertThat(messages(r)).containsExactly(
+        "t.ls:4: warning: R[201]: index out of range (expected 1..200); running this line raises an alarm",
+        "t.ls:4: warning: TIMER[11]: index out of range (expected 1..10); running this line raises an alarm",
+        "t.ls:4: warning: DI[0]: index out of range (expected 1..64); running this line raises an alarm",
+        "t.ls:4: warning: R[300]: index out of range (expected 1..200); running this line raises an alarm",
+        "t.ls:5: warning: PR[101]: index out of range (expected 1..100); running this line raises an alarm");
+    assertThat(r.hasErrors()).isFalse();
+  }
+
+  @Test
   void constantsKeepIntegerAndRealApart() {
     assertThat(only("  R[1]=.5    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.RealConst(0.5)));
     assertThat(only("  R[1]=-3    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.IntConst(-3)));
     assertThat(only("  R[1]=3.0    ;")).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.RealConst(3)));
+  }
+
+  @Test
+  void waitTakesATimeOrACondition() {
+    assertThat(only("  WAIT 1(sec) ;")).isEqualTo(new Instruction.WaitTime(new Expr.RealConst(1)));
+    assertThat(only("  WAIT R[3] ;")).isEqualTo(new Instruction.WaitTime(new Expr.Register(Item.of(3))));
+    assertThat(only("  WAIT R[3]>2 ;")).isEqualTo(new Instruction.WaitCondition(
+        new Expr.Binary(BinaryOp.GT, new Expr.Register(Item.of(3)), new Expr.IntConst(2)), java.util.Optional.empty()));
+    assertThat(messages(mn("   1:  WAIT 5 ;\n"))).containsExactly("t.ls:4: expected '(sec)' after the wait time, found end of line");
+  }
+
+  @Test
+  void lowerCaseIsReadAndWrittenInUpperCase() {
+    LsReadResult r = LsReader.parse("low.ls", "/prog  low\n/mn\n   1:j pr[1] 30% fine    ;\n   2:  call beep ;\n"
+        + "   3:  wait di[1]=on timeout,lbl[1] ;\n   4:  lbl[1] ;\n/pos\n/end\n");
+    assertThat(messages(r)).isEmpty();
+    assertThat(LsWriter.write(r.program())).startsWith("/PROG  LOW\n").contains(
+        "   1:J PR[1] 30% FINE    ;\n   2:  CALL BEEP ;\n   3:  WAIT DI[1]=ON TIMEOUT,LBL[1] ;\n   4:  LBL[1] ;\n");
   }
 
   @Test
@@ -146,6 +177,7 @@ class LsReaderTest {
     // Bad lines keep their place, so line numbering of the rest holds.
     assertThat(r.program().lineCount()).isEqualTo(14);
     assertThat(r.program().line(8)).isInstanceOf(Instruction.AssignRegister.class);
+    assertThat(r.program().line(2)).isEqualTo(new Instruction.CommentedOut("R[1]="));
   }
 
   @Test
@@ -158,11 +190,30 @@ class LsReaderTest {
         {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
         {"L P[1] max_speed FINE", "not supported: max_speed"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
+        {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
         {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);
     }
+  }
+
+  @Test
+  void applicationMotionFormsAreNamed() {
+    LsReadResult r = mn(String.join("\n",
+        "   1:L P[1] WELD_SPEED FINE    ;",
+        "   2:J PR[2] 40% FINE",
+        "    :  Arc Start[1]    ;",
+        "   3:C P[2] Tool_Offset,PR[28]",
+        "    :  P[3] R[23]mm/sec CNT100    ;",
+        "   4:L PR[1] 500mm/sec CNT50 VOFFSET,VR[1]    ;",
+        ""));
+    assertThat(messages(r)).containsExactly(
+        "t.ls:4: not supported: arc welding speed WELD_SPEED",
+        "t.ls:6: not supported: arc welding (as a motion option)",
+        "t.ls:7: not supported: motion options on the via point of a C motion (found 'Tool_Offset')",
+        "t.ls:9: not supported: vision offset VOFFSET (as a motion option)");
   }
 
   @Test
@@ -195,6 +246,10 @@ class LsReaderTest {
     LsReadResult known = r.withCallTargetsChecked(Set.of("OTHER"));
     assertThat(messages(known)).contains("t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
     assertThat(messages(mn("   1:  CALL T ;\n").withCallTargetsChecked(Set.of()))).isEmpty();
+    assertThat(messages(r.withCallTargetsChecked(Set.of("nowhere")))).doesNotContain(
+        "t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
+    assertThat(messages(r.withCallTargetsChecked(ProgramStore.of(Program.of("NOWHERE", List.of()))))).doesNotContain(
+        "t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
   }
 
   @Test
@@ -292,11 +347,11 @@ class LsReaderTest {
 
   @Test
   void sectionsAreCheckedAndExtraSectionsFlagged() {
-    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
+    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
         .containsExactly(
             "s.ls:1: warning: not supported: program sub-type 'Macro' (read as a normal program)",
-            "s.ls:3: warning: not supported: section /APPL (its 1 lines are ignored)",
-            "s.ls:9: warning: text after /END is ignored");
+            "s.ls:4: warning: not supported: section /APPL (its 1 lines are ignored)",
+            "s.ls:10: warning: text after /END is ignored");
     assertThat(messages(LsReader.parse("n.ls", "/PROG  1BAD\n/MN\n/POS\n/END\n")))
         .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', starting with a letter, at most 36 characters");
   }

@@ -86,8 +86,11 @@ class LsRobustnessTest {
           }
         }
         LsReadResult r = LsReader.parse(name, sb.toString());
-        // Whatever was read can be written and read again without an exception either.
-        LsReader.parse(name, LsWriter.write(r.program()));
+        // Whatever was read, even from a damaged file, writes and reads back as the same program.
+        String written = LsWriter.write(r.program());
+        LsReadResult again = LsReader.parse(name, written);
+        assertThat(again.program()).as("round %d of %s:%n%s", round, name, sb).isEqualTo(r.program());
+        assertThat(LsWriter.write(again.program())).isEqualTo(written);
       }
     }
   }
@@ -121,6 +124,31 @@ class LsRobustnessTest {
         "d.ls:5: expression too long: more than 1000 operators in one statement");
     String ok = "(".repeat(64) + "1" + ")".repeat(64);
     assertThat(LsReader.parse("d.ls", "/PROG  D\n/MN\n   1:  R[1]=" + ok + "    ;\n/POS\n/END\n").diagnostics()).isEmpty();
+  }
+
+  @Test
+  void aFileThatIsNotUtf8IsReadAsLatin1WithAWarning(@org.junit.jupiter.api.io.TempDir Path dir) throws IOException {
+    Path f = dir.resolve("L1.LS");
+    byte[] head = "/PROG  L1\n/MN\n   1:  ! caf".getBytes(StandardCharsets.US_ASCII);
+    byte[] tail = " ;\n/POS\n/END\n".getBytes(StandardCharsets.US_ASCII);
+    byte[] all = new byte[head.length + 1 + tail.length];
+    System.arraycopy(head, 0, all, 0, head.length);
+    all[head.length] = (byte) 0xE9; // 'é' in Latin-1, not valid UTF-8 on its own
+    System.arraycopy(tail, 0, all, head.length + 1, tail.length);
+    Files.write(f, all);
+    LsReadResult r = LsReader.read(f);
+    assertThat(messages(r)).containsExactly(
+        f + ":3: warning: not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly");
+    assertThat(r.program().line(1)).isEqualTo(new org.robotrun.program.Instruction.Comment(" caf\u00e9"));
+  }
+
+  @Test
+  void aMegabyteLineGivesAShortMessage() {
+    String huge = "X".repeat(1_000_000);
+    LsReadResult r = LsReader.parse("h.ls", "/PROG  H\n/MN\n   1:  R[1:" + huge + "]=" + huge + " ;\n/POS\n/END\n");
+    assertThat(messages(r)).containsExactly(
+        "h.ls:3: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found '"
+            + "X".repeat(40) + "...'");
   }
 
   @Test
