@@ -28,10 +28,11 @@ import picocli.CommandLine.Model.CommandSpec;
     name = "collision",
     mixinStandardHelpOptions = true,
     description = {
-      "Time the OBB separating-axis test on box pairs read from a CSV file and print",
+      "Time the OBB separating-axis test on box pairs from a CSV file; prints",
       "'pairs=N overlapping=K ns_per_pair=X' (median of the timed passes).",
-      "CSV: a header line, then per pair 30 columns: for box A then box B cx,cy,cz (mm),",
-      "hx,hy,hz (half extents, mm), r11..r33 (row-major rotation). Touching counts as overlap."
+      "CSV: a header line, then 30 columns per pair, box A then box B:",
+      "cx,cy,cz (mm), hx,hy,hz (half extents, mm), r11..r33 (row-major rotation).",
+      "Touching boxes count as overlapping."
     })
 public final class BenchCollisionCommand implements Runnable {
   @Spec CommandSpec spec;
@@ -56,8 +57,17 @@ public final class BenchCollisionCommand implements Runnable {
       description = "Timed passes over the whole batch; the median is reported (default: ${DEFAULT-VALUE}).")
   int repeat;
 
+  @Option(names = "--clock", defaultValue = "wall", paramLabel = "wall|cpu",
+      description = "Time with the wall clock or with this thread's CPU time (steadier on a busy machine); default: ${DEFAULT-VALUE}.")
+  String clockName;
+
   @Override
   public void run() {
+    BenchClock clock = switch (clockName) {
+      case "wall" -> BenchClock.WALL;
+      case "cpu" -> BenchClock.CPU;
+      default -> throw new UserError("--clock: expected wall or cpu, got '" + clockName + "'");
+    };
     if (repeat < 1) {
       throw new UserError("--repeat must be at least 1, got " + repeat);
     }
@@ -76,7 +86,7 @@ public final class BenchCollisionCommand implements Runnable {
       throw new UserError(pairsFile + ": no pairs after the header line");
     }
     boolean[] overlap = new boolean[pairs.count()];
-    double nsPerPair = time(pairs, overlap);
+    double nsPerPair = time(pairs, overlap, clock);
     int overlapping = 0;
     for (boolean o : overlap) {
       overlapping += o ? 1 : 0;
@@ -89,17 +99,21 @@ public final class BenchCollisionCommand implements Runnable {
     out.flush();
   }
 
-  private double time(ObbPairsCsv.Pairs pairs, boolean[] overlap) {
-    // Warm up for at least ~1 s of work (or 50 passes) so the JIT has compiled the test.
+  private double time(ObbPairsCsv.Pairs pairs, boolean[] overlap, BenchClock clock) {
+    // Warm up with at least 2 million tests and half a second (at most 5 s), so that the JIT's
+    // optimised code is in place even when the compiler thread has to wait for a core.
     long warmStart = System.nanoTime();
-    for (int pass = 0; pass < 50 && System.nanoTime() - warmStart < 1_000_000_000L; pass++) {
+    long tested = 0;
+    while ((tested < 2_000_000 || System.nanoTime() - warmStart < 500_000_000L)
+        && System.nanoTime() - warmStart < 5_000_000_000L) {
       pass(pairs, overlap);
+      tested += overlap.length;
     }
     long[] ns = new long[repeat];
     for (int r = 0; r < repeat; r++) {
-      long t0 = System.nanoTime();
+      long t0 = clock.nanos();
       pass(pairs, overlap);
-      ns[r] = System.nanoTime() - t0;
+      ns[r] = clock.nanos() - t0;
     }
     Arrays.sort(ns);
     return (double) ns[repeat / 2] / pairs.count();

@@ -14,8 +14,9 @@ import org.robotrun.math.Transform;
  * the order from the last tick is repaired by insertion sort, which is linear when little
  * moved. Pairs whose bounds overlap in x, y and z and that the {@link PairFilter} allows go to
  * the {@link SeparatingAxisTest}. The filter's answers are cached per pair (one byte per pair
- * of handles, so n² bytes: 47 KB for 216 bodies) until {@link #setFilter} is called again. Nothing is allocated by {@code setPose} or {@code update}
- * once the contact buffer has grown to its working size.
+ * of handles, so n² bytes: 47 KB for 216 bodies) until {@link #setFilter} is called again.
+ * Once every pair has been asked and the contact buffer has grown to its working size,
+ * {@code setPose} and {@code update} allocate nothing.
  *
  * <p>Not thread-safe: one simulation owns one world.
  */
@@ -26,6 +27,8 @@ public final class CollisionWorld {
   private double[] boxes = new double[16 * Obb.STRIDE];
   /** Axis-aligned bounds per body: minX, maxX, minY, maxY, minZ, maxZ. */
   private double[] bounds = new double[16 * 6];
+  /** {@link #bounds} copied into {@link #order}'s order at each update. */
+  private double[] sortedBounds = new double[16 * 6];
   /** Body handles sorted by minX (kept between updates). */
   private int[] order = new int[16];
   private boolean[] touching = new boolean[16];
@@ -101,6 +104,7 @@ public final class CollisionWorld {
     Transform b = X_LB;
     int o = handle * Obb.STRIDE;
     double[] f = boxes;
+    // X_WB = X_WL · X_LB: centre p_W = R_WL·p_LB + p_WL, axes R_WB = R_WL·R_LB.
     f[o] = a.r00() * b.x() + a.r01() * b.y() + a.r02() * b.z() + a.x();
     f[o + 1] = a.r10() * b.x() + a.r11() * b.y() + a.r12() * b.z() + a.y();
     f[o + 2] = a.r20() * b.x() + a.r21() * b.y() + a.r22() * b.z() + a.z();
@@ -120,22 +124,24 @@ public final class CollisionWorld {
     int n = bodies.size();
     computeBounds(n);
     sortByMinX(n);
+    gatherSortedBounds(n);
     Arrays.fill(touching, 0, n, false);
     contactCount = 0;
+    double[] sb = sortedBounds;
     for (int s = 0; s < n; s++) {
-      int i = order[s];
-      int bi = i * 6;
-      double maxX = bounds[bi + 1];
+      int o = s * 6;
+      double maxX = sb[o + 1], minY = sb[o + 2], maxY = sb[o + 3], minZ = sb[o + 4], maxZ = sb[o + 5];
+      // Candidates follow in minX order; the first one starting beyond maxX ends the run.
       for (int u = s + 1; u < n; u++) {
-        int j = order[u];
-        int bj = j * 6;
-        if (bounds[bj] > maxX) {
+        int q = u * 6;
+        if (sb[q] > maxX) {
           break;
         }
-        if (bounds[bj + 2] > bounds[bi + 3] || bounds[bi + 2] > bounds[bj + 3]
-            || bounds[bj + 4] > bounds[bi + 5] || bounds[bi + 4] > bounds[bj + 5]) {
+        if (sb[q + 2] > maxY || minY > sb[q + 3] || sb[q + 4] > maxZ || minZ > sb[q + 5]) {
           continue;
         }
+        int i = order[s];
+        int j = order[u];
         int lo = Math.min(i, j);
         int hi = Math.max(i, j);
         if (mayCollide(lo, hi) && SeparatingAxisTest.overlap(boxes, i, boxes, j)) {
@@ -144,6 +150,16 @@ public final class CollisionWorld {
       }
     }
     return contactCount;
+  }
+
+  // The bounds in sweep order, so the inner loop reads memory front to back.
+  private void gatherSortedBounds(int n) {
+    if (sortedBounds.length < n * 6) {
+      sortedBounds = new double[order.length * 6];
+    }
+    for (int s = 0; s < n; s++) {
+      System.arraycopy(bounds, order[s] * 6, sortedBounds, s * 6, 6);
+    }
   }
 
   /**

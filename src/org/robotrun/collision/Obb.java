@@ -52,11 +52,6 @@ public record Obb(
     return new Transform(r00, r01, r02, r10, r11, r12, r20, r21, r22, cx, cy, cz);
   }
 
-  /** This box seen from another frame: {@code X_VW · this}. */
-  public Obb transformedBy(Transform X_VW) {
-    return of(X_VW.compose(pose()), hx, hy, hz);
-  }
-
   /**
    * Writes the box into {@code flat} at {@code index * STRIDE}: centre, half extents, then the
    * rotation row-major (the CSV column order of {@code bench collision}).

@@ -34,7 +34,7 @@ class BenchCollisionCommandTest {
     Path pairs = dir.resolve("pairs.csv");
     Path results = dir.resolve("results.csv");
     Run r = run("bench", "collision", "--generate", "500", "--seed", "3", "--pairs", pairs.toString(),
-        "--out", results.toString(), "--repeat", "3");
+        "--out", results.toString(), "--repeat", "3", "--clock", "cpu");
     assertThat(r.exit()).as(r.err()).isZero();
     assertThat(r.out()).matches("pairs=500 overlapping=\\d+ ns_per_pair=\\d+\\.\\d\\d\\R");
     List<String> lines = Files.readAllLines(results);
@@ -62,6 +62,13 @@ class BenchCollisionCommandTest {
   }
 
   @Test
+  void unknownClockIsExitTwo() {
+    Run r = run("bench", "broadphase", "--clock", "sundial");
+    assertThat(r.exit()).isEqualTo(2);
+    assertThat(r.err().strip()).isEqualTo("robotrun: --clock: expected wall or cpu, got 'sundial'");
+  }
+
+  @Test
   void missingFileIsExitTwo() {
     Run r = run("bench", "collision", "--pairs", dir.resolve("nope.csv").toString());
     assertThat(r.exit()).isEqualTo(2);
@@ -70,9 +77,14 @@ class BenchCollisionCommandTest {
 
   @Test
   void broadPhaseAndScenarioBenchmarksPrintTheirFigures() {
-    Run bp = run("bench", "broadphase", "--ticks", "50", "--repeat", "1", "--warmup", "10");
+    Run bp = run("bench", "broadphase", "--ticks", "50", "--repeat", "1", "--warmup", "10", "--clock", "cpu");
     assertThat(bp.exit()).as(bp.err()).isZero();
     assertThat(bp.out()).matches("bodies=216 ticks=50 contacts_per_tick=\\d+\\.\\d\\d us_per_tick=\\d+\\.\\d\\d\\R");
+    // The pick-and-place cell: 5 objects and the LR Mate's 14 link shapes.
+    Run cell = run("bench", "broadphase", "--scenario", "scenarios/pick-and-place.json", "--ticks", "20",
+        "--repeat", "1", "--warmup", "0");
+    assertThat(cell.exit()).as(cell.err()).isZero();
+    assertThat(cell.out()).startsWith("bodies=19 ticks=20 ");
     Run sc = run("bench", "scenario", "--file", "scenarios/pick-and-place.json", "--repeat", "2");
     assertThat(sc.exit()).as(sc.err()).isZero();
     assertThat(sc.out()).startsWith("file=scenarios/pick-and-place.json first_load_ms=");

@@ -81,6 +81,25 @@ class CollisionWorldTest {
   }
 
   @Test
+  void contactsFoundAtAReferencePoseCanBeAllowed() {
+    // Links 2 and 4 overlap by construction; links 2 and 5 only when the arm folds.
+    CollisionWorld world = new CollisionWorld(StandardPairFilter.nothingHeld());
+    int l2 = world.add(Body.robotLink("r1", 2, "r1/link2"), Obb.axisAligned(0, 0, 0, 10, 10, 10));
+    world.add(Body.robotLink("r1", 4, "r1/link4"), Obb.axisAligned(15, 0, 0, 10, 10, 10));
+    int l5 = world.add(Body.robotLink("r1", 5, "r1/link5"), Obb.axisAligned(100, 0, 0, 10, 10, 10));
+    world.add(Body.fixture("table", "table"), Obb.axisAligned(0, 0, -25, 100, 100, 5)); // 10 mm below
+    world.update();
+    java.util.Set<BodyPair> allowed = StandardPairFilter.robotSelfContacts(world.contacts());
+    assertThat(allowed).containsExactly(new BodyPair("r1/link4", "r1/link2"));
+    world.setFilter(StandardPairFilter.nothingHeld().withAllowedContacts(allowed));
+    assertThat(world.update()).as("the structural contact is gone").isZero();
+    world.setBox(l5, Obb.axisAligned(0, 0, 15, 10, 10, 10));
+    assertThat(world.update()).as("link 5 folded onto link 2 (link 4 is its neighbour)").isEqualTo(1);
+    assertThat(world.isTouching(l5)).isTrue();
+    assertThat(world.isTouching(l2)).isTrue();
+  }
+
+  @Test
   void touchingQueryMarksBothBodiesAndOnlyThem() {
     CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
     int a = world.add(Body.fixture("a", "a"), Obb.axisAligned(0, 0, 0, 10, 10, 10));

@@ -19,8 +19,8 @@ class SeparatingAxisTestTest {
   @Test
   void agreesWithBruteForceOnHundredThousandSeededPairs() {
     // Method: SAT vs edge-against-solid clipping (both closed, touching within 1e-6 mm counts),
-    // plus the construction's own answer for built contacts (gap 0 or ±1e-9 mm → overlap,
-    // ≥ 1e-3 mm → apart). Tolerance: none — zero disagreements.
+    // plus the construction's own answer for built contacts (gap ≤ 5e-7 mm → touching,
+    // ≥ 3e-6 mm → apart). Tolerance: none — zero disagreements.
     List<LabeledPair> pairs = new ObbPairGenerator(20261122L).pairs(100_000);
     double[] flatA = new double[pairs.size() * Obb.STRIDE];
     double[] flatB = new double[pairs.size() * Obb.STRIDE];

@@ -149,6 +149,38 @@ class StlReaderTest {
   }
 
   @Test
+  void corruptedFilesGiveFileErrorsNeverOtherExceptions() throws Exception {
+    // Method: 300 seeded corruptions (cut, flipped bytes, NaN coordinates) of both cube files;
+    // each read returns a mesh or throws FileFormatException naming the file.
+    java.util.Random random = new java.util.Random(77);
+    byte[][] originals = {binary(cube(), "x"), ascii(cube()).getBytes()};
+    Path f = dir.resolve("c.stl");
+    for (int i = 0; i < 300; i++) {
+      byte[] b = originals[i % 2].clone();
+      switch (random.nextInt(3)) {
+        case 0 -> b = Arrays.copyOf(b, random.nextInt(b.length));
+        case 1 -> {
+          for (int k = 0; k < 5; k++) {
+            b[random.nextInt(b.length)] = (byte) random.nextInt(256);
+          }
+        }
+        default -> {
+          int at = 84 + 12 + 50 * random.nextInt(12);
+          if (i % 2 == 0) {
+            ByteBuffer.wrap(b).order(ByteOrder.LITTLE_ENDIAN).putFloat(at, Float.NaN);
+          }
+        }
+      }
+      Files.write(f, b);
+      try {
+        StlReader.read(f, 1);
+      } catch (FileFormatException e) {
+        assertThat(e.getMessage()).startsWith(f.toString());
+      }
+    }
+  }
+
+  @Test
   void missingFile() {
     Path f = dir.resolve("nope.stl");
     assertError(f, f + ": no such file");

@@ -9,16 +9,16 @@ import org.robotrun.collision.Obb;
  * Seeded random box pairs for tests and benchmarks: a mix of general placements (about half
  * overlapping) and deliberately built contacts — face on face, vertex on face, edge across
  * edge, nested boxes, axis-aligned and quarter-turn boxes with exactly parallel edges — each
- * at a known gap: touching (0), inside the contact tolerance (1e-9 mm), just apart (≥ 1e-3
- * mm) or just penetrating (≤ −1e-3 mm).
+ * at a known gap: touching (0), inside the 1e-6 mm contact tolerance (1e-9 and 5e-7 mm: still
+ * touching), just beyond it (3e-6 mm: apart), clearly apart (≥ 1e-3 mm) or penetrating.
  */
 public final class ObbPairGenerator {
 
   /** What the construction guarantees about a pair. */
   public enum Expect {
-    /** Overlapping or touching by construction. */
+    /** Overlapping, or apart by at most half the contact tolerance, by construction. */
     OVERLAP,
-    /** Apart by at least 1e-3 mm by construction. */
+    /** Apart by at least 3e-6 mm (three times the contact tolerance) by construction. */
     SEPARATE,
     /** A general random placement: only a reference test can say. */
     UNKNOWN
@@ -31,7 +31,8 @@ public final class ObbPairGenerator {
   public record LabeledPair(Obb a, Obb b, Kind kind, Expect expect) {}
 
   // Penetrations stay below the thinnest plate (1 mm), so a corner never pokes through.
-  private static final double[] GAPS_MM = {0, 0, 1e-9, -1e-9, 1e-3, 0.01, 0.5, 5, -1e-3, -0.1, -0.5};
+  // 5e-7 and 3e-6 sit either side of the 1e-6 mm contact tolerance.
+  private static final double[] GAPS_MM = {0, 0, 1e-9, -1e-9, 5e-7, 3e-6, 1e-3, 0.01, 0.5, 5, -1e-3, -0.1, -0.5};
 
   private final Random random;
 
@@ -187,7 +188,7 @@ public final class ObbPairGenerator {
   }
 
   private static Expect expect(double gap) {
-    return gap <= 1e-9 ? Expect.OVERLAP : Expect.SEPARATE;
+    return gap <= 5e-7 ? Expect.OVERLAP : Expect.SEPARATE;
   }
 
   private double gap() {
