@@ -316,4 +316,40 @@ class ControllerTest {
     assertThat(a.line()).isEqualTo(2);
     assertThat(c.currentJoints().j5Deg()).isCloseTo(-90, offset(1e-9));
   }
+
+  @Test
+  void abortWhileMovingDeceleratesThenEndsTheProgram() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    c.run("PP", 1, true);
+    for (int i = 0; i < 150; i++) {
+      sim.step();
+    }
+    c.abort();
+    double[] prev = c.jointsRad();
+    double[] prevV = null;
+    int moving = 0;
+    for (int i = 0; i < 200; i++) {
+      sim.step();
+      double[] q = c.jointsRad();
+      double[] v = new double[6];
+      for (int j = 0; j < 6; j++) {
+        v[j] = (q[j] - prev[j]) / Simulation.DEFAULT_TICK_SEC;
+        if (prevV != null) {
+          // No velocity step: at most 5% of the joint's top speed per tick.
+          assertThat(Math.abs(v[j] - prevV[j])).isLessThan(0.05 * MODEL.joint(j).maxSpeedRadPerSec());
+        }
+      }
+      if (java.util.Arrays.stream(v).anyMatch(x -> x != 0)) {
+        moving++;
+      }
+      prevV = v;
+      prev = q;
+    }
+    assertThat(moving).isGreaterThan(3);
+    assertThat(c.busy()).isFalse();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.hasActiveAlarm()).isFalse();
+  }
 }
