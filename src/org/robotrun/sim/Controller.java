@@ -542,6 +542,8 @@ public final class Controller implements MotionPort {
   }
 
   private void addAlarm(ControllerAlarm a) {
+    // A run that ends on an alarm has no cycle time.
+    runStartSec = Double.NaN;
     activeAlarms.add(a);
     history.addFirst(a);
     while (history.size() > HISTORY) {
