@@ -74,7 +74,7 @@ public final class Simulation {
     ticks++;
     if (checkCollisions) {
       if (collisions == null) {
-        collisions = new CellCollisions(controllers, X_CW, world);
+        collisions = new CellCollisions(controllers, X_CW, world, floorZ);
       }
       for (CellCollisions.NewContact k : collisions.check()) {
         if (collisionEvents.size() < MAX_EVENTS) {

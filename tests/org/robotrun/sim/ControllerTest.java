@@ -352,4 +352,20 @@ class ControllerTest {
     assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
     assertThat(c.hasActiveAlarm()).isFalse();
   }
+
+  @Test
+  void theToolHittingTheFloorIsACollisionAlarm() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("FLOOR", "UFRAME_NUM=1", "UTOOL_NUM=1", "PR[1,1]=480", "PR[1,3]=(-340)", "PR[1,4]=180",
+        "L PR[1] 200mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "FLOOR", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(Simulation.COLLISION_ALARM);
+    assertThat(a.line()).isEqualTo(6);
+    assertThat(a.message()).contains("robot1/tool").contains("floor");
+    // The floor is 330 mm below WORLD: the tip stopped there (to one tick of travel).
+    assertThat(c.tcpInWorld().z()).isBetween(-331.0, -329.0);
+    assertThat(sim.collisionEvents()).hasSize(1);
+  }
 }
