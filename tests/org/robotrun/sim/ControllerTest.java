@@ -384,4 +384,14 @@ class ControllerTest {
     assertThat(r.status()).as(r.alarm().map(ControllerAlarm::display).orElse("")).isEqualTo(HeadlessRun.Status.FINISHED);
     assertThat(c.tcpInWorld().y()).isCloseTo(150, offset(0.01));
   }
+
+  @Test
+  void headlessRunResumesAfterPause() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("PAUSING", "R[1]=1", "PAUSE", "R[1]=2"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "PAUSING", 10, s -> {});
+    assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
+    assertThat(c.registers().number(1)).isEqualTo(2);
+  }
 }
