@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Set;
 import org.robotrun.collision.Body;
 import org.robotrun.collision.CollisionWorld;
+import org.robotrun.collision.Obb;
 import org.robotrun.collision.StandardPairFilter;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
@@ -18,8 +19,8 @@ import org.robotrun.world.WorldBodies;
 
 /**
  * Collision checking of a cell, once per tick: every robot's link bodies (a box around each link
- * shape) and its active tool (a 20 mm square bar from the flange to the TCP), and the world's
- * fixtures and parts, under the {@link StandardPairFilter} rules (self-collision of links at
+ * shape) and its active tool (a 20 mm square bar from the flange to the TCP), the world's
+ * fixtures and parts, and the floor, under the {@link StandardPairFilter} rules (self-collision of links at
  * least two apart, robot against fixtures, parts and other robots). Reports the contacts that
  * began at this tick, so a lasting contact raises one alarm, not one per tick.
  *
@@ -34,6 +35,7 @@ final class CellCollisions {
   private final List<Controller> controllers;
   private final List<Transform> X_CW;
   private final World world;
+  private final double floorZ;
   private CollisionWorld collision;
   private List<RobotBodies> robots;
   private Transform[] tools;
@@ -43,13 +45,45 @@ final class CellCollisions {
   private final double[][] lastQ;
   private Set<String> touching = new HashSet<>();
 
+  /** Bodies touching at the last check, by draw-item name (a link's boxes "#k" merged). */
+  Set<String> touchingBodies() {
+    Set<String> out = new HashSet<>();
+    for (String pair : touching) {
+      for (String body : pair.split("\\|")) {
+        int hash = body.indexOf('#');
+        out.add(hash < 0 ? body : body.substring(0, hash));
+      }
+    }
+    return out;
+  }
+
+  /** The tool bar of {@code X_FT} in the flange frame: its pose and full edge lengths; empty for a short tool. */
+  static java.util.Optional<LocalBox> toolBar(Transform X_FT) {
+    Vec3 p = X_FT.translationVector();
+    double length = p.norm() - TOOL_GAP_MM;
+    if (length <= 1) {
+      return java.util.Optional.empty();
+    }
+    // A bar along the flange-to-TCP line, centred half-way past the gap.
+    Vec3 dir = p.normalized();
+    Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
+    Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
+    return java.util.Optional.of(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
+  }
+
   /** A contact that began: the two bodies' names ("robot1/link5", "table"). */
   record NewContact(String a, String aOwner, String b, String bOwner) {}
 
-  CellCollisions(List<Controller> controllers, List<Transform> X_CW, World world) {
+  /** Name of the floor's body: a fixture whose top is the cell's floor. */
+  static final String FLOOR = "floor";
+  /** Half size of the floor slab (mm): 20 m square, 10 mm thick. */
+  static final double FLOOR_HALF_MM = 10_000;
+
+  CellCollisions(List<Controller> controllers, List<Transform> X_CW, World world, double floorZ) {
     this.controllers = controllers;
     this.X_CW = X_CW;
     this.world = world;
+    this.floorZ = floorZ;
     this.poses = new LinkPoses[controllers.size()];
     this.lastQ = new double[controllers.size()][];
     for (int r = 0; r < controllers.size(); r++) {
@@ -61,6 +95,10 @@ final class CellCollisions {
   private void build() {
     collision = new CollisionWorld(new CellPairFilter(StandardPairFilter.nothingHeld()));
     new WorldBodies(world, collision);
+    // The floor is always there: a robot's base stands on it (not checked), its links and tool are.
+    if (world.find(FLOOR).isEmpty()) {
+      collision.add(Body.fixture(FLOOR, FLOOR), Obb.axisAligned(0, 0, floorZ - 5, FLOOR_HALF_MM, FLOOR_HALF_MM, 5));
+    }
     robots = new ArrayList<>();
     tools = new Transform[controllers.size()];
     for (int r = 0; r < controllers.size(); r++) {
@@ -84,15 +122,7 @@ final class CellCollisions {
       out.add(boxes);
     }
     List<LocalBox> tool = new ArrayList<>();
-    Vec3 p = X_FT.translationVector();
-    double length = p.norm() - TOOL_GAP_MM;
-    if (length > 1) {
-      // A bar along the flange-to-TCP line, centred half-way past the gap.
-      Vec3 dir = p.normalized();
-      Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
-      Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
-      tool.add(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
-    }
+    toolBar(X_FT).ifPresent(tool::add);
     out.add(tool);
     return out;
   }
