@@ -141,6 +141,10 @@ final class EditScreen implements Screen {
       return;
     }
     List<Field> fs = fields(p, prog, cur);
+    if (field >= fs.size() || field >= 0 && !fs.get(field).editable()) {
+      // the line changed under the cursor (undo, paste, another screen): back to its number
+      field = -1;
+    }
     switch (k) {
       case UP -> move(p, p.shift() ? -Lcd.BODY_ROWS : -1);
       case DOWN -> move(p, p.shift() ? Lcd.BODY_ROWS : 1);

@@ -100,7 +100,9 @@ final class FrameScreen implements Screen {
     }
     String res = results.get(key());
     if (res != null) {
-      rows.add(" " + res);
+      for (String r : Lcd.wrap(res, Lcd.WIDTH - 2)) {
+        rows.add(" " + r);
+      }
     }
     return rows;
   }

@@ -25,9 +25,9 @@ import org.robotrun.program.Program;
  * and forwards keys; scripts and tests do the same with {@code .keys} files.
  *
  * <p>SHIFT works held ({@link #press}/{@link #release}) and toggled (a SHIFT press and release
- * with no other key between latches it on or off). SHIFT is also the deadman: jog keys move the
- * robot only while it is on. Every error the operator can cause ends as a message on the prompt
- * line; no key throws.
+ * with no other key and no time between latches it on or off). SHIFT is also the deadman: jog
+ * keys move the robot only while it is on, and releasing it stops jogging. Every error the
+ * operator can cause ends as a message on the prompt line; no key throws.
  */
 public final class Pendant {
   /** Undo depth of the program editor (the issue asks for at least 50). */
@@ -162,6 +162,10 @@ public final class Pendant {
 
   /** Advances simulated time; the EDIT cursor follows the executing line as it goes. */
   public void advance(double dtSec) {
+    if (shiftHeld && dtSec > 0) {
+      // SHIFT held through time is a hold, not a tap: its release must not toggle the latch
+      keySinceShiftPress = true;
+    }
     double left = dtSec;
     while (left > 1e-12) {
       double dt = Math.min(FOLLOW_SLICE_SEC, left);

@@ -59,6 +59,8 @@ class PendantProgramTest {
         ENTER
         """);
     assertThat(body(p)).contains("L P[2] 200mm/sec {CNT50}");
+    Lcd.FieldSpan span = p.lcd().cursorField().orElseThrow();
+    assertThat(p.lcd().row(span.row()).substring(span.openCol(), span.closeCol() + 1)).isEqualTo("{CNT50}");
 
     // a register statement and an IF at the end, through [INST]
     run(p, """
@@ -298,6 +300,25 @@ class PendantProgramTest {
           """);
     }
     assertThat(control.program("UNDO1").orElseThrow().lineCount()).isEqualTo(5);
+  }
+
+  @Test
+  void aCursorOnAFieldThatUndoRemovedFallsBackToTheLineNumber() {
+    createWithThreePoints();
+    // add two options to line 3, put the cursor on the last one, then undo both
+    run(p, """
+        F4
+        6
+        F4
+        7
+        RIGHT *8
+        NEXT
+        F4
+        F4
+        NEXT
+        LEFT
+        """);
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("{3:}");
   }
 
   @Test
