@@ -17,6 +17,7 @@ import org.robotrun.sim.Controller;
 import org.robotrun.sim.ControllerAlarm;
 import org.robotrun.sim.HeadlessRun;
 import org.robotrun.sim.MotionTiming;
+import org.robotrun.sim.CollisionEvent;
 import org.robotrun.sim.Simulation;
 import org.robotrun.world.ObjectKind;
 import org.robotrun.world.World;
@@ -78,7 +79,13 @@ final class RunReport {
         part.putNull("parent");
       }
     }
-    root.putArray("collisions");
+    ArrayNode collisions = root.putArray("collisions");
+    for (CollisionEvent e : sim.collisionEvents()) {
+      ObjectNode o = collisions.addObject();
+      o.put("timeSec", round(e.simTimeSec(), 6));
+      o.put("a", e.bodyA());
+      o.put("b", e.bodyB());
+    }
     return root;
   }
 

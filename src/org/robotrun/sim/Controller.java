@@ -523,10 +523,12 @@ public final class Controller implements MotionPort {
 
   /**
    * Raises an alarm from outside the program (collision, pendant): the arm stops, a running
-   * program pauses, jogging stops.
+   * program pauses, jogging stops. The alarm names the active program's line, if one runs.
    */
   public void raiseAlarm(String code, String message) {
-    addAlarm(new ControllerAlarm(code, message, "", 0, timeSec));
+    boolean active = interpreter.state() == Interpreter.State.RUNNING || interpreter.state() == Interpreter.State.PAUSED;
+    addAlarm(new ControllerAlarm(code, message, active ? interpreter.currentProgram() : "",
+        active ? interpreter.cursorLine() : 0, timeSec));
     interpreter.hold();
     stopMotion();
   }

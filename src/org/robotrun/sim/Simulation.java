@@ -28,6 +28,14 @@ public final class Simulation {
   private final double floorZ;
   private final double tickSec;
   private long ticks;
+  private CellCollisions collisions;
+  private boolean checkCollisions = true;
+  private final List<CollisionEvent> collisionEvents = new ArrayList<>();
+
+  /** Alarm code of a collision. */
+  public static final String COLLISION_ALARM = "SRVO-050";
+  /** Collision events kept (the oldest are dropped beyond this). */
+  static final int MAX_EVENTS = 1000;
 
   /**
    * @param controllers the robots
@@ -55,12 +63,40 @@ public final class Simulation {
         DEFAULT_TICK_SEC);
   }
 
-  /** Advances every controller by one tick. */
+  /**
+   * Advances every controller by one tick, then checks collisions: a contact that begins raises
+   * {@link #COLLISION_ALARM} on each robot involved (the arm stops, the program pauses).
+   */
   public void step() {
     for (Controller c : controllers) {
       c.tick(tickSec);
     }
     ticks++;
+    if (checkCollisions) {
+      if (collisions == null) {
+        collisions = new CellCollisions(controllers, X_CW, world);
+      }
+      for (CellCollisions.NewContact k : collisions.check()) {
+        if (collisionEvents.size() < MAX_EVENTS) {
+          collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b()));
+        }
+        for (Controller c : controllers) {
+          if (c.name().equals(k.aOwner()) || c.name().equals(k.bOwner())) {
+            c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
+          }
+        }
+      }
+    }
+  }
+
+  /** Turns collision checking on (the default) or off. */
+  public void setCollisionChecking(boolean on) {
+    checkCollisions = on;
+  }
+
+  /** Contacts that began during the run, oldest first (at most 1000). */
+  public List<CollisionEvent> collisionEvents() {
+    return List.copyOf(collisionEvents);
   }
 
   /** Simulated time (s): ticks × tick length. */

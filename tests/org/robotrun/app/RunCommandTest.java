@@ -67,6 +67,45 @@ class RunCommandTest {
   }
 
   @Test
+  void drivingTheToolIntoTheTableIsACollisionAlarm(@TempDir Path dir) throws Exception {
+    Path prog = dir.resolve("CRASH.LS");
+    Files.writeString(prog, """
+        /PROG  CRASH
+        /ATTR
+        /MN
+           1:  UFRAME_NUM=1 ;
+           2:  UTOOL_NUM=1 ;
+           3:L P[1:ABOVE] 200mm/sec FINE ;
+           4:L P[2:INTO] 100mm/sec FINE ;
+        /POS
+        P[1:"ABOVE"]{
+           GP1:
+        	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+        	X =   120.000  mm,	Y =   370.000  mm,	Z =    50.000  mm,
+        	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+        };
+        P[2:"INTO"]{
+           GP1:
+        	UF : 1, UT : 1,		CONFIG : 'N U T, 0, 0, 0',
+        	X =   120.000  mm,	Y =   370.000  mm,	Z =   -20.000  mm,
+        	W =   180.000 deg,	P =     0.000 deg,	R =     0.000 deg
+        };
+        /END
+        """);
+    Path report = dir.resolve("r.json");
+    int code = Main.execute("run", "--scenario", "scenarios/pick-and-place.json", "--program", "CRASH",
+        "--programs", prog.toString(), "--report", report.toString());
+    assertThat(code).isEqualTo(1);
+    JsonNode r = new ObjectMapper().readTree(report.toFile());
+    assertThat(r.get("alarm").get("code").asText()).isEqualTo("SRVO-050");
+    assertThat(r.get("alarm").get("line").asInt()).isEqualTo(4);
+    JsonNode hit = r.get("collisions").get(0);
+    assertThat(java.util.List.of(hit.get("a").asText(), hit.get("b").asText())).containsExactlyInAnyOrder("robot1/tool", "table");
+    // The tip stopped at the table top (z = -100 in the cell), not inside it: at most one tick deeper.
+    assertThat(r.get("robots").get(0).get("tcp_world").get("z").asDouble()).isBetween(-100.5, -99.0);
+  }
+
+  @Test
   void alarmExitsWithOneAndNamesTheLine(@TempDir Path dir) throws Exception {
     Path prog = dir.resolve("BAD.LS");
     Files.writeString(prog, """

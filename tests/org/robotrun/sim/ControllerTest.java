@@ -209,4 +209,67 @@ class ControllerTest {
     assertThat(after.y()).isCloseTo(before.y(), offset(0.01));
     assertThat(c.jogDirection(3)).isZero();
   }
+
+  @Test
+  void overrideChangeAndHoldNeverMakeTheArmJump() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    c.run("PP", 1, true);
+    double[] prev = c.jointsRad();
+    double[] prevV = new double[6];
+    double maxDv = 0;
+    for (int i = 0; i < 2000 && c.busy(); i++) {
+      if (i == 100) {
+        c.setOverridePct(20);
+      }
+      if (i == 200) {
+        c.setOverridePct(100);
+      }
+      if (i == 260) {
+        c.hold();
+      }
+      if (i == 400) {
+        c.run("PP", c.status().line(), true);
+      }
+      sim.step();
+      double[] q = c.jointsRad();
+      for (int j = 0; j < 6; j++) {
+        double v = (q[j] - prev[j]) / Simulation.DEFAULT_TICK_SEC;
+        maxDv = Math.max(maxDv, Math.abs(v - prevV[j]) / ControllerTest.MODEL.joint(j).maxSpeedRadPerSec());
+        prevV[j] = v;
+      }
+      prev = q;
+    }
+    // Speed changes per tick stay a small fraction of each joint's maximum speed (no step).
+    assertThat(maxDv).isLessThan(0.05);
+  }
+
+  @Test
+  void stepModeStopsAfterEachLineAndBackwardReturnsToThePreviousPoint() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    c.setStepMode(true);
+    c.run("PP", 1, true);
+    runUntilStopped(sim, c);
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.PAUSED);
+    c.run("PP", c.status().line(), true);
+    runUntilStopped(sim, c);
+    c.run("PP", c.status().line(), true);
+    runUntilStopped(sim, c);
+    // Two motion lines done (HOME, then A with CNT run as FINE), then B: the arm stands at B.
+    assertThat(c.tcpInWorld().y()).isCloseTo(150, offset(0.01));
+    c.run("PP", c.status().line(), false);
+    runUntilStopped(sim, c);
+    assertThat(c.hasActiveAlarm()).isFalse();
+    assertThat(c.tcpInWorld().y()).isCloseTo(-120, offset(0.01));
+  }
+
+  /** Steps until the program pauses or ends (in STEP mode a motion line pauses with the arm at its point). */
+  static void runUntilStopped(Simulation sim, Controller c) {
+    for (int i = 0; i < 10_000 && c.status().state() == ExecutionStatus.State.RUNNING; i++) {
+      sim.step();
+    }
+  }
 }
