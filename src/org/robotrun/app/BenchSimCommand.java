@@ -2,6 +2,8 @@ package org.robotrun.app;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.Locale;
@@ -33,10 +35,12 @@ import picocli.CommandLine.Option;
     description = {
       "Measure headless simulation speed on the default cell (4 ms ticks).",
       "1) A pick-and-place program of about 60 s of simulated time (the example PICKPLACE, called 9 times) is run "
-          + "--repeats times after one warm-up run; prints simulated seconds per wall second (best and median).",
+          + "--repeats times after one warm-up run, with and without collision checking; prints simulated seconds per "
+          + "wall second and per CPU second of the running thread (best and median; the CPU figure is the one that "
+          + "holds on a busy machine).",
       "2) A 500 mm linear move at 100 mm/s (1 250 ticks of resolved-rate tracking) is run --repeats times; prints "
           + "the wall time per tick (best and median).",
-      "Output: sim_speed_x=B median_x=M sim_seconds=S ... and linear_tick_us=B median_us=M ticks=N"
+      "Output: collisions=on|off sim_speed_x=B median_x=M cpu_speed_x=B cpu_median_x=M ... and linear_tick_us=B median_us=M ..."
     })
 public final class BenchSimCommand implements Callable<Integer> {
   /** How often BENCH60 calls PICKPLACE: 9 × 6.4 s ≈ 58 s. */
@@ -62,30 +66,40 @@ public final class BenchSimCommand implements Callable<Integer> {
         /END
         """.formatted(CYCLES));
 
-    double[] speed = new double[repeats];
-    double simSeconds = 0;
-    long ticks = 0;
-    for (int k = -1; k < repeats; k++) {
-      Simulation sim = DefaultCell.simulation(model);
-      Controller c = sim.controllers().get(0);
-      c.saveProgram(pickPlace);
-      c.saveProgram(bench);
-      long t0 = System.nanoTime();
-      HeadlessRun.Result r = HeadlessRun.run(sim, c, "BENCH60", 600, s -> {});
-      long ns = System.nanoTime() - t0;
-      if (r.status() != HeadlessRun.Status.FINISHED) {
-        throw new UserError("benchmark program did not finish: " + r.alarm().map(a -> a.display()).orElse("?"), Main.EXIT_FAILED);
+    ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+    for (boolean collisions : new boolean[] {true, false}) {
+      double[] speed = new double[repeats];
+      double[] cpuSpeed = new double[repeats];
+      double simSeconds = 0;
+      long ticks = 0;
+      for (int k = -1; k < repeats; k++) {
+        Simulation sim = DefaultCell.simulation(model);
+        sim.setCollisionChecking(collisions);
+        Controller c = sim.controllers().get(0);
+        c.saveProgram(pickPlace);
+        c.saveProgram(bench);
+        long cpu0 = threads.getCurrentThreadCpuTime();
+        long t0 = System.nanoTime();
+        HeadlessRun.Result r = HeadlessRun.run(sim, c, "BENCH60", 600, s -> {});
+        long ns = System.nanoTime() - t0;
+        long cpuNs = threads.getCurrentThreadCpuTime() - cpu0;
+        if (r.status() != HeadlessRun.Status.FINISHED) {
+          throw new UserError("benchmark program did not finish: " + r.alarm().map(a -> a.display()).orElse("?"), Main.EXIT_FAILED);
+        }
+        if (k >= 0) {
+          speed[k] = r.simTimeSec() / (ns / 1e9);
+          cpuSpeed[k] = r.simTimeSec() / (cpuNs / 1e9);
+        }
+        simSeconds = r.simTimeSec();
+        ticks = r.ticks();
       }
-      if (k >= 0) {
-        speed[k] = r.simTimeSec() / (ns / 1e9);
-      }
-      simSeconds = r.simTimeSec();
-      ticks = r.ticks();
+      Arrays.sort(speed);
+      Arrays.sort(cpuSpeed);
+      System.out.printf(Locale.ROOT,
+          "collisions=%s sim_speed_x=%.0f median_x=%.0f cpu_speed_x=%.0f cpu_median_x=%.0f sim_seconds=%.3f ticks=%d repeats=%d%n",
+          collisions ? "on" : "off", speed[repeats - 1], speed[repeats / 2], cpuSpeed[repeats - 1], cpuSpeed[repeats / 2],
+          simSeconds, ticks, repeats);
     }
-    double[] sorted = speed.clone();
-    Arrays.sort(sorted);
-    System.out.printf(Locale.ROOT, "sim_speed_x=%.0f median_x=%.0f sim_seconds=%.3f ticks=%d repeats=%d%n",
-        sorted[sorted.length - 1], sorted[sorted.length / 2], simSeconds, ticks, repeats);
 
     double[] tickUs = new double[repeats];
     int linearTicks = 0;

@@ -9,7 +9,6 @@ import org.robotrun.collision.CollisionWorld;
 import org.robotrun.collision.StandardPairFilter;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.LinkShape;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.world.LocalBox;
@@ -39,6 +38,9 @@ final class CellCollisions {
   private List<RobotBodies> robots;
   private Transform[] tools;
   private final Transform[] X_CL = new Transform[Body.TOOL_LINK + 1];
+  private final LinkPoses[] poses;
+  /** Joints at the last check, per robot: nothing moved, nothing new to find. */
+  private final double[][] lastQ;
   private Set<String> touching = new HashSet<>();
 
   /** A contact that began: the two bodies' names ("robot1/link5", "table"). */
@@ -48,6 +50,11 @@ final class CellCollisions {
     this.controllers = controllers;
     this.X_CW = X_CW;
     this.world = world;
+    this.poses = new LinkPoses[controllers.size()];
+    this.lastQ = new double[controllers.size()][];
+    for (int r = 0; r < controllers.size(); r++) {
+      poses[r] = new LinkPoses(controllers.get(r).model(), X_CW.get(r));
+    }
     build();
   }
 
@@ -103,22 +110,29 @@ final class CellCollisions {
 
   /** Moves every robot's bodies to its current joints, runs the check, returns contacts that began now. */
   List<NewContact> check() {
+    boolean rebuilt = false;
     for (int r = 0; r < controllers.size(); r++) {
       if (!controllers.get(r).frames().activeTool().equals(tools[r])) {
         build();
         touching = new HashSet<>();
+        java.util.Arrays.fill(lastQ, null);
+        rebuilt = true;
         break;
       }
     }
+    boolean moved = rebuilt;
     for (int r = 0; r < controllers.size(); r++) {
-      Controller c = controllers.get(r);
-      Transform[] X_WL = ForwardKinematics.linkPosesInWorld(c.model(), c.jointsRad());
-      Transform X_Cw = X_CW.get(r);
-      for (int i = 0; i < X_WL.length; i++) {
-        X_CL[i] = X_Cw.compose(X_WL[i]);
+      double[] q = controllers.get(r).jointsRad();
+      if (lastQ[r] != null && java.util.Arrays.equals(q, lastQ[r])) {
+        continue;
       }
-      X_CL[Body.TOOL_LINK] = X_CL[RobotModel.DOF].compose(c.model().X_6F());
+      lastQ[r] = q;
+      moved = true;
+      poses[r].compute(q, X_CL);
       robots.get(r).moveTo(X_CL, collision);
+    }
+    if (!moved) {
+      return List.of();
     }
     int n = collision.update();
     if (n == 0 && touching.isEmpty()) {
