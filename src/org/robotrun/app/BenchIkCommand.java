@@ -38,7 +38,8 @@ import picocli.CommandLine.Spec;
       "  solved=N/M in_limits=N/M same_config=N/M median_us=X p99_us=Y",
       "solved: position error < 0.1 mm and orientation error < 0.01 rad (checked by FK);",
       "same_config: joints equal the row's ground truth within 1e-6 rad after wrapping.",
-      "Times are per solve (System.nanoTime around the solve only) after warm-up passes.",
+      "Times are per solve (System.nanoTime around the solve only), from the last of several",
+      "passes (see --warmup, --warmup-ms).",
       "closed-form selects the branch by the CONFIG of the row's ground-truth joints;",
       "numeric starts from --start.",
       "resolved-rate times one resolved-rate step per target (at the ground-truth joints, twist",
@@ -65,9 +66,14 @@ public final class BenchIkCommand implements Callable<Integer> {
       description = "Write one row per target: id,q1..q6 (rad), empty fields where the solve failed.")
   Path out;
 
-  @Option(names = "--warmup", defaultValue = "5", paramLabel = "N",
-      description = "Untimed passes over the targets before the timed one. Default: ${DEFAULT-VALUE}.")
+  @Option(names = "--warmup", defaultValue = "20", paramLabel = "N",
+      description = "At least N untimed passes over the targets before the timed one. Default: ${DEFAULT-VALUE}.")
   int warmup;
+
+  @Option(names = "--warmup-ms", defaultValue = "2000", paramLabel = "MS",
+      description = {"And keep warming up for at least MS milliseconds, so the JIT has finished",
+          "compiling the solver even on a busy machine. Default: ${DEFAULT-VALUE}."})
+  long warmupMs;
 
   @Override
   public Integer call() {
@@ -80,6 +86,9 @@ public final class BenchIkCommand implements Callable<Integer> {
     }
     if (warmup < 0) {
       throw new ParameterException(spec.commandLine(), "--warmup: expected a count >= 0, got " + warmup);
+    }
+    if (warmupMs < 0) {
+      throw new ParameterException(spec.commandLine(), "--warmup-ms: expected a duration >= 0, got " + warmupMs);
     }
     List<IkTargetsCsv.Target> rows = read(targets);
     RobotModel robot = RobotDefinitions.defaultRobot();
@@ -116,7 +125,8 @@ public final class BenchIkCommand implements Callable<Integer> {
     boolean useClosed = solver.equals("closed-form");
     IkResult[] results = new IkResult[m];
     long[] nanos = new long[m];
-    for (int pass = 0; pass <= warmup; pass++) {
+    long warmupEnd = System.nanoTime() + warmupMs * 1_000_000;
+    for (int pass = 0; pass <= warmup || System.nanoTime() < warmupEnd; pass++) {
       for (int i = 0; i < m; i++) {
         long t0 = System.nanoTime();
         IkResult r = useClosed ? closed.solve(poses[i], configs[i]) : numeric.solve(poses[i], starts[i]);
@@ -158,7 +168,8 @@ public final class BenchIkCommand implements Callable<Integer> {
     double[] qDot = new double[6];
     long[] nanos = new long[m];
     int damped = 0;
-    for (int pass = 0; pass <= warmup; pass++) {
+    long warmupEnd = System.nanoTime() + warmupMs * 1_000_000;
+    for (int pass = 0; pass <= warmup || System.nanoTime() < warmupEnd; pass++) {
       damped = 0;
       for (int i = 0; i < m; i++) {
         double[] q = rows.get(i).q();

@@ -7,13 +7,11 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import picocli.CommandLine.Command;
@@ -76,28 +74,9 @@ public final class CheckCommand implements Callable<Integer> {
       }
     }
 
-    Set<String> names = new HashSet<>(known);
-    Map<String, String> fileOf = new HashMap<>();
-    List<Diagnostic> extra = new ArrayList<>();
-    for (LsReadResult r : results) {
-      String name = r.program().name();
-      names.add(name);
-      String first = fileOf.putIfAbsent(name, r.file());
-      if (first != null) {
-        extra.add(Diagnostic.error(r.file(), 1, "program " + name + " is also defined in " + first));
-      }
-    }
-
     boolean errors = false;
-    for (LsReadResult r : results) {
-      LsReadResult checked = r.withCallTargetsChecked(names);
-      List<Diagnostic> all = new ArrayList<>(checked.diagnostics());
-      for (Diagnostic d : extra) {
-        if (d.file().equals(r.file())) {
-          all.add(0, d);
-        }
-      }
-      for (Diagnostic d : all) {
+    for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known))) {
+      for (Diagnostic d : r.diagnostics()) {
         errors |= d.isError();
         if (d.isError() || !quiet) {
           out.println(d);

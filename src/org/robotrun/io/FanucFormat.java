@@ -24,7 +24,11 @@ public final class FanucFormat {
     }
     // A value taught elsewhere may carry more digits than a controller prints; keep them all
     // (still right-aligned) so that writing never changes a position.
-    return Double.parseDouble(s) == v ? s : pad(exact(v, 3), 10);
+    if (Double.parseDouble(s) == v) {
+      return s;
+    }
+    String e = exact(v, 3);
+    return e.length() < 10 ? pad(e, 10) : " " + e;
   }
 
   /**

@@ -175,7 +175,8 @@ final class LsPositionParser extends LsTokenCursor {
           boolean cart = indexOf(CARTESIAN, key) >= 0;
           boolean joint = indexOf(JOINT, key) >= 0;
           if (!cart && !joint) {
-            throw error(t, where + ": unknown field '" + t.text() + "': expected UF, UT, CONFIG, X, Y, Z, W, P, R or J1..J6");
+            throw error(t, where + ": unknown field '" + LsToken.clip(t.text())
+                + "': expected UF, UT, CONFIG, X, Y, Z, W, P, R or J1..J6");
           }
           expect(Kind.EQ, "'=' after " + key);
           boolean negative = peek().is(Kind.MINUS);
@@ -242,7 +243,8 @@ final class LsPositionParser extends LsTokenCursor {
   private Config config(LsToken s, String where) {
     String[] parts = s.text().split(",", -1);
     String[] letters = parts[0].trim().toUpperCase(Locale.ROOT).split("\\s+");
-    String expected = where + ": CONFIG '" + s.text() + "': expected 'F|N U|D T|B, t1, t2, t3' like 'N U T, 0, 0, 0'";
+    String expected = where + ": CONFIG '" + LsToken.clip(s.text())
+        + "': expected 'F|N U|D T|B, t1, t2, t3' like 'N U T, 0, 0, 0'";
     if (letters.length != 3 || parts.length > 4) {
       throw error(s, expected);
     }
@@ -295,7 +297,7 @@ final class LsPositionParser extends LsTokenCursor {
     try {
       return Integer.parseInt(t.text());
     } catch (NumberFormatException e) {
-      throw error(t, "number " + t.text() + " is too large");
+      throw error(t, "number " + LsToken.clip(t.text()) + " is too large");
     }
   }
 }

@@ -2,6 +2,7 @@ package org.robotrun.io;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -36,7 +37,17 @@ public final class LsReader {
 
   /** Reads a file; CALL targets are not checked (the program set is unknown). */
   public static LsReadResult read(Path file) throws IOException {
-    return parse(file.toString(), decode(Files.readAllBytes(file)));
+    byte[] bytes = Files.readAllBytes(file);
+    String name = file.toString();
+    int badLine = firstNonUtf8Line(bytes);
+    LsReadResult r = parse(name, decode(bytes));
+    if (badLine == 0) {
+      return r;
+    }
+    List<Diagnostic> all = new ArrayList<>(r.diagnostics());
+    all.add(Diagnostic.warning(name, badLine,
+        "not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly"));
+    return new LsReadResult(r.file(), r.program(), all, r.sourceLines());
   }
 
   /** Reads a file and checks CALL targets against {@code knownPrograms} (names, any case). */
@@ -55,18 +66,48 @@ public final class LsReader {
   }
 
   /**
-   * Bytes to text. Controllers write ASCII; anything that is not valid UTF-8 becomes U+FFFD so
-   * binary garbage reaches the parser (and is reported) instead of failing the read.
+   * Bytes to text: UTF-8 when the bytes are valid UTF-8 (ASCII, as controllers write, included),
+   * else Latin-1, which maps every byte to one character. So a comment in another 8-bit encoding
+   * is never replaced by U+FFFD, and binary garbage reaches the parser (and is reported) instead
+   * of failing the read.
    */
   static String decode(byte[] bytes) {
     try {
       return StandardCharsets.UTF_8.newDecoder()
-          .onMalformedInput(CodingErrorAction.REPLACE)
-          .onUnmappableCharacter(CodingErrorAction.REPLACE)
+          .onMalformedInput(CodingErrorAction.REPORT)
+          .onUnmappableCharacter(CodingErrorAction.REPORT)
           .decode(ByteBuffer.wrap(bytes))
           .toString();
-    } catch (java.nio.charset.CharacterCodingException e) {
-      throw new IllegalStateException("a REPLACE decoder does not throw", e);
+    } catch (CharacterCodingException e) {
+      return new String(bytes, StandardCharsets.ISO_8859_1);
+    }
+  }
+
+  /** The 1-based line of the first byte sequence that is not UTF-8, or 0 when all of it is. */
+  static int firstNonUtf8Line(byte[] bytes) {
+    try {
+      StandardCharsets.UTF_8.newDecoder()
+          .onMalformedInput(CodingErrorAction.REPORT)
+          .onUnmappableCharacter(CodingErrorAction.REPORT)
+          .decode(ByteBuffer.wrap(bytes));
+      return 0;
+    } catch (CharacterCodingException e) {
+      // Find the first bad sequence by decoding line by line (rare path: only for non-UTF-8 files).
+      int line = 1;
+      int start = 0;
+      for (int i = 0; i <= bytes.length; i++) {
+        if (i == bytes.length || bytes[i] == '\n') {
+          try {
+            StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+                .decode(ByteBuffer.wrap(bytes, start, i - start));
+          } catch (CharacterCodingException bad) {
+            return line;
+          }
+          line++;
+          start = i + 1;
+        }
+      }
+      return 1;
     }
   }
 
@@ -154,7 +195,8 @@ public final class LsReader {
               diags.add(Diagnostic.error(file, headerLine, "second /POS section"));
             }
             if (!sawMn) {
-              diags.add(Diagnostic.error(file, headerLine, "/POS before /MN: expected /PROG, /ATTR, /MN, /POS, /END in that order"));
+              diags.add(Diagnostic.error(file, headerLine,
+                  "/POS before /MN: expected /PROG, /ATTR, /MN, /POS, /END in that order"));
             }
             sawPos = true;
             List<String> body = new ArrayList<>(end - start);
@@ -172,8 +214,17 @@ public final class LsReader {
               }
             }
           }
-          default -> diags.add(Diagnostic.warning(file, headerLine,
-              "not supported: section " + header + " (its " + (end - start) + " lines are ignored)"));
+          default -> {
+            // Controllers write an empty /APPL into most files; only content is worth a word.
+            int content = 0;
+            for (int k = start; k < end; k++) {
+              content += lines[k].isBlank() ? 0 : 1;
+            }
+            if (content > 0) {
+              diags.add(Diagnostic.warning(file, headerLine,
+                  "not supported: section " + header + " (its " + content + " lines are ignored)"));
+            }
+          }
         }
         if (sawEnd) {
           break;
@@ -196,7 +247,8 @@ public final class LsReader {
     private LsReadResult result() {
       if (declaredLineCount >= 0 && declaredLineCount != instructions.size()) {
         diags.add(Diagnostic.warning(file, lineCountLine,
-            "LINE_COUNT = " + declaredLineCount + " but /MN has " + instructions.size() + " lines; using " + instructions.size()));
+            "LINE_COUNT = " + declaredLineCount + " but /MN has " + instructions.size() + " lines; using "
+                + instructions.size()));
       }
       Map<String, String> attrs = new LinkedHashMap<>(attributes);
       for (Map.Entry<String, String> d : LsAttributes.DEFAULTS.entrySet()) {
@@ -217,13 +269,15 @@ public final class LsReader {
         return;
       }
       if (!Program.isValidName(words[0])) {
-        diags.add(Diagnostic.error(file, line, "'" + clip(words[0]) + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
+        diags.add(Diagnostic.error(file, line, "'" + clip(words[0])
+            + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
             + Program.MAX_NAME_LENGTH + " characters"));
       } else {
         name = words[0].toUpperCase(Locale.ROOT);
       }
       if (words.length > 1) {
-        diags.add(Diagnostic.warning(file, line, "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
+        diags.add(Diagnostic.warning(file, line,
+            "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
       }
     }
 
@@ -284,7 +338,8 @@ public final class LsReader {
         for (String sub : body.substring(colon + 1).split(",")) {
           int e = sub.indexOf('=');
           if (e < 0 || !isKey(sub.substring(0, e).strip())) {
-            diags.add(Diagnostic.error(file, line, "/ATTR " + key + ": expected 'NAME = value' entries separated by ',', found '" + clip(sub.strip()) + "'"));
+            diags.add(Diagnostic.error(file, line, "/ATTR " + key
+                + ": expected 'NAME = value' entries separated by ',', found '" + clip(sub.strip()) + "'"));
             return;
           }
           parts.add(sub.substring(0, e).strip() + " = " + sub.substring(e + 1).strip());
@@ -354,7 +409,8 @@ public final class LsReader {
           if (p == digitsStart && p < text.length() && text.charAt(p) == ':') {
             diags.add(Diagnostic.error(file, line, "continuation line ':  ...' without a C motion line before it"));
           } else {
-            diags.add(Diagnostic.error(file, line, "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
+            diags.add(Diagnostic.error(file, line,
+                "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
           }
           continue;
         }
@@ -366,7 +422,8 @@ public final class LsReader {
         }
         int expected = instructions.size() + 1;
         if (number != expected) {
-          diags.add(Diagnostic.error(file, line, "line number " + text.substring(digitsStart, p) + " out of order: expected " + expected));
+          diags.add(Diagnostic.error(file, line,
+              "line number " + clip(text.substring(digitsStart, p)) + " out of order: expected " + expected));
         }
         Body body = body(text, p + 1, line);
         List<LsToken> tokens = body.tokens;
@@ -449,7 +506,8 @@ public final class LsReader {
       int bad = 0;
       for (int i = 0; i < line.length(); i++) {
         char c = line.charAt(i);
-        if ((c < 0x20 && c != '\t') || c == '\uFFFD') {
+        // C0 and C1 control characters (the latter are what stray bytes 0x80-0x9F become).
+        if ((c < 0x20 && c != '\t') || (c >= 0x7f && c < 0xa0) || c == '\uFFFD') {
           bad++;
         }
       }

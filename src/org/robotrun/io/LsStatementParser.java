@@ -37,6 +37,9 @@ final class LsStatementParser extends LsTokenCursor {
   /** Most operators in one statement; keeps trees shallow enough for recursive walkers. */
   static final int MAX_OPERATORS = 1000;
 
+  private static final String VALUE_EXPECTED =
+      "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found ";
+
   /** FANUC statements RobotRun knows by name but does not implement: first word → name. */
   private static final Map<String, String> UNSUPPORTED = Map.ofEntries(
       Map.entry("SKIP", "SKIP CONDITION"),
@@ -100,6 +103,9 @@ final class LsStatementParser extends LsTokenCursor {
   static Parsed parse(List<LsToken> tokens) {
     LsStatementParser p = new LsStatementParser(tokens);
     Instruction in = p.statement();
+    if (p.peek().is(Kind.SEMICOLON)) {
+      throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
+    }
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
     }
@@ -150,7 +156,7 @@ final class LsStatementParser extends LsTokenCursor {
       return motion();
     }
     if (w.startsWith("$")) {
-      throw error("not supported: system variable assignment (" + t.text() + ")");
+      throw error("not supported: system variable assignment (" + LsToken.clip(t.text()) + ")");
     }
     next();
     return switch (w) {
@@ -248,7 +254,7 @@ final class LsStatementParser extends LsTokenCursor {
     if (name != null) {
       return error(t, "not supported: " + name);
     }
-    return error(t, "unknown statement '" + t.text()
+    return error(t, "unknown statement '" + LsToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
 
@@ -318,7 +324,8 @@ final class LsStatementParser extends LsTokenCursor {
   private Instruction call() {
     LsToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
-      throw error(name, "'" + name.text() + "' is not a program name: expected letters, digits and '_', starting with a letter");
+      throw error(name, "'" + LsToken.clip(name.text())
+          + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
     List<Expr> args = new ArrayList<>();
     if (peek().is(Kind.LPAREN)) {
@@ -429,7 +436,8 @@ final class LsStatementParser extends LsTokenCursor {
         if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
           throw error("not supported: motion options on the via point of a C motion (found " + peek().describe() + ")");
         }
-        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found " + peek().describe());
+        throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found "
+            + peek().describe());
       }
       end = Optional.of(motionTarget());
     }
@@ -591,9 +599,9 @@ final class LsStatementParser extends LsTokenCursor {
             throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
           }
           if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
-            throw error(t, "not supported: motion option " + t.text() + " (TIME BEFORE/AFTER, distance before)");
+            throw error(t, "not supported: motion option " + LsToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
           }
-          throw error(t, "not supported: motion option '" + t.text()
+          throw error(t, "not supported: motion option '" + LsToken.clip(t.text())
               + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
         }
       }
@@ -715,11 +723,11 @@ final class LsStatementParser extends LsTokenCursor {
             if (name != null) {
               throw error(t, "not supported: " + name);
             }
-            throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+            throw error(t, VALUE_EXPECTED + t.describe());
           }
         };
       }
-      default -> throw error(t, "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found " + t.describe());
+      default -> throw error(t, VALUE_EXPECTED + t.describe());
     }
   }
 
@@ -745,7 +753,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return new Expr.IntConst(Integer.parseInt(s));
     } catch (NumberFormatException e) {
-      throw error(t, "integer " + s + " is too large: expected at most " + Integer.MAX_VALUE);
+      throw error(t, "integer " + LsToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
     }
   }
 
@@ -881,7 +889,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return Integer.parseInt(digits);
     } catch (NumberFormatException e) {
-      throw error(t, "number " + digits + " is too large");
+      throw error(t, "number " + LsToken.clip(digits) + " is too large");
     }
   }
 

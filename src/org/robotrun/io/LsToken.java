@@ -61,12 +61,17 @@ public record LsToken(Kind kind, String text, int line, int column) {
   public String describe() {
     return switch (kind) {
       case EOL -> "end of line";
-      case STRING -> "'" + text + "'";
-      case ITEM_COMMENT -> "comment ':" + text + "'";
+      case STRING -> "'" + clip(text) + "'";
+      case ITEM_COMMENT -> "comment ':" + clip(text) + "'";
       case RAW -> "text";
       case BAD_CHAR -> "character " + printable(text);
-      default -> "'" + text + "'";
+      default -> "'" + clip(text) + "'";
     };
+  }
+
+  /** Messages quote at most 40 characters of a token, however long the line. */
+  static String clip(String s) {
+    return s.length() <= 40 ? s : s.substring(0, 40) + "...";
   }
 
   private static String printable(String s) {

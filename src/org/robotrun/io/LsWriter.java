@@ -370,7 +370,16 @@ public final class LsWriter {
     return switch (e) {
       case Expr.Binary b -> b.op().precedence();
       case Expr.Unary u -> 6;
-      default -> 7;
+      case Expr.IntConst c -> 7;
+      case Expr.RealConst c -> 7;
+      case Expr.OnOff c -> 7;
+      case Expr.StringConst c -> 7;
+      case Expr.Register r -> 7;
+      case Expr.PosElement p -> 7;
+      case Expr.Io io -> 7;
+      case Expr.Timer t -> 7;
+      case Expr.Arg a -> 7;
+      case Expr.Group g -> 7;
     };
   }
 

@@ -9,7 +9,8 @@ import org.robotrun.robot.RobotModel;
  * Turns the jog keys into arm motion, one tick at a time.
  *
  * <p>JOINT moves each joint at {@link #JOINT_JOG_FRACTION} of its maximum speed times the
- * override, slowing so it comes to rest exactly at its limit. WORLD, TOOL and USER move a desired
+ * override, slowing so it comes to rest exactly at its limit; with FANUC's coupled J3 the J2 keys
+ * keep the pendant's J3 (the forearm's attitude), as on the real pendant. WORLD, TOOL and USER move a desired
  * TCP pose along / about the frame's axes through the TCP (linear {@link #LINEAR_JOG_MM_PER_SEC},
  * rotation {@link #ROTATION_JOG_RAD_PER_SEC}, times the override) and reach it with the
  * resolved-rate {@link PoseTracker}; because the desired pose is integrated, not the joint
@@ -100,23 +101,45 @@ public final class Jogger {
       if (speed[i] == 0) {
         continue;
       }
+      // With FANUC's coupled J3, the J2 keys turn kinematic J3 along so the forearm keeps its
+      // attitude (the pendant's J3 value does not change).
+      boolean dragsJ3 = i == 1 && model.coupledJ3();
       double a = fullSpeed(JogFrame.JOINT, i) * overrideFraction / RAMP_SEC;
-      double room = speed[i] > 0 ? chain.upper(i) - q[i] : q[i] - chain.lower(i);
+      double room = room(q, i, speed[i]);
+      int limiting = i;
+      if (dragsJ3 && room(q, 2, speed[i]) < room) {
+        room = room(q, 2, speed[i]);
+        limiting = 2;
+      }
       // Brake so the joint comes to rest at its limit: v ≤ sqrt(2·a·room).
       double vMax = Math.sqrt(2 * a * Math.max(0, room));
       double v = Math.signum(speed[i]) * Math.min(Math.abs(speed[i]), vMax);
       speed[i] = v;
-      double next = q[i] + v * dtSec;
-      boolean atLimit = room <= 1e-9 || (speed[i] > 0 ? next >= chain.upper(i) : next <= chain.lower(i));
-      q[i] = Math.max(chain.lower(i), Math.min(chain.upper(i), next));
+      double step = v * dtSec;
+      boolean atLimit = room <= 1e-9 || Math.abs(step) >= room;
+      double applied = Math.signum(step) * Math.min(Math.abs(step), Math.max(0, room));
+      q[i] = clamp(q[i] + applied, i);
+      if (dragsJ3) {
+        q[2] = clamp(q[2] + applied, 2);
+      }
       if (atLimit) {
-        String side = v > 0 || room <= 1e-9 && keys.direction(i) > 0 ? "upper" : "lower";
+        String side = (v != 0 ? v > 0 : keys.direction(i) > 0) ? "upper" : "lower";
         stop(keys);
-        return new JogResult.Stopped(String.format("J%d at its %s limit (%.1f deg)", i + 1, side,
-            Math.toDegrees(q[i])));
+        return new JogResult.Stopped(limiting == i
+            ? String.format("J%d at its %s limit (%.1f deg)", i + 1, side, Math.toDegrees(q[i]))
+            : String.format("J%d stopped: J3 (coupled to J2) at its %s limit", i + 1, side));
       }
     }
     return MOVING;
+  }
+
+  /** How far joint j may still move in the direction of {@code sign} (rad). */
+  private double room(double[] q, int j, double sign) {
+    return sign > 0 ? chain.upper(j) - q[j] : q[j] - chain.lower(j);
+  }
+
+  private double clamp(double v, int j) {
+    return Math.max(chain.lower(j), Math.min(chain.upper(j), v));
   }
 
   private JogResult jogCartesian(double[] q, JogState keys, JogFrame frame, Transform X_FT, Transform X_WU,

@@ -2,6 +2,7 @@ package org.robotrun.robot;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import org.robotrun.math.Transform;
 
 /**
@@ -18,7 +19,8 @@ import org.robotrun.math.Transform;
  * <ul>
  *   <li><b>F/N</b> (wrist): F when J5 &gt; 0, N when J5 ≤ 0. The two wrist solutions of one arm
  *       have opposite J5 ({@code θ5' = −θ5}), so each arm has one F and one N solution.
- *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'.)
+ *       (J5 = −90° with J4 = 0 is the tool-down posture FANUC teaches as 'N U T'; the same sign
+ *       rule as ROS-Industrial tesseract's {@code getRobotConfig} for FANUC arms.)
  *   <li><b>U/D</b> (elbow): U when {@code sin(θ3 + atan2(a2, c3)) > 0}, i.e. the wrist centre is
  *       on the forward side of the upper arm (for the LR Mate: kinematic J3 &lt; 84.0°, where
  *       the forearm and upper arm line up, the elbow singularity). The OPW elbow pairs are
@@ -28,7 +30,8 @@ import org.robotrun.math.Transform;
  *       The two J1 solutions differ by 180° (b = 0), so one is T and one B.
  * </ul>
  * So the eight solutions map one to one onto the eight flag triples (a test checks this on
- * every reference pose). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
+ * every reference pose, and another checks each flag against its geometric meaning from the
+ * link frames: the wrist centre in link 1's and link 2's frames). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
  * J1 when its range exceeds ±180°) get every ±2π variant inside the limits.
  *
  * <p>Not thread-safe (scratch arrays); allocation-free apart from the result object.
@@ -172,6 +175,9 @@ public final class ClosedFormIk {
 
   /** As {@link #solveNearest(Transform, double[])} for a packed pose. */
   public IkResult solveNearest(double[] X_BF, double[] qCurrent) {
+    if (qCurrent.length != RobotModel.DOF) {
+      throw new IllegalArgumentException("expected 6 current joint values, got " + qCurrent.length);
+    }
     if (X_BF != target) {
       System.arraycopy(X_BF, 0, target, 0, 12);
     }
@@ -190,16 +196,16 @@ public final class ClosedFormIk {
    * if so, else why not. Cheaper than a solve (no result, no FK check); for other solvers'
    * quick rejection of unreachable targets.
    */
-  public java.util.Optional<IkResult.Unreachable> reachability(double[] X_BF) {
+  public Optional<IkResult.Unreachable> reachability(double[] X_BF) {
     System.arraycopy(X_BF, 0, target, 0, 12);
     int valid = solveBase(target, 0);
     if (valid == 0) {
-      return java.util.Optional.of(outOfReach());
+      return Optional.of(outOfReach());
     }
     for (int i = 0; i < 6; i++) {
       cand[i] = 0;
     }
-    return nearest(valid, cand) ? java.util.Optional.empty() : java.util.Optional.of(limitsOnly());
+    return nearest(valid, cand) ? Optional.empty() : Optional.of(limitsOnly());
   }
 
   /** Puts into {@link #best} the in-limit variant nearest to {@code qCurrent}; false if none. */

@@ -26,7 +26,19 @@ public sealed interface IkResult {
    * @param iterations solver iterations (0 for the closed form)
    */
   record Solved(double[] q, double positionErrorMm, double orientationErrorRad, int iterations)
-      implements IkResult {}
+      implements IkResult {
+
+    /** Joints in degrees, for logs and test messages (the array alone prints as a hash). */
+    @Override
+    public String toString() {
+      StringBuilder sb = new StringBuilder("Solved[q=(");
+      for (int i = 0; i < q.length; i++) {
+        sb.append(i == 0 ? "" : ", ").append(String.format(java.util.Locale.ROOT, "%.4f", Math.toDegrees(q[i])));
+      }
+      return sb.append(String.format(java.util.Locale.ROOT,
+          ") deg, error %.2e mm %.2e rad, %d iterations]", positionErrorMm, orientationErrorRad, iterations)).toString();
+    }
+  }
 
   /**
    * No solution.

@@ -97,8 +97,10 @@ final class TargetResolver {
         }
         int bad = model.firstJointOutsideLimits(qTarget);
         if (bad >= 0) {
-          return refuse(MotionAlarms.JOINT_LIMIT, String.format("%s needs J%d = %.1f deg, outside its limits", wp.name(),
-              bad + 1, Math.toDegrees(qTarget[bad])));
+          String coupled = bad == 2 && model.coupledJ3() ? " (J2 + J3 as the pendant shows them)" : "";
+          return refuse(MotionAlarms.JOINT_LIMIT, String.format("%s needs J%d = %.1f deg%s, outside %.1f..%.1f deg",
+              wp.name(), bad + 1, Math.toDegrees(qTarget[bad]), coupled, Math.toDegrees(model.joint(bad).lowerRad()),
+              Math.toDegrees(model.joint(bad).upperRad())));
         }
         return new Move(new MoveRequest.Joint(qTarget, speed, term, acc, tag), tcp(qTarget, X_FT));
       }

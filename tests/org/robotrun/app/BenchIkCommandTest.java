@@ -38,7 +38,7 @@ class BenchIkCommandTest {
   void closedFormPrintsOneSummaryLineAndWritesSolutions() throws Exception {
     Path targets = smallTargets(50);
     Path out = dir.resolve("solutions.csv");
-    Run r = run("bench", "ik", "--targets", targets.toString(), "--warmup", "1", "--out", out.toString());
+    Run r = run("bench", "ik", "--targets", targets.toString(), "--warmup", "1", "--warmup-ms", "0", "--out", out.toString());
     assertThat(r.code()).isZero();
     assertThat(r.out().lines()).hasSize(1);
     assertThat(r.out()).matches(
@@ -53,7 +53,7 @@ class BenchIkCommandTest {
   void numericFromEachStartSolvesEveryRow() throws Exception {
     Path targets = smallTargets(50);
     for (String start : List.of("home", "random", "near")) {
-      Run r = run("bench", "ik", "--targets", targets.toString(), "--solver", "numeric", "--start", start, "--warmup", "1");
+      Run r = run("bench", "ik", "--targets", targets.toString(), "--solver", "numeric", "--start", start, "--warmup", "1", "--warmup-ms", "0");
       assertThat(r.code()).as(start).isZero();
       assertThat(r.out()).as(start).startsWith("solved=50/50 in_limits=50/50 same_config=");
     }
@@ -61,7 +61,7 @@ class BenchIkCommandTest {
 
   @Test
   void resolvedRatePrintsItsOwnLine() throws Exception {
-    Run r = run("bench", "ik", "--targets", smallTargets(20).toString(), "--solver", "resolved-rate", "--warmup", "1");
+    Run r = run("bench", "ik", "--targets", smallTargets(20).toString(), "--solver", "resolved-rate", "--warmup", "1", "--warmup-ms", "0");
     assertThat(r.code()).isZero();
     assertThat(r.out()).matches("steps=20 damped=\\d+ median_us=[0-9.]+ p99_us=[0-9.]+\\R");
   }
@@ -76,7 +76,7 @@ class BenchIkCommandTest {
     lines.set(2, String.join(",", f));
     Files.write(ref, lines);
     Path out = dir.resolve("s.csv");
-    Run r = run("bench", "ik", "--targets", ref.toString(), "--warmup", "0", "--out", out.toString());
+    Run r = run("bench", "ik", "--targets", ref.toString(), "--warmup", "0", "--warmup-ms", "0", "--out", out.toString());
     assertThat(r.code()).isZero();
     assertThat(r.out()).startsWith("solved=1/2 in_limits=1/2 same_config=1/2 ");
     assertThat(Files.readAllLines(out).get(2)).isEqualTo(f[0] + ",,,,,,");
@@ -107,6 +107,6 @@ class BenchIkCommandTest {
   void helpListsEveryOption() {
     Run r = run("bench", "ik", "--help");
     assertThat(r.code()).isZero();
-    assertThat(r.out()).contains("--targets", "--start", "--solver", "--out", "--warmup", "resolved-rate");
+    assertThat(r.out()).contains("--targets", "--start", "--solver", "--out", "--warmup", "--warmup-ms", "resolved-rate");
   }
 }

@@ -103,6 +103,6 @@ class CheckCommandTest {
   void benchParsePrintsLinesPerSecond() {
     Run r = run("bench", "parse", "--lines", "200", "--rounds", "2", "--warmup", "1");
     assertThat(r.exit()).isEqualTo(0);
-    assertThat(r.out()).matches("lines_per_sec=\\d+ lines=200 rounds=2 best_ms=\\S+ mean_ms=\\S+\\n");
+    assertThat(r.out()).matches("lines_per_sec=\\d+ lines_per_cpu_sec=\\d+ lines=200 rounds=2 best_ms=\\S+ mean_ms=\\S+ best_cpu_ms=\\S+\\n");
   }
 }

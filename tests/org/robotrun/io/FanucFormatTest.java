@@ -17,6 +17,7 @@ class FanucFormatTest {
   @Test
   void valuesWithMoreDigitsThanTheFormatKeepThemAll() {
     assertThat(FanucFormat.positionValue(1234.5678)).isEqualTo(" 1234.5678");
+    assertThat(FanucFormat.positionValue(424.654999)).isEqualTo(" 424.654999");
     assertThat(FanucFormat.waitSeconds(1.234)).isEqualTo(" 1.234");
     assertThat(FanucFormat.real(-0.0)).isEqualTo("-0.0");
   }

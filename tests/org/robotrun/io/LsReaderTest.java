@@ -190,6 +190,7 @@ class LsReaderTest {
         {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
         {"L P[1] max_speed FINE", "not supported: max_speed"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
         {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
@@ -346,11 +347,11 @@ class LsReaderTest {
 
   @Test
   void sectionsAreCheckedAndExtraSectionsFlagged() {
-    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
+    assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
         .containsExactly(
             "s.ls:1: warning: not supported: program sub-type 'Macro' (read as a normal program)",
-            "s.ls:3: warning: not supported: section /APPL (its 1 lines are ignored)",
-            "s.ls:9: warning: text after /END is ignored");
+            "s.ls:4: warning: not supported: section /APPL (its 1 lines are ignored)",
+            "s.ls:10: warning: text after /END is ignored");
     assertThat(messages(LsReader.parse("n.ls", "/PROG  1BAD\n/MN\n/POS\n/END\n")))
         .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', starting with a letter, at most 36 characters");
   }

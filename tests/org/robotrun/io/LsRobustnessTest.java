@@ -127,6 +127,31 @@ class LsRobustnessTest {
   }
 
   @Test
+  void aFileThatIsNotUtf8IsReadAsLatin1WithAWarning(@org.junit.jupiter.api.io.TempDir Path dir) throws IOException {
+    Path f = dir.resolve("L1.LS");
+    byte[] head = "/PROG  L1\n/MN\n   1:  ! caf".getBytes(StandardCharsets.US_ASCII);
+    byte[] tail = " ;\n/POS\n/END\n".getBytes(StandardCharsets.US_ASCII);
+    byte[] all = new byte[head.length + 1 + tail.length];
+    System.arraycopy(head, 0, all, 0, head.length);
+    all[head.length] = (byte) 0xE9; // 'é' in Latin-1, not valid UTF-8 on its own
+    System.arraycopy(tail, 0, all, head.length + 1, tail.length);
+    Files.write(f, all);
+    LsReadResult r = LsReader.read(f);
+    assertThat(messages(r)).containsExactly(
+        f + ":3: warning: not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly");
+    assertThat(r.program().line(1)).isEqualTo(new org.robotrun.program.Instruction.Comment(" caf\u00e9"));
+  }
+
+  @Test
+  void aMegabyteLineGivesAShortMessage() {
+    String huge = "X".repeat(1_000_000);
+    LsReadResult r = LsReader.parse("h.ls", "/PROG  H\n/MN\n   1:  R[1:" + huge + "]=" + huge + " ;\n/POS\n/END\n");
+    assertThat(messages(r)).containsExactly(
+        "h.ls:3: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found '"
+            + "X".repeat(40) + "...'");
+  }
+
+  @Test
   void unreadableFilesAreIoExceptionsNotDiagnostics() {
     org.assertj.core.api.Assertions.assertThatThrownBy(() -> LsReader.read(Path.of("tests/resources/programs/NOPE.LS")))
         .isInstanceOf(IOException.class);

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -51,6 +52,18 @@ class LsRoundTripTest {
     String original = Files.readString(file, StandardCharsets.UTF_8);
     Program p = LsReader.read(file).program();
     assertThat(LsWriter.write(p)).isEqualTo(original);
+  }
+
+  @Test
+  void writingToAFileReplacesItWholeAndLeavesNoTemporaryFile(@TempDir Path dir) throws IOException {
+    Program p = LsReader.read(PROGRAMS.resolve("PICK3.LS")).program();
+    Path out = dir.resolve("PICK3.LS");
+    Files.writeString(out, "an older, longer version of the file that must disappear entirely\n".repeat(100));
+    LsWriter.write(p, out);
+    assertThat(Files.readString(out, StandardCharsets.UTF_8)).isEqualTo(LsWriter.write(p));
+    try (Stream<Path> files = Files.list(dir)) {
+      assertThat(files.map(f -> f.getFileName().toString()).toList()).containsExactly("PICK3.LS");
+    }
   }
 
   @Test

@@ -39,6 +39,29 @@ class QuaternionTest {
   }
 
   @Test
+  void matchesTheReferenceQuaternionsOfEveryRow() throws Exception {
+    // Method: the reference CSV stores each flange rotation both as a matrix and as a unit
+    // quaternion (qw >= 0, from an independent numpy implementation); agree to 1e-9.
+    java.util.List<String> lines = java.nio.file.Files.readAllLines(java.nio.file.Path.of(
+        getClass().getResource("/ik_targets_lrmate200id.csv").toURI()));
+    java.util.List<String> header = java.util.List.of(lines.get(0).split(","));
+    int r11 = header.indexOf("r11"), qw = header.indexOf("qw");
+    for (String line : lines.subList(1, lines.size())) {
+      String[] f = line.split(",");
+      double[] m = new double[9];
+      for (int i = 0; i < 9; i++) {
+        m[i] = Double.parseDouble(f[r11 + i]);
+      }
+      Quaternion q = Quaternion.fromTransform(Transform.of(m, 0, 0, 0));
+      double[] expected = new double[4];
+      for (int i = 0; i < 4; i++) {
+        expected[i] = Double.parseDouble(f[qw + i]);
+      }
+      assertThat(new double[] {q.w(), q.x(), q.y(), q.z()}).as(f[0]).containsExactly(expected, within(1e-9));
+    }
+  }
+
+  @Test
   void halfTurnsConvertExactly() {
     // 180 deg about X (the tool-down W = 180) is (0, 1, 0, 0); about Z is (0, 0, 0, 1).
     Quaternion aboutX = Quaternion.fromXyzwpr(Xyzwpr.ofDegrees(0, 0, 0, 180, 0, 0));

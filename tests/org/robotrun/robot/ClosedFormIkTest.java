@@ -109,6 +109,27 @@ class ClosedFormIkTest {
   }
 
   @Test
+  void configFlagsMeanWhatTheySayGeometrically() throws Exception {
+    // Method: reference FK link frames, independent of the OPW formulas. The wrist centre is
+    // link 5's origin (J5 axis point). T: it is in front of the J1 axis along link 1's x.
+    // U: it is on the forward (+x) side of the upper arm, seen in link 2's frame. F: J5 > 0.
+    for (IkTargetsCsv.Target t : ForwardKinematicsTest.referenceTargets()) {
+      Transform[] X_BL = ForwardKinematics.linkPosesInBase(robot, t.q());
+      org.robotrun.math.Vec3 p_BW = X_BL[5].translationVector();
+      double frontMm = X_BL[1].inverse().apply(p_BW).x();
+      double forwardMm = X_BL[2].inverse().apply(p_BW).x();
+      Config c = ik.configOf(t.q());
+      if (Math.abs(frontMm) > 1e-6) {
+        assertThat(c.top()).as("row %d T/B", t.id()).isEqualTo(frontMm > 0);
+      }
+      if (Math.abs(forwardMm) > 1e-6) {
+        assertThat(c.up()).as("row %d U/D", t.id()).isEqualTo(forwardMm > 0);
+      }
+      assertThat(c.flip()).as("row %d F/N", t.id()).isEqualTo(t.q()[4] > 0);
+    }
+  }
+
+  @Test
   void toolDownPostureIsNoFlipUpTop() {
     // FANUC teaches the tool-down pose with J5 = -90 deg as 'N U T, 0, 0, 0'.
     double[] q = Angles.toRadians(new double[] {0, 0, 0, 0, -90, 0});

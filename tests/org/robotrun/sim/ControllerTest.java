@@ -272,4 +272,48 @@ class ControllerTest {
       sim.step();
     }
   }
+
+  static Program jointProgram(String name, String line2, double[]... positionsDeg) {
+    StringBuilder sb = new StringBuilder("/PROG  " + name + "\n/ATTR\n/MN\n   1:J P[1] 100% FINE ;\n   2:" + line2
+        + " ;\n/POS\n");
+    for (int k = 0; k < positionsDeg.length; k++) {
+      double[] j = positionsDeg[k];
+      sb.append(String.format(java.util.Locale.ROOT, "P[%d]{%n   GP1:%n\tUF : 1, UT : 1,%n"
+          + "\tJ1= %.3f deg,\tJ2= %.3f deg,\tJ3= %.3f deg,%n\tJ4= %.3f deg,\tJ5= %.3f deg,\tJ6= %.3f deg%n};%n",
+          k + 1, j[0], j[1], j[2], j[3], j[4], j[5]));
+    }
+    sb.append("/END\n");
+    LsReadResult r = LsReader.parse(name + ".LS", sb.toString());
+    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    return r.program();
+  }
+
+  @Test
+  void linearMoveThroughTheWristSingularityIsAnAlarmNamingTheLine() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(jointProgram("WRIST", "L P[2] 100mm/sec FINE", new double[] {0, 0, 0, 20, -8, 0},
+        new double[] {0, 0, 0, 20, 8, 0}));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "WRIST", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(MotionAlarms.SINGULARITY);
+    assertThat(a.line()).isEqualTo(2);
+    assertThat(a.message()).contains("wrist");
+    for (double v : c.jointsRad()) {
+      assertThat(Double.isFinite(v)).isTrue();
+    }
+  }
+
+  @Test
+  void jointTargetOutsideTheLimitsIsRefusedBeforeMoving() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(jointProgram("LIMIT", "J P[2] 50% FINE", new double[] {0, 0, 0, 0, -90, 0},
+        new double[] {0, 0, 0, 0, -140, 0}));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "LIMIT", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(MotionAlarms.JOINT_LIMIT);
+    assertThat(a.line()).isEqualTo(2);
+    assertThat(c.currentJoints().j5Deg()).isCloseTo(-90, offset(1e-9));
+  }
 }
