@@ -95,9 +95,10 @@ final class CellCollisions {
       }
       robots.add(new RobotBodies(c.name(), boxes, collision));
       List<LocalBox> toolBoxes = tool.map(t -> t.geometry.boxes(t.fingerGapMm())).orElse(List.of());
+      List<String> toolNames = tool.map(t -> t.geometry.boxNames()).orElse(List.of());
       toolHandles[r] = new int[toolBoxes.size()];
       for (int k = 0; k < toolBoxes.size(); k++) {
-        String name = c.name() + "/tool" + (k == 0 ? "" : "#" + (k + 1));
+        String name = c.name() + "/tool/" + toolNames.get(k);
         toolHandles[r][k] = collision.add(Body.robotLink(c.name(), Body.TOOL_LINK, name),
             toolBoxes.get(k).inWorld(Transform.IDENTITY));
       }

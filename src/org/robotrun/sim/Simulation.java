@@ -115,8 +115,12 @@ public final class Simulation {
         if (!collisionAlarms) {
           continue;
         }
+        // A held part's contact stops the robot holding it.
+        var held = cell.heldBy();
+        String robotA = held.getOrDefault(k.aOwner(), k.aOwner());
+        String robotB = held.getOrDefault(k.bOwner(), k.bOwner());
         for (Controller c : controllers) {
-          if (c.name().equals(k.aOwner()) || c.name().equals(k.bOwner())) {
+          if (c.name().equals(robotA) || c.name().equals(robotB)) {
             c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
           }
         }
@@ -153,6 +157,11 @@ public final class Simulation {
   /** Held part → name of the robot holding it. */
   public java.util.Map<String, String> heldParts() {
     return cell.heldBy();
+  }
+
+  /** The parts and end effectors (tests, draw lists). */
+  CellState cellState() {
+    return cell;
   }
 
   /** Contacts that began during the run, oldest first (at most 1000). */

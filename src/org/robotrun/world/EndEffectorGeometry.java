@@ -137,6 +137,17 @@ public record EndEffectorGeometry(EndEffectorType type, Transform X_FT, List<Loc
     return out;
   }
 
+  /** Names of the boxes of {@link #boxes}, in the same order ("body", "finger1", …). */
+  public List<String> boxNames() {
+    return switch (type) {
+      case FACEPLATE -> List.of();
+      case GRIPPER -> List.of("body", "finger1", "finger2");
+      case SUCTION -> List.of("stem", "cup");
+      case POINTER -> List.of("holder", "rod");
+      case GLUEGUN -> List.of("body", "nozzle");
+    };
+  }
+
   /** A box with half widths {@code hx}, {@code hy} from {@code z0} to {@code z1} along the flange's z. */
   private static LocalBox span(double hx, double hy, double z0, double z1) {
     return new LocalBox(Transform.translation(0, 0, (z0 + z1) / 2), hx, hy, (z1 - z0) / 2);
