@@ -25,7 +25,8 @@ import org.robotrun.world.WorldBodies;
 /**
  * Collision checking of a cell, once per tick: every robot's link bodies (a box around each link
  * shape) and its end effector's boxes (or, for a robot without one, a 20 mm square bar from the
- * flange to the active TCP), and the world's fixtures and parts, under {@link CellPairFilter}.
+ * flange to the active TCP), the world's fixtures and parts, and the floor, under
+ * {@link CellPairFilter}.
  * Reports the contacts that began at this tick, so a lasting contact raises one alarm, not one
  * per tick.
  *
@@ -39,7 +40,7 @@ import org.robotrun.world.WorldBodies;
  * <p>The tool bar is rebuilt when a robot's active tool changes (rare). Not thread-safe.
  */
 final class CellCollisions {
-  /** Cross-section of the tool bar of a robot without an end effector (mm). */
+  /** Cross-section of the tool bar (mm) of a robot without an end effector. */
   static final double TOOL_BAR_MM = 20;
   /** Gap left between the flange and the tool bar so the bar does not touch the wrist (mm). */
   static final double TOOL_GAP_MM = 2;
@@ -48,6 +49,7 @@ final class CellCollisions {
 
   private final List<Controller> controllers;
   private final CellState cell;
+  private final double floorZ;
   private CollisionWorld collision;
   private WorldBodies objects;
   private List<RobotBodies> robots;
@@ -67,9 +69,15 @@ final class CellCollisions {
   /** A contact that began: the two bodies' names ("robot1/link5", "table"). */
   record NewContact(String a, String aOwner, String b, String bOwner) {}
 
-  CellCollisions(List<Controller> controllers, List<Transform> X_CW, CellState cell) {
+  /** Name of the floor's body: a fixture whose top is the cell's floor. */
+  static final String FLOOR = "floor";
+  /** Half size of the floor slab (mm): 20 m square, 10 mm thick. */
+  static final double FLOOR_HALF_MM = 10_000;
+
+  CellCollisions(List<Controller> controllers, List<Transform> X_CW, CellState cell, double floorZ) {
     this.controllers = controllers;
     this.cell = cell;
+    this.floorZ = floorZ;
     this.poses = new LinkPoses[controllers.size()];
     this.lastQ = new double[controllers.size()][];
     this.X_CF = new Transform[controllers.size()];
@@ -82,6 +90,10 @@ final class CellCollisions {
   private void build() {
     collision = new CollisionWorld(filter());
     objects = new WorldBodies(cell.world(), collision);
+    // The floor is always there: a robot's base stands on it (not checked), its links and tool are.
+    if (cell.world().find(FLOOR).isEmpty()) {
+      collision.add(Body.fixture(FLOOR, FLOOR), Obb.axisAligned(0, 0, floorZ - 5, FLOOR_HALF_MM, FLOOR_HALF_MM, 5));
+    }
     robots = new ArrayList<>();
     tools = new Transform[controllers.size()];
     toolHandles = new int[controllers.size()][];
@@ -126,16 +138,34 @@ final class CellCollisions {
       out.add(boxes);
     }
     List<LocalBox> tool = new ArrayList<>();
+    toolBar(X_FT).ifPresent(tool::add);
+    out.add(tool);
+    return out;
+  }
+
+  /** The tool bar of {@code X_FT} in the flange frame: its pose and full edge lengths; empty for a short tool. */
+  static java.util.Optional<LocalBox> toolBar(Transform X_FT) {
     Vec3 p = X_FT.translationVector();
     double length = p.norm() - TOOL_GAP_MM;
-    if (length > 1) {
-      // A bar along the flange-to-TCP line, centred half-way past the gap.
-      Vec3 dir = p.normalized();
-      Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
-      Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
-      tool.add(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
+    if (length <= 1) {
+      return java.util.Optional.empty();
     }
-    out.add(tool);
+    // A bar along the flange-to-TCP line, centred half-way past the gap.
+    Vec3 dir = p.normalized();
+    Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
+    Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
+    return java.util.Optional.of(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
+  }
+
+  /** Bodies touching at the last check, by draw-item name (a link's boxes "#k" merged). */
+  Set<String> touchingBodies() {
+    Set<String> out = new HashSet<>();
+    for (String pair : touching) {
+      for (String body : pair.split("\\|")) {
+        int hash = body.indexOf('#');
+        out.add(hash < 0 ? body : body.substring(0, hash));
+      }
+    }
     return out;
   }
 

@@ -89,6 +89,8 @@ public final class Controller implements MotionPort {
   private final Map<Long, MoveState> moves = new HashMap<>();
   private final List<Vec3> arcHistory = new ArrayList<>();
   private Transform lastTargetW;
+  /** ABORT while moving: the arm decelerates (held), then its motion is dropped. */
+  private boolean dropWhenStopped;
   private long nextHandle = 1;
   private int overridePct = 100;
   private JogFrame coord = JogFrame.JOINT;
@@ -183,6 +185,10 @@ public final class Controller implements MotionPort {
     lastState = state;
     boolean jogging = runner.idle() && jogKeys.anyOn();
     runner.tick(dtSec);
+    if (dropWhenStopped && runner.atRest()) {
+      runner.stopNow();
+      dropWhenStopped = false;
+    }
     if (runner.idle()) {
       if (jogging && (!deadman || !activeAlarms.isEmpty())) {
         jogger.stop(jogKeys);
@@ -472,10 +478,12 @@ public final class Controller implements MotionPort {
     jogger.stop(jogKeys);
   }
 
-  /** FCTN ABORT: ends the program; the arm stops where it is. */
+  /** FCTN ABORT: ends the program; a moving arm decelerates along its path to a stop. */
   public void abort() {
     interpreter.abort();
-    stopMotion();
+    if (!runner.idle()) {
+      cancel(-1);
+    }
   }
 
   /** RESET: clears the active alarms (the history keeps them). */
@@ -545,6 +553,8 @@ public final class Controller implements MotionPort {
   }
 
   private void addAlarm(ControllerAlarm a) {
+    // A run that ends on an alarm has no cycle time.
+    runStartSec = Double.NaN;
     activeAlarms.add(a);
     history.addFirst(a);
     while (history.size() > HISTORY) {
@@ -555,6 +565,7 @@ public final class Controller implements MotionPort {
 
   private void stopMotion() {
     runner.stopNow();
+    dropWhenStopped = false;
     arcHistory.clear();
     lastTargetW = null;
   }
@@ -563,6 +574,11 @@ public final class Controller implements MotionPort {
 
   @Override
   public Start startMotion(MotionRequest request) {
+    if (dropWhenStopped) {
+      // A new motion right after ABORT/BWD: finish the stop at once.
+      runner.stopNow();
+      dropWhenStopped = false;
+    }
     if (!runner.acceptsMove()) {
       return new Start.Rejected(MotionAlarms.QUEUE_BUSY, "a motion is already waiting");
     }
@@ -619,10 +635,18 @@ public final class Controller implements MotionPort {
     runner.resume();
   }
 
+  /** The program gives up its motion (ABORT, BWD): the arm decelerates along its path, then the motion is dropped. */
   @Override
   public void cancel(long handle) {
-    stopMotion();
     moves.remove(handle);
+    arcHistory.clear();
+    lastTargetW = null;
+    if (runner.atRest()) {
+      runner.stopNow();
+    } else {
+      runner.hold();
+      dropWhenStopped = true;
+    }
   }
 
   @Override

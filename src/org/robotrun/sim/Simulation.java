@@ -38,6 +38,11 @@ public final class Simulation {
   private boolean collisionAlarms = true;
   private final List<CollisionEvent> collisionEvents = new ArrayList<>();
 
+  /** Colour of bodies in contact in snapshots. */
+  public static final DrawItem.Color TOUCHING = DrawItem.Color.rgb(0.9, 0.1, 0.1);
+  /** Colour of the tool bar in snapshots. */
+  public static final DrawItem.Color TOOL_COLOR = DrawItem.Color.rgb(0.55, 0.56, 0.6);
+
   /** Alarm code of a collision. */
   public static final String COLLISION_ALARM = "SRVO-050";
   /** Collision events kept (the oldest are dropped beyond this). */
@@ -106,7 +111,7 @@ public final class Simulation {
     boolean toolsMoved = cell.tick(controllers, X_CF, tickSec);
     if (checkCollisions) {
       if (collisions == null) {
-        collisions = new CellCollisions(controllers, X_CW, cell);
+        collisions = new CellCollisions(controllers, X_CW, cell, floorZ);
       }
       for (CellCollisions.NewContact k : collisions.check(toolsMoved)) {
         if (collisionEvents.size() < MAX_EVENTS) {
@@ -196,7 +201,11 @@ public final class Simulation {
     return cell.world();
   }
 
-  /** The current picture: draw list (cell and robots) and robot states. */
+  /**
+   * The current picture: draw list (fixtures, parts, robots, their end effectors and traces or
+   * tool bars, in the cell frame; bodies in contact drawn in {@link #TOUCHING} red) and robot
+   * states.
+   */
   public SimSnapshot snapshot() {
     List<DrawItem> items = new ArrayList<>();
     WorldDrawList.addWorld(items, cell.world());
@@ -204,13 +213,24 @@ public final class Simulation {
     for (int i = 0; i < controllers.size(); i++) {
       Controller c = controllers.get(i);
       RobotDrawList.addRobot(items, c.name(), c.model(), X_CW.get(i), c.jointsRad());
-      int r = i;
-      cell.tool(i).ifPresent(t -> EndEffectorDrawList.add(items, t,
-          X_CW.get(r).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()))));
+      Transform X_CF = X_CW.get(i).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
+      if (cell.tool(i).isPresent()) {
+        EndEffectorDrawList.add(items, cell.tool(i).get(), X_CF);
+      } else {
+        CellCollisions.toolBar(c.frames().activeTool()).ifPresent(b -> items.add(new DrawItem(c.name() + "/tool",
+            new DrawShape.Box(new org.robotrun.math.Vec3(2 * b.hxMm(), 2 * b.hyMm(), 2 * b.hzMm()), false),
+            X_CF.compose(b.X_LB()), TOOL_COLOR)));
+      }
       var j = c.currentJoints();
       states.add(new RobotState(c.name(), new double[] {j.j1Deg(), j.j2Deg(), j.j3Deg(), j.j4Deg(), j.j5Deg(), j.j6Deg()},
           c.tcpInWorld(), c.frames().active(FrameKind.TOOL), c.frames().active(FrameKind.USER), c.overridePct(),
           c.status(), c.activeAlarms()));
+    }
+    if (checkCollisions && collisions != null) {
+      var touching = collisions.touchingBodies();
+      if (!touching.isEmpty()) {
+        items.replaceAll(d -> touching.contains(d.name()) ? new DrawItem(d.name(), d.shape(), d.X_WS(), TOUCHING) : d);
+      }
     }
     double t = timeSec();
     return new SimSnapshot(t, new SceneSnapshot(t, items, floorZ), states);

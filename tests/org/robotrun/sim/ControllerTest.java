@@ -316,4 +316,56 @@ class ControllerTest {
     assertThat(a.line()).isEqualTo(2);
     assertThat(c.currentJoints().j5Deg()).isCloseTo(-90, offset(1e-9));
   }
+
+  @Test
+  void abortWhileMovingDeceleratesThenEndsTheProgram() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    c.run("PP", 1, true);
+    for (int i = 0; i < 150; i++) {
+      sim.step();
+    }
+    c.abort();
+    double[] prev = c.jointsRad();
+    double[] prevV = null;
+    int moving = 0;
+    for (int i = 0; i < 200; i++) {
+      sim.step();
+      double[] q = c.jointsRad();
+      double[] v = new double[6];
+      for (int j = 0; j < 6; j++) {
+        v[j] = (q[j] - prev[j]) / Simulation.DEFAULT_TICK_SEC;
+        if (prevV != null) {
+          // No velocity step: at most 5% of the joint's top speed per tick.
+          assertThat(Math.abs(v[j] - prevV[j])).isLessThan(0.05 * MODEL.joint(j).maxSpeedRadPerSec());
+        }
+      }
+      if (java.util.Arrays.stream(v).anyMatch(x -> x != 0)) {
+        moving++;
+      }
+      prevV = v;
+      prev = q;
+    }
+    assertThat(moving).isGreaterThan(3);
+    assertThat(c.busy()).isFalse();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.hasActiveAlarm()).isFalse();
+  }
+
+  @Test
+  void theToolHittingTheFloorIsACollisionAlarm() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("FLOOR", "UFRAME_NUM=1", "UTOOL_NUM=1", "PR[1,1]=480", "PR[1,3]=(-340)", "PR[1,4]=180",
+        "L PR[1] 200mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "FLOOR", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(Simulation.COLLISION_ALARM);
+    assertThat(a.line()).isEqualTo(6);
+    assertThat(a.message()).contains("robot1/tool").contains("floor");
+    // The floor is 330 mm below WORLD: the tip stopped there (to one tick of travel).
+    assertThat(c.tcpInWorld().z()).isBetween(-331.0, -329.0);
+    assertThat(sim.collisionEvents()).hasSize(1);
+  }
 }
