@@ -33,18 +33,18 @@ import picocli.CommandLine.Spec;
     name = "ik",
     mixinStandardHelpOptions = true,
     description = {
-      "Solve every target of a reference IK file (shared/robots/README.md format, default robot)",
-      "and print one summary line:",
+      "Solve every target of a reference IK file (default robot; format in",
+      "shared/robots/README.md) and print one summary line:",
       "  solved=N/M in_limits=N/M same_config=N/M median_us=X p99_us=Y",
-      "solved: position error < 0.1 mm and orientation error < 0.01 rad (checked by FK);",
-      "same_config: joints equal the row's ground truth within 1e-6 rad after wrapping.",
-      "Times are per solve (System.nanoTime around the solve only), from the last of several",
+      "solved: FK of the answer within 0.1 mm and 0.01 rad of the target;",
+      "same_config: joints equal the ground truth within 1e-6 rad (wrapped).",
+      "Times: System.nanoTime around each solve only, in the last of several",
       "passes (see --warmup, --warmup-ms).",
-      "closed-form selects the branch by the CONFIG of the row's ground-truth joints;",
-      "numeric starts from --start.",
-      "resolved-rate times one resolved-rate step per target (at the ground-truth joints, twist",
-      "100 mm/s along X plus 0.2 rad/s about Z) and prints instead:",
-      "  steps=M damped=K median_us=X p99_us=Y"
+      "closed-form picks the branch by the CONFIG of the row's ground truth;",
+      "numeric starts from --start. resolved-rate times one step per target",
+      "(ground-truth joints; 100 mm/s along X, 0.2 rad/s about Z) and prints",
+      "  steps=M damped=K median_us=X p99_us=Y",
+      ""
     })
 public final class BenchIkCommand implements Callable<Integer> {
 
@@ -71,8 +71,7 @@ public final class BenchIkCommand implements Callable<Integer> {
   int warmup;
 
   @Option(names = "--warmup-ms", defaultValue = "2000", paramLabel = "MS",
-      description = {"And keep warming up for at least MS milliseconds, so the JIT has finished",
-          "compiling the solver even on a busy machine. Default: ${DEFAULT-VALUE}."})
+      description = "And for at least MS ms, so the JIT is done even on a busy machine. Default: ${DEFAULT-VALUE}.")
   long warmupMs;
 
   @Override

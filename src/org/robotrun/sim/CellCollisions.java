@@ -66,6 +66,32 @@ final class CellCollisions {
   private final Set<BodyPair> allowed = new LinkedHashSet<>();
   private Set<String> touching = new HashSet<>();
 
+  /** Bodies touching at the last check, by draw-item name (a link's boxes "#k" merged). */
+  Set<String> touchingBodies() {
+    Set<String> out = new HashSet<>();
+    for (String pair : touching) {
+      for (String body : pair.split("\\|")) {
+        int hash = body.indexOf('#');
+        out.add(hash < 0 ? body : body.substring(0, hash));
+      }
+    }
+    return out;
+  }
+
+  /** The tool bar of {@code X_FT} in the flange frame: its pose and full edge lengths; empty for a short tool. */
+  static java.util.Optional<LocalBox> toolBar(Transform X_FT) {
+    Vec3 p = X_FT.translationVector();
+    double length = p.norm() - TOOL_GAP_MM;
+    if (length <= 1) {
+      return java.util.Optional.empty();
+    }
+    // A bar along the flange-to-TCP line, centred half-way past the gap.
+    Vec3 dir = p.normalized();
+    Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
+    Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
+    return java.util.Optional.of(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
+  }
+
   /** A contact that began: the two bodies' names ("robot1/link5", "table"). */
   record NewContact(String a, String aOwner, String b, String bOwner) {}
 
@@ -140,32 +166,6 @@ final class CellCollisions {
     List<LocalBox> tool = new ArrayList<>();
     toolBar(X_FT).ifPresent(tool::add);
     out.add(tool);
-    return out;
-  }
-
-  /** The tool bar of {@code X_FT} in the flange frame: its pose and full edge lengths; empty for a short tool. */
-  static java.util.Optional<LocalBox> toolBar(Transform X_FT) {
-    Vec3 p = X_FT.translationVector();
-    double length = p.norm() - TOOL_GAP_MM;
-    if (length <= 1) {
-      return java.util.Optional.empty();
-    }
-    // A bar along the flange-to-TCP line, centred half-way past the gap.
-    Vec3 dir = p.normalized();
-    Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
-    Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
-    return java.util.Optional.of(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
-  }
-
-  /** Bodies touching at the last check, by draw-item name (a link's boxes "#k" merged). */
-  Set<String> touchingBodies() {
-    Set<String> out = new HashSet<>();
-    for (String pair : touching) {
-      for (String body : pair.split("\\|")) {
-        int hash = body.indexOf('#');
-        out.add(hash < 0 ? body : body.substring(0, hash));
-      }
-    }
     return out;
   }
 

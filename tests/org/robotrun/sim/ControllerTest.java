@@ -367,5 +367,8 @@ class ControllerTest {
     // The floor is 330 mm below WORLD: the tip stopped there (to one tick of travel).
     assertThat(c.tcpInWorld().z()).isBetween(-331.0, -329.0);
     assertThat(sim.collisionEvents()).hasSize(1);
+    // The snapshot shows the tool in contact red.
+    var tool = sim.snapshot().scene().items().stream().filter(d -> d.name().equals("robot1/tool")).findFirst().orElseThrow();
+    assertThat(tool.color()).isEqualTo(Simulation.TOUCHING);
   }
 }
