@@ -84,6 +84,7 @@ public final class Controller implements MotionPort {
   private final Map<String, String> comments = new HashMap<>();
   private final Interpreter interpreter;
   private final SimpleGripper gripper = new SimpleGripper();
+  private boolean defaultGripperIo = true;
 
   private final Map<Long, MoveState> moves = new HashMap<>();
   private final List<Vec3> arcHistory = new ArrayList<>();
@@ -159,7 +160,9 @@ public final class Controller implements MotionPort {
   /** Advances by {@code dtSec}: the program runs, then the arm moves (program motion or jog). */
   public void tick(double dtSec) {
     timeSec += dtSec;
-    gripper.tick(registers, dtSec);
+    if (defaultGripperIo) {
+      gripper.tick(registers, dtSec);
+    }
     Outcome o = interpreter.tick(dtSec);
     if (o instanceof Outcome.Alarmed a && a.alarm() != lastInterpreterAlarm) {
       lastInterpreterAlarm = a.alarm();
@@ -206,6 +209,14 @@ public final class Controller implements MotionPort {
       lastCycleTimeSec = timeSec - runStartSec;
       runStartSec = Double.NaN;
     }
+  }
+
+  /**
+   * Whether the stand-in gripper answers RO[1] on RI[1] (true until a simulation gives the robot
+   * an end effector, which then owns that I/O).
+   */
+  void setDefaultGripperIo(boolean on) {
+    defaultGripperIo = on;
   }
 
   /** Simulated time of this controller (s). */
