@@ -9,13 +9,15 @@ import org.robotrun.robot.RobotModel;
  * Turns the jog keys into arm motion, one tick at a time.
  *
  * <p>JOINT moves each joint at {@link #JOINT_JOG_FRACTION} of its maximum speed times the
- * override, slowing so it comes to rest exactly at its limit. WORLD, TOOL and USER move a desired
+ * override, slowing so it comes to rest exactly at its limit; with FANUC's coupled J3 the J2 keys
+ * keep the pendant's J3 (the forearm's attitude), as on the real pendant. WORLD, TOOL and USER move a desired
  * TCP pose along / about the frame's axes through the TCP (linear {@link #LINEAR_JOG_MM_PER_SEC},
  * rotation {@link #ROTATION_JOG_RAD_PER_SEC}, times the override) and reach it with the
  * resolved-rate {@link PoseTracker}; because the desired pose is integrated, not the joint
  * rates, the TCP does not drift off the axis. Each axis ramps its speed up and down in
- * {@link #RAMP_SEC}. A jog that would pass a joint limit, or that needs joints faster than
- * their limits (a singularity), stops with a message and never jumps.
+ * {@link #RAMP_SEC}. Near a singularity, where the joints would have to outrun their speed
+ * limits, the jog slows down; a jog that would pass a joint limit, reach the wrist singularity or
+ * slow below {@link #MIN_SLOWDOWN} stops with a message, and never jumps.
  *
  * <p>Not thread-safe; one per controller.
  */
@@ -26,6 +28,8 @@ public final class Jogger {
   public static final double LINEAR_JOG_MM_PER_SEC = 250;
   /** Cartesian rotation jog speed at 100% override (rad/s): 60°/s. */
   public static final double ROTATION_JOG_RAD_PER_SEC = Math.toRadians(60);
+  /** Slowest a Cartesian jog may get near a singularity, as a fraction of its asked speed, before it stops. */
+  public static final double MIN_SLOWDOWN = 0.05;
   /** Time to reach full jog speed from rest and back (s). */
   public static final double RAMP_SEC = 0.1;
 
@@ -100,23 +104,45 @@ public final class Jogger {
       if (speed[i] == 0) {
         continue;
       }
+      // With FANUC's coupled J3, the J2 keys turn kinematic J3 along so the forearm keeps its
+      // attitude (the pendant's J3 value does not change).
+      boolean dragsJ3 = i == 1 && model.coupledJ3();
       double a = fullSpeed(JogFrame.JOINT, i) * overrideFraction / RAMP_SEC;
-      double room = speed[i] > 0 ? chain.upper(i) - q[i] : q[i] - chain.lower(i);
+      double room = room(q, i, speed[i]);
+      int limiting = i;
+      if (dragsJ3 && room(q, 2, speed[i]) < room) {
+        room = room(q, 2, speed[i]);
+        limiting = 2;
+      }
       // Brake so the joint comes to rest at its limit: v ≤ sqrt(2·a·room).
       double vMax = Math.sqrt(2 * a * Math.max(0, room));
       double v = Math.signum(speed[i]) * Math.min(Math.abs(speed[i]), vMax);
       speed[i] = v;
-      double next = q[i] + v * dtSec;
-      boolean atLimit = room <= 1e-9 || (speed[i] > 0 ? next >= chain.upper(i) : next <= chain.lower(i));
-      q[i] = Math.max(chain.lower(i), Math.min(chain.upper(i), next));
+      double step = v * dtSec;
+      boolean atLimit = room <= 1e-9 || Math.abs(step) >= room;
+      double applied = Math.signum(step) * Math.min(Math.abs(step), Math.max(0, room));
+      q[i] = clamp(q[i] + applied, i);
+      if (dragsJ3) {
+        q[2] = clamp(q[2] + applied, 2);
+      }
       if (atLimit) {
-        String side = v > 0 || room <= 1e-9 && keys.direction(i) > 0 ? "upper" : "lower";
+        String side = (v != 0 ? v > 0 : keys.direction(i) > 0) ? "upper" : "lower";
         stop(keys);
-        return new JogResult.Stopped(String.format("J%d at its %s limit (%.1f deg)", i + 1, side,
-            Math.toDegrees(q[i])));
+        return new JogResult.Stopped(limiting == i
+            ? String.format("J%d at its %s limit (%.1f deg)", i + 1, side, Math.toDegrees(q[i]))
+            : String.format("J%d stopped: J3 (coupled to J2) at its %s limit", i + 1, side));
       }
     }
     return MOVING;
+  }
+
+  /** How far joint j may still move in the direction of {@code sign} (rad). */
+  private double room(double[] q, int j, double sign) {
+    return sign > 0 ? chain.upper(j) - q[j] : q[j] - chain.lower(j);
+  }
+
+  private double clamp(double v, int j) {
+    return Math.max(chain.lower(j), Math.min(chain.upper(j), v));
   }
 
   private JogResult jogCartesian(double[] q, JogState keys, JogFrame frame, Transform X_FT, Transform X_WU,
@@ -130,23 +156,40 @@ public final class Jogger {
       case USER -> X_WU;
       case TOOL -> X_WTdesired;
     };
-    Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
-    Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
-    Vec3 p = X_WTdesired.translationVector().plus(v_W.times(dtSec));
-    Transform want = Rotations.exp(w_W, dtSec).compose(X_WTdesired.withTranslation(0, 0, 0))
-        .withTranslation(p.x(), p.y(), p.z());
-    System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
-    boolean ok = tracker.track(qTry, want, X_FT, 1e-3, 1e-6);
-    double ratio = 0;
-    for (int i = 0; i < 6 && ok; i++) {
-      ok = Double.isFinite(qTry[i]);
-      ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
+    // Near a singularity the joints would have to outrun their limits: jog slower (down to 5% of
+    // the asked speed) rather than whip the wrist; below that, stop with a message.
+    double scale = 1;
+    boolean ok = false;
+    double ratio = Double.POSITIVE_INFINITY;
+    Transform want = X_WTdesired;
+    for (int attempt = 0; attempt < 4; attempt++) {
+      double h = dtSec * scale;
+      Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
+      Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
+      Vec3 p = X_WTdesired.translationVector().plus(v_W.times(h));
+      want = Rotations.exp(w_W, h).compose(X_WTdesired.withTranslation(0, 0, 0)).withTranslation(p.x(), p.y(), p.z());
+      System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
+      ok = tracker.track(qTry, want, X_FT, 1e-3, 1e-6);
+      ratio = 0;
+      for (int i = 0; i < 6 && ok; i++) {
+        ok = Double.isFinite(qTry[i]);
+        ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
+      }
+      if (!ok || ratio <= 1) {
+        break;
+      }
+      scale *= 0.9 / ratio;
     }
-    if (!ok || ratio > 1 || MotionRunner.entersWristSingularity(q, qTry)) {
+    if (!ok || ratio > 1 || scale < MIN_SLOWDOWN || MotionRunner.entersWristSingularity(q, qTry)) {
       stop(keys);
       return new JogResult.Stopped(Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))
           ? String.format("stopped near the wrist singularity (J5 = %.1f deg): jog J5 in JOINT first", Math.toDegrees(q[4]))
           : "stopped: singularity or edge of reach");
+    }
+    if (scale < 1) {
+      for (int i = 0; i < 6; i++) {
+        speed[i] *= scale;
+      }
     }
     for (int i = 0; i < 6; i++) {
       if (!(qTry[i] >= chain.lower(i) && qTry[i] <= chain.upper(i))) {

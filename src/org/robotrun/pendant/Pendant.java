@@ -178,6 +178,14 @@ public final class Pendant {
     }
   }
 
+  /**
+   * Whether a text or number entry is open on the prompt line, so that typed characters go to
+   * it (a keyboard front end then sends letters as text instead of as jog keys).
+   */
+  public boolean entryOpen() {
+    return modal instanceof Modal.Entry;
+  }
+
   /** Whether SHIFT is on (held or latched). */
   public boolean shift() {
     return shiftHeld || shiftLatched;

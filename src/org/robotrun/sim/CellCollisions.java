@@ -2,10 +2,16 @@ package org.robotrun.sim;
 
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import org.robotrun.collision.Body;
+import org.robotrun.collision.BodyKind;
+import org.robotrun.collision.BodyPair;
 import org.robotrun.collision.CollisionWorld;
+import org.robotrun.collision.Obb;
 import org.robotrun.collision.StandardPairFilter;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
@@ -18,40 +24,89 @@ import org.robotrun.world.WorldBodies;
 
 /**
  * Collision checking of a cell, once per tick: every robot's link bodies (a box around each link
- * shape) and its active tool (a 20 mm square bar from the flange to the TCP), and the world's
- * fixtures and parts, under the {@link StandardPairFilter} rules (self-collision of links at
- * least two apart, robot against fixtures, parts and other robots). Reports the contacts that
- * began at this tick, so a lasting contact raises one alarm, not one per tick.
+ * shape) and its end effector's boxes (or, for a robot without one, a 20 mm square bar from the
+ * flange to the active TCP), the world's fixtures and parts, and the floor, under
+ * {@link CellPairFilter}.
+ * Reports the contacts that began at this tick, so a lasting contact raises one alarm, not one
+ * per tick.
+ *
+ * <p>Held parts: a held part's box follows it, shrunk by {@link #HELD_CLEARANCE_MM} on every
+ * face so that a part set down exactly on a surface (or slid along one) does not count as a
+ * collision, while one pushed into a fixture does. Two kinds of contact are allowed for a while:
+ * at a grip, the part against whatever it rests on or leans against (until they separate: the
+ * lift), and at a release, the part against the robot that let it go (until the tool has
+ * moved clear). Allowed pairs are checked every tick and dropped once apart.
  *
  * <p>The tool bar is rebuilt when a robot's active tool changes (rare). Not thread-safe.
  */
 final class CellCollisions {
-  /** Cross-section of the tool bar (mm). */
+  /** Cross-section of the tool bar (mm) of a robot without an end effector. */
   static final double TOOL_BAR_MM = 20;
   /** Gap left between the flange and the tool bar so the bar does not touch the wrist (mm). */
   static final double TOOL_GAP_MM = 2;
+  /** A held part's box is this much smaller on every face (mm). */
+  static final double HELD_CLEARANCE_MM = 0.5;
 
   private final List<Controller> controllers;
-  private final List<Transform> X_CW;
-  private final World world;
+  private final CellState cell;
+  private final double floorZ;
   private CollisionWorld collision;
+  private WorldBodies objects;
   private List<RobotBodies> robots;
   private Transform[] tools;
+  /** Per robot: handles of its end effector's boxes (empty without one). */
+  private int[][] toolHandles;
   private final Transform[] X_CL = new Transform[Body.TOOL_LINK + 1];
+  /** Per robot: the flange in the cell at the last check. */
+  private final Transform[] X_CF;
   private final LinkPoses[] poses;
   /** Joints at the last check, per robot: nothing moved, nothing new to find. */
   private final double[][] lastQ;
+  private long cellVersion = -1;
+  private final Set<BodyPair> allowed = new LinkedHashSet<>();
   private Set<String> touching = new HashSet<>();
+
+  /** Bodies touching at the last check, by draw-item name (a link's boxes "#k" merged). */
+  Set<String> touchingBodies() {
+    Set<String> out = new HashSet<>();
+    for (String pair : touching) {
+      for (String body : pair.split("\\|")) {
+        int hash = body.indexOf('#');
+        out.add(hash < 0 ? body : body.substring(0, hash));
+      }
+    }
+    return out;
+  }
+
+  /** The tool bar of {@code X_FT} in the flange frame: its pose and full edge lengths; empty for a short tool. */
+  static java.util.Optional<LocalBox> toolBar(Transform X_FT) {
+    Vec3 p = X_FT.translationVector();
+    double length = p.norm() - TOOL_GAP_MM;
+    if (length <= 1) {
+      return java.util.Optional.empty();
+    }
+    // A bar along the flange-to-TCP line, centred half-way past the gap.
+    Vec3 dir = p.normalized();
+    Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
+    Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
+    return java.util.Optional.of(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
+  }
 
   /** A contact that began: the two bodies' names ("robot1/link5", "table"). */
   record NewContact(String a, String aOwner, String b, String bOwner) {}
 
-  CellCollisions(List<Controller> controllers, List<Transform> X_CW, World world) {
+  /** Name of the floor's body: a fixture whose top is the cell's floor. */
+  static final String FLOOR = "floor";
+  /** Half size of the floor slab (mm): 20 m square, 10 mm thick. */
+  static final double FLOOR_HALF_MM = 10_000;
+
+  CellCollisions(List<Controller> controllers, List<Transform> X_CW, CellState cell, double floorZ) {
     this.controllers = controllers;
-    this.X_CW = X_CW;
-    this.world = world;
+    this.cell = cell;
+    this.floorZ = floorZ;
     this.poses = new LinkPoses[controllers.size()];
     this.lastQ = new double[controllers.size()][];
+    this.X_CF = new Transform[controllers.size()];
     for (int r = 0; r < controllers.size(); r++) {
       poses[r] = new LinkPoses(controllers.get(r).model(), X_CW.get(r));
     }
@@ -59,15 +114,40 @@ final class CellCollisions {
   }
 
   private void build() {
-    collision = new CollisionWorld(new CellPairFilter(StandardPairFilter.nothingHeld()));
-    new WorldBodies(world, collision);
+    collision = new CollisionWorld(filter());
+    objects = new WorldBodies(cell.world(), collision);
+    // The floor is always there: a robot's base stands on it (not checked), its links and tool are.
+    if (cell.world().find(FLOOR).isEmpty()) {
+      collision.add(Body.fixture(FLOOR, FLOOR), Obb.axisAligned(0, 0, floorZ - 5, FLOOR_HALF_MM, FLOOR_HALF_MM, 5));
+    }
     robots = new ArrayList<>();
     tools = new Transform[controllers.size()];
+    toolHandles = new int[controllers.size()][];
     for (int r = 0; r < controllers.size(); r++) {
       Controller c = controllers.get(r);
       tools[r] = c.frames().activeTool();
-      robots.add(new RobotBodies(c.name(), boxes(c.model(), tools[r]), collision));
+      Optional<EndEffectorState> tool = cell.tool(r);
+      List<List<LocalBox>> boxes = boxes(c.model(), tools[r]);
+      if (tool.isPresent()) {
+        boxes.set(Body.TOOL_LINK, List.of());
+      }
+      robots.add(new RobotBodies(c.name(), boxes, collision));
+      List<LocalBox> toolBoxes = tool.map(t -> t.geometry.boxes(t.fingerGapMm())).orElse(List.of());
+      List<String> toolNames = tool.map(t -> t.geometry.boxNames()).orElse(List.of());
+      toolHandles[r] = new int[toolBoxes.size()];
+      for (int k = 0; k < toolBoxes.size(); k++) {
+        String name = c.name() + "/tool/" + toolNames.get(k);
+        toolHandles[r][k] = collision.add(Body.robotLink(c.name(), Body.TOOL_LINK, name),
+            toolBoxes.get(k).inWorld(Transform.IDENTITY));
+      }
     }
+    java.util.Arrays.fill(lastQ, null);
+    cellVersion = -1;
+    touching = new HashSet<>();
+  }
+
+  private CellPairFilter filter() {
+    return new CellPairFilter(new StandardPairFilter(cell.heldBy(), allowed));
   }
 
   /** Boxes per link 0..6 from the link shapes, and link 7 (tool) from the flange to the TCP. */
@@ -84,15 +164,7 @@ final class CellCollisions {
       out.add(boxes);
     }
     List<LocalBox> tool = new ArrayList<>();
-    Vec3 p = X_FT.translationVector();
-    double length = p.norm() - TOOL_GAP_MM;
-    if (length > 1) {
-      // A bar along the flange-to-TCP line, centred half-way past the gap.
-      Vec3 dir = p.normalized();
-      Vec3 centre = dir.times(TOOL_GAP_MM + length / 2);
-      Transform X_FB = alongZ(dir).withTranslation(centre.x(), centre.y(), centre.z());
-      tool.add(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
-    }
+    toolBar(X_FT).ifPresent(tool::add);
     out.add(tool);
     return out;
   }
@@ -108,33 +180,47 @@ final class CellCollisions {
     return Transform.rotation(axis.x() / s, axis.y() / s, axis.z() / s, Math.atan2(s, c));
   }
 
-  /** Moves every robot's bodies to its current joints, runs the check, returns contacts that began now. */
-  List<NewContact> check() {
-    boolean rebuilt = false;
+  /**
+   * Moves every robot's bodies to its current joints and the parts to where the cell has them,
+   * runs the check, returns contacts that began now.
+   *
+   * @param toolsMoved whether fingers moved this tick (the arms may not have)
+   */
+  List<NewContact> check(boolean toolsMoved) {
     for (int r = 0; r < controllers.size(); r++) {
-      if (!controllers.get(r).frames().activeTool().equals(tools[r])) {
+      if (cell.tool(r).isEmpty() && !controllers.get(r).frames().activeTool().equals(tools[r])) {
         build();
-        touching = new HashSet<>();
-        java.util.Arrays.fill(lastQ, null);
-        rebuilt = true;
         break;
       }
     }
-    boolean moved = rebuilt;
+    boolean moved = toolsMoved;
+    if (cell.version() != cellVersion) {
+      cellVersion = cell.version();
+      applyEvents();
+      syncObjects();
+      moved = true;
+    }
     for (int r = 0; r < controllers.size(); r++) {
       double[] q = controllers.get(r).jointsRad();
-      if (lastQ[r] != null && java.util.Arrays.equals(q, lastQ[r])) {
+      boolean armMoved = lastQ[r] == null || !java.util.Arrays.equals(q, lastQ[r]);
+      if (!armMoved && !toolsMoved) {
         continue;
       }
-      lastQ[r] = q;
       moved = true;
-      poses[r].compute(q, X_CL);
-      robots.get(r).moveTo(X_CL, collision);
+      if (armMoved) {
+        lastQ[r] = q;
+        poses[r].compute(q, X_CL);
+        robots.get(r).moveTo(X_CL, collision);
+        X_CF[r] = X_CL[Body.TOOL_LINK];
+      }
+      moveTool(r);
+      moveHeldPart(r);
     }
     if (!moved) {
       return List.of();
     }
     int n = collision.update();
+    pruneAllowed();
     if (n == 0 && touching.isEmpty()) {
       return List.of();
     }
@@ -149,5 +235,102 @@ final class CellCollisions {
     }
     touching = now;
     return began;
+  }
+
+  private void moveTool(int r) {
+    Optional<EndEffectorState> tool = cell.tool(r);
+    if (tool.isEmpty() || X_CF[r] == null) {
+      return;
+    }
+    List<LocalBox> boxes = tool.get().geometry.boxes(tool.get().fingerGapMm());
+    for (int k = 0; k < toolHandles[r].length; k++) {
+      collision.setBox(toolHandles[r][k], boxes.get(k).inWorld(X_CF[r]));
+    }
+  }
+
+  private void moveHeldPart(int r) {
+    cell.tool(r).flatMap(EndEffectorState::held).ifPresent(h -> collision.setBox(objects.handle(h.part()),
+        partBox(cell.world(), h.part(), true)));
+  }
+
+  /** Every object's box where the cell has it (after a set-down or reset). */
+  private void syncObjects() {
+    World world = cell.world();
+    Map<String, String> held = cell.heldBy();
+    for (var o : world.objects()) {
+      collision.setBox(objects.handle(o.name()), partBox(world, o.name(), held.containsKey(o.name())));
+    }
+  }
+
+  private static Obb partBox(World world, String name, boolean held) {
+    Obb b = world.collisionBox(name);
+    if (!held) {
+      return b;
+    }
+    double c = HELD_CLEARANCE_MM;
+    return new Obb(b.cx(), b.cy(), b.cz(), Math.max(0, b.hx() - c), Math.max(0, b.hy() - c), Math.max(0, b.hz() - c),
+        b.r00(), b.r01(), b.r02(), b.r10(), b.r11(), b.r12(), b.r20(), b.r21(), b.r22());
+  }
+
+  /** Grips and releases: allow the contacts they start with, and new held-part rules. */
+  private void applyEvents() {
+    List<CellState.Event> events = cell.drainEvents();
+    World world = cell.world();
+    if (events.isEmpty() && cell.heldBy().isEmpty()) {
+      // A reset: nothing is held, nothing needs allowing.
+      allowed.clear();
+    }
+    for (CellState.Event e : events) {
+      Obb box = partBox(world, e.part(), e instanceof CellState.Event.Gripped);
+      Body part = collision.body(objects.handle(e.part()));
+      String robot = controllers.get(e.robot()).name();
+      for (int h : collision.overlapping(box, b -> !b.owner().equals(e.part()))) {
+        Body other = collision.body(h);
+        boolean allow = switch (e) {
+          // What the part rests on or leans against when it is taken.
+          case CellState.Event.Gripped g -> other.kind() != BodyKind.ROBOT;
+          // The tool (or wrist) that just let it go.
+          case CellState.Event.Released rel -> other.kind() == BodyKind.ROBOT && other.owner().equals(robot);
+        };
+        if (allow) {
+          allowed.add(BodyPair.of(part, other));
+        }
+      }
+    }
+    collision.setFilter(filter());
+  }
+
+  /** Drops allowed pairs whose boxes no longer touch; the new rules apply from the next check. */
+  private void pruneAllowed() {
+    if (allowed.isEmpty()) {
+      return;
+    }
+    boolean changed = false;
+    for (var it = allowed.iterator(); it.hasNext(); ) {
+      BodyPair p = it.next();
+      int a = handleOf(p.first());
+      int b = handleOf(p.second());
+      if (a < 0 || b < 0 || !collision.box(a).overlaps(collision.box(b))) {
+        it.remove();
+        changed = true;
+      }
+    }
+    if (changed) {
+      collision.setFilter(filter());
+    }
+  }
+
+  private int handleOf(String bodyName) {
+    for (int h = 0; h < collision.size(); h++) {
+      if (collision.body(h).name().equals(bodyName)) {
+        return h;
+      }
+    }
+    return -1;
+  }
+
+  /** The collision world as of the last check (for drawing boxes green or red). */
+  CollisionWorld world() {
+    return collision;
   }
 }

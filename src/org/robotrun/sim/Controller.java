@@ -84,10 +84,13 @@ public final class Controller implements MotionPort {
   private final Map<String, String> comments = new HashMap<>();
   private final Interpreter interpreter;
   private final SimpleGripper gripper = new SimpleGripper();
+  private boolean defaultGripperIo = true;
 
   private final Map<Long, MoveState> moves = new HashMap<>();
   private final List<Vec3> arcHistory = new ArrayList<>();
   private Transform lastTargetW;
+  /** ABORT while moving: the arm decelerates (held), then its motion is dropped. */
+  private boolean dropWhenStopped;
   private long nextHandle = 1;
   private int overridePct = 100;
   private JogFrame coord = JogFrame.JOINT;
@@ -157,7 +160,9 @@ public final class Controller implements MotionPort {
   /** Advances by {@code dtSec}: the program runs, then the arm moves (program motion or jog). */
   public void tick(double dtSec) {
     timeSec += dtSec;
-    gripper.tick(registers, dtSec);
+    if (defaultGripperIo) {
+      gripper.tick(registers, dtSec);
+    }
     Outcome o = interpreter.tick(dtSec);
     if (o instanceof Outcome.Alarmed a && a.alarm() != lastInterpreterAlarm) {
       lastInterpreterAlarm = a.alarm();
@@ -180,6 +185,10 @@ public final class Controller implements MotionPort {
     lastState = state;
     boolean jogging = runner.idle() && jogKeys.anyOn();
     runner.tick(dtSec);
+    if (dropWhenStopped && runner.atRest()) {
+      runner.stopNow();
+      dropWhenStopped = false;
+    }
     if (runner.idle()) {
       if (jogging && (!deadman || !activeAlarms.isEmpty())) {
         jogger.stop(jogKeys);
@@ -200,6 +209,14 @@ public final class Controller implements MotionPort {
       lastCycleTimeSec = timeSec - runStartSec;
       runStartSec = Double.NaN;
     }
+  }
+
+  /**
+   * Whether the stand-in gripper answers RO[1] on RI[1] (true until a simulation gives the robot
+   * an end effector, which then owns that I/O).
+   */
+  void setDefaultGripperIo(boolean on) {
+    defaultGripperIo = on;
   }
 
   /** Simulated time of this controller (s). */
@@ -283,7 +300,8 @@ public final class Controller implements MotionPort {
 
   /** A Cartesian position in the given frames as joints (its CONFIG), or why it has none. */
   public IkResult toJoints(Position.Cartesian pose, int userFrame, int toolFrame) {
-    return resolver.jointsOf(pose, frames.transform(FrameKind.USER, userFrame), frames.transform(FrameKind.TOOL, toolFrame));
+    return resolver.jointsOf(pose, frames.transform(FrameKind.USER, userFrame), frames.transform(FrameKind.TOOL, toolFrame),
+        runner.joints());
   }
 
   /** Joints as a Cartesian position of {@code toolFrame} in {@code userFrame}. */
@@ -461,10 +479,12 @@ public final class Controller implements MotionPort {
     jogger.stop(jogKeys);
   }
 
-  /** FCTN ABORT: ends the program; the arm stops where it is. */
+  /** FCTN ABORT: ends the program; a moving arm decelerates along its path to a stop. */
   public void abort() {
     interpreter.abort();
-    stopMotion();
+    if (!runner.idle()) {
+      cancel(-1);
+    }
   }
 
   /** RESET: clears the active alarms (the history keeps them). */
@@ -534,6 +554,8 @@ public final class Controller implements MotionPort {
   }
 
   private void addAlarm(ControllerAlarm a) {
+    // A run that ends on an alarm has no cycle time.
+    runStartSec = Double.NaN;
     activeAlarms.add(a);
     history.addFirst(a);
     while (history.size() > HISTORY) {
@@ -544,6 +566,7 @@ public final class Controller implements MotionPort {
 
   private void stopMotion() {
     runner.stopNow();
+    dropWhenStopped = false;
     arcHistory.clear();
     lastTargetW = null;
   }
@@ -552,6 +575,11 @@ public final class Controller implements MotionPort {
 
   @Override
   public Start startMotion(MotionRequest request) {
+    if (dropWhenStopped) {
+      // A new motion right after ABORT/BWD: finish the stop at once.
+      runner.stopNow();
+      dropWhenStopped = false;
+    }
     if (!runner.acceptsMove()) {
       return new Start.Rejected(MotionAlarms.QUEUE_BUSY, "a motion is already waiting");
     }
@@ -608,10 +636,18 @@ public final class Controller implements MotionPort {
     runner.resume();
   }
 
+  /** The program gives up its motion (ABORT, BWD): the arm decelerates along its path, then the motion is dropped. */
   @Override
   public void cancel(long handle) {
-    stopMotion();
     moves.remove(handle);
+    arcHistory.clear();
+    lastTargetW = null;
+    if (runner.atRest()) {
+      runner.stopNow();
+    } else {
+      runner.hold();
+      dropWhenStopped = true;
+    }
   }
 
   @Override

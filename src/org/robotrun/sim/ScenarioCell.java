@@ -3,11 +3,13 @@ package org.robotrun.sim;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.function.Function;
 import org.robotrun.math.Transform;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.Position;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.world.EndEffectorGeometry;
 import org.robotrun.world.RobotSetup;
 import org.robotrun.world.Scenario;
 
@@ -16,7 +18,8 @@ import org.robotrun.world.Scenario;
  * initial joints, placed in the cell; the first robot gets the scenario's registers and frames.
  * Programs are files and are loaded by the caller ({@code io} reads them; {@code sim} does not).
  * The active frame numbers stay 0 (WORLD, flange): programs select theirs with UFRAME_NUM /
- * UTOOL_NUM.
+ * UTOOL_NUM. Each robot carries its scenario end effector; when the scenario sets no tool
+ * frame 1, UT[1] is that end effector's TCP.
  */
 public final class ScenarioCell {
   private ScenarioCell() {}
@@ -28,6 +31,7 @@ public final class ScenarioCell {
   public static Simulation build(Scenario scenario, Function<String, RobotModel> models, double tickSec) {
     List<Controller> controllers = new ArrayList<>();
     List<Transform> placements = new ArrayList<>();
+    List<Optional<EndEffectorGeometry>> tools = new ArrayList<>();
     double floorZ = Double.POSITIVE_INFINITY;
     for (RobotSetup r : scenario.robots()) {
       RobotModel model = models.apply(r.modelId());
@@ -41,6 +45,13 @@ public final class ScenarioCell {
         throw new IllegalArgumentException("robot " + r.name() + ": " + e.getMessage(), e);
       }
       controllers.add(c);
+      EndEffectorGeometry tool = EndEffectorGeometry.of(r.endEffector());
+      tools.add(Optional.of(tool));
+      boolean firstWithUt1 = controllers.size() == 1 && scenario.toolFrames().containsKey(1);
+      if (!tool.X_FT().equals(Transform.IDENTITY) && !firstWithUt1) {
+        c.frames().setTransform(FrameKind.TOOL, 1, tool.X_FT());
+        c.frames().setComment(FrameKind.TOOL, 1, r.endEffector().fileName() + " TCP");
+      }
       // The robot's WORLD in the cell: X_CW = X_CB · X_BW.
       placements.add(r.X_CB().compose(model.X_WB().inverse()));
       floorZ = Math.min(floorZ, r.X_CB().z());
@@ -56,6 +67,7 @@ public final class ScenarioCell {
     }
     scenario.toolFrames().forEach((n, X_FT) -> first.frames().setTransform(FrameKind.TOOL, n, X_FT));
     scenario.userFrames().forEach((n, X_WU) -> first.frames().setTransform(FrameKind.USER, n, X_WU));
-    return new Simulation(controllers, placements, scenario.world(), floorZ, tickSec);
+    Simulation sim = new Simulation(controllers, placements, scenario.world(), tools, floorZ, tickSec);
+    return sim;
   }
 }

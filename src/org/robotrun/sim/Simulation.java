@@ -1,9 +1,13 @@
 package org.robotrun.sim;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
+import java.util.Optional;
 import org.robotrun.math.Transform;
 import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.world.EndEffectorGeometry;
 import org.robotrun.world.World;
 
 /**
@@ -24,13 +28,20 @@ public final class Simulation {
 
   private final List<Controller> controllers;
   private final List<Transform> X_CW;
-  private final World world;
+  private final CellState cell;
+  private final Transform[] X_CF;
   private final double floorZ;
   private final double tickSec;
   private long ticks;
   private CellCollisions collisions;
   private boolean checkCollisions = true;
+  private boolean collisionAlarms = true;
   private final List<CollisionEvent> collisionEvents = new ArrayList<>();
+
+  /** Colour of bodies in contact in snapshots. */
+  public static final DrawItem.Color TOUCHING = DrawItem.Color.rgb(0.9, 0.1, 0.1);
+  /** Colour of the tool bar in snapshots. */
+  public static final DrawItem.Color TOOL_COLOR = DrawItem.Color.rgb(0.55, 0.56, 0.6);
 
   /** Alarm code of a collision. */
   public static final String COLLISION_ALARM = "SRVO-050";
@@ -44,6 +55,18 @@ public final class Simulation {
    * @param floorZ height of the floor in the cell (mm)
    */
   public Simulation(List<Controller> controllers, List<Transform> X_CW, World world, double floorZ, double tickSec) {
+    this(controllers, X_CW, world, Collections.nCopies(controllers.size(), Optional.empty()), floorZ, tickSec);
+  }
+
+  /**
+   * A cell whose robots carry end effectors (see {@link CellState} for their I/O): a robot with
+   * one has its tool's boxes checked for collisions and picks parts; a robot without one (empty)
+   * keeps the controller's simple gripper I/O and a bar from the flange to its TCP.
+   *
+   * @param endEffectors one per robot, in controller order
+   */
+  public Simulation(List<Controller> controllers, List<Transform> X_CW, World world,
+      List<Optional<EndEffectorGeometry>> endEffectors, double floorZ, double tickSec) {
     if (!(tickSec > 0 && tickSec <= 0.1)) {
       throw new IllegalArgumentException("tick must be in (0, 0.1] s, got " + tickSec);
     }
@@ -52,7 +75,14 @@ public final class Simulation {
     }
     this.controllers = List.copyOf(controllers);
     this.X_CW = List.copyOf(X_CW);
-    this.world = world;
+    this.cell = new CellState(world, this.controllers.stream().map(Controller::name).toList(), endEffectors);
+    this.X_CF = new Transform[controllers.size()];
+    for (int r = 0; r < controllers.size(); r++) {
+      if (endEffectors.get(r).isPresent()) {
+        // The end effector answers RI[1]; the controller's stand-in gripper must not.
+        this.controllers.get(r).setDefaultGripperIo(false);
+      }
+    }
     this.floorZ = floorZ;
     this.tickSec = tickSec;
   }
@@ -72,16 +102,30 @@ public final class Simulation {
       c.tick(tickSec);
     }
     ticks++;
+    for (int r = 0; r < controllers.size(); r++) {
+      if (cell.tool(r).isPresent()) {
+        Controller c = controllers.get(r);
+        X_CF[r] = X_CW.get(r).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
+      }
+    }
+    boolean toolsMoved = cell.tick(controllers, X_CF, tickSec);
     if (checkCollisions) {
       if (collisions == null) {
-        collisions = new CellCollisions(controllers, X_CW, world);
+        collisions = new CellCollisions(controllers, X_CW, cell, floorZ);
       }
-      for (CellCollisions.NewContact k : collisions.check()) {
+      for (CellCollisions.NewContact k : collisions.check(toolsMoved)) {
         if (collisionEvents.size() < MAX_EVENTS) {
           collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b()));
         }
+        if (!collisionAlarms) {
+          continue;
+        }
+        // A held part's contact stops the robot holding it.
+        var held = cell.heldBy();
+        String robotA = held.getOrDefault(k.aOwner(), k.aOwner());
+        String robotB = held.getOrDefault(k.bOwner(), k.bOwner());
         for (Controller c : controllers) {
-          if (c.name().equals(k.aOwner()) || c.name().equals(k.bOwner())) {
+          if (c.name().equals(robotA) || c.name().equals(robotB)) {
             c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
           }
         }
@@ -92,6 +136,37 @@ public final class Simulation {
   /** Turns collision checking on (the default) or off. */
   public void setCollisionChecking(boolean on) {
     checkCollisions = on;
+  }
+
+  /**
+   * Whether a collision stops the robot with {@link #COLLISION_ALARM} (true, the default) or is
+   * only recorded in {@link #collisionEvents} and shown, for free play (false).
+   */
+  public void setCollisionAlarms(boolean alarm) {
+    collisionAlarms = alarm;
+  }
+
+  public boolean collisionAlarms() {
+    return collisionAlarms;
+  }
+
+  /**
+   * Reset scene: every part back at its start pose and on its start fixture, nothing held,
+   * process traces cleared. The robots stay where they are (a part back at its start may now
+   * touch a tool that stands there: that is reported as a collision at the next tick).
+   */
+  public void resetScene() {
+    cell.reset();
+  }
+
+  /** Held part → name of the robot holding it. */
+  public java.util.Map<String, String> heldParts() {
+    return cell.heldBy();
+  }
+
+  /** The parts and end effectors (tests, draw lists). */
+  CellState cellState() {
+    return cell;
   }
 
   /** Contacts that began during the run, oldest first (at most 1000). */
@@ -123,21 +198,39 @@ public final class Simulation {
 
   /** The fixtures and parts, as they stand now. */
   public World world() {
-    return world;
+    return cell.world();
   }
 
-  /** The current picture: draw list (cell and robots) and robot states. */
+  /**
+   * The current picture: draw list (fixtures, parts, robots, their end effectors and traces or
+   * tool bars, in the cell frame; bodies in contact drawn in {@link #TOUCHING} red) and robot
+   * states.
+   */
   public SimSnapshot snapshot() {
     List<DrawItem> items = new ArrayList<>();
-    WorldDrawList.addWorld(items, world);
+    WorldDrawList.addWorld(items, cell.world());
     List<RobotState> states = new ArrayList<>();
     for (int i = 0; i < controllers.size(); i++) {
       Controller c = controllers.get(i);
       RobotDrawList.addRobot(items, c.name(), c.model(), X_CW.get(i), c.jointsRad());
+      Transform X_CF = X_CW.get(i).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
+      if (cell.tool(i).isPresent()) {
+        EndEffectorDrawList.add(items, cell.tool(i).get(), X_CF);
+      } else {
+        CellCollisions.toolBar(c.frames().activeTool()).ifPresent(b -> items.add(new DrawItem(c.name() + "/tool",
+            new DrawShape.Box(new org.robotrun.math.Vec3(2 * b.hxMm(), 2 * b.hyMm(), 2 * b.hzMm()), false),
+            X_CF.compose(b.X_LB()), TOOL_COLOR)));
+      }
       var j = c.currentJoints();
       states.add(new RobotState(c.name(), new double[] {j.j1Deg(), j.j2Deg(), j.j3Deg(), j.j4Deg(), j.j5Deg(), j.j6Deg()},
           c.tcpInWorld(), c.frames().active(FrameKind.TOOL), c.frames().active(FrameKind.USER), c.overridePct(),
           c.status(), c.activeAlarms()));
+    }
+    if (checkCollisions && collisions != null) {
+      var touching = collisions.touchingBodies();
+      if (!touching.isEmpty()) {
+        items.replaceAll(d -> touching.contains(d.name()) ? new DrawItem(d.name(), d.shape(), d.X_WS(), TOUCHING) : d);
+      }
     }
     double t = timeSec();
     return new SimSnapshot(t, new SceneSnapshot(t, items, floorZ), states);

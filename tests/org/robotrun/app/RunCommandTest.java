@@ -100,7 +100,9 @@ class RunCommandTest {
     assertThat(r.get("alarm").get("code").asText()).isEqualTo("SRVO-050");
     assertThat(r.get("alarm").get("line").asInt()).isEqualTo(4);
     JsonNode hit = r.get("collisions").get(0);
-    assertThat(java.util.List.of(hit.get("a").asText(), hit.get("b").asText())).containsExactlyInAnyOrder("robot1/tool", "table");
+    // The gripper's finger tips are the TCP: a finger meets the table first.
+    assertThat(java.util.List.of(hit.get("a").asText(), hit.get("b").asText()))
+        .containsExactlyInAnyOrder("robot1/tool/finger1", "table");
     // The tip stopped at the table top (z = -100 in the cell), not inside it: at most one tick deeper.
     assertThat(r.get("robots").get(0).get("tcp_world").get("z").asDouble()).isBetween(-100.5, -99.0);
   }

@@ -119,6 +119,48 @@ class JoggerTest {
   }
 
   @Test
+  void jointJogOfJ2KeepsTheForearmAttitude() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = start();
+    double[] before = org.robotrun.robot.JointConvention.kinematicToPendant(MotionRunnerTest.MODEL, q);
+    keys.keyDown(1, +1, JogState.Press.HELD);
+    for (int i = 0; i < 100; i++) {
+      jog.tick(q, keys, JogFrame.JOINT, 0.5, TOOL, Transform.IDENTITY, DT);
+    }
+    double[] after = org.robotrun.robot.JointConvention.kinematicToPendant(MotionRunnerTest.MODEL, q);
+    // Pendant J2 moved, pendant J3 (the forearm's angle from horizontal) did not.
+    assertThat(after[1] - before[1]).isGreaterThan(0.1);
+    assertThat(after[2]).isCloseTo(before[2], offset(1e-12));
+    for (int j : new int[] {0, 3, 4, 5}) {
+      assertThat(after[j]).isEqualTo(before[j]);
+    }
+  }
+
+  @Test
+  void jogOutToTheEdgeOfReachStopsWithAMessageWithoutOutrunningAJoint() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = start();
+    keys.keyDown(0, +1, JogState.Press.LATCHED);
+    JogResult r = new JogResult.Moving();
+    int ticks = 0;
+    while (!(r instanceof JogResult.Stopped) && ticks++ < 10_000) {
+      double[] before = q.clone();
+      r = jog.tick(q, keys, JogFrame.WORLD, 1, TOOL, Transform.IDENTITY, DT);
+      for (int j = 0; j < 6; j++) {
+        assertThat(Double.isFinite(q[j])).isTrue();
+        assertThat(Math.abs(q[j] - before[j]) / DT).isLessThanOrEqualTo(MotionRunnerTest.LIMITS.jointSpeed(j) * (1 + 1e-9));
+      }
+    }
+    assertThat(r).isInstanceOf(JogResult.Stopped.class);
+    assertThat(((JogResult.Stopped) r).message()).isNotBlank();
+    assertThat(keys.anyOn()).isFalse();
+    // It got far out before stopping (the LR Mate reaches about 700 mm).
+    assertThat(MotionRunnerTest.tcp(q).x()).isGreaterThan(500);
+  }
+
+  @Test
   void latchedKeysToggleSwitchAndCombine() {
     JogState keys = new JogState();
     keys.keyDown(0, +1, JogState.Press.LATCHED);

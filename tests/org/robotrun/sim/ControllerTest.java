@@ -272,4 +272,126 @@ class ControllerTest {
       sim.step();
     }
   }
+
+  static Program jointProgram(String name, String line2, double[]... positionsDeg) {
+    StringBuilder sb = new StringBuilder("/PROG  " + name + "\n/ATTR\n/MN\n   1:J P[1] 100% FINE ;\n   2:" + line2
+        + " ;\n/POS\n");
+    for (int k = 0; k < positionsDeg.length; k++) {
+      double[] j = positionsDeg[k];
+      sb.append(String.format(java.util.Locale.ROOT, "P[%d]{%n   GP1:%n\tUF : 1, UT : 1,%n"
+          + "\tJ1= %.3f deg,\tJ2= %.3f deg,\tJ3= %.3f deg,%n\tJ4= %.3f deg,\tJ5= %.3f deg,\tJ6= %.3f deg%n};%n",
+          k + 1, j[0], j[1], j[2], j[3], j[4], j[5]));
+    }
+    sb.append("/END\n");
+    LsReadResult r = LsReader.parse(name + ".LS", sb.toString());
+    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    return r.program();
+  }
+
+  @Test
+  void linearMoveThroughTheWristSingularityIsAnAlarmNamingTheLine() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(jointProgram("WRIST", "L P[2] 100mm/sec FINE", new double[] {0, 0, 0, 20, -8, 0},
+        new double[] {0, 0, 0, 20, 8, 0}));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "WRIST", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(MotionAlarms.SINGULARITY);
+    assertThat(a.line()).isEqualTo(2);
+    assertThat(a.message()).contains("wrist");
+    for (double v : c.jointsRad()) {
+      assertThat(Double.isFinite(v)).isTrue();
+    }
+  }
+
+  @Test
+  void jointTargetOutsideTheLimitsIsRefusedBeforeMoving() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(jointProgram("LIMIT", "J P[2] 50% FINE", new double[] {0, 0, 0, 0, -90, 0},
+        new double[] {0, 0, 0, 0, -140, 0}));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "LIMIT", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(MotionAlarms.JOINT_LIMIT);
+    assertThat(a.line()).isEqualTo(2);
+    assertThat(c.currentJoints().j5Deg()).isCloseTo(-90, offset(1e-9));
+  }
+
+  @Test
+  void abortWhileMovingDeceleratesThenEndsTheProgram() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(pickPlace());
+    c.run("PP", 1, true);
+    for (int i = 0; i < 150; i++) {
+      sim.step();
+    }
+    c.abort();
+    double[] prev = c.jointsRad();
+    double[] prevV = null;
+    int moving = 0;
+    for (int i = 0; i < 200; i++) {
+      sim.step();
+      double[] q = c.jointsRad();
+      double[] v = new double[6];
+      for (int j = 0; j < 6; j++) {
+        v[j] = (q[j] - prev[j]) / Simulation.DEFAULT_TICK_SEC;
+        if (prevV != null) {
+          // No velocity step: at most 5% of the joint's top speed per tick.
+          assertThat(Math.abs(v[j] - prevV[j])).isLessThan(0.05 * MODEL.joint(j).maxSpeedRadPerSec());
+        }
+      }
+      if (java.util.Arrays.stream(v).anyMatch(x -> x != 0)) {
+        moving++;
+      }
+      prevV = v;
+      prev = q;
+    }
+    assertThat(moving).isGreaterThan(3);
+    assertThat(c.busy()).isFalse();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.hasActiveAlarm()).isFalse();
+  }
+
+  @Test
+  void theToolHittingTheFloorIsACollisionAlarm() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("FLOOR", "UFRAME_NUM=1", "UTOOL_NUM=1", "PR[1,1]=480", "PR[1,3]=(-340)", "PR[1,4]=180",
+        "L PR[1] 200mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "FLOOR", 60, s -> {});
+    ControllerAlarm a = r.alarm().orElseThrow();
+    assertThat(a.code()).isEqualTo(Simulation.COLLISION_ALARM);
+    assertThat(a.line()).isEqualTo(6);
+    assertThat(a.message()).contains("robot1/tool").contains("floor");
+    // The floor is 330 mm below WORLD: the tip stopped there (to one tick of travel).
+    assertThat(c.tcpInWorld().z()).isBetween(-331.0, -329.0);
+    assertThat(sim.collisionEvents()).hasSize(1);
+    // The snapshot shows the tool in contact red.
+    var tool = sim.snapshot().scene().items().stream().filter(d -> d.name().equals("robot1/tool")).findFirst().orElseThrow();
+    assertThat(tool.color()).isEqualTo(Simulation.TOUCHING);
+  }
+
+  @Test
+  void anArmWithoutAClosedFormUsesTheNumericSolver() {
+    RobotModel m = MODEL;
+    RobotModel noOpw = new RobotModel(m.id() + "-numeric", m.displayName(), m.joints(), m.X_6F(), m.X_WB(), m.links(),
+        java.util.Optional.empty(), m.coupledJ3());
+    Controller c = DefaultCell.controller(noOpw);
+    Simulation sim = Simulation.of(c);
+    c.saveProgram(program("NUM", "J P[2:A] 50% FINE", "L P[3:B] 300mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "NUM", 60, s -> {});
+    assertThat(r.status()).as(r.alarm().map(ControllerAlarm::display).orElse("")).isEqualTo(HeadlessRun.Status.FINISHED);
+    assertThat(c.tcpInWorld().y()).isCloseTo(150, offset(0.01));
+  }
+
+  @Test
+  void headlessRunResumesAfterPause() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("PAUSING", "R[1]=1", "PAUSE", "R[1]=2"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "PAUSING", 10, s -> {});
+    assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
+    assertThat(c.registers().number(1)).isEqualTo(2);
+  }
 }
