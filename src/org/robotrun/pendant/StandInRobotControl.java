@@ -72,6 +72,11 @@ public final class StandInRobotControl implements RobotControl {
 
   private final FrameTeacher teacher;
 
+  /** As {@link #StandInRobotControl(FrameTeacher)} with no frame teaching ({@link FrameTeacher#NONE}). */
+  public StandInRobotControl() {
+    this(FrameTeacher.NONE);
+  }
+
   /**
    * An empty controller: no programs, registers zero, frames zero, robot at all joints 0;
    * frame teaching by {@code teacher}.
