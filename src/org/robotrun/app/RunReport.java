@@ -78,6 +78,12 @@ final class RunReport {
       } else {
         part.putNull("parent");
       }
+      String holder = sim.heldParts().get(o.name());
+      if (holder != null) {
+        part.put("heldBy", holder);
+      } else {
+        part.putNull("heldBy");
+      }
     }
     ArrayNode collisions = root.putArray("collisions");
     for (CollisionEvent e : sim.collisionEvents()) {

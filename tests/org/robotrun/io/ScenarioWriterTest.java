@@ -28,9 +28,8 @@ class ScenarioWriterTest {
     Files.write(src.resolve("meshes/tri.stl"), binaryTriangle());
     Files.writeString(src.resolve("PICK.LS"), "/PROG PICK\n/MN\n/END\n");
     String text = Files.readString(Path.of("scenarios/pick-and-place.json"))
-        .replace("\"registers\"", """
-            "programs": ["PICK.LS"], "mainProgram": "pick",
-              "registers\"""")
+        .replace("\"programs\": [\"programs/PICKPLACE.LS\"]", "\"programs\": [\"PICK.LS\"]")
+        .replace("\"mainProgram\": \"PICKPLACE\"", "\"mainProgram\": \"pick\"")
         .replace("\"objects\": [", """
             "objects": [
                 {"name": "bracket", "kind": "fixture", "shape": "mesh", "file": "meshes/tri.stl", "scale": 2,
