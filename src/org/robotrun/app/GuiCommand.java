@@ -76,7 +76,13 @@ public final class GuiCommand implements Callable<Integer> {
       if (sc != null) {
         sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
       }
-      w.setKeyHandler(new PendantKeyboard(pendant)::onKey);
+      PendantKeyboard keyboard = new PendantKeyboard(pendant);
+      w.setKeyHandler(keyboard::onKey);
+      w.setCharHandler(keyboard::onChar);
+      w.setFocusLostHandler(() -> {
+        keyboard.releaseAll();
+        pendantPanel.releaseLatched();
+      });
       double[] last = {0};
       w.run(t -> {
             // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.

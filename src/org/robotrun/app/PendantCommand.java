@@ -8,15 +8,19 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.io.FileFormatException;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
+import org.robotrun.io.LsWriter;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
 import org.robotrun.pendant.RobotControl;
 import org.robotrun.pendant.StandInRobotControl;
 import org.robotrun.program.Program;
+import org.robotrun.world.Scenario;
 import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -31,10 +35,12 @@ import picocli.CommandLine.Spec;
       "Run a .keys script on the teach pendant and print the LCD as text at every SHOW.",
       "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key,",
       "WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
-      "By default the pendant drives the simulation's controller for the default robot (the default cell:",
-      "HOME position, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD). --controller stand-in uses the stand-in",
-      "controller instead: the same program interpreter on a toy gantry arm, no robot kinematics.",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 2 bad option or malformed script (file:line)."
+      "By default the pendant drives the simulation's controller: the scenario's first robot, or without",
+      "--scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
+      "--controller stand-in uses the stand-in controller instead: the same program interpreter on a toy",
+      "gantry arm, no robot kinematics, no scenario.",
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write,",
+      "2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   @Option(names = "--keys", required = true, paramLabel = "FILE.keys", description = "The key script to run.")
@@ -48,8 +54,13 @@ public final class PendantCommand implements Callable<Integer> {
       description = "Which controller the pendant drives: sim (default) or stand-in.")
   String controller;
 
+  @Option(names = "--save", paramLabel = "DIR",
+      description = "After the script, write every program to DIR/NAME.LS (the directory must exist).")
+  Path saveDir;
+
   @Option(names = "--scenario", paramLabel = "FILE",
-      description = "Scenario to load first. Not supported by this build yet (no scenario loader): giving one is an error.")
+      description = "Scenario JSON to load first (its cell, frames, registers and programs; docs/scenario-format.md); "
+          + "the pendant drives its first robot. Default: the default cell.")
   Path scenario;
 
   @Spec
@@ -57,12 +68,8 @@ public final class PendantCommand implements Callable<Integer> {
 
   @Override
   public Integer call() {
-    if (scenario != null) {
-      if (!Files.isRegularFile(scenario)) {
-        throw new UserError("--scenario: no such file " + scenario);
-      }
-      throw new UserError("--scenario: this build cannot load scenarios yet (the scenario loader is not merged); "
-          + "run without --scenario");
+    if (saveDir != null && !Files.isDirectory(saveDir)) {
+      throw new UserError("--save: the directory " + saveDir + " does not exist");
     }
     List<String> lines;
     try {
@@ -76,20 +83,49 @@ public final class PendantCommand implements Callable<Integer> {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new UserError(bad.error().display());
     };
+    List<Path> programFiles = new java.util.ArrayList<>();
     RobotControl control = switch (controller) {
       case "sim" -> {
-        Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+        Simulation sim;
+        if (scenario != null) {
+          Scenario sc = ScenarioFiles.load(scenario);
+          try {
+            sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+          } catch (FileFormatException | IllegalArgumentException e) {
+            throw new UserError(scenario + ": " + e.getMessage());
+          }
+          programFiles.addAll(sc.programs());
+        } else {
+          sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+        }
+        // the pendant drives the scenario's first robot
         yield new SimRobotControl(sim, sim.controllers().get(0));
       }
-      case "stand-in" -> new StandInRobotControl();
+      case "stand-in" -> {
+        if (scenario != null) {
+          throw new UserError("--scenario needs the simulation controller (--controller sim)");
+        }
+        yield new StandInRobotControl();
+      }
       default -> throw new UserError("--controller: expected sim or stand-in, got '" + controller + "'");
     };
-    for (Path file : programs) {
+    programFiles.addAll(programs);
+    for (Path file : programFiles) {
       control.saveProgram(readProgram(file));
     }
     PrintWriter out = spec.commandLine().getOut();
     script.run(new Pendant(control, new LsLineParser()), text -> out.print(text));
     out.flush();
+    if (saveDir != null) {
+      for (String name : control.programNames()) {
+        Path file = saveDir.resolve(name + ".LS");
+        try {
+          LsWriter.write(control.program(name).orElseThrow(), file);
+        } catch (IOException e) {
+          throw new UserError("--save: cannot write " + file + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+        }
+      }
+    }
     return Main.EXIT_OK;
   }
 

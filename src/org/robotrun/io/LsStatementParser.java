@@ -477,6 +477,16 @@ final class LsStatementParser extends LsTokenCursor {
       String allowed = type == Motion.Type.J ? "%, sec or msec" : "mm/sec, cm/min, inch/min, deg/sec, sec or msec";
       throw error("speed unit " + unitText(unit) + " does not fit a " + type + " motion: expected " + allowed);
     }
+    // A constant speed out of range would only alarm at run time; say so when the file is read.
+    if (value instanceof Motion.SpeedConst c) {
+      String shown = FanucFormat.plain(c.value()) + unitText(unit);
+      if (!(c.value() > 0)) {
+        throw error("speed " + shown + ": expected a speed greater than 0");
+      }
+      if (unit == Motion.SpeedUnit.PERCENT && c.value() > 100) {
+        throw error("speed " + shown + ": expected 1..100%");
+      }
+    }
     return new Motion.Speed(value, unit);
   }
 

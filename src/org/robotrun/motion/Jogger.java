@@ -15,8 +15,9 @@ import org.robotrun.robot.RobotModel;
  * rotation {@link #ROTATION_JOG_RAD_PER_SEC}, times the override) and reach it with the
  * resolved-rate {@link PoseTracker}; because the desired pose is integrated, not the joint
  * rates, the TCP does not drift off the axis. Each axis ramps its speed up and down in
- * {@link #RAMP_SEC}. A jog that would pass a joint limit, or that needs joints faster than
- * their limits (a singularity), stops with a message and never jumps.
+ * {@link #RAMP_SEC}. Near a singularity, where the joints would have to outrun their speed
+ * limits, the jog slows down; a jog that would pass a joint limit, reach the wrist singularity or
+ * slow below {@link #MIN_SLOWDOWN} stops with a message, and never jumps.
  *
  * <p>Not thread-safe; one per controller.
  */
@@ -27,6 +28,8 @@ public final class Jogger {
   public static final double LINEAR_JOG_MM_PER_SEC = 250;
   /** Cartesian rotation jog speed at 100% override (rad/s): 60°/s. */
   public static final double ROTATION_JOG_RAD_PER_SEC = Math.toRadians(60);
+  /** Slowest a Cartesian jog may get near a singularity, as a fraction of its asked speed, before it stops. */
+  public static final double MIN_SLOWDOWN = 0.05;
   /** Time to reach full jog speed from rest and back (s). */
   public static final double RAMP_SEC = 0.1;
 
@@ -153,23 +156,40 @@ public final class Jogger {
       case USER -> X_WU;
       case TOOL -> X_WTdesired;
     };
-    Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
-    Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
-    Vec3 p = X_WTdesired.translationVector().plus(v_W.times(dtSec));
-    Transform want = Rotations.exp(w_W, dtSec).compose(X_WTdesired.withTranslation(0, 0, 0))
-        .withTranslation(p.x(), p.y(), p.z());
-    System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
-    boolean ok = tracker.track(qTry, want, X_FT, 1e-3, 1e-6);
-    double ratio = 0;
-    for (int i = 0; i < 6 && ok; i++) {
-      ok = Double.isFinite(qTry[i]);
-      ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
+    // Near a singularity the joints would have to outrun their limits: jog slower (down to 5% of
+    // the asked speed) rather than whip the wrist; below that, stop with a message.
+    double scale = 1;
+    boolean ok = false;
+    double ratio = Double.POSITIVE_INFINITY;
+    Transform want = X_WTdesired;
+    for (int attempt = 0; attempt < 4; attempt++) {
+      double h = dtSec * scale;
+      Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
+      Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
+      Vec3 p = X_WTdesired.translationVector().plus(v_W.times(h));
+      want = Rotations.exp(w_W, h).compose(X_WTdesired.withTranslation(0, 0, 0)).withTranslation(p.x(), p.y(), p.z());
+      System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
+      ok = tracker.track(qTry, want, X_FT, 1e-3, 1e-6);
+      ratio = 0;
+      for (int i = 0; i < 6 && ok; i++) {
+        ok = Double.isFinite(qTry[i]);
+        ratio = Math.max(ratio, Math.abs(qTry[i] - q[i]) / (limits.jointSpeed(i) * dtSec));
+      }
+      if (!ok || ratio <= 1) {
+        break;
+      }
+      scale *= 0.9 / ratio;
     }
-    if (!ok || ratio > 1 || MotionRunner.entersWristSingularity(q, qTry)) {
+    if (!ok || ratio > 1 || scale < MIN_SLOWDOWN || MotionRunner.entersWristSingularity(q, qTry)) {
       stop(keys);
       return new JogResult.Stopped(Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))
           ? String.format("stopped near the wrist singularity (J5 = %.1f deg): jog J5 in JOINT first", Math.toDegrees(q[4]))
           : "stopped: singularity or edge of reach");
+    }
+    if (scale < 1) {
+      for (int i = 0; i < 6; i++) {
+        speed[i] *= scale;
+      }
     }
     for (int i = 0; i < 6; i++) {
       if (!(qTry[i] >= chain.lower(i) && qTry[i] <= chain.upper(i))) {

@@ -22,8 +22,14 @@ import org.robotrun.robot.RobotModel;
  * TCP pose every tick and reach it with the resolved-rate {@link PoseTracker}; if that would
  * need a joint faster than its limit (near a singularity) the path slows down for that tick,
  * and if it cannot be followed at all the move fails with a {@link MotionFault} and the robot
- * stops where it is. Moves of different kinds (joint vs. Cartesian) or with different tools do
- * not blend: the next one starts when the previous has ended.
+ * stops where it is. Two Cartesian moves blend in Cartesian space (the rounded corner stays in
+ * the corner's plane); a joint and a Cartesian move blend in joint space (see
+ * {@link #blends}); Cartesian moves with different tools do not blend.
+ *
+ * <p>The lead space is the first active move's: joint lead sums joint displacements on
+ * {@code qBase}; Cartesian lead tracks the superimposed TCP pose into {@code qCart} and adds the
+ * joint displacements of joint moves blending in behind. Every step is checked against the joint
+ * speed limits and shrunk (the arm slows) if needed.
  *
  * <p>Time: the runner keeps its own simulated clock, advanced only by {@link #tick}. Override
  * and HOLD scale the rate at which path time runs (ramped, so the arm never jumps).

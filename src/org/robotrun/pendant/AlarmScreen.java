@@ -16,7 +16,7 @@ final class AlarmScreen implements Screen {
   @Override
   public List<String> body(Pendant p) {
     List<String> rows = new ArrayList<>();
-    p.control().activeAlarm().ifPresent(a -> rows.add(" ACTIVE: " + a.display()));
+    p.control().activeAlarm().ifPresent(a -> Lcd.wrap("ACTIVE: " + a.display(), Lcd.WIDTH - 2).forEach(r -> rows.add(" " + r)));
     rows.add(" History:");
     List<AlarmEntry> h = p.control().alarmHistory();
     if (h.isEmpty()) {

@@ -141,6 +141,10 @@ final class EditScreen implements Screen {
       return;
     }
     List<Field> fs = fields(p, prog, cur);
+    if (field >= fs.size() || field >= 0 && !fs.get(field).editable()) {
+      // the line changed under the cursor (undo, paste, another screen): back to its number
+      field = -1;
+    }
     switch (k) {
       case UP -> move(p, p.shift() ? -Lcd.BODY_ROWS : -1);
       case DOWN -> move(p, p.shift() ? Lcd.BODY_ROWS : 1);
@@ -201,12 +205,13 @@ final class EditScreen implements Screen {
           p.undo(programName);
         } else if (field < 0 && cur <= prog.lineCount() && prog.line(cur) instanceof Instruction.Move m) {
           p.choose("Motion option", InstMenu.MOTION_OPTIONS, i -> {
-            if (p.editProgram(programName, pr -> replaceLine(pr, cur, TpLine.withOption(m, m.options().size(),
+            if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, TpLine.withOption(m, m.options().size(),
                 InstMenu.motionOption(i))))) {
               p.message("Option added");
             }
           });
-        } else if (field >= 0 && !fs.get(field).edit().choices().isEmpty()) {
+        } else if (field >= 0 && field < fs.size()
+            && fs.get(field).edit().map(e -> !e.choices().isEmpty()).orElse(false)) {
           editField(p, prog, cur, fs, null);
         } else {
           p.message("[CHOICE]: put the cursor on a field with choices (or a motion line number for options)");
@@ -261,25 +266,30 @@ final class EditScreen implements Screen {
       p.message(cur > prog.lineCount() ? "[End]: insert with POINT or [INST]" : "Move RIGHT onto a field to edit it");
       return;
     }
-    Field.Edit edit = fs.get(field).edit();
+    Optional<Field.Edit> maybe = fs.get(field).edit();
+    if (maybe.isEmpty()) {
+      p.message("This text is fixed: move RIGHT onto a field");
+      return;
+    }
+    Field.Edit edit = maybe.get();
     int keep = field;
     if (typed == null && !edit.choices().isEmpty()) {
       p.choose(fs.get(field).text(), edit.choices(), i -> {
-        if (p.editProgram(programName, pr -> replaceLine(pr, cur, edit.choose().apply(i)))) {
+        if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, edit.choose().apply(i)))) {
           field = Math.min(keep, fields(p, program(p), cur).size() - 1);
           adjustPositions(p, cur);
         }
       });
       return;
     }
-    if (edit.entry() == null) {
+    if (edit.entry().isEmpty()) {
       p.message("Choose with ENTER or [CHOICE]");
       return;
     }
     p.entryOrTyped("Enter value:", typed, edit.initial(), false, t -> {
       try {
-        Instruction changed = edit.entry().apply(t);
-        if (p.editProgram(programName, pr -> replaceLine(pr, cur, changed))) {
+        Instruction changed = edit.entry().get().apply(t);
+        if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, changed))) {
           field = Math.min(keep, fields(p, program(p), cur).size() - 1);
         }
         return Optional.empty();
@@ -298,29 +308,9 @@ final class EditScreen implements Screen {
     }
   }
 
-  static Program replaceLine(Program prog, int n, Instruction in) {
-    List<Instruction> lines = new ArrayList<>(prog.lines());
-    lines.set(n - 1, in);
-    return with(prog, lines, prog.positions());
-  }
-
-  static Program with(Program prog, List<Instruction> lines, Map<Integer, LocalPosition> positions) {
-    return new Program(prog.name(), prog.attributes(), prog.comment(), lines, positions);
-  }
-
   /** Inserts {@code add} before line {@code at} (a blank line at {@code at} is replaced). */
   private boolean insert(Pendant p, int at, List<Instruction> add, Map<Integer, LocalPosition> newPositions) {
-    return p.editProgram(programName, pr -> {
-      List<Instruction> lines = new ArrayList<>(pr.lines());
-      int idx = Math.min(at - 1, lines.size());
-      if (idx < lines.size() && lines.get(idx) instanceof Instruction.Blank) {
-        lines.remove(idx);
-      }
-      lines.addAll(idx, add);
-      Map<Integer, LocalPosition> pos = new LinkedHashMap<>(pr.positions());
-      pos.putAll(newPositions);
-      return with(pr, lines, pos);
-    });
+    return p.editProgram(programName, pr -> ProgramEdits.insert(pr, at, add, newPositions));
   }
 
   // ---- POINT / TOUCHUP / POSITION ---------------------------------------------------------
@@ -355,7 +345,7 @@ final class EditScreen implements Screen {
   /** Records the current position as a new P[n] and inserts a motion line after the cursor. */
   private void point(Pendant p, DefaultMotion motion) {
     Program prog = program(p);
-    int n = nextPositionNumber(prog);
+    int n = ProgramEdits.nextPositionNumber(prog);
     int uf = p.control().activeFrame(FrameKind.USER);
     int ut = p.control().activeFrame(FrameKind.TOOL);
     Position.Cartesian here = p.control().currentPose(uf, ut);
@@ -373,24 +363,6 @@ final class EditScreen implements Screen {
       field = -1;
       p.message("Position recorded to P[" + n + "]");
     }
-  }
-
-  static int nextPositionNumber(Program prog) {
-    int max = 0;
-    for (int k : prog.positions().keySet()) {
-      max = Math.max(max, k);
-    }
-    for (Instruction in : prog.lines()) {
-      if (in instanceof Instruction.Move m) {
-        max = Math.max(max, localNumber(m.target()));
-        max = Math.max(max, m.circularEnd().map(EditScreen::localNumber).orElse(0));
-      }
-    }
-    return max + 1;
-  }
-
-  private static int localNumber(Motion.Target t) {
-    return t instanceof Motion.Local l ? l.number() : 0;
   }
 
   private Optional<Motion.Target> targetUnderCursor(Program prog, int cur) {
@@ -421,7 +393,7 @@ final class EditScreen implements Screen {
         if (p.editProgram(programName, pr -> {
           Map<Integer, LocalPosition> pos2 = new LinkedHashMap<>(pr.positions());
           pos2.put(l.number(), new LocalPosition(l.number(), comment, uf, ut, pos));
-          return with(pr, pr.lines(), pos2);
+          return ProgramEdits.with(pr, pr.lines(), pos2);
         })) {
           p.message("Position has been recorded to P[" + l.number() + "]");
         }
@@ -501,15 +473,7 @@ final class EditScreen implements Screen {
           if (n.isEmpty()) {
             return Optional.of("Insert: enter 1 to 99 lines, got '" + t.trim() + "'");
           }
-          List<Instruction> blanks = new ArrayList<>();
-          for (int b = 0; b < n.get(); b++) {
-            blanks.add(new Instruction.Blank());
-          }
-          p.editProgram(programName, pr -> {
-            List<Instruction> lines = new ArrayList<>(pr.lines());
-            lines.addAll(Math.min(cur - 1, lines.size()), blanks);
-            return with(pr, lines, pr.positions());
-          });
+          p.editProgram(programName, pr -> ProgramEdits.insertBlanks(pr, cur, n.get()));
           p.message(n.get() + " line(s) inserted");
           return Optional.empty();
         });
@@ -570,11 +534,7 @@ final class EditScreen implements Screen {
   }
 
   private void deleteLines(Pendant p, int from, int to) {
-    p.editProgram(programName, pr -> {
-      List<Instruction> lines = new ArrayList<>(pr.lines());
-      lines.subList(from - 1, to).clear();
-      return with(pr, lines, pr.positions());
-    });
+    p.editProgram(programName, pr -> ProgramEdits.delete(pr, from, to));
   }
 
   private void paste(Pendant p) {
@@ -583,46 +543,12 @@ final class EditScreen implements Screen {
       return;
     }
     p.choose("Paste", List.of("As is (same positions)", "New position numbers", "Reverse order"), mode -> {
-      Program prog = program(p);
       int at = cursorLine(p);
-      List<Instruction> add = new ArrayList<>(p.clipboard);
-      Map<Integer, LocalPosition> newPos = new HashMap<>();
-      if (mode == 2) {
-        java.util.Collections.reverse(add);
-      }
-      if (mode == 1) {
-        int next = nextPositionNumber(prog);
-        for (int i = 0; i < add.size(); i++) {
-          if (add.get(i) instanceof Instruction.Move m) {
-            Motion.Target t = m.target();
-            Optional<Motion.Target> end = m.circularEnd();
-            if (t instanceof Motion.Local l) {
-              copyPosition(prog, l.number(), next, newPos);
-              t = new Motion.Local(next++, l.comment());
-            }
-            if (end.isPresent() && end.get() instanceof Motion.Local l) {
-              copyPosition(prog, l.number(), next, newPos);
-              end = Optional.of(new Motion.Local(next++, l.comment()));
-            }
-            add.set(i, new Instruction.Move(m.type(), t, end, m.speed(), m.termination(), m.options()));
-          }
-        }
-      }
-      if (p.editProgram(programName, pr -> {
-        List<Instruction> lines = new ArrayList<>(pr.lines());
-        lines.addAll(Math.min(at - 1, lines.size()), add);
-        Map<Integer, LocalPosition> pos = new LinkedHashMap<>(pr.positions());
-        pos.putAll(newPos);
-        return with(pr, lines, pos);
-      })) {
-        p.message(add.size() + " line(s) pasted");
+      List<Instruction> clip = p.clipboard;
+      if (p.editProgram(programName, pr -> ProgramEdits.paste(pr, at, clip, ProgramEdits.PasteMode.values()[mode]))) {
+        p.message(clip.size() + " line(s) pasted");
       }
     });
-  }
-
-  private static void copyPosition(Program prog, int from, int to, Map<Integer, LocalPosition> out) {
-    prog.position(from).ifPresent(lp -> out.put(to, new LocalPosition(to, lp.comment(), lp.userFrame(),
-        lp.toolFrame(), lp.position())));
   }
 
   private void find(Pendant p) {
@@ -655,94 +581,25 @@ final class EditScreen implements Screen {
       String from = what.trim();
       findText = from;
       p.entry("Replace '" + from + "' with:", "", false, with -> {
-        int[] counts = new int[2];
-        p.editProgram(programName, pr -> replaceAll(p, pr, from, with.trim(), counts));
-        return Optional.of(counts[0] + " field(s) replaced" + (counts[1] > 0 ? ", " + counts[1] + " not valid there" : ""));
+        ProgramEdits.Replaced[] done = new ProgramEdits.Replaced[1];
+        p.editProgram(programName, pr -> {
+          done[0] = ProgramEdits.replaceAll(pr, from, with.trim(), p.control().programNames());
+          return done[0].program();
+        });
+        if (done[0] == null) {
+          return Optional.empty();
+        }
+        return Optional.of(done[0].replaced() + " field(s) replaced"
+            + (done[0].refused() > 0 ? ", " + done[0].refused() + " not valid there" : ""));
       });
       return Optional.empty();
     });
   }
 
-  /** Replaces {@code from} by {@code to} in every editable field, through the field's own entry. */
-  private static Program replaceAll(Pendant p, Program pr, String from, String to, int[] counts) {
-    List<Instruction> lines = new ArrayList<>(pr.lines());
-    for (int n = 0; n < lines.size(); n++) {
-      Program view = with(pr, lines, pr.positions());
-      List<Field> fs = TpLine.fields(lines.get(n), view, p.control().programNames());
-      for (int f = 0; f < fs.size(); f++) {
-        Field fd = fs.get(f);
-        if (fd.edit() == null || fd.edit().entry() == null || !fd.text().contains(from)) {
-          continue;
-        }
-        Instruction changed = null;
-        for (String candidate : List.of(fd.text().replace(from, to), fd.edit().initial().replace(from, to))) {
-          try {
-            changed = fd.edit().entry().apply(candidate);
-            break;
-          } catch (BadText e) {
-            // try the next form of the field's text
-          }
-        }
-        if (changed == null) {
-          counts[1]++;
-        } else {
-          counts[0]++;
-          lines.set(n, changed);
-          fs = TpLine.fields(changed, view, p.control().programNames());
-        }
-      }
-    }
-    return with(pr, lines, pr.positions());
-  }
-
   /** Renumbers P[] in the order the lines use them (1, 2, 3…). */
   private void renumber(Pendant p) {
-    boolean changed = p.editProgram(programName, pr -> {
-      Map<Integer, Integer> map = new LinkedHashMap<>();
-      for (Instruction in : pr.lines()) {
-        if (in instanceof Instruction.Move m) {
-          for (Motion.Target t : targets(m)) {
-            if (t instanceof Motion.Local l) {
-              map.putIfAbsent(l.number(), map.size() + 1);
-            }
-          }
-        } else if (in instanceof Instruction.AssignPosReg a && a.source() instanceof Instruction.FromLocal l) {
-          map.putIfAbsent(l.number(), map.size() + 1);
-        }
-      }
-      for (int k : pr.positions().keySet()) {
-        map.putIfAbsent(k, map.size() + 1);
-      }
-      List<Instruction> lines = new ArrayList<>();
-      for (Instruction in : pr.lines()) {
-        lines.add(switch (in) {
-          case Instruction.Move m -> new Instruction.Move(m.type(), renumbered(m.target(), map),
-              m.circularEnd().map(t -> renumbered(t, map)), m.speed(), m.termination(), m.options());
-          case Instruction.AssignPosReg a when a.source() instanceof Instruction.FromLocal l ->
-              new Instruction.AssignPosReg(a.register(), new Instruction.FromLocal(map.get(l.number()), l.comment()));
-          default -> in;
-        });
-      }
-      Map<Integer, LocalPosition> pos = new LinkedHashMap<>();
-      pr.positions().values().stream().sorted(java.util.Comparator.comparing(lp -> map.get(lp.number())))
-          .forEach(lp -> {
-            int n = map.get(lp.number());
-            pos.put(n, new LocalPosition(n, lp.comment(), lp.userFrame(), lp.toolFrame(), lp.position()));
-          });
-      return with(pr, lines, pos);
-    });
+    boolean changed = p.editProgram(programName, ProgramEdits::renumber);
     p.message(changed ? "Positions renumbered" : "Positions already in order");
-  }
-
-  private static List<Motion.Target> targets(Instruction.Move m) {
-    List<Motion.Target> t = new ArrayList<>();
-    t.add(m.target());
-    m.circularEnd().ifPresent(t::add);
-    return t;
-  }
-
-  private static Motion.Target renumbered(Motion.Target t, Map<Integer, Integer> map) {
-    return t instanceof Motion.Local l ? new Motion.Local(map.get(l.number()), l.comment()) : t;
   }
 
   private void toggleComment(Pendant p, Program prog, int cur) {
@@ -762,7 +619,7 @@ final class EditScreen implements Screen {
         return;
       }
       Instruction restored = back.get();
-      if (p.editProgram(programName, pr -> replaceLine(pr, cur, restored))) {
+      if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, restored))) {
         p.message("Line " + cur + " uncommented");
       }
       return;
@@ -773,7 +630,7 @@ final class EditScreen implements Screen {
     }
     String text = TpLine.text(in, prog, p.control().programNames());
     p.commentMemo.put(key + text, in);
-    if (p.editProgram(programName, pr -> replaceLine(pr, cur, new Instruction.CommentedOut(text)))) {
+    if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, new Instruction.CommentedOut(text)))) {
       p.message("Line " + cur + " commented out");
     }
   }

@@ -113,13 +113,39 @@ public final class ExprText {
   public static Item parseItem(String kind, String text) throws BadText {
     String t = text.trim();
     if (!t.isEmpty() && Character.isDigit(t.charAt(0))) {
-      return new Item(parseIndex(t), "");
+      Item item = new Item(parseIndex(t), "");
+      checkRange(kind, item.index());
+      return item;
     }
     Parser p = new Parser(t);
     p.expectWord(kind);
-    Item item = p.bracketItem();
+    Item item = p.bracketItem(kind);
     p.expectEnd();
     return item;
+  }
+
+  /** Highest index of each table (Registers' sizes), for entry checks. */
+  private static int size(String kind) {
+    return switch (kind) {
+      case "R" -> org.robotrun.program.Registers.R_COUNT;
+      case "PR" -> org.robotrun.program.Registers.PR_COUNT;
+      case "TIMER" -> org.robotrun.program.Registers.TIMER_COUNT;
+      case "F" -> org.robotrun.program.Registers.FLAG_COUNT;
+      case "DI", "DO", "RI", "RO", "GI", "GO" -> org.robotrun.program.Registers.IO_COUNT;
+      default -> Integer.MAX_VALUE;
+    };
+  }
+
+  /** A direct index outside its table is refused at entry (the controller would alarm at run time). */
+  private static void checkRange(String kind, Index i) throws BadText {
+    int n = switch (i) {
+      case Index.Direct d -> d.value();
+      case Index.Indirect r -> r.register();
+    };
+    String table = i instanceof Index.Indirect ? "R" : kind;
+    if (n < 1 || n > size(table)) {
+      throw new BadText(table + "[" + n + "]: index out of range (1.." + size(table) + ")");
+    }
   }
 
   private static final class Parser {
@@ -267,12 +293,13 @@ public final class ExprText {
         }
         case "R" -> {
           pos += 1;
-          return new Expr.Register(bracketItem());
+          return new Expr.Register(bracketItem("R"));
         }
         case "PR" -> {
           pos += 2;
           expect("[");
           Index i = index();
+          checkRange("PR", i);
           expect(",");
           int element = integer();
           if (element < 1 || element > 6) {
@@ -284,7 +311,7 @@ public final class ExprText {
         }
         case "TIMER" -> {
           pos += 5;
-          return new Expr.Timer(bracketItem());
+          return new Expr.Timer(bracketItem("TIMER"));
         }
         case "AR" -> {
           pos += 2;
@@ -297,7 +324,7 @@ public final class ExprText {
           for (IoKind k : IoKind.values()) {
             if (w.equals(k.name())) {
               pos += w.length();
-              return new Expr.Io(k, bracketItem());
+              return new Expr.Io(k, bracketItem(k.name()));
             }
           }
           throw error("a number, ON/OFF, R[i], PR[i,j], DI/DO/RI/RO/GI/GO/F[i], TIMER[i], AR[i] or (");
@@ -339,10 +366,11 @@ public final class ExprText {
       }
     }
 
-    /** {@code [index(:comment)]}. */
-    Item bracketItem() throws BadText {
+    /** {@code [index(:comment)]} of table {@code kind}, range-checked. */
+    Item bracketItem(String kind) throws BadText {
       expect("[");
       Index i = index();
+      checkRange(kind, i);
       String comment = commentIfAny();
       expect("]");
       return new Item(i, comment);

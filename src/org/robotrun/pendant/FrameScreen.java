@@ -66,11 +66,11 @@ final class FrameScreen implements Screen {
 
   private List<String> listBody(Pendant p) {
     List<String> rows = new ArrayList<>();
-    rows.add("      X        Y        Z       W      P      R    Comment");
+    rows.add("      X       Y       Z      W      P      R   Comment");
     int active = p.control().activeFrame(kind);
     for (int n = 1; n <= FRAMES; n++) {
       Position.Cartesian f = p.control().frame(kind, n);
-      rows.add((n == number() ? ">" : " ") + String.format(Locale.ROOT, "%2d%s%8.1f %8.1f %8.1f %6.1f %6.1f %6.1f  %s", n,
+      rows.add((n == number() ? ">" : " ") + String.format(Locale.ROOT, "%2d%s%7.1f %7.1f %7.1f %6.1f %6.1f %6.1f %s", n,
           n == active ? "*" : " ", f.xMm(), f.yMm(), f.zMm(), f.wDeg(), f.pDeg(), f.rDeg(), p.control().frameComment(kind, n)));
     }
     return rows;
@@ -100,7 +100,9 @@ final class FrameScreen implements Screen {
     }
     String res = results.get(key());
     if (res != null) {
-      rows.add(" " + res);
+      for (String r : Lcd.wrap(res, Lcd.WIDTH - 2)) {
+        rows.add(" " + r);
+      }
     }
     return rows;
   }

@@ -77,6 +77,8 @@ final class IoScreen implements Screen {
         } else if (k == Key.ENTER) {
           boolean on = !p.control().registers().bit(kind, n);
           p.control().registers().setBit(kind, n, on);
+        } else {
+          p.message("I/O: F1 [TYPE], F4 ON / F5 OFF (ENTER toggles), a number for GI/GO");
         }
       }
     }

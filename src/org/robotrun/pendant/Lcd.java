@@ -67,6 +67,31 @@ public record Lcd(List<String> rows) {
     return one.length() >= WIDTH ? one.substring(0, WIDTH) : one + " ".repeat(WIDTH - one.length());
   }
 
+  /** {@code text} broken at spaces into rows of at most {@code width} characters (a long word is cut). */
+  static List<String> wrap(String text, int width) {
+    List<String> out = new ArrayList<>();
+    StringBuilder line = new StringBuilder();
+    for (String word : text.split(" ")) {
+      while (word.length() > width) {
+        if (line.length() > 0) {
+          out.add(line.toString());
+          line.setLength(0);
+        }
+        out.add(word.substring(0, width));
+        word = word.substring(width);
+      }
+      if (line.length() > 0 && line.length() + 1 + word.length() > width) {
+        out.add(line.toString());
+        line.setLength(0);
+      }
+      line.append(line.length() > 0 ? " " : "").append(word);
+    }
+    if (line.length() > 0) {
+      out.add(line.toString());
+    }
+    return out;
+  }
+
   /** Row {@code i} (0-based). */
   public String row(int i) {
     return rows.get(i);
@@ -100,6 +125,25 @@ public record Lcd(List<String> rows) {
   /** The row the cursor is on (the body row starting with {@code >}), if any. */
   public java.util.Optional<String> cursorRow() {
     return body().stream().filter(r -> r.startsWith(">")).findFirst();
+  }
+
+  /**
+   * Where the field under the cursor is drawn, for a UI that shows it in inverse video: the LCD
+   * row and the columns of the braces around it ({@code openCol} holds '{', {@code closeCol} '}').
+   */
+  public record FieldSpan(int row, int openCol, int closeCol) {}
+
+  /** The braced field on the cursor row, if the cursor sits on one. */
+  public java.util.Optional<FieldSpan> cursorField() {
+    for (int r = 3; r < 3 + BODY_ROWS; r++) {
+      String row = rows.get(r);
+      if (row.startsWith(">")) {
+        int open = row.indexOf('{');
+        int close = open < 0 ? -1 : row.indexOf('}', open);
+        return close < 0 ? java.util.Optional.empty() : java.util.Optional.of(new FieldSpan(r, open, close));
+      }
+    }
+    return java.util.Optional.empty();
   }
 
   /** The whole screen, framed, one row per line, trailing blanks kept so columns line up. */

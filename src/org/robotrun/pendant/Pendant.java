@@ -25,9 +25,9 @@ import org.robotrun.program.Program;
  * and forwards keys; scripts and tests do the same with {@code .keys} files.
  *
  * <p>SHIFT works held ({@link #press}/{@link #release}) and toggled (a SHIFT press and release
- * with no other key between latches it on or off). SHIFT is also the deadman: jog keys move the
- * robot only while it is on. Every error the operator can cause ends as a message on the prompt
- * line; no key throws.
+ * with no other key and no time between latches it on or off). SHIFT is also the deadman: jog
+ * keys move the robot only while it is on, and releasing it stops jogging. Every error the
+ * operator can cause ends as a message on the prompt line; no key throws.
  */
 public final class Pendant {
   /** Undo depth of the program editor (the issue asks for at least 50). */
@@ -162,6 +162,10 @@ public final class Pendant {
 
   /** Advances simulated time; the EDIT cursor follows the executing line as it goes. */
   public void advance(double dtSec) {
+    if (shiftHeld && dtSec > 0) {
+      // SHIFT held through time is a hold, not a tap: its release must not toggle the latch
+      keySinceShiftPress = true;
+    }
     double left = dtSec;
     while (left > 1e-12) {
       double dt = Math.min(FOLLOW_SLICE_SEC, left);
@@ -169,6 +173,14 @@ public final class Pendant {
       left -= dt;
       followExecution();
     }
+  }
+
+  /**
+   * Whether a text or number entry is open on the prompt line, so that typed characters go to
+   * it (a keyboard front end then sends letters as text instead of as jog keys).
+   */
+  public boolean entryOpen() {
+    return modal instanceof Modal.Entry;
   }
 
   /** Whether SHIFT is on (held or latched). */
@@ -271,7 +283,9 @@ public final class Pendant {
   }
 
   private void run(boolean forward) {
-    String name = selectedProgram;
+    // the program in the editor (a callee the cursor followed into), else the selected one
+    String name = !editScreen.programName.isEmpty() && control.program(editScreen.programName).isPresent()
+        ? editScreen.programName : selectedProgram;
     if (!shift()) {
       message = "Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run";
       return;
@@ -299,8 +313,18 @@ public final class Pendant {
 
   private void followExecution() {
     ExecutionStatus st = control.status();
-    // follow while a program is active, and once more when it stops (so the cursor ends where it ended)
+    // follow only when execution moved (so a paused program's cursor can be moved by the operator),
+    // and once more when it stops (so the cursor ends where it ended)
+    if (st.equals(lastFollowed)) {
+      return;
+    }
     boolean justStopped = st.state() == ExecState.IDLE && lastFollowed != null && lastFollowed.state() != ExecState.IDLE;
+    boolean active = st.state() == ExecState.RUNNING || st.state() == ExecState.PAUSED;
+    if (active && !editScreen.programName.isEmpty() && !st.program().equals(editScreen.programName)
+        && control.program(st.program()).isPresent()) {
+      // into a CALLed program and back out: the editor shows the program that executes
+      editScreen.open(this, st.program());
+    }
     if ((st.state() != ExecState.IDLE || justStopped) && st.program().equals(editScreen.programName) && st.line() > 0) {
       editScreen.follow(this, st.line());
     }

@@ -53,6 +53,7 @@ public final class StandInRobotControl implements RobotControl {
 
   private Position.Joint joints = Position.Joint.ZERO;
   private int overridePct = 100;
+  private double pendingSec;
   private boolean aborted;
   private AlarmEntry ownAlarm;
   private Alarm reportedAlarm;
@@ -396,6 +397,7 @@ public final class StandInRobotControl implements RobotControl {
       interpreter.select(program);
       interpreter.setCursor(line);
     } else if (interpreter.cursorLine() != line) {
+      // a paused program moves on from the cursor line, as on the controller
       interpreter.setCursor(line);
     }
     aborted = false;
@@ -501,9 +503,10 @@ public final class StandInRobotControl implements RobotControl {
     if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
       throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);
     }
-    // whole ticks; a remainder under half a tick is dropped so WAIT 2.5 means 625 ticks
-    long ticks = Math.round(dtSec / TICK_SEC);
-    for (long i = 0; i < ticks; i++) {
+    // whole ticks; a remainder under one tick carries over to the next call
+    pendingSec += dtSec;
+    while (pendingSec >= TICK_SEC - 1e-12) {
+      pendingSec -= TICK_SEC;
       if (jogging()) {
         jogTick(TICK_SEC);
       }

@@ -41,8 +41,9 @@ public final class TpLine {
         f.add(posSourceField(a));
       }
       case Instruction.AssignPosElement a -> {
-        f.add(new Field("PR[" + ExprText.index(a.register().index()) + "," + a.element() + "]",
-            Field.Edit.entry("PR[" + ExprText.index(a.register().index()) + "," + a.element() + "]", t -> {
+        String target = ExprText.format(new Expr.PosElement(a.register(), a.element()));
+        f.add(new Field(target,
+            Field.Edit.entry(target, t -> {
               Expr e = ExprText.parse(t);
               if (!(e instanceof Expr.PosElement pe)) {
                 throw new BadText("expected PR[i,j]");
@@ -136,7 +137,9 @@ public final class TpLine {
       case Instruction.WaitTime w -> {
         f.add(Field.fixed("WAIT "));
         boolean constant = w.seconds() instanceof Expr.IntConst || w.seconds() instanceof Expr.RealConst;
-        String shown = constant ? String.format(Locale.ROOT, "%.2f", number(w.seconds())) : ExprText.format(w.seconds());
+        // FANUC shows a constant wait with two decimals and no leading zero: WAIT .20(sec)
+        String shown = constant ? String.format(Locale.ROOT, "%.2f", number(w.seconds())).replaceFirst("^(-?)0\\.", "$1.")
+            : ExprText.format(w.seconds());
         f.add(new Field(shown, Field.Edit.entry(shown, t -> new Instruction.WaitTime(ExprText.parse(t)))));
         if (constant) {
           f.add(Field.fixed("(sec)"));
@@ -145,7 +148,8 @@ public final class TpLine {
       case Instruction.WaitCondition w -> {
         f.add(Field.fixed("WAIT "));
         f.add(exprField(w.condition(), e -> new Instruction.WaitCondition(e, w.timeoutLabel())));
-        String shown = w.timeoutLabel().map(l -> " TIMEOUT," + ExprText.label(l)).orElse(" (no timeout)");
+        // no timeout: an empty field the cursor can still reach to add one
+        String shown = w.timeoutLabel().map(l -> " TIMEOUT," + ExprText.label(l)).orElse("");
         f.add(new Field(shown, Field.Edit.both(List.of("no timeout", "TIMEOUT,LBL[...]"),
             k -> new Instruction.WaitCondition(w.condition(),
                 k == 0 ? Optional.empty() : Optional.of(w.timeoutLabel().orElse(LabelRef.of(1)))),
@@ -176,7 +180,8 @@ public final class TpLine {
         f.add(Field.fixed("="));
         f.add(new Field("PULSE", Field.Edit.choice(List.of("ON", "OFF", "PULSE"), k -> k == 2 ? p
             : new Instruction.SetIo(p.kind(), p.port(), new Expr.OnOff(k == 0)))));
-        String width = p.widthSec().isPresent() ? "," + ExprText.plain(p.widthSec().getAsDouble()) + "sec" : ",(default)";
+        // no width ($DEFPULSE applies): an empty field the cursor can still reach to add one
+        String width = p.widthSec().isPresent() ? "," + ExprText.plain(p.widthSec().getAsDouble()) + "sec" : "";
         f.add(new Field(width, Field.Edit.entry(p.widthSec().isPresent() ? ExprText.plain(p.widthSec().getAsDouble()) : "",
             t -> new Instruction.Pulse(p.kind(), p.port(),
                 t.isBlank() ? OptionalDouble.empty() : OptionalDouble.of(positive(t))))));

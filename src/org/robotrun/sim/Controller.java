@@ -300,7 +300,8 @@ public final class Controller implements MotionPort {
 
   /** A Cartesian position in the given frames as joints (its CONFIG), or why it has none. */
   public IkResult toJoints(Position.Cartesian pose, int userFrame, int toolFrame) {
-    return resolver.jointsOf(pose, frames.transform(FrameKind.USER, userFrame), frames.transform(FrameKind.TOOL, toolFrame));
+    return resolver.jointsOf(pose, frames.transform(FrameKind.USER, userFrame), frames.transform(FrameKind.TOOL, toolFrame),
+        runner.joints());
   }
 
   /** Joints as a Cartesian position of {@code toolFrame} in {@code userFrame}. */

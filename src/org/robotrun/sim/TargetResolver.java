@@ -17,6 +17,7 @@ import org.robotrun.robot.ClosedFormIk;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.JointConvention;
+import org.robotrun.robot.NumericIk;
 import org.robotrun.robot.RobotModel;
 
 /**
@@ -32,13 +33,21 @@ import org.robotrun.robot.RobotModel;
  */
 final class TargetResolver {
   private final RobotModel model;
-  private final ClosedFormIk ik;
+  /** The closed form where the arm has OPW geometry (CONFIG honoured), else the numeric solver (nearest solution). */
+  private final Optional<ClosedFormIk> ik;
+  private final NumericIk numeric;
   private final Transform X_BW;
 
   TargetResolver(RobotModel model) {
     this.model = model;
-    this.ik = new ClosedFormIk(model);
+    this.ik = model.opw().map(p -> new ClosedFormIk(model));
+    this.numeric = new NumericIk(model);
     this.X_BW = model.X_WB().inverse();
+  }
+
+  /** Joints for a flange pose in B: in {@code config} with the closed form, else nearest to {@code q}. */
+  private IkResult solve(Transform X_BF, Config config, double[] q) {
+    return ik.isPresent() ? ik.get().solve(X_BF, robotConfig(config)) : numeric.solve(X_BF, q);
   }
 
   /** A resolved move or the reason it cannot run. */
@@ -88,7 +97,7 @@ final class TargetResolver {
           qTarget = j.q();
         } else {
           Target.Pose p = (Target.Pose) target;
-          IkResult res = ik.solve(X_BW.compose(p.X_WT()).compose(X_FT.inverse()), robotConfig(p.config()));
+          IkResult res = solve(X_BW.compose(p.X_WT()).compose(X_FT.inverse()), p.config(), q);
           if (res instanceof IkResult.Unreachable u) {
             return refuse(u.reason() == IkResult.Reason.JOINT_LIMIT ? MotionAlarms.JOINT_LIMIT : MotionAlarms.UNREACHABLE,
                 wp.name() + ": " + u.message());
@@ -206,17 +215,18 @@ final class TargetResolver {
   /** LPOS: the TCP of {@code X_FT} in the user frame {@code X_WU}, with the current CONFIG. */
   Position.Cartesian lpos(double[] q, Transform X_WU, Transform X_FT) {
     Transform X_UT = X_WU.inverse().compose(tcp(q, X_FT));
-    return Position.Cartesian.of(Xyzwpr.fromTransform(X_UT), programConfig(ik.configOf(q)));
+    Config config = ik.map(k -> programConfig(k.configOf(q))).orElse(Config.DEFAULT);
+    return Position.Cartesian.of(Xyzwpr.fromTransform(X_UT), config);
   }
 
   Position.Cartesian cartesianOf(Position.Joint j, Transform X_WU, Transform X_FT) {
     return lpos(kinematicOf(j), X_WU, X_FT);
   }
 
-  /** Joints for a Cartesian position in the given frames (its CONFIG), or the reason it has none. */
-  IkResult jointsOf(Position.Cartesian c, Transform X_WU, Transform X_FT) {
+  /** Joints for a Cartesian position in the given frames (its CONFIG; near {@code q} without a closed form), or why none. */
+  IkResult jointsOf(Position.Cartesian c, Transform X_WU, Transform X_FT, double[] q) {
     Transform X_WT = X_WU.compose(c.toXyzwpr().toTransform());
-    return ik.solve(X_BW.compose(X_WT).compose(X_FT.inverse()), robotConfig(c.config()));
+    return solve(X_BW.compose(X_WT).compose(X_FT.inverse()), c.config(), q);
   }
 
   static org.robotrun.robot.Config robotConfig(Config c) {

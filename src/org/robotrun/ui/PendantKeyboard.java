@@ -2,8 +2,10 @@ package org.robotrun.ui;
 
 import static org.lwjgl.glfw.GLFW.*;
 
+import java.util.EnumSet;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import org.robotrun.pendant.Key;
 import org.robotrun.pendant.Pendant;
 
@@ -19,6 +21,11 @@ import org.robotrun.pendant.Pendant;
  * F6 NEXT  F7 COORD  F8 STEP  F9 FWD  F10 BWD  F11 HOLD  F12 RESET
  * Page Up / Page Down   +% / -%      Insert SELECT  Delete EDIT  End DATA
  * </pre>
+ *
+ * <p>While the pendant has an entry open (a program name, a comment, a number), letter keys
+ * are text, not jog keys: the characters arrive through {@link #onChar}. A key is released to the
+ * pendant only if its press reached it, so a Shift pressed while a text field of the window had
+ * the keyboard cannot toggle the pendant's SHIFT latch when it comes up.
  */
 public final class PendantKeyboard {
   private static final Map<Integer, Key> KEYS = Map.ofEntries(
@@ -45,6 +52,8 @@ public final class PendantKeyboard {
       Map.entry(GLFW_KEY_INSERT, Key.SELECT), Map.entry(GLFW_KEY_DELETE, Key.EDIT), Map.entry(GLFW_KEY_END, Key.DATA));
 
   private final Pendant pendant;
+  /** Keys whose press went to the pendant and whose release has not yet. */
+  private final Set<Key> down = EnumSet.noneOf(Key.class);
 
   public PendantKeyboard(Pendant pendant) {
     this.pendant = pendant;
@@ -62,10 +71,40 @@ public final class PendantKeyboard {
       return k.isPresent();
     }
     if (action == GLFW_PRESS) {
+      if (isLetter(glfwKey) && pendant.entryOpen()) {
+        return false;  // typed text: onChar delivers it
+      }
+      down.add(k.get());
       pendant.press(k.get());
-    } else if (action == GLFW_RELEASE) {
+    } else if (action == GLFW_RELEASE && down.remove(k.get())) {
       pendant.release(k.get());
     }
     return true;
+  }
+
+  /**
+   * Feeds a typed character (GLFW's char callback) to an open pendant entry; returns whether it
+   * was used. Digits and {@code . - ,} are not taken here: their keys already reach the pendant
+   * as keypad keys.
+   */
+  public boolean onChar(int codepoint) {
+    if (!pendant.entryOpen() || Character.isISOControl(codepoint)
+        || codepoint >= '0' && codepoint <= '9' || codepoint == '.' || codepoint == '-' || codepoint == ',') {
+      return false;
+    }
+    pendant.type(Character.toString(codepoint));
+    return true;
+  }
+
+  /** Releases every key still down (the window lost the keyboard focus). */
+  public void releaseAll() {
+    for (Key k : down) {
+      pendant.release(k);
+    }
+    down.clear();
+  }
+
+  private static boolean isLetter(int glfwKey) {
+    return glfwKey >= GLFW_KEY_A && glfwKey <= GLFW_KEY_Z;
   }
 }

@@ -5,6 +5,7 @@ import static org.lwjgl.glfw.GLFW.*;
 import imgui.ImGui;
 import imgui.gl3.ImGuiImplGl3;
 import imgui.glfw.ImGuiImplGlfw;
+import java.util.function.IntPredicate;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 import org.lwjgl.system.Configuration;
@@ -37,6 +38,8 @@ public final class SimulatorWindow implements AutoCloseable {
   private boolean orbiting;
   private boolean panning;
   private KeyHandler keyHandler = (key, action) -> false;
+  private IntPredicate charHandler = codepoint -> false;
+  private Runnable focusLost = () -> {};
 
   /** Receives keyboard events that no panel text field wants. */
   @FunctionalInterface
@@ -118,6 +121,17 @@ public final class SimulatorWindow implements AutoCloseable {
       }
       keyHandler.onKey(key, action);
     });
+    glfwSetCharCallback(window, (w, codepoint) -> {
+      if (!ImGui.getIO().getWantCaptureKeyboard()) {
+        charHandler.test(codepoint);
+      }
+    });
+    // Keys held when the window loses the focus never see their release: let go of them now.
+    glfwSetWindowFocusCallback(window, (w, focused) -> {
+      if (!focused) {
+        focusLost.run();
+      }
+    });
   }
 
   /** Draws ImGui panels; called once per frame between ImGui's newFrame and render. */
@@ -154,6 +168,16 @@ public final class SimulatorWindow implements AutoCloseable {
 
   public void setKeyHandler(KeyHandler handler) {
     keyHandler = handler;
+  }
+
+  /** Receives typed characters (Unicode code points) that no panel text field wants. */
+  public void setCharHandler(IntPredicate handler) {
+    charHandler = handler;
+  }
+
+  /** Runs when the window loses the keyboard focus. */
+  public void setFocusLostHandler(Runnable handler) {
+    focusLost = handler;
   }
 
   public OrbitCamera camera() {

@@ -49,8 +49,22 @@ class PendantCommandTest {
   void theDocumentedTourRuns() {
     Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys");
     assertThat(r.exitCode()).isEqualTo(0);
-    assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]>5},JMP LBL[1]")
-        .contains("LINE 2    RUNNING").contains("LINE 5    IDLE").contains("R[  1:            ]  = {1}");
+    assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]<3},JMP LBL[1]")
+        .contains("    RUNNING").contains("LINE 6    IDLE").contains("R[  1:            ]  = {3}");
+  }
+
+  @Test
+  void saveWritesTheProgramsTheScriptBuiltAsLsFiles(@TempDir Path dir) throws Exception {
+    Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys", "--save", dir.toString());
+    assertThat(r.exitCode()).isEqualTo(0);
+    org.robotrun.io.LsReadResult back = org.robotrun.io.LsReader.read(dir.resolve("PICK1.LS"));
+    assertThat(back.hasErrors()).as(back.diagnostics().toString()).isFalse();
+    assertThat(back.program().lineCount()).isEqualTo(6);
+    assertThat(back.program().positions()).containsKeys(1, 2, 3);
+    assertThat(Files.readString(dir.resolve("PICK1.LS"))).contains("L P[2] 200mm/sec CNT50");
+    Run bad = run("pendant", "--keys", "docs/examples/pendant-tour.keys", "--save", dir.resolve("nope").toString());
+    assertThat(bad.exitCode()).isEqualTo(2);
+    assertThat(bad.err()).contains("--save: the directory");
   }
 
   @Test
@@ -68,9 +82,22 @@ class PendantCommandTest {
     Run r = run("pendant", "--keys", dir.resolve("none.keys").toString());
     assertThat(r.exitCode()).isEqualTo(2);
     assertThat(r.err()).contains("--keys: no such file");
-    Run s = run("pendant", "--keys", dir.resolve("none.keys").toString(), "--scenario", dir.resolve("x.json").toString());
+  }
+
+  @Test
+  void scenarioCellsLoadForTheSimulationControllerOnly(@TempDir Path dir) throws Exception {
+    Path keys = dir.resolve("k.keys");
+    Files.writeString(keys, "POSN\nSHOW\nMENU\n5\nSHOW\n");
+    Run r = run("pendant", "--scenario", "scenarios/frame-teaching.json", "--keys", keys.toString());
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(0);
+    assertThat(r.out()).contains("POSITION  (live)").contains("J5   -90.000").contains("SETUP Frames");
+    Run s = run("pendant", "--keys", keys.toString(), "--scenario", dir.resolve("x.json").toString());
     assertThat(s.exitCode()).isEqualTo(2);
     assertThat(s.err()).contains("--scenario: no such file");
+    Run t = run("pendant", "--keys", keys.toString(), "--scenario", "scenarios/frame-teaching.json", "--controller",
+        "stand-in");
+    assertThat(t.exitCode()).isEqualTo(2);
+    assertThat(t.err()).contains("--scenario needs the simulation controller");
   }
 
   @Test

@@ -157,6 +157,58 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void teachToolFrameByThreePointsAroundThePointerTip() {
+    // rotations in TOOL coordinates pivot about the active pointer's tip (UTOOL 1, 100 mm):
+    // three approaches of that tip teach UTOOL 2 = the same TCP, with the robot's own FrameTeaching
+    keys("""
+        MENU
+        5
+        DOWN
+        F2
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        COORD
+        COORD
+        HOLD SHIFT
+        HOLD +XR
+        WAIT 1.5
+        RELEASE +XR
+        RELEASE SHIFT
+        SHIFT+F5
+        HOLD SHIFT
+        HOLD +YR
+        WAIT 1.5
+        RELEASE +YR
+        RELEASE SHIFT
+        SHIFT+F5
+        """);
+    assertThat(p.lcd().promptLine()).contains("Tool Frame 2 taught");
+    Position.Cartesian ut2 = control.frame(FrameKind.TOOL, 2);
+    assertThat(ut2.xMm()).isCloseTo(0, within(0.05));
+    assertThat(ut2.yMm()).isCloseTo(0, within(0.05));
+    assertThat(ut2.zMm()).isCloseTo(100, within(0.05));
+    assertThat(body()).contains("Taught: X 0.0 Y 0.0 Z 100.0");
+    // UTOOL 3 from three approaches in one orientation: the reason is shown, the frame unchanged
+    keys("""
+        F3
+        TYPE 3
+        ENTER
+        F2
+        1
+        DOWN
+        SHIFT+F5
+        SHIFT+F5
+        SHIFT+F5
+        """);
+    assertThat(p.lcd().row(2)).contains("Tool Frame 3");
+    assertThat(body()).contains("Not taught:");
+    assertThat(p.lcd().promptLine()).startsWith("Frame not taught:");
+    assertThat(control.frame(FrameKind.TOOL, 3).zMm()).isEqualTo(0.0);
+  }
+
+  @Test
   void positionRegisterInJointForm() {
     keys("""
         DATA
@@ -221,6 +273,38 @@ class PendantOnSimControllerTest {
     assertThat(p.lcd().alarmLine()).contains("(BADJMP, 1)");
     keys("RESET");
     assertThat(p.lcd().alarmLine()).isBlank();
+  }
+
+  @Test
+  void randomKeysOnTheRealControllerNeverThrow() {
+    org.robotrun.pendant.Key[] all = org.robotrun.pendant.Key.values();
+    java.util.Random rnd = new java.util.Random(7);
+    keys("""
+        SELECT
+        F1
+        TYPE FUZZ
+        ENTER
+        SHIFT+F1
+        """);
+    org.assertj.core.api.Assertions.assertThatCode(() -> {
+      for (int i = 0; i < 1500; i++) {
+        int what = rnd.nextInt(16);
+        if (what == 0) {
+          p.type(List.of("1", "R[2]+1", "abc", "-5", "PR[1]", "200", "FUZZ").get(rnd.nextInt(7)));
+        } else if (what == 1) {
+          p.advance(rnd.nextDouble() * 0.2);
+        } else if (what == 2) {
+          p.press(org.robotrun.pendant.Key.SHIFT);
+        } else if (what == 3) {
+          p.release(org.robotrun.pendant.Key.SHIFT);
+        } else {
+          org.robotrun.pendant.Key k = all[rnd.nextInt(all.length)];
+          p.press(k);
+          p.release(k);
+        }
+        p.lcd();
+      }
+    }).doesNotThrowAnyException();
   }
 
   @Test

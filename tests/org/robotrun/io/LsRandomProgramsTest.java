@@ -136,10 +136,13 @@ class LsRandomProgramsTest {
         units.add(u);
       }
     }
+    Motion.SpeedUnit unit = units.get(rnd.nextInt(units.size()));
+    // Constant speeds are in range (the reader refuses 0 and more than 100%).
+    int most = unit == Motion.SpeedUnit.PERCENT ? 100 : 2000;
     Motion.SpeedValue v = rnd.nextBoolean()
-        ? new Motion.SpeedConst(rnd.nextBoolean() ? 1 + rnd.nextInt(2000) : rnd.nextInt(10_000) / 10.0)
+        ? new Motion.SpeedConst(rnd.nextBoolean() ? 1 + rnd.nextInt(most) : (1 + rnd.nextInt(most * 10)) / 10.0)
         : new Motion.SpeedRegister(direct());
-    Motion.Speed speed = new Motion.Speed(v, units.get(rnd.nextInt(units.size())));
+    Motion.Speed speed = new Motion.Speed(v, unit);
     Motion.Termination term = switch (rnd.nextInt(3)) {
       case 0 -> new Motion.Fine();
       case 1 -> new Motion.Cnt(rnd.nextInt(101));

@@ -160,6 +160,8 @@ class LsReaderTest {
         "  12:  R[1]=1",
         "  13:L PR[1] 100mm/sec FINE Frobnicate    ;",
         "  14:J PR[1] 20% CNT120    ;",
+        "  15:J PR[1] 300% FINE    ;",
+        "  16:L PR[1] 0mm/sec FINE    ;",
         "")) ;
     assertThat(messages(r)).containsExactly(
         "t.ls:5: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found end of line",
@@ -173,9 +175,11 @@ class LsReaderTest {
         "t.ls:14: '_HIDDEN' is not a program name: expected letters, digits and '_', starting with a letter",
         "t.ls:15: expected ';' at the end of the line",
         "t.ls:16: not supported: motion option 'Frobnicate' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)",
-        "t.ls:17: CNT120: expected 0..100");
+        "t.ls:17: CNT120: expected 0..100",
+        "t.ls:18: speed 300%: expected 1..100%",
+        "t.ls:19: speed 0mm/sec: expected a speed greater than 0");
     // Bad lines keep their place, so line numbering of the rest holds.
-    assertThat(r.program().lineCount()).isEqualTo(14);
+    assertThat(r.program().lineCount()).isEqualTo(16);
     assertThat(r.program().line(8)).isInstanceOf(Instruction.AssignRegister.class);
     assertThat(r.program().line(2)).isEqualTo(new Instruction.CommentedOut("R[1]="));
   }

@@ -138,6 +138,29 @@ class JoggerTest {
   }
 
   @Test
+  void jogOutToTheEdgeOfReachStopsWithAMessageWithoutOutrunningAJoint() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = start();
+    keys.keyDown(0, +1, JogState.Press.LATCHED);
+    JogResult r = new JogResult.Moving();
+    int ticks = 0;
+    while (!(r instanceof JogResult.Stopped) && ticks++ < 10_000) {
+      double[] before = q.clone();
+      r = jog.tick(q, keys, JogFrame.WORLD, 1, TOOL, Transform.IDENTITY, DT);
+      for (int j = 0; j < 6; j++) {
+        assertThat(Double.isFinite(q[j])).isTrue();
+        assertThat(Math.abs(q[j] - before[j]) / DT).isLessThanOrEqualTo(MotionRunnerTest.LIMITS.jointSpeed(j) * (1 + 1e-9));
+      }
+    }
+    assertThat(r).isInstanceOf(JogResult.Stopped.class);
+    assertThat(((JogResult.Stopped) r).message()).isNotBlank();
+    assertThat(keys.anyOn()).isFalse();
+    // It got far out before stopping (the LR Mate reaches about 700 mm).
+    assertThat(MotionRunnerTest.tcp(q).x()).isGreaterThan(500);
+  }
+
+  @Test
   void latchedKeysToggleSwitchAndCombine() {
     JogState keys = new JogState();
     keys.keyDown(0, +1, JogState.Press.LATCHED);

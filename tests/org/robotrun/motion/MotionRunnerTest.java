@@ -154,4 +154,52 @@ class MotionRunnerTest {
     assertThat(maxY).isGreaterThan(99.9);
     assertThat(tcp(trace.get(trace.size() - 1)).distanceTo(end)).isLessThan(0.01);
   }
+
+  static int ticksOf(MoveRequest m, double[] q0) {
+    MotionRunner r = new MotionRunner(MODEL, LIMITS, q0, MotionListener.NONE);
+    r.enqueue(m);
+    return run(r, 100_000).size() - 1;
+  }
+
+  @Test
+  void secondsSpeedGivesTheMoveItsDuration() {
+    double[] target = {0.4, 0.1, -0.1, 0.2, Math.toRadians(-60), 0.3};
+    // Duration in ticks of 4 ms, to one tick.
+    assertThat(ticksOf(new MoveRequest.Joint(target, Speed.seconds(2), Termination.fine(), 1, 1), HOME))
+        .isBetween(499, 501);
+    Transform end = tcp(HOME).withTranslation(300, 100, 50);
+    assertThat(ticksOf(new MoveRequest.Linear(end, TOOL, Speed.milliseconds(1500), Termination.fine(), 1, 1), HOME))
+        .isBetween(374, 376);
+  }
+
+  @Test
+  void rotationOnlyMoveTurnsAtTheCommandedDegreesPerSecondAroundAFixedTcp() {
+    Transform start = tcp(HOME);
+    Transform end = Transform.rotation(0, 0, 1, Math.toRadians(90)).compose(start.withTranslation(0, 0, 0))
+        .withTranslation(start.x(), start.y(), start.z());
+    MotionRunner r = new MotionRunner(MODEL, LIMITS, HOME, MotionListener.NONE);
+    r.enqueue(new MoveRequest.Linear(end, TOOL, Speed.degPerSec(45), Termination.fine(), 1, 1));
+    List<double[]> trace = run(r, 100_000);
+    double maxRate = 0;
+    for (int k = 1; k < trace.size(); k++) {
+      assertThat(tcp(trace.get(k)).distanceTo(start)).isLessThan(0.1);
+      maxRate = Math.max(maxRate, Math.toDegrees(tcp(trace.get(k)).rotationAngleTo(tcp(trace.get(k - 1)))) / DT);
+    }
+    // 90 degrees at 45 deg/s: 2 s plus the 0.2 s ramp; the plateau is the commanded rate (1%).
+    assertThat((trace.size() - 1) * DT).isCloseTo(2.2, org.assertj.core.data.Offset.offset(0.01));
+    assertThat(maxRate).isCloseTo(45, org.assertj.core.data.Offset.offset(0.45));
+  }
+
+  @Test
+  void lowerAccTakesLongerAndOverrideScalesTime() {
+    double[] target = {0.8, 0.2, -0.1, 0.2, Math.toRadians(-60), 0.3};
+    int acc100 = ticksOf(new MoveRequest.Joint(target, Speed.percent(100), Termination.fine(), 1, 1), HOME);
+    int acc50 = ticksOf(new MoveRequest.Joint(target, Speed.percent(100), Termination.fine(), 0.5, 1), HOME);
+    assertThat(acc50).isGreaterThan(acc100 + 10);
+    MotionRunner r = new MotionRunner(MODEL, LIMITS, HOME, MotionListener.NONE);
+    r.setOverride(0.5);
+    r.enqueue(new MoveRequest.Joint(target, Speed.percent(100), Termination.fine(), 1, 1));
+    // At 50% override the path time runs at half rate: twice the ticks (to one tick).
+    assertThat(run(r, 100_000).size() - 1).isBetween(2 * acc100 - 1, 2 * acc100 + 1);
+  }
 }

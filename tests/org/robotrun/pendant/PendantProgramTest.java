@@ -59,6 +59,8 @@ class PendantProgramTest {
         ENTER
         """);
     assertThat(body(p)).contains("L P[2] 200mm/sec {CNT50}");
+    Lcd.FieldSpan span = p.lcd().cursorField().orElseThrow();
+    assertThat(p.lcd().row(span.row()).substring(span.openCol(), span.closeCol() + 1)).isEqualTo("{CNT50}");
 
     // a register statement and an IF at the end, through [INST]
     run(p, """
@@ -138,6 +140,53 @@ class PendantProgramTest {
         WAIT 3
         """);
     assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+  }
+
+  @Test
+  void theEditorFollowsExecutionIntoACalledProgramAndBack() {
+    control.saveProgram(Program.of("MAIN", java.util.List.of(new Instruction.Call("SUB", java.util.List.of()),
+        new Instruction.AssignRegister(org.robotrun.program.Item.of(2), new org.robotrun.program.Expr.IntConst(9)))));
+    control.saveProgram(Program.of("SUB", java.util.List.of(
+        new Instruction.AssignRegister(org.robotrun.program.Item.of(1), new org.robotrun.program.Expr.IntConst(5)),
+        new Instruction.WaitTime(new org.robotrun.program.Expr.RealConst(1.0)))));
+    run(p, """
+        SELECT
+        ENTER
+        SHIFT+FWD
+        WAIT 0.5
+        """);
+    assertThat(p.lcd().row(2)).startsWith("EDIT SUB");
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("2:").contains("WAIT");
+    assertThat(p.lcd().statusLine()).startsWith("SUB").contains("RUNNING");
+    run(p, "WAIT 1");
+    assertThat(control.registers().number(2)).isEqualTo(9.0);
+    assertThat(p.lcd().statusLine()).contains("IDLE");
+  }
+
+  @Test
+  void aPausedProgramsCursorCanBeMovedAndRunsOnFromThere() {
+    createWithThreePoints();
+    run(p, """
+        ITEM
+        TYPE 1
+        ENTER
+        STEP
+        SHIFT+FWD
+        WAIT 3
+        ITEM
+        TYPE 3
+        ENTER
+        """);
+    // paused after line 1; the operator moved the cursor to line 3 and it stays there
+    assertThat(p.lcd().statusLine()).contains("PAUSED");
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+    run(p, """
+        SHIFT+FWD
+        WAIT 5
+        """);
+    // line 3 ran from the moved cursor: the robot is at P[3] (J1 and J2 jogged 15 deg each)
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(15, within(1e-6));
+    assertThat(control.currentJoints().j2Deg()).isCloseTo(15, within(1e-6));
   }
 
   @Test
@@ -251,6 +300,25 @@ class PendantProgramTest {
           """);
     }
     assertThat(control.program("UNDO1").orElseThrow().lineCount()).isEqualTo(5);
+  }
+
+  @Test
+  void aCursorOnAFieldThatUndoRemovedFallsBackToTheLineNumber() {
+    createWithThreePoints();
+    // add two options to line 3, put the cursor on the last one, then undo both
+    run(p, """
+        F4
+        6
+        F4
+        7
+        RIGHT *8
+        NEXT
+        F4
+        F4
+        NEXT
+        LEFT
+        """);
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("{3:}");
   }
 
   @Test

@@ -53,6 +53,36 @@ class PendantRobustnessTest {
     }
   }
 
+  @Test
+  void randomEditingKeysNeverThrow() {
+    Key[] keys = {Key.UP, Key.DOWN, Key.LEFT, Key.RIGHT, Key.ENTER, Key.F1, Key.F2, Key.F3, Key.F4, Key.F5, Key.NEXT,
+        Key.PREV, Key.ITEM, Key.D1, Key.D2, Key.D3, Key.D5, Key.D9, Key.MINUS, Key.DOT, Key.BACKSPACE, Key.EDIT};
+    for (long seed = 100; seed < 104; seed++) {
+      Random rnd = new Random(seed);
+      StandInRobotControl control = new StandInRobotControl();
+      control.saveProgram(sample());
+      Pendant p = new Pendant(control);
+      p.tap(Key.SELECT);
+      p.tap(Key.ENTER);
+      long s = seed;
+      assertThatCode(() -> {
+        for (int i = 0; i < 2000; i++) {
+          int what = rnd.nextInt(12);
+          if (what == 0) {
+            p.type(WORDS.get(rnd.nextInt(WORDS.size())));
+          } else if (what == 1) {
+            p.press(Key.SHIFT);
+            p.tap(keys[rnd.nextInt(keys.length)]);
+            p.release(Key.SHIFT);
+          } else {
+            p.tap(keys[rnd.nextInt(keys.length)]);
+          }
+          p.lcd();
+        }
+      }).as("seed " + s).doesNotThrowAnyException();
+    }
+  }
+
   private static Program sample() {
     Motion.Speed pct = new Motion.Speed(new Motion.SpeedConst(50), Motion.SpeedUnit.PERCENT);
     List<Instruction> lines = List.of(

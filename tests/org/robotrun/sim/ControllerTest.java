@@ -371,4 +371,27 @@ class ControllerTest {
     var tool = sim.snapshot().scene().items().stream().filter(d -> d.name().equals("robot1/tool")).findFirst().orElseThrow();
     assertThat(tool.color()).isEqualTo(Simulation.TOUCHING);
   }
+
+  @Test
+  void anArmWithoutAClosedFormUsesTheNumericSolver() {
+    RobotModel m = MODEL;
+    RobotModel noOpw = new RobotModel(m.id() + "-numeric", m.displayName(), m.joints(), m.X_6F(), m.X_WB(), m.links(),
+        java.util.Optional.empty(), m.coupledJ3());
+    Controller c = DefaultCell.controller(noOpw);
+    Simulation sim = Simulation.of(c);
+    c.saveProgram(program("NUM", "J P[2:A] 50% FINE", "L P[3:B] 300mm/sec FINE"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "NUM", 60, s -> {});
+    assertThat(r.status()).as(r.alarm().map(ControllerAlarm::display).orElse("")).isEqualTo(HeadlessRun.Status.FINISHED);
+    assertThat(c.tcpInWorld().y()).isCloseTo(150, offset(0.01));
+  }
+
+  @Test
+  void headlessRunResumesAfterPause() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("PAUSING", "R[1]=1", "PAUSE", "R[1]=2"));
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "PAUSING", 10, s -> {});
+    assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
+    assertThat(c.registers().number(1)).isEqualTo(2);
+  }
 }

@@ -1,0 +1,55 @@
+package org.robotrun.pendant;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.robotrun.program.Expr;
+import org.robotrun.program.Index;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.Item;
+
+class ExprTextTest {
+
+  @ParameterizedTest
+  @ValueSource(strings = {"R[2]+1", "(R[1]>2 AND DI[1]=ON)", "R[R[2:PTR]]*2.5", "PR[10,3:STACK]-R[1] DIV 3",
+      "!F[3] OR (TIMER[1]>=1.5)", "-R[4] MOD 7", "AR[1]<>'PART_A'", "(GI[2]<=RO[1])", "-3", "R[1:COUNT]"})
+  void formatOfParseGivesTheTextBack(String text) throws Exception {
+    assertThat(ExprText.format(ExprText.parse(text))).isEqualTo(text);
+  }
+
+  @Test
+  void precedenceInsideAnExpression() throws Exception {
+    Expr e = ExprText.parse("R[1]+R[2]*3>4 AND DO[1]=ON");
+    Expr.Binary and = (Expr.Binary) e;
+    assertThat(and.op()).isEqualTo(Expr.BinaryOp.AND);
+    Expr.Binary gt = (Expr.Binary) and.left();
+    assertThat(gt.op()).isEqualTo(Expr.BinaryOp.GT);
+    Expr.Binary plus = (Expr.Binary) gt.left();
+    assertThat(plus.op()).isEqualTo(Expr.BinaryOp.ADD);
+    assertThat(plus.right()).isEqualTo(new Expr.Binary(Expr.BinaryOp.MUL, new Expr.Register(Item.of(2)),
+        new Expr.IntConst(3)));
+    assertThat(((Expr.Binary) and.right()).left()).isEqualTo(new Expr.Io(IoKind.DO, Item.of(1)));
+  }
+
+  @Test
+  void badTextSaysWhereAndWhat() {
+    assertThatThrownBy(() -> ExprText.parse("R[1]+")).hasMessage("column 6: expected a value, found end of text");
+    assertThatThrownBy(() -> ExprText.parse("R[1] R[2]")).hasMessageStartingWith("column 6: expected end of expression");
+    assertThatThrownBy(() -> ExprText.parse("X[1]")).hasMessageStartingWith("column 1: expected a number, ON/OFF");
+    assertThatThrownBy(() -> ExprText.parse("(R[1]>2")).hasMessageStartingWith("column 8: expected ')'");
+  }
+
+  @Test
+  void indicesOutsideTheirTablesAreRefusedAtEntry() throws Exception {
+    assertThatThrownBy(() -> ExprText.parse("R[0]")).hasMessage("R[0]: index out of range (1..200)");
+    assertThatThrownBy(() -> ExprText.parse("DO[65]=ON")).hasMessage("DO[65]: index out of range (1..64)");
+    assertThatThrownBy(() -> ExprText.parse("PR[101,1]")).hasMessage("PR[101]: index out of range (1..100)");
+    assertThatThrownBy(() -> ExprText.parseItem("TIMER", "11")).hasMessage("TIMER[11]: index out of range (1..10)");
+    assertThatThrownBy(() -> ExprText.parse("R[R[201]]")).hasMessage("R[201]: index out of range (1..200)");
+    assertThat(ExprText.parseItem("R", "R[200:LAST]")).isEqualTo(Item.of(200, "LAST"));
+    assertThat(ExprText.parseIndex("R[3]")).isEqualTo(new Index.Indirect(3, ""));
+  }
+}
