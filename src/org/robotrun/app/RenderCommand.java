@@ -38,8 +38,12 @@ public final class RenderCommand implements Callable<Integer> {
   String joints;
 
   @Option(names = "--scenario", paramLabel = "FILE.json",
-      description = "Draw this scenario's cell (robots, fixtures, parts) from its camera view. Default: the default robot alone.")
+      description = "Draw this scenario's cell (robots and their end effectors, fixtures, parts; bodies in contact red) from its camera view. Default: the default robot alone.")
   Path scenario;
+
+  @Option(names = "--show-boxes",
+      description = "With --scenario: draw the collision boxes (robot links, tool, objects) as green wire frames, red where they touch.")
+  boolean showBoxes;
 
   @Override
   public Integer call() {
@@ -52,6 +56,9 @@ public final class RenderCommand implements Callable<Integer> {
     if (Files.isDirectory(out)) {
       throw new UserError("--out: " + out + " is a directory; give a file name ending in .png");
     }
+    if (showBoxes && scenario == null) {
+      throw new UserError("--show-boxes: needs --scenario (for the robot alone use scenarios/empty-cell.json)");
+    }
     OrbitCamera camera = new OrbitCamera();
     SceneSnapshot scene;
     if (scenario == null) {
@@ -60,7 +67,7 @@ public final class RenderCommand implements Callable<Integer> {
       scene = SceneSnapshots.singleRobot(robot, q, 0);
     } else {
       Scenario sc = ScenarioFiles.load(scenario);
-      scene = ScenarioFiles.initialScene(sc, joints);
+      scene = ScenarioFiles.simulatedScene(sc, joints, showBoxes);
       sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, camera));
     }
     try (HeadlessRenderer r = new HeadlessRenderer(width, height)) {

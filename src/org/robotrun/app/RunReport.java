@@ -59,6 +59,7 @@ final class RunReport {
     }
     ArrayNode parts = root.putArray("parts");
     World world = sim.world();
+    java.util.Map<String, String> held = sim.heldParts();
     for (WorldObject o : world.objects()) {
       if (o.kind() != ObjectKind.PART) {
         continue;
@@ -77,6 +78,12 @@ final class RunReport {
         part.put("parent", o.parent().get());
       } else {
         part.putNull("parent");
+      }
+      String holder = held.get(o.name());
+      if (holder != null) {
+        part.put("heldBy", holder);
+      } else {
+        part.putNull("heldBy");
       }
     }
     ArrayNode collisions = root.putArray("collisions");

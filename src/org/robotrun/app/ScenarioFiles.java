@@ -14,6 +14,8 @@ import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.SceneSnapshot;
 import org.robotrun.sim.SceneSnapshots;
+import org.robotrun.sim.ScenarioCell;
+import org.robotrun.sim.Simulation;
 import org.robotrun.world.CameraView;
 import org.robotrun.world.RobotSetup;
 import org.robotrun.world.Scenario;
@@ -58,6 +60,34 @@ final class ScenarioFiles {
       robots.add(new SceneSnapshots.PlacedRobot(setup.name(), model, setup.X_CB(), q));
     }
     return SceneSnapshots.cell(sc.world(), robots, 0);
+  }
+
+  /**
+   * The cell as the simulation starts it (robots with their end effectors, bodies in contact
+   * red after one collision check), optionally with its collision boxes; {@code jointsOverride}
+   * (pendant degrees, may be null) replaces the first robot's joints.
+   */
+  static SceneSnapshot simulatedScene(Scenario sc, String jointsOverride, boolean showBoxes) {
+    Scenario s = sc;
+    if (jointsOverride != null) {
+      RobotSetup first = sc.robots().get(0);
+      double[] q = JointConvention.kinematicToPendant(model(first), JointsOption.parseToKinematic(jointsOverride, model(first)));
+      List<RobotSetup> robots = new ArrayList<>(sc.robots());
+      robots.set(0, new RobotSetup(first.name(), first.modelId(), first.X_CB(), first.endEffector(),
+          java.util.Arrays.stream(q).boxed().toList()));
+      s = new Scenario(sc.name(), sc.description(), robots, sc.world(), sc.programs(), sc.mainProgram(), sc.registers(),
+          sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision());
+    }
+    Simulation sim;
+    try {
+      sim = ScenarioCell.build(s, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+    } catch (FileFormatException | IllegalArgumentException e) {
+      throw new UserError("--scenario: " + e.getMessage());
+    }
+    sim.setShowCollisionBoxes(showBoxes);
+    // One tick: the arms stand still, the collision check runs.
+    sim.step();
+    return sim.snapshot().scene();
   }
 
   static void applyCamera(CameraView v, OrbitCamera camera) {

@@ -27,6 +27,7 @@ import org.robotrun.math.Xyzwpr;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.world.CameraView;
+import org.robotrun.world.CollisionResponse;
 import org.robotrun.world.EndEffectorType;
 import org.robotrun.world.ObjectKind;
 import org.robotrun.world.Rgb;
@@ -59,7 +60,8 @@ public final class ScenarioReader {
   public static final int MAX_FRAME = 10;
 
   private static final Set<String> TOP = Set.of(
-      "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera");
+      "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
+      "onCollision");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg");
   private static final Set<String> OBJECT = Set.of(
       "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent");
@@ -137,13 +139,15 @@ public final class ScenarioReader {
       TreeMap<Integer, Transform> userFrames = new TreeMap<>();
       frames(top, toolFrames, userFrames);
       Optional<CameraView> camera = camera(top);
+      CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
+          .orElse(CollisionResponse.ALARM);
       if (!errors.isEmpty()) {
         errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
         return new ScenarioLoad.Failed(errors);
       }
       try {
         return new ScenarioLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera));
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
         return new ScenarioLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
@@ -205,6 +209,17 @@ public final class ScenarioReader {
             + RobotDefinitions.DEFAULT_ROBOT + "\")");
         return Optional.empty();
       }
+    }
+
+    private CollisionResponse onCollision(String s, JObject top) {
+      for (CollisionResponse c : CollisionResponse.values()) {
+        if (c.fileName().equals(s)) {
+          return c;
+        }
+      }
+      error(top.members().get("onCollision").line(), "onCollision", "unknown response '" + s
+          + "': expected one of " + Arrays.stream(CollisionResponse.values()).map(CollisionResponse::fileName).toList());
+      return CollisionResponse.ALARM;
     }
 
     private EndEffectorType endEffector(String s, JObject r, String at) {

@@ -90,6 +90,9 @@ public final class ScenarioWriter {
         frameSet(g, "user", s.userFrames());
         g.writeEndObject();
       }
+      if (s.onCollision() != org.robotrun.world.CollisionResponse.ALARM) {
+        g.writeStringField("onCollision", s.onCollision().fileName());
+      }
       if (s.camera().isPresent()) {
         CameraView c = s.camera().get();
         g.writeObjectFieldStart("camera");

@@ -159,6 +159,32 @@ public final class MeshFactory {
     return b.build();
   }
 
+  /**
+   * The twelve edges of a box with full sizes (sx, sy, sz) centred on the origin, as line
+   * pairs (draw with GL_LINES); normals point up so the lines are lit evenly.
+   */
+  public static MeshData boxEdges(double sx, double sy, double sz) {
+    float[] v = new float[8 * 6];
+    for (int i = 0; i < 8; i++) {
+      v[i * 6] = (float) ((i & 1) != 0 ? sx / 2 : -sx / 2);
+      v[i * 6 + 1] = (float) ((i & 2) != 0 ? sy / 2 : -sy / 2);
+      v[i * 6 + 2] = (float) ((i & 4) != 0 ? sz / 2 : -sz / 2);
+      v[i * 6 + 5] = 1;
+    }
+    // Corners differing in one bit are joined by an edge.
+    int[] idx = new int[24];
+    int n = 0;
+    for (int i = 0; i < 8; i++) {
+      for (int bit = 1; bit < 8; bit <<= 1) {
+        if ((i & bit) == 0) {
+          idx[n++] = i;
+          idx[n++] = i | bit;
+        }
+      }
+    }
+    return new MeshData(v, idx);
+  }
+
   /** A flat-shaded mesh from raw triangles (x, y, z per vertex, three vertices per triangle). */
   public static MeshData triangles(float[] xyz) {
     Builder b = new Builder();

@@ -86,14 +86,31 @@ public final class SceneRenderer implements AutoCloseable {
       drawBar(uModel, uColor, half, 0, floorZ + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK, 0.85f, 0.15f, 0.12f);
       drawBar(uModel, uColor, 0, half, floorZ + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK, 0.15f, 0.65f, 0.2f);
 
-      for (DrawItem item : scene.items()) {
-        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
-        item.X_WS().toColumnMajor(model);
-        glUniformMatrix4fv(uModel, false, model);
-        DrawItem.Color c = item.color();
-        glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
-        mesh.draw();
+      // Opaque items first; then the translucent ones blended over them, without writing depth
+      // so they do not hide each other.
+      drawItems(scene, uModel, uColor, false);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      glDepthMask(false);
+      glDisable(GL_CULL_FACE);
+      drawItems(scene, uModel, uColor, true);
+      glEnable(GL_CULL_FACE);
+      glDepthMask(true);
+      glDisable(GL_BLEND);
+    }
+  }
+
+  private void drawItems(SceneSnapshot scene, int uModel, int uColor, boolean translucent) {
+    for (DrawItem item : scene.items()) {
+      DrawItem.Color c = item.color();
+      if ((c.a() < 1f) != translucent) {
+        continue;
       }
+      GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+      item.X_WS().toColumnMajor(model);
+      glUniformMatrix4fv(uModel, false, model);
+      glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
+      mesh.draw();
     }
   }
 
@@ -111,7 +128,8 @@ public final class SceneRenderer implements AutoCloseable {
           b.rounded() ? 0.14 * Math.min(b.size().x(), Math.min(b.size().y(), b.size().z())) : 0);
       case DrawShape.Cylinder c -> MeshFactory.cylinder(c.radius(), c.length());
       case DrawShape.Mesh m -> MeshFactory.triangles(m.triangles());
-    });
+      case DrawShape.WireBox w -> MeshFactory.boxEdges(w.size().x(), w.size().y(), w.size().z());
+    }, shape instanceof DrawShape.WireBox ? GL_LINES : GL_TRIANGLES);
   }
 
   /** Number of distinct GPU meshes built so far. */

@@ -318,8 +318,15 @@ public final class Controller implements MotionPort {
     if (!activeAlarms.isEmpty()) {
       return CommandResult.refused("alarm active: RESET first");
     }
-    if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
-      return CommandResult.refused("the robot is moving: HOLD and wait");
+    if (interpreter.state() == Interpreter.State.RUNNING) {
+      return CommandResult.refused("a program is running: HOLD it first");
+    }
+    if (!runner.idle()) {
+      if (!runner.atRest() || interpreter.state() == Interpreter.State.PAUSED) {
+        return CommandResult.refused("the robot is moving: HOLD and wait");
+      }
+      // A held MOVE_TO: the new one replaces it.
+      runner.stopNow();
     }
     double[] q;
     switch (target) {

@@ -11,6 +11,9 @@ public sealed interface DrawShape {
   /** A box with full edge lengths {@code size}, centred on its frame; {@code rounded} softens the edges. */
   record Box(Vec3 size, boolean rounded) implements DrawShape {}
 
+  /** The twelve edges of a box with full edge lengths {@code size}, centred on its frame, as lines. */
+  record WireBox(Vec3 size) implements DrawShape {}
+
   /** A cylinder along local z, centred on its frame. */
   record Cylinder(double radius, double length) implements DrawShape {}
 

@@ -68,6 +68,10 @@ public final class ScenarioCell {
     scenario.toolFrames().forEach((n, X_FT) -> first.frames().setTransform(FrameKind.TOOL, n, X_FT));
     scenario.userFrames().forEach((n, X_WU) -> first.frames().setTransform(FrameKind.USER, n, X_WU));
     Simulation sim = new Simulation(controllers, placements, scenario.world(), tools, floorZ, tickSec);
+    sim.setCollisionAlarms(switch (scenario.onCollision()) {
+      case ALARM -> true;
+      case WARN -> false;
+    });
     return sim;
   }
 }

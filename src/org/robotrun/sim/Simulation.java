@@ -36,6 +36,7 @@ public final class Simulation {
   private CellCollisions collisions;
   private boolean checkCollisions = true;
   private boolean collisionAlarms = true;
+  private boolean showBoxes;
   private final List<CollisionEvent> collisionEvents = new ArrayList<>();
 
   /** Colour of bodies in contact in snapshots. */
@@ -151,6 +152,18 @@ public final class Simulation {
   }
 
   /**
+   * Whether snapshots include the collision boxes (wire frame and translucent fill, green, or
+   * red when touching) as of the last tick. Needs collision checking on.
+   */
+  public void setShowCollisionBoxes(boolean show) {
+    showBoxes = show;
+  }
+
+  public boolean showCollisionBoxes() {
+    return showBoxes;
+  }
+
+  /**
    * Reset scene: every part back at its start pose and on its start fixture, nothing held,
    * process traces cleared. The robots stay where they are (a part back at its start may now
    * touch a tool that stands there: that is reported as a collision at the next tick).
@@ -225,6 +238,9 @@ public final class Simulation {
       states.add(new RobotState(c.name(), new double[] {j.j1Deg(), j.j2Deg(), j.j3Deg(), j.j4Deg(), j.j5Deg(), j.j6Deg()},
           c.tcpInWorld(), c.frames().active(FrameKind.TOOL), c.frames().active(FrameKind.USER), c.overridePct(),
           c.status(), c.activeAlarms()));
+    }
+    if (showBoxes && checkCollisions && collisions != null) {
+      CollisionBoxDrawList.add(items, collisions.world());
     }
     if (checkCollisions && collisions != null) {
       var touching = collisions.touchingBodies();

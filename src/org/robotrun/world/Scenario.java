@@ -22,6 +22,7 @@ import org.robotrun.math.Transform;
  * @param toolFrames tool frames UT[i] (pose of the TCP in the flange frame), by number
  * @param userFrames user frames UF[i] (pose in WORLD), by number
  * @param camera the initial view, if given
+ * @param onCollision whether a collision stops the robot with an alarm or is only shown
  */
 public record Scenario(
     String name,
@@ -33,7 +34,8 @@ public record Scenario(
     SortedMap<Integer, Double> registers,
     SortedMap<Integer, Transform> toolFrames,
     SortedMap<Integer, Transform> userFrames,
-    Optional<CameraView> camera) {
+    Optional<CameraView> camera,
+    CollisionResponse onCollision) {
 
   public Scenario {
     robots = List.copyOf(robots);
@@ -44,5 +46,14 @@ public record Scenario(
     if (robots.isEmpty()) {
       throw new IllegalArgumentException("a scenario needs at least one robot");
     }
+    java.util.Objects.requireNonNull(onCollision, "onCollision");
+  }
+
+  /** A scenario whose collisions raise alarms. */
+  public Scenario(String name, String description, List<RobotSetup> robots, World world, List<Path> programs,
+      Optional<String> mainProgram, SortedMap<Integer, Double> registers, SortedMap<Integer, Transform> toolFrames,
+      SortedMap<Integer, Transform> userFrames, Optional<CameraView> camera) {
+    this(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames, camera,
+        CollisionResponse.ALARM);
   }
 }

@@ -65,6 +65,42 @@ class RenderCommandTest {
   }
 
   @Test
+  void showBoxesTurnsTouchingBoxesRed(@TempDir Path dir) throws Exception {
+    GlTestSupport.rendererOrSkip(16, 16).close();
+    Path free = dir.resolve("free.png");
+    Path hit = dir.resolve("hit.png");
+    Run a = run("render", "--scenario", "scenarios/pick-and-place.json", "--show-boxes", "--out", free.toString(),
+        "--width", "300", "--height", "200");
+    // The gripper pushed down into the table.
+    Run b = run("render", "--scenario", "scenarios/pick-and-place.json", "--show-boxes", "--joints", "0,50,-50,0,-80,0",
+        "--out", hit.toString(), "--width", "300", "--height", "200");
+    assertThat(a.exitCode()).as(a.err()).isZero();
+    assertThat(b.exitCode()).as(b.err()).isZero();
+    // Strong red pixels: the small red part only when free; the table and gripper when touching.
+    assertThat(redPixels(hit)).isGreaterThan(10 * Math.max(1, redPixels(free)));
+  }
+
+  @Test
+  void showBoxesNeedsAScenario(@TempDir Path dir) {
+    Run r = run("render", "--show-boxes", "--out", dir.resolve("x.png").toString());
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.err()).contains("--show-boxes").contains("--scenario");
+  }
+
+  private static int redPixels(Path png) throws Exception {
+    var img = javax.imageio.ImageIO.read(png.toFile());
+    int n = 0;
+    for (int y = 0; y < img.getHeight(); y++) {
+      for (int x = 0; x < img.getWidth(); x++) {
+        int rgb = img.getRGB(x, y);
+        int r = rgb >> 16 & 0xFF, g = rgb >> 8 & 0xFF, bl = rgb & 0xFF;
+        n += r > 180 && g < 70 && bl < 70 ? 1 : 0;
+      }
+    }
+    return n;
+  }
+
+  @Test
   void rendersEveryExampleScenario(@TempDir Path dir) throws Exception {
     GlTestSupport.rendererOrSkip(16, 16).close();
     try (var files = Files.list(Path.of("scenarios"))) {

@@ -76,6 +76,30 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void onCollisionWarnIsReadAndWrittenBack() throws Exception {
+    String text = withObjects(TABLE).replace("\"format\": 1,", "\"format\": 1,\n  \"onCollision\": \"warn\",");
+    Path file = write("warn.json", text);
+    Scenario s = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario();
+    assertThat(s.onCollision()).isEqualTo(org.robotrun.world.CollisionResponse.WARN);
+    ScenarioWriter.write(s, file);
+    assertThat(Files.readString(file)).contains("\"onCollision\" : \"warn\"");
+    assertThat(((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario().onCollision())
+        .isEqualTo(org.robotrun.world.CollisionResponse.WARN);
+    // Absent means alarm.
+    assertThat(((ScenarioLoad.Loaded) ScenarioReader.read(write("ok.json", withObjects(TABLE)))).scenario().onCollision())
+        .isEqualTo(org.robotrun.world.CollisionResponse.ALARM);
+  }
+
+  @Test
+  void unknownCollisionResponseIsNamedWithItsLine() throws Exception {
+    String text = withObjects(TABLE).replace("\"format\": 1,", "\"format\": 1,\n  \"onCollision\": \"ignore\",");
+    ScenarioError e = onlyError(write("bad.json", text));
+    assertThat(e.path()).isEqualTo("onCollision");
+    assertThat(e.line()).isEqualTo(lineOf(text, "\"onCollision\""));
+    assertThat(e.message()).contains("'ignore'").contains("alarm").contains("warn");
+  }
+
+  @Test
   void unknownFieldIsNamedWithItsLine() throws Exception {
     String text = withObjects(TABLE.replace("\"kind\"", "\"colour\": \"#ffffff\", \"kind\""));
     ScenarioError e = onlyError(write("s.json", text));

@@ -161,5 +161,20 @@ class ProgramMotionTest {
     assertThat(c.tcpInWorld().position().distanceTo(A)).isLessThan(0.01);
     var far = new org.robotrun.program.Position.Cartesian(3000, 0, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
     assertThat(c.moveTo(far, 1, 1)).isInstanceOf(CommandResult.Refused.class);
+    // HOLD stops a MOVE_TO half-way; a new MOVE_TO replaces it.
+    var b = new org.robotrun.program.Position.Cartesian(350, 150, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
+    assertThat(c.moveTo(b, 1, 1)).isInstanceOf(CommandResult.Ok.class);
+    for (int i = 0; i < 100; i++) {
+      sim.step();
+    }
+    c.hold();
+    for (int i = 0; i < 100; i++) {
+      sim.step();
+    }
+    assertThat(c.moveTo(target, 1, 1)).isInstanceOf(CommandResult.Ok.class);
+    for (int i = 0; i < 5000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.tcpInWorld().position().distanceTo(A)).isLessThan(0.01);
   }
 }

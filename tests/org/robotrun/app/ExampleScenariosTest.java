@@ -1,0 +1,60 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robotrun.world.Scenario;
+
+/** Every file in scenarios/ loads, and its main program (if any) runs to the end headless. */
+class ExampleScenariosTest {
+  static List<Path> examples() throws Exception {
+    try (Stream<Path> s = Files.list(Path.of("scenarios"))) {
+      return s.filter(p -> p.toString().endsWith(".json")).sorted().toList();
+    }
+  }
+
+  @Test
+  void everyExampleLoadsAndItsMainProgramRunsToTheEnd(@TempDir Path dir) throws Exception {
+    List<Path> files = examples();
+    assertThat(files).extracting(p -> p.getFileName().toString())
+        .contains("empty-cell.json", "pick-and-place.json", "frame-teaching.json");
+    int ran = 0;
+    for (Path f : files) {
+      Scenario sc = ScenarioFiles.load(f);
+      if (sc.mainProgram().isEmpty()) {
+        continue;
+      }
+      Path report = dir.resolve(f.getFileName() + ".report.json");
+      int code = Main.execute("run", "--scenario", f.toString(), "--report", report.toString());
+      assertThat(code).as(f.toString()).isEqualTo(0);
+      JsonNode r = new ObjectMapper().readTree(report.toFile());
+      assertThat(r.get("status").asText()).as(f.toString()).isEqualTo("finished");
+      assertThat(r.get("collisions")).as(f + " collisions").isEmpty();
+      ran++;
+    }
+    assertThat(ran).as("examples with a main program").isGreaterThanOrEqualTo(2);
+  }
+
+  @Test
+  void pickAndPlaceReportListsThePartsOnTheTray(@TempDir Path dir) throws Exception {
+    Path report = dir.resolve("r.json");
+    assertThat(Main.execute("run", "--scenario", "scenarios/pick-and-place.json", "--report", report.toString())).isZero();
+    JsonNode parts = new ObjectMapper().readTree(report.toFile()).get("parts");
+    assertThat(parts).hasSize(3);
+    for (int k = 0; k < 3; k++) {
+      JsonNode p = parts.get(k);
+      assertThat(p.get("name").asText()).isEqualTo("part" + (k + 1));
+      assertThat(p.get("parent").asText()).isEqualTo("tray");
+      assertThat(p.get("heldBy").isNull()).isTrue();
+      assertThat(p.get("pose_cell").get("x").asDouble()).isEqualTo(350.0 + 50 * k);
+      assertThat(p.get("pose_cell").get("z").asDouble()).isEqualTo(-90.0);
+    }
+  }
+}
