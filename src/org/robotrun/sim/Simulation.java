@@ -114,6 +114,8 @@ public final class Simulation {
       if (collisions == null) {
         collisions = new CellCollisions(controllers, X_CW, cell, floorZ);
       }
+      // One alarm per robot and tick (two fingers meeting the table are one collision).
+      boolean[] alarmed = new boolean[controllers.size()];
       for (CellCollisions.NewContact k : collisions.check(toolsMoved)) {
         if (collisionEvents.size() < MAX_EVENTS) {
           collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b()));
@@ -125,9 +127,11 @@ public final class Simulation {
         var held = cell.heldBy();
         String robotA = held.getOrDefault(k.aOwner(), k.aOwner());
         String robotB = held.getOrDefault(k.bOwner(), k.bOwner());
-        for (Controller c : controllers) {
-          if (c.name().equals(robotA) || c.name().equals(robotB)) {
+        for (int r = 0; r < controllers.size(); r++) {
+          Controller c = controllers.get(r);
+          if (!alarmed[r] && (c.name().equals(robotA) || c.name().equals(robotB))) {
             c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
+            alarmed[r] = true;
           }
         }
       }
