@@ -41,8 +41,8 @@ import picocli.CommandLine.Option;
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
           + "reports it closed 0.1 s later.",
-      "Collisions (robot links and tool against fixtures, parts and other robots) are checked every tick; a new "
-          + "contact is alarm SRVO-050.",
+      "Collisions (robot links and tool against the floor, fixtures, parts, other robots and the arm itself) are "
+          + "checked every tick; a new contact is alarm SRVO-050 (a scenario may ask for warnings instead).",
       "Exit codes: 0 the program reached its end, 1 an alarm stopped it (or the time limit passed), 2 bad input.",
       "The JSON report is described in docs/run-report.md; the trace has one CSV row per tick (time, joints, TCP)."
     })

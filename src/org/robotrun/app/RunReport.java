@@ -59,6 +59,7 @@ final class RunReport {
     }
     ArrayNode parts = root.putArray("parts");
     World world = sim.world();
+    java.util.Map<String, String> held = sim.heldParts();
     for (WorldObject o : world.objects()) {
       if (o.kind() != ObjectKind.PART) {
         continue;
@@ -78,7 +79,7 @@ final class RunReport {
       } else {
         part.putNull("parent");
       }
-      String holder = sim.heldParts().get(o.name());
+      String holder = held.get(o.name());
       if (holder != null) {
         part.put("heldBy", holder);
       } else {

@@ -64,6 +64,7 @@ class RunCommandTest {
     assertThat(tcp.get("z").asDouble()).isEqualTo(0.0);
     assertThat(r.get("parts")).hasSize(3);
     assertThat(r.get("parts").get(0).get("name").asText()).isEqualTo("part1");
+    assertThat(r.get("parts").get(0).get("heldBy").isNull()).isTrue();
   }
 
   @Test
