@@ -1,5 +1,6 @@
 package org.robotrun.sim;
 
+import org.robotrun.math.SinCos;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.robot.JointSpec;
@@ -11,6 +12,7 @@ import org.robotrun.robot.RobotModel;
  * {@code P + cos(q)·Q + sin(q)·S} (Rodrigues: {@code Rot = I + sin·K + (1 − cos)·K²}), the same
  * factorisation {@code robot.KinematicChain} uses for the flange. Gives the same poses as
  * {@code ForwardKinematics.linkPosesInWorld} composed with the placement (a test checks it).
+ * Not thread-safe (a scratch array); one per robot.
  */
 final class LinkPoses {
   private static final int DOF = RobotModel.DOF;
@@ -20,6 +22,7 @@ final class LinkPoses {
   private final double[] t = new double[DOF * 3];
   private final Transform X_CB;
   private final Transform X_6F;
+  private final double[] sc = new double[2];
 
   /** @param X_CW the robot's WORLD in the cell */
   LinkPoses(RobotModel model, Transform X_CW) {
@@ -63,7 +66,9 @@ final class LinkPoses {
       px += r00 * tx + r01 * ty + r02 * tz;
       py += r10 * tx + r11 * ty + r12 * tz;
       pz += r20 * tx + r21 * ty + r22 * tz;
-      double c = Math.cos(q[i]), sn = Math.sin(q[i]);
+      // One range reduction for both (the joint sines and cosines are most of the cost).
+      SinCos.sinCos(q[i], sc, 0);
+      double sn = sc[0], c = sc[1];
       int o = i * 9;
       double m00 = p[o] + c * qm[o] + sn * s[o];
       double m01 = p[o + 1] + c * qm[o + 1] + sn * s[o + 1];
