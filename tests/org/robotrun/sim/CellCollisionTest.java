@@ -96,4 +96,35 @@ class CellCollisionTest {
     // The newest are kept.
     assertThat(t.get(t.size() - 1).to().x()).isEqualTo((EndEffectorState.MAX_TRACE_SEGMENTS + 500) * 3.0);
   }
+
+  @Test
+  void suctionCupPicksThePartItSitsOnAndCarriesIt() {
+    RobotSetup robot = new RobotSetup("robot1", "lrmate200id", Transform.translation(0, 0, -330), EndEffectorType.SUCTION,
+        List.of(0.0, 0.0, 0.0, 0.0, -Math.PI / 2, 0.0));
+    var table = org.robotrun.world.WorldObject.of("table", org.robotrun.world.ObjectKind.FIXTURE,
+        new org.robotrun.world.Shape.Box(300, 300, 230), org.robotrun.world.Rgb.GREY, Transform.translation(400, 0, -330),
+        Optional.empty());
+    var part = org.robotrun.world.WorldObject.of("block", org.robotrun.world.ObjectKind.PART,
+        new org.robotrun.world.Shape.Box(40, 40, 40), org.robotrun.world.Rgb.GREY, Transform.translation(0, 0, 230),
+        Optional.of("table"));
+    TreeMap<Integer, Transform> user = new TreeMap<>();
+    user.put(1, Transform.IDENTITY);
+    Scenario sc = new Scenario("suction", "", List.of(robot), new World(List.of(table, part)), List.of(), Optional.empty(),
+        new TreeMap<>(), new TreeMap<>(), user, Optional.empty());
+    Simulation sim = CellRig.cell(sc);
+    // The block's top is at z = -60; the cup's face (UT[1], 110 mm out) goes onto it.
+    var r = CellRig.run(sim, CellRig.program(new String[] {
+        "  UFRAME_NUM=1", "  UTOOL_NUM=1",
+        "L P[1] 500mm/sec FINE", "L P[2] 200mm/sec FINE", "  RO[1]=ON", "  WAIT RI[1]=ON", "  IF RI[2]=OFF,JMP LBL[9]",
+        "L P[1] 500mm/sec FINE", "L P[3] 500mm/sec FINE", "  RO[1]=OFF", "  WAIT RI[1]=OFF", "  END", "  LBL[9]",
+        "  UALM[1]"},
+        "400,0,0", "400,0,-60", "300,100,0"));
+    assertThat(r.alarm()).isEmpty();
+    Transform X_CP = sim.world().poseInCell("block");
+    assertThat(X_CP.x()).isCloseTo(300, org.assertj.core.data.Offset.offset(0.5));
+    assertThat(X_CP.y()).isCloseTo(100, org.assertj.core.data.Offset.offset(0.5));
+    assertThat(X_CP.z()).isCloseTo(-40, org.assertj.core.data.Offset.offset(0.5));
+    assertThat(sim.world().find("block").orElseThrow().parent()).isEmpty();
+    assertThat(sim.collisionEvents()).isEmpty();
+  }
 }
