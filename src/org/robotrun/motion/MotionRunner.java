@@ -36,8 +36,12 @@ import org.robotrun.robot.RobotModel;
  * Deterministic: no wall clock, no randomness. Not thread-safe.
  */
 public final class MotionRunner {
-  /** Time for the path rate to go from 0 to 100% (override changes, HOLD, resume), s. */
-  static final double RATE_RAMP_SEC = 0.2;
+  /**
+   * Time for the path rate to go from 0 to 100% (override changes, HOLD, resume), s: the joint
+   * acceleration time, so a HOLD from a joint cruising at its top speed brakes at that joint's
+   * acceleration limit.
+   */
+  static final double RATE_RAMP_SEC = MotionLimits.JOINT_ACCEL_TIME_SEC;
   /** Path tolerance per tick: the tracker must land within this of the desired pose. */
   static final double TRACK_TOL_MM = 0.01;
   static final double TRACK_TOL_RAD = 1e-4;

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.data.Offset.offset;
 
 import java.io.StringWriter;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
@@ -393,5 +394,41 @@ class ControllerTest {
     HeadlessRun.Result r = HeadlessRun.run(sim, c, "PAUSING", 10, s -> {});
     assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
     assertThat(c.registers().number(1)).isEqualTo(2);
+  }
+
+  @Test
+  void jointMoveOnTheCsvTraceArrivesTogetherWithinSpeedAndAcceleration() {
+    Simulation sim = cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(jointProgram("JMOVE", "J P[2] 100% FINE", new double[] {0, 0, 0, 0, -90, 0},
+        new double[] {70, 25, -20, 120, -30, 200}));
+    StringWriter out = new StringWriter();
+    TraceWriter tw = new TraceWriter(out, sim.controllers());
+    HeadlessRun.Result r = HeadlessRun.run(sim, c, "JMOVE", 60, tw::write);
+    assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
+    List<double[]> rows = out.toString().lines().skip(1)
+        .map(l -> java.util.Arrays.stream(l.split(",")).mapToDouble(Double::parseDouble).toArray()).toList();
+    double dt = Simulation.DEFAULT_TICK_SEC;
+    double[] prevV = new double[6];
+    int[] arrived = new int[6];
+    double[] last = rows.get(rows.size() - 1);
+    for (int k = 1; k < rows.size(); k++) {
+      for (int j = 0; j < 6; j++) {
+        // Limits hold for kinematic joints: J3 kinematic = J3 + J2 on the pendant.
+        double now = rows.get(k)[1 + j] + (j == 2 ? rows.get(k)[2] : 0);
+        double before = rows.get(k - 1)[1 + j] + (j == 2 ? rows.get(k - 1)[2] : 0);
+        double v = (now - before) / dt;
+        double vMax = Math.toDegrees(MODEL.joint(j).maxSpeedRadPerSec());
+        // Trace values carry 1e-6 deg: tolerances are that rounding, far below the limits.
+        assertThat(Math.abs(v)).isLessThanOrEqualTo(vMax * (1 + 1e-6) + 1e-3);
+        assertThat(Math.abs(v - prevV[j]) / dt).isLessThanOrEqualTo(vMax / 0.25 * (1 + 1e-6) + 1);
+        prevV[j] = v;
+        if (arrived[j] == 0 && Math.abs(rows.get(k)[1 + j] - last[1 + j]) < 1e-6) {
+          arrived[j] = k;
+        }
+      }
+    }
+    // Every joint reaches its target on the same tick.
+    assertThat(java.util.Arrays.stream(arrived).distinct().count()).isEqualTo(1);
   }
 }
