@@ -16,6 +16,7 @@ import picocli.CommandLine.Command;
       BenchBroadPhaseCommand.class,
       BenchScenarioCommand.class,
       BenchSimCommand.class,
+      BenchCellCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

@@ -18,6 +18,7 @@ import org.robotrun.sim.Controller;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
+import org.robotrun.ui.CellPanel;
 import org.robotrun.ui.PendantKeyboard;
 import org.robotrun.ui.PendantPanel;
 import org.robotrun.ui.RobotStatusPanel;
@@ -71,6 +72,7 @@ public final class GuiCommand implements Callable<Integer> {
     programs.forEach(control::saveProgram);
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);
+    CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
     try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height)) {
       if (sc != null) {
@@ -95,6 +97,7 @@ public final class GuiCommand implements Callable<Integer> {
             double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
             RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
             pendantPanel.draw(fw, fh);
+            cellPanel.draw();
           });
     } catch (GlUnavailableException e) {
       throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);

@@ -274,30 +274,29 @@ final class CellCollisions {
 
   /** Grips and releases: allow the contacts they start with, and new held-part rules. */
   private void applyEvents() {
-    List<CellState.Event> events = cell.drainEvents();
     World world = cell.world();
-    if (events.isEmpty() && cell.heldBy().isEmpty()) {
-      // A reset: nothing is held, nothing needs allowing.
-      allowed.clear();
-    }
-    for (CellState.Event e : events) {
-      Obb box = partBox(world, e.part(), e instanceof CellState.Event.Gripped);
-      Body part = collision.body(objects.handle(e.part()));
-      String robot = controllers.get(e.robot()).name();
-      for (int h : collision.overlapping(box, b -> !b.owner().equals(e.part()))) {
-        Body other = collision.body(h);
-        boolean allow = switch (e) {
-          // What the part rests on or leans against when it is taken.
-          case CellState.Event.Gripped g -> other.kind() != BodyKind.ROBOT;
-          // The tool (or wrist) that just let it go.
-          case CellState.Event.Released rel -> other.kind() == BodyKind.ROBOT && other.owner().equals(robot);
-        };
-        if (allow) {
-          allowed.add(BodyPair.of(part, other));
+    for (CellState.Event e : cell.drainEvents()) {
+      switch (e) {
+        // What the part rests on or leans against when it is taken.
+        case CellState.Event.Gripped g -> allowTouching(world, g.part(), true, other -> other.kind() != BodyKind.ROBOT);
+        // The tool (or wrist) that just let it go.
+        case CellState.Event.Released rel -> {
+          String robot = controllers.get(rel.robot()).name();
+          allowTouching(world, rel.part(), false, other -> other.kind() == BodyKind.ROBOT && other.owner().equals(robot));
         }
+        // Everything back at its start: nothing held, nothing to allow.
+        case CellState.Event.Reset reset -> allowed.clear();
       }
     }
     collision.setFilter(filter());
+  }
+
+  /** Allows the contacts {@code part} has now with the bodies {@code which} accepts. */
+  private void allowTouching(World world, String part, boolean held, java.util.function.Predicate<Body> which) {
+    Body p = collision.body(objects.handle(part));
+    for (int h : collision.overlapping(partBox(world, part, held), b -> !b.owner().equals(part) && which.test(b))) {
+      allowed.add(BodyPair.of(p, collision.body(h)));
+    }
   }
 
   /** Drops allowed pairs whose boxes no longer touch; the new rules apply from the next check. */

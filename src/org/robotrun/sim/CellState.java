@@ -45,15 +45,16 @@ public final class CellState {
   /** How far a released part may be above (or sunk into) a fixture top and still be set on it (mm). */
   public static final double SNAP_MM = 2;
 
-  /** A grip or release, for the collision check's allowances. */
+  /** A grip, a release or a reset, for the collision check's allowances. */
   sealed interface Event {
-    String part();
-
-    int robot();
-
+    /** Robot {@code robot} (controller index) took {@code part}. */
     record Gripped(String part, int robot) implements Event {}
 
+    /** Robot {@code robot} let go of {@code part}. */
     record Released(String part, int robot) implements Event {}
+
+    /** Every part went back to its start. */
+    record Reset() implements Event {}
   }
 
   private World world;
@@ -92,6 +93,7 @@ public final class CellState {
       t.ifPresent(EndEffectorState::reset);
     }
     events.clear();
+    events.add(new Event.Reset());
     version++;
   }
 
@@ -112,7 +114,7 @@ public final class CellState {
     return version;
   }
 
-  /** Grips and releases since the last call, oldest first. */
+  /** Grips, releases and resets since the last call, oldest first. */
   List<Event> drainEvents() {
     List<Event> out = List.copyOf(events);
     events.clear();
@@ -132,6 +134,7 @@ public final class CellState {
       if (tools.get(r).isEmpty()) {
         continue;
       }
+      // X_CF[r] is computed only for tools that pick or trace (see needsFlangePose).
       EndEffectorState s = tools.get(r).get();
       Registers io = controllers.get(r).registers();
       // The held part follows the flange first, so a release leaves it where the flange is now.
@@ -252,6 +255,11 @@ public final class CellState {
         hi[k] = Math.max(hi[k], c[k]);
       }
     }
+  }
+
+  /** Whether robot {@code r}'s tool needs its flange pose each tick (it picks parts or leaves a trace). */
+  boolean needsFlangePose(int r) {
+    return tools.get(r).map(t -> t.geometry.picksParts() || t.geometry.leavesTrace()).orElse(false);
   }
 
   /** The trace of robot {@code r}'s process tool (empty for other tools). */

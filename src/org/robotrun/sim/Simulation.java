@@ -95,8 +95,10 @@ public final class Simulation {
   }
 
   /**
-   * Advances every controller by one tick, then checks collisions: a contact that begins raises
-   * {@link #COLLISION_ALARM} on each robot involved (the arm stops, the program pauses).
+   * Advances every controller by one tick, then the end effectors (grips, releases, held parts,
+   * fingers, traces; {@link CellState}), then checks collisions: a contact that begins raises
+   * {@link #COLLISION_ALARM} on each robot involved (the arm stops, the program pauses), or is
+   * only recorded when {@link #setCollisionAlarms} is off.
    */
   public void step() {
     for (Controller c : controllers) {
@@ -104,7 +106,7 @@ public final class Simulation {
     }
     ticks++;
     for (int r = 0; r < controllers.size(); r++) {
-      if (cell.tool(r).isPresent()) {
+      if (cell.needsFlangePose(r)) {
         Controller c = controllers.get(r);
         X_CF[r] = X_CW.get(r).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
       }
@@ -114,21 +116,35 @@ public final class Simulation {
       if (collisions == null) {
         collisions = new CellCollisions(controllers, X_CW, cell, floorZ);
       }
-      for (CellCollisions.NewContact k : collisions.check(toolsMoved)) {
-        if (collisionEvents.size() < MAX_EVENTS) {
-          collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b()));
-        }
-        if (!collisionAlarms) {
-          continue;
-        }
-        // A held part's contact stops the robot holding it.
-        var held = cell.heldBy();
-        String robotA = held.getOrDefault(k.aOwner(), k.aOwner());
-        String robotB = held.getOrDefault(k.bOwner(), k.bOwner());
-        for (Controller c : controllers) {
-          if (c.name().equals(robotA) || c.name().equals(robotB)) {
-            c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
-          }
+      List<CellCollisions.NewContact> began = collisions.check(toolsMoved);
+      if (!began.isEmpty()) {
+        reportContacts(began);
+      }
+    }
+  }
+
+  /**
+   * Records contacts that began and, unless collisions only warn, raises one alarm per robot
+   * involved (two fingers meeting the table in one tick are one collision); a held part's
+   * contact stops the robot holding it.
+   */
+  private void reportContacts(List<CellCollisions.NewContact> began) {
+    boolean[] alarmed = new boolean[controllers.size()];
+    var held = cell.heldBy();
+    for (CellCollisions.NewContact k : began) {
+      if (collisionEvents.size() < MAX_EVENTS) {
+        collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b()));
+      }
+      if (!collisionAlarms) {
+        continue;
+      }
+      String robotA = held.getOrDefault(k.aOwner(), k.aOwner());
+      String robotB = held.getOrDefault(k.bOwner(), k.bOwner());
+      for (int r = 0; r < controllers.size(); r++) {
+        Controller c = controllers.get(r);
+        if (!alarmed[r] && (c.name().equals(robotA) || c.name().equals(robotB))) {
+          c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
+          alarmed[r] = true;
         }
       }
     }

@@ -1,0 +1,93 @@
+package org.robotrun.app;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.robotrun.io.FileFormatException;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.program.Program;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.HeadlessRun;
+import org.robotrun.sim.ScenarioCell;
+import org.robotrun.sim.Simulation;
+import org.robotrun.world.Scenario;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code robotrun bench cell}: per-tick cost of a scenario's whole cell, and its program's cycle time. */
+@Command(
+    name = "cell",
+    mixinStandardHelpOptions = true,
+    description = {
+      "Run a scenario's main program headless, --repeats times after one warm-up run, with collision checking on "
+          + "and off, timing the CPU of the running thread.",
+      "Prints the cycle time (simulated), ticks, CPU microseconds per tick with and without collisions (best and "
+          + "median), and their difference: the whole-scene collision cost per tick (robot links, end effector, "
+          + "fixtures, parts, held parts; grips and set-downs are in both).",
+      "Output: scenario=F program=P cycle_s=C ticks=N objects=B tick_us_on=X median_on=X' tick_us_off=Y median_off=Y' "
+          + "collision_us_per_tick=D"
+    })
+public final class BenchCellCommand implements Callable<Integer> {
+  @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
+
+  @Option(names = "--scenario", required = true, paramLabel = "FILE.json", description = "The scenario; it must name a mainProgram.")
+  Path scenario;
+
+  @Option(names = "--repeats", defaultValue = "5", description = "Measured runs with and without collisions (default: ${DEFAULT-VALUE}).")
+  int repeats;
+
+  @Override
+  public Integer call() throws IOException {
+    if (repeats < 1 || repeats > 1000) {
+      throw new UserError("--repeats: expected 1..1000, got " + repeats);
+    }
+    Scenario sc = ScenarioFiles.load(scenario);
+    String program = sc.mainProgram().orElseThrow(() -> new UserError("--scenario: " + scenario + " names no mainProgram"));
+    List<Program> programs = RunCommand.loadPrograms(sc.programs());
+    double cycle = 0;
+    long ticks = 0;
+    int bodies = 0;
+    double[][] usPerTick = new double[2][repeats];
+    for (int k = -1; k < repeats; k++) {
+      for (int on = 0; on < 2; on++) {
+        Simulation sim;
+        try {
+          sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+        } catch (FileFormatException | IllegalArgumentException e) {
+          throw new UserError(scenario + ": " + e.getMessage());
+        }
+        sim.setCollisionChecking(on == 0);
+        Controller c = sim.controllers().get(0);
+        programs.forEach(c::saveProgram);
+        long t0 = BenchClock.CPU.nanos();
+        HeadlessRun.Result r = HeadlessRun.run(sim, c, program, 600, s -> {});
+        long ns = BenchClock.CPU.nanos() - t0;
+        if (r.status() != HeadlessRun.Status.FINISHED) {
+          throw new UserError(program + " did not finish: " + r.alarm().map(a -> a.display()).orElse("?"), Main.EXIT_FAILED);
+        }
+        if (k >= 0) {
+          usPerTick[on][k] = ns / 1e3 / r.ticks();
+        }
+        cycle = r.cycleTimeSec();
+        ticks = r.ticks();
+        bodies = sc.world().objects().size();
+      }
+    }
+    for (double[] a : usPerTick) {
+      Arrays.sort(a);
+    }
+    double medOn = usPerTick[0][repeats / 2];
+    double medOff = usPerTick[1][repeats / 2];
+    java.io.PrintWriter out = spec.commandLine().getOut();
+    out.printf(Locale.ROOT,
+        "scenario=%s program=%s cycle_s=%.3f ticks=%d objects=%d tick_us_on=%.2f median_on=%.2f tick_us_off=%.2f "
+            + "median_off=%.2f collision_us_per_tick=%.2f repeats=%d%n",
+        scenario.getFileName(), program, cycle, ticks, bodies, usPerTick[0][0], medOn, usPerTick[1][0], medOff,
+        medOn - medOff, repeats);
+    out.flush();
+    return Main.EXIT_OK;
+  }
+}
