@@ -7,8 +7,12 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
@@ -108,11 +112,12 @@ public final class RunCommand implements Callable<Integer> {
     }
     programFiles.addAll(programs);
     List<Program> loaded = loadPrograms(programFiles);
-    if (loaded.stream().noneMatch(p -> p.name().equals(program))) {
-      throw new UserError("--program: no program named " + program + " among the loaded files"
-          + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
-              + String.join(", ", loaded.stream().map(Program::name).toList()) + ")"));
-    }
+    // Program names are upper case on the controller; accept 'pick3' for PICK3.
+    String wanted = program;
+    program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
+        .orElseThrow(() -> new UserError("--program: no program named " + wanted + " among the loaded files"
+            + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
+                + String.join(", ", loaded.stream().map(Program::name).toList()) + ")")));
     Controller c = sim.controllers().get(0);
     loaded.forEach(c::saveProgram);
     c.setOverridePct(overridePct);
@@ -152,16 +157,23 @@ public final class RunCommand implements Callable<Integer> {
     }
   }
 
-  /** Reads every .LS file named or found in the named directories; any error is bad input. */
+  /**
+   * Reads every .LS file named or found in the named directories; any error is bad input, and so
+   * is a program name defined by two files (which one would run is not the user's choice).
+   */
   static List<Program> loadPrograms(List<Path> paths) throws IOException {
     List<Path> files = new ArrayList<>();
     for (Path p : paths) {
       if (Files.isDirectory(p)) {
+        int before = files.size();
         try (Stream<Path> s = Files.list(p)) {
           s.filter(f -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".ls"))
               .filter(Files::isRegularFile)
               .sorted()
               .forEach(files::add);
+        }
+        if (files.size() == before) {
+          throw new UserError("--programs: the directory " + p + " holds no .LS files");
         }
       } else if (Files.isRegularFile(p)) {
         files.add(p);
@@ -171,11 +183,21 @@ public final class RunCommand implements Callable<Integer> {
     }
     List<Program> out = new ArrayList<>();
     List<String> errors = new ArrayList<>();
+    Map<String, Path> definedIn = new HashMap<>();
+    Set<Path> seen = new HashSet<>();
     for (Path f : files) {
+      if (!seen.add(f.toRealPath())) {
+        continue;  // the same file named twice (a file and its directory, say)
+      }
       LsReadResult r = LsReader.read(f);
       r.diagnostics().stream().filter(Diagnostic::isError).map(Diagnostic::toString).forEach(errors::add);
       if (!r.hasErrors()) {
-        out.add(r.program());
+        Path first = definedIn.putIfAbsent(r.program().name(), f);
+        if (first != null) {
+          errors.add(f + ":1: program " + r.program().name() + " is also defined in " + first);
+        } else {
+          out.add(r.program());
+        }
       }
     }
     if (!errors.isEmpty()) {

@@ -396,6 +396,17 @@ final class LsStatementParser extends LsTokenCursor {
   private Instruction waitStatement() {
     Expr e = expression();
     if (peek().is(Kind.LPAREN) && peek(1).isWord("sec")) {
+      // A negative constant would end the WAIT at once without a word; say so when the file is read.
+      boolean negative = switch (e) {
+        case Expr.IntConst i -> i.value() < 0;
+        case Expr.RealConst r -> r.value() < 0;
+        case Expr.Unary u -> u.op() == Expr.UnaryOp.MINUS
+            && (u.operand() instanceof Expr.IntConst || u.operand() instanceof Expr.RealConst);
+        default -> false;
+      };
+      if (negative) {
+        throw error("WAIT time must be 0 or more seconds, found a negative constant");
+      }
       expectSecUnit();
       return new Instruction.WaitTime(e instanceof Expr.IntConst i ? new Expr.RealConst(i.value()) : e);
     }

@@ -65,15 +65,8 @@ final class IoScreen implements Screen {
       });
       default -> {
         if (kind.group() && (k.keypadChar().isPresent() || k == Key.ENTER)) {
-          String start = k.keypadChar().map(String::valueOf).orElse("");
-          p.entry(kind + "[" + n + "] value:", start, false, s -> {
-            Optional<Integer> v = Pendant.parseInt(s, 0, 65535);
-            if (v.isEmpty()) {
-              return Optional.of("Group value must be 0..65535, got '" + s.trim() + "'");
-            }
-            p.control().registers().setValue(kind, n, v.get());
-            return Optional.empty();
-          });
+          // The key that opens the entry is its first character (a keypad digit), kept as typed.
+          groupValueEntry(p, k.keypadChar().map(String::valueOf).orElse(null));
         } else if (k == Key.ENTER) {
           boolean on = !p.control().registers().bit(kind, n);
           p.control().registers().setBit(kind, n, on);
@@ -82,5 +75,29 @@ final class IoScreen implements Screen {
         }
       }
     }
+  }
+
+  @Override
+  public void text(Pendant p, String s) {
+    if (kind.group()) {
+      groupValueEntry(p, s);
+    } else {
+      Screen.super.text(p, s);
+    }
+  }
+
+  /** The value entry of the group port under the cursor; {@code typed} starts it, or null for none. */
+  private void groupValueEntry(Pendant p, String typed) {
+    IoKind k = kind;
+    int n = cursor[k.ordinal()] + 1;
+    p.entryOrTyped(k + "[" + n + "] value:", typed, "", false, s -> {
+      Optional<Integer> v = Pendant.parseInt(s, 0, 65535);
+      if (v.isEmpty()) {
+        return Optional.of("Group value must be 0..65535, got '" + s.trim() + "'");
+      }
+      p.control().registers().setValue(k, n, v.get());
+      p.message(k + "[" + n + "]=" + v.get() + (k.writable() ? "" : " (simulated input)"));
+      return Optional.empty();
+    });
   }
 }

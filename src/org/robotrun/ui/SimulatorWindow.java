@@ -49,9 +49,20 @@ public final class SimulatorWindow implements AutoCloseable {
   }
 
   public SimulatorWindow(String title, int width, int height) {
-    GLFWErrorCallback.createPrint(System.err).set();
+    // One line per GLFW error, never LWJGL's stack-trace print; the last one goes into the
+    // message when the window cannot open.
+    String[] lastError = {""};
+    boolean[] open = {false};
+    GLFWErrorCallback.create((code, description) -> {
+      lastError[0] = GLFWErrorCallback.getDescription(description);
+      if (open[0]) {
+        System.err.println("robotrun: GLFW: " + lastError[0]);
+      }
+    }).set();
     if (!glfwInit()) {
-      throw new GlUnavailableException("GLFW could not start (is there a display? try 'robotrun render' for headless use)");
+      freeErrorCallback();
+      throw new GlUnavailableException("GLFW could not start" + (lastError[0].isEmpty() ? "" : " (" + lastError[0] + ")")
+          + ": is there a display? try 'robotrun render' for headless use");
     }
     glfwDefaultWindowHints();
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
@@ -64,8 +75,11 @@ public final class SimulatorWindow implements AutoCloseable {
     window = glfwCreateWindow(width, height, title, 0, 0);
     if (window == 0) {
       glfwTerminate();
-      throw new GlUnavailableException("could not open a window with OpenGL 3.3 (update the graphics driver or Mesa)");
+      freeErrorCallback();
+      throw new GlUnavailableException("could not open a window with OpenGL 3.3" + (lastError[0].isEmpty() ? "" : " (" + lastError[0] + ")")
+          + ": update the graphics driver or Mesa");
     }
+    open[0] = true;
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
     Configuration.OPENGL_EXPLICIT_INIT.set(true);
@@ -194,6 +208,10 @@ public final class SimulatorWindow implements AutoCloseable {
     glfwDestroyWindow(window);
     glfwTerminate();
     GL.destroy();
+    freeErrorCallback();
+  }
+
+  private static void freeErrorCallback() {
     GLFWErrorCallback cb = glfwSetErrorCallback(null);
     if (cb != null) {
       cb.free();

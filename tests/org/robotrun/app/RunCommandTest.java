@@ -1,11 +1,13 @@
 package org.robotrun.app;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -152,5 +154,29 @@ class RunCommandTest {
     Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  R[1]=((1 ;\n/END\n");
     assertThat(Main.execute("run", "--program", "BROKEN", "--programs", broken.toString())).isEqualTo(2);
     assertThat(Main.execute("run", "--programs", EXAMPLE.toString())).isEqualTo(2);
+  }
+
+  @Test
+  void aProgramNameDefinedByTwoFilesIsBadInputNamingBoth(@TempDir Path dir) throws Exception {
+    Files.copy(EXAMPLE, dir.resolve("A.LS"));
+    Files.copy(EXAMPLE, dir.resolve("B.ls"));
+    assertThatThrownBy(() -> RunCommand.loadPrograms(List.of(dir)))
+        .isInstanceOf(UserError.class)
+        .hasMessage(dir.resolve("B.ls") + ":1: program PICKPLACE is also defined in " + dir.resolve("A.LS"));
+    assertThat(Main.execute("run", "--program", "PICKPLACE", "--programs", dir.toString())).isEqualTo(2);
+    // The same file twice is one program.
+    assertThat(RunCommand.loadPrograms(List.of(EXAMPLE, EXAMPLE, EXAMPLE.getParent()))).hasSize(1);
+  }
+
+  @Test
+  void aDirectoryWithoutProgramsIsBadInputSayingSo(@TempDir Path dir) {
+    assertThatThrownBy(() -> RunCommand.loadPrograms(List.of(dir)))
+        .isInstanceOf(UserError.class)
+        .hasMessage("--programs: the directory " + dir + " holds no .LS files");
+  }
+
+  @Test
+  void theProgramNameMayBeGivenInAnyCase() {
+    assertThat(Main.execute("run", "--program", "pickplace", "--programs", EXAMPLE.toString())).isZero();
   }
 }

@@ -162,6 +162,7 @@ class LsReaderTest {
         "  14:J PR[1] 20% CNT120    ;",
         "  15:J PR[1] 300% FINE    ;",
         "  16:L PR[1] 0mm/sec FINE    ;",
+        "  17:  WAIT -5(sec) ;",
         "")) ;
     assertThat(messages(r)).containsExactly(
         "t.ls:5: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found end of line",
@@ -177,9 +178,10 @@ class LsReaderTest {
         "t.ls:16: not supported: motion option 'Frobnicate' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)",
         "t.ls:17: CNT120: expected 0..100",
         "t.ls:18: speed 300%: expected 1..100%",
-        "t.ls:19: speed 0mm/sec: expected a speed greater than 0");
+        "t.ls:19: speed 0mm/sec: expected a speed greater than 0",
+        "t.ls:20: WAIT time must be 0 or more seconds, found a negative constant");
     // Bad lines keep their place, so line numbering of the rest holds.
-    assertThat(r.program().lineCount()).isEqualTo(16);
+    assertThat(r.program().lineCount()).isEqualTo(17);
     assertThat(r.program().line(8)).isInstanceOf(Instruction.AssignRegister.class);
     assertThat(r.program().line(2)).isEqualTo(new Instruction.CommentedOut("R[1]="));
   }

@@ -350,6 +350,35 @@ class PendantMotionAndDataTest {
   }
 
   @Test
+  void aGroupPortTakesANumberFromItsFirstKeypadDigitOrFromTypedText() {
+    run(p, """
+        I/O
+        F1
+        6
+        7
+        0
+        ENTER
+        """);
+    assertThat(control.registers().value(IoKind.GO, 1)).isEqualTo(70);
+    assertThat(p.lcd().promptLine()).contains("GO[1]=70");
+    run(p, """
+        F1
+        5
+        DOWN
+        TYPE 65535
+        ENTER
+        """);
+    assertThat(control.registers().value(IoKind.GI, 2)).isEqualTo(65535);
+    assertThat(p.lcd().promptLine()).contains("GI[2]=65535 (simulated input)");
+    run(p, """
+        TYPE 70000
+        ENTER
+        """);
+    assertThat(control.registers().value(IoKind.GI, 2)).isEqualTo(65535);
+    assertThat(p.lcd().promptLine()).contains("Group value must be 0..65535, got '70000'");
+  }
+
+  @Test
   void alarmOnTheTopLineOfEveryScreenUntilReset() {
     run(p, """
         SELECT
