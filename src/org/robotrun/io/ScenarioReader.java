@@ -28,6 +28,7 @@ import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.world.CameraView;
 import org.robotrun.world.CollisionResponse;
+import org.robotrun.world.ToolIo;
 import org.robotrun.world.EndEffectorType;
 import org.robotrun.world.ObjectKind;
 import org.robotrun.world.Rgb;
@@ -62,7 +63,8 @@ public final class ScenarioReader {
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
       "onCollision");
-  private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg");
+  private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo");
+  private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
       "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent");
   private static final Map<String, Set<String>> SHAPE_FIELDS = Map.of(
@@ -188,12 +190,48 @@ public final class ScenarioReader {
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
         double[] jointsRad = joints(r, at, model);
-        if (model.isPresent() && X_CB != null && tool != null && jointsRad != null) {
+        ToolIo io = toolIo(r, at);
+        if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null) {
           out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
-              Arrays.stream(jointsRad).boxed().toList()));
+              Arrays.stream(jointsRad).boxed().toList(), io));
         }
       }
       return out;
+    }
+
+    /** The robot's {@code toolIo}: default RO[1], RI[1], RI[2]; null after an error. */
+    private ToolIo toolIo(JObject r, String at) {
+      if (!r.members().containsKey("toolIo")) {
+        return ToolIo.DEFAULT;
+      }
+      String path = join(at, "toolIo");
+      JObject t = member(r, "toolIo", at, TOOL_IO, false);
+      if (t == null) {
+        return null;
+      }
+      Integer output = port(t, "output", path, ToolIo.DEFAULT.output());
+      Integer actuated = port(t, "actuated", path, ToolIo.DEFAULT.actuatedInput());
+      Integer holding = port(t, "holding", path, ToolIo.DEFAULT.holdingInput());
+      if (output == null || actuated == null || holding == null) {
+        return null;
+      }
+      if (actuated.equals(holding)) {
+        error(t.line(), path, "actuated and holding must be different inputs, both are RI[" + holding + "]");
+        return null;
+      }
+      return new ToolIo(output, actuated, holding);
+    }
+
+    private Integer port(JObject o, String key, String at, int fallback) {
+      LocatedJson v = o.members().get(key);
+      if (v == null) {
+        return fallback;
+      }
+      if (!(v instanceof JNumber n) || !n.integral() || n.value() < 1 || n.value() > ToolIo.MAX_PORT) {
+        error(v.line(), join(at, key), "expected a port number 1.." + ToolIo.MAX_PORT + ", got " + v.describe());
+        return null;
+      }
+      return (int) n.value();
     }
 
     private Optional<RobotModel> model(String id, JObject r, String at) {

@@ -59,6 +59,13 @@ public final class ScenarioWriter {
           g.writeNumber(tidyText(Math.toDegrees(q)));
         }
         g.writeEndArray();
+        if (!r.toolIo().equals(org.robotrun.world.ToolIo.DEFAULT)) {
+          g.writeObjectFieldStart("toolIo");
+          g.writeNumberField("output", r.toolIo().output());
+          g.writeNumberField("actuated", r.toolIo().actuatedInput());
+          g.writeNumberField("holding", r.toolIo().holdingInput());
+          g.writeEndObject();
+        }
         g.writeEndObject();
       }
       g.writeEndArray();

@@ -10,7 +10,6 @@ import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Registers;
-import org.robotrun.world.EndEffectorGeometry;
 import org.robotrun.world.ObjectKind;
 import org.robotrun.world.World;
 import org.robotrun.world.WorldObject;
@@ -18,10 +17,11 @@ import org.robotrun.world.WorldObject;
 /**
  * What moves in a cell besides the arms: the world's parts and each robot's end effector.
  *
- * <p>I/O, per robot with an end effector: {@link #OUTPUT} (RO[1]) switches it on (close the
- * gripper, vacuum on, dispense); {@link #INPUT_ACTUATED} (RI[1]) turns ON
+ * <p>I/O, per robot with an end effector, on the ports its {@link org.robotrun.world.ToolIo}
+ * names (by default {@link #OUTPUT}, {@link #INPUT_ACTUATED}, {@link #INPUT_HOLDING}): RO[1]
+ * switches it on (close the gripper, vacuum on, dispense); RI[1] turns ON
  * {@link EndEffectorState#ACTUATION_SEC} after RO[1] goes ON and OFF as long after it goes OFF;
- * {@link #INPUT_HOLDING} (RI[2]) is ON while a part is held.
+ * RI[2] is ON while a part is held.
  *
  * <p>Gripping: when RO[1] goes ON, a gripper or suction cup takes the part whose box overlaps
  * its pickup zone (the one nearest the TCP if several do) and keeps its pose in the flange
@@ -68,7 +68,7 @@ public final class CellState {
    * @param endEffectors one per robot: its tool, or empty for a robot without one (the default
    *     cell, where the controller's simple gripper I/O runs instead)
    */
-  CellState(World world, List<String> robotNames, List<Optional<EndEffectorGeometry>> endEffectors) {
+  CellState(World world, List<String> robotNames, List<Optional<MountedTool>> endEffectors) {
     if (robotNames.size() != endEffectors.size()) {
       throw new IllegalArgumentException("one end effector entry per robot");
     }
@@ -142,7 +142,7 @@ public final class CellState {
         EndEffectorState.Held h = s.held().get();
         world = world.with(world.find(h.part()).orElseThrow().movedTo(X_CF[r].compose(h.X_FP()), Optional.empty()));
       }
-      boolean cmd = io.bit(IoKind.RO, OUTPUT);
+      boolean cmd = io.bit(IoKind.RO, s.io.output());
       if (cmd != s.on()) {
         s.setOn(cmd);
         if (cmd && s.geometry.picksParts()) {
@@ -155,12 +155,12 @@ public final class CellState {
       if (s.on() && s.geometry.leavesTrace()) {
         s.extendTrace(X_CF[r].compose(s.geometry.X_FT()).translationVector());
       }
-      if (s.settled() && io.bit(IoKind.RI, INPUT_ACTUATED) != s.on()) {
-        io.setBit(IoKind.RI, INPUT_ACTUATED, s.on());
+      if (s.settled() && io.bit(IoKind.RI, s.io.actuatedInput()) != s.on()) {
+        io.setBit(IoKind.RI, s.io.actuatedInput(), s.on());
       }
       boolean holding = s.held().isPresent();
-      if (io.bit(IoKind.RI, INPUT_HOLDING) != holding) {
-        io.setBit(IoKind.RI, INPUT_HOLDING, holding);
+      if (io.bit(IoKind.RI, s.io.holdingInput()) != holding) {
+        io.setBit(IoKind.RI, s.io.holdingInput(), holding);
       }
     }
     return toolsMoved;

@@ -30,6 +30,7 @@ final class EndEffectorState {
 
   final String robot;
   final EndEffectorGeometry geometry;
+  final org.robotrun.world.ToolIo io;
   private boolean on;
   /** 0 = open (or no vacuum) … 1 = closed (vacuum on); moves at 1 / {@link #ACTUATION_SEC}. */
   private double closedFraction;
@@ -40,8 +41,13 @@ final class EndEffectorState {
   private Vec3 lastTracePoint;
 
   EndEffectorState(String robot, EndEffectorGeometry geometry) {
+    this(robot, MountedTool.of(geometry));
+  }
+
+  EndEffectorState(String robot, MountedTool tool) {
     this.robot = robot;
-    this.geometry = geometry;
+    this.geometry = tool.geometry();
+    this.io = tool.io();
   }
 
   boolean on() {

@@ -31,7 +31,7 @@ public final class ScenarioCell {
   public static Simulation build(Scenario scenario, Function<String, RobotModel> models, double tickSec) {
     List<Controller> controllers = new ArrayList<>();
     List<Transform> placements = new ArrayList<>();
-    List<Optional<EndEffectorGeometry>> tools = new ArrayList<>();
+    List<Optional<MountedTool>> tools = new ArrayList<>();
     double floorZ = Double.POSITIVE_INFINITY;
     for (RobotSetup r : scenario.robots()) {
       RobotModel model = models.apply(r.modelId());
@@ -46,7 +46,7 @@ public final class ScenarioCell {
       }
       controllers.add(c);
       EndEffectorGeometry tool = EndEffectorGeometry.of(r.endEffector());
-      tools.add(Optional.of(tool));
+      tools.add(Optional.of(new MountedTool(tool, r.toolIo())));
       boolean firstWithUt1 = controllers.size() == 1 && scenario.toolFrames().containsKey(1);
       if (!tool.X_FT().equals(Transform.IDENTITY) && !firstWithUt1) {
         c.frames().setTransform(FrameKind.TOOL, 1, tool.X_FT());

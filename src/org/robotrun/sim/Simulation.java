@@ -7,7 +7,6 @@ import java.util.Optional;
 import org.robotrun.math.Transform;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.robot.ForwardKinematics;
-import org.robotrun.world.EndEffectorGeometry;
 import org.robotrun.world.World;
 
 /**
@@ -67,7 +66,7 @@ public final class Simulation {
    * @param endEffectors one per robot, in controller order
    */
   public Simulation(List<Controller> controllers, List<Transform> X_CW, World world,
-      List<Optional<EndEffectorGeometry>> endEffectors, double floorZ, double tickSec) {
+      List<Optional<MountedTool>> endEffectors, double floorZ, double tickSec) {
     if (!(tickSec > 0 && tickSec <= 0.1)) {
       throw new IllegalArgumentException("tick must be in (0, 0.1] s, got " + tickSec);
     }

@@ -11,13 +11,21 @@ import org.robotrun.math.Transform;
  * @param X_CB the robot's base frame (on its mounting plate, on the J1 axis) in the cell (mm)
  * @param endEffector the tool on its flange
  * @param initialJointsRad six joint values in the pendant's convention (FANUC coupled J3), rad
+ * @param toolIo the I/O ports the end effector uses
  */
-public record RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad) {
+public record RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
+    ToolIo toolIo) {
   public RobotSetup {
+    java.util.Objects.requireNonNull(toolIo, "toolIo");
     initialJointsRad = List.copyOf(initialJointsRad);
     if (initialJointsRad.size() != 6) {
       throw new IllegalArgumentException("a robot needs 6 initial joint values, got " + initialJointsRad.size());
     }
+  }
+
+  /** A robot whose end effector uses {@link ToolIo#DEFAULT} (RO[1], RI[1], RI[2]). */
+  public RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad) {
+    this(name, modelId, X_CB, endEffector, initialJointsRad, ToolIo.DEFAULT);
   }
 
   /** The initial joints as an array (rad, pendant convention). */

@@ -100,6 +100,28 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void toolIoMapsTheEndEffectorPortsAndIsWrittenBack() throws Exception {
+    String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\", \"toolIo\": {\"output\": 3, \"holding\": 7},");
+    Path file = write("io.json", text);
+    Scenario s = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario();
+    assertThat(s.robots().getFirst().toolIo()).isEqualTo(new org.robotrun.world.ToolIo(3, 1, 7));
+    ScenarioWriter.write(s, file);
+    assertThat(((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario().robots().getFirst().toolIo())
+        .isEqualTo(new org.robotrun.world.ToolIo(3, 1, 7));
+  }
+
+  @Test
+  void badToolIoPortIsNamedWithItsLine() throws Exception {
+    String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\",\n \"toolIo\": {\"output\": 65},");
+    ScenarioError e = onlyError(write("bad-io.json", text));
+    assertThat(e.path()).isEqualTo("robots[0].toolIo.output");
+    assertThat(e.line()).isEqualTo(lineOf(text, "\"toolIo\""));
+    assertThat(e.message()).contains("1..64").contains("65");
+  }
+
+  @Test
   void unknownFieldIsNamedWithItsLine() throws Exception {
     String text = withObjects(TABLE.replace("\"kind\"", "\"colour\": \"#ffffff\", \"kind\""));
     ScenarioError e = onlyError(write("s.json", text));

@@ -205,4 +205,27 @@ class PickAndPlaceTest {
     Optional<String> none = Optional.empty();
     assertThat(s.held().map(EndEffectorState.Held::part)).isEqualTo(none);
   }
+
+  @Test
+  void mappedToolOutputDrivesTheGripper() {
+    var sc = CellRig.scenario("pick-and-place.json");
+    var r0 = sc.robots().get(0);
+    var mapped = new org.robotrun.world.RobotSetup(r0.name(), r0.modelId(), r0.X_CB(), r0.endEffector(), r0.initialJointsRad(),
+        new org.robotrun.world.ToolIo(3, 4, 5));
+    var sc2 = new org.robotrun.world.Scenario(sc.name(), sc.description(), java.util.List.of(mapped), sc.world(), sc.programs(),
+        sc.mainProgram(), sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision());
+    Simulation sim = CellRig.cell(sc2);
+    var r = CellRig.run(sim, CellRig.program(new String[] {
+        "  UFRAME_NUM=1", "  UTOOL_NUM=1",
+        "L P[1] 500mm/sec FINE", "L P[2] 300mm/sec FINE",
+        "  RO[1]=ON", "  WAIT 0.20(sec)", "  RO[3]=ON", "  WAIT RI[4]=ON", "L P[1] 500mm/sec FINE"},
+        "120,170,80", "120,170,20"));
+    assertThat(r.alarm()).isEmpty();
+    var io = sim.controllers().get(0).registers();
+    // RO[1] did nothing; RO[3] gripped, RI[4] reports it closed and RI[5] holding.
+    assertThat(sim.heldParts()).containsEntry("part1", "robot1");
+    assertThat(io.bit(IoKind.RI, 5)).isTrue();
+    assertThat(io.bit(IoKind.RI, 1)).isFalse();
+    assertThat(io.bit(IoKind.RI, 2)).isFalse();
+  }
 }
