@@ -81,6 +81,10 @@ public final class ScenarioReader {
         return fail(name, 0, "file is " + size + " bytes; scenario files are limited to " + MAX_FILE_BYTES + " bytes");
       }
       text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
+      // Some Windows editors start UTF-8 files with a byte-order mark; it is not JSON.
+      if (text.startsWith("\uFEFF")) {
+        text = text.substring(1);
+      }
     } catch (NoSuchFileException e) {
       return fail(name, 0, "no such file");
     } catch (CharacterCodingException e) {
@@ -295,11 +299,18 @@ public final class ScenarioReader {
         }).orElse(Rgb.GREY);
         Transform pose = pose(o, "pose", at);
         Optional<String> parent = string(o, "parent", at, false);
+        // Checked here, not with the other parents: the world object itself refuses it.
+        boolean ownParent = objName.isPresent() && parent.isPresent() && parent.get().equals(objName.get());
+        if (ownParent) {
+          error(o.members().get("parent").line(), at + ".parent", "'" + objName.get() + "' cannot be its own parent");
+        }
         if (objName.isPresent() && kind.isPresent()) {
           kinds.putIfAbsent(objName.get(), kind.get());
-          parent.ifPresent(p -> parented.add(new Parented(objName.get(), p, at + ".parent", o.members().get("parent").line())));
+          if (!ownParent) {
+            parent.ifPresent(p -> parented.add(new Parented(objName.get(), p, at + ".parent", o.members().get("parent").line())));
+          }
         }
-        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null) {
+        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null && !ownParent) {
           out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent));
         }
       }

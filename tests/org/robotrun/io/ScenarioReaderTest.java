@@ -197,6 +197,24 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void anObjectThatIsItsOwnParentIsAnErrorNotAnException() throws Exception {
+    String text = withObjects(TABLE.replace("}}", "}, \"parent\": \"table\"}"));
+    ScenarioError e = onlyError(write("s.json", text));
+    assertThat(e.path()).isEqualTo("objects[0].parent");
+    assertThat(e.message()).isEqualTo("'table' cannot be its own parent");
+    // A second object named like the first and sitting on it: the duplicate and the parent.
+    String dup = withObjects(TABLE + ",\n" + TABLE.replace("}}", "}, \"parent\": \"table\"}"));
+    assertThat(errors(write("d.json", dup))).extracting(ScenarioError::path)
+        .containsExactly("objects[1].name", "objects[1].parent");
+  }
+
+  @Test
+  void aUtf8ByteOrderMarkIsIgnored() throws Exception {
+    Path f = write("bom.json", "\uFEFF" + withObjects(TABLE));
+    assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Loaded.class);
+  }
+
+  @Test
   void jointsOutsideLimitsAndProgramsAreChecked() throws Exception {
     String text = withObjects(TABLE).replace("[0, 0, 0, 0, -90, 0]", "[0, 0, 0, 0, -150, 0]")
         .replace("\"objects\"", "\"programs\": [\"PICK.LS\"], \"mainProgram\": \"PLACE\",\n  \"objects\"");
