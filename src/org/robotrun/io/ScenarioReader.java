@@ -51,6 +51,8 @@ public final class ScenarioReader {
 
   /** Largest scenario file accepted (meshes are separate files). */
   public static final long MAX_FILE_BYTES = 16L << 20;
+  /** Largest position coordinate or size, in mm: a 100 m cell is far beyond any robot's reach. */
+  public static final double MAX_LENGTH_MM = 100_000;
 
   /** Highest register index a scenario may preset. */
   public static final int MAX_REGISTER = 200;
@@ -638,6 +640,10 @@ public final class ScenarioReader {
         error(o.members().get(key).line(), join(at, key), "expected a size > 0 (mm), got " + d);
         return null;
       }
+      if (d != null && d > MAX_LENGTH_MM) {
+        error(o.members().get(key).line(), join(at, key), "expected a size of at most " + (long) MAX_LENGTH_MM + " mm, got " + d);
+        return null;
+      }
       return d;
     }
 
@@ -653,6 +659,11 @@ public final class ScenarioReader {
       String[] names = {"x", "y", "z", "w", "p", "r"};
       for (int k = 0; k < 6; k++) {
         Double d = k < 3 || p.members().containsKey(names[k]) ? finiteField(p, names[k], path, true) : Double.valueOf(0);
+        if (k < 3 && d != null && Math.abs(d) > MAX_LENGTH_MM) {
+          error(p.members().get(names[k]).line(), join(path, names[k]),
+              "expected a position within +-" + (long) MAX_LENGTH_MM + " mm, got " + d);
+          d = null;
+        }
         ok &= d != null;
         v[k] = d == null ? 0 : d;
       }

@@ -209,6 +209,14 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void hugeCoordinatesAndSizesAreRefusedWithTheirPath() throws Exception {
+    String text = withObjects(TABLE.replace("\"x\": 420", "\"x\": 1e308").replace("\"y\": 700", "\"y\": 700000"));
+    assertThat(errors(write("s.json", text))).extracting(ScenarioError::path, ScenarioError::message).containsExactly(
+        org.assertj.core.groups.Tuple.tuple("objects[0].size.y", "expected a size of at most 100000 mm, got 700000.0"),
+        org.assertj.core.groups.Tuple.tuple("objects[0].pose.x", "expected a position within +-100000 mm, got 1.0E308"));
+  }
+
+  @Test
   void aUtf8ByteOrderMarkIsIgnored() throws Exception {
     Path f = write("bom.json", "\uFEFF" + withObjects(TABLE));
     assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Loaded.class);
