@@ -128,7 +128,8 @@ public final class LsReader {
 
     Parse(String file, String text) {
       this.file = file;
-      this.lines = splitLines(text);
+      // Some Windows editors put a UTF-8 byte-order mark before '/PROG'; it is not text.
+      this.lines = splitLines(text.startsWith("\uFEFF") ? text.substring(1) : text);
       this.name = defaultName(file);
     }
 

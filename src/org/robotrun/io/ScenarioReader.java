@@ -53,6 +53,8 @@ public final class ScenarioReader {
 
   /** Largest scenario file accepted (meshes are separate files). */
   public static final long MAX_FILE_BYTES = 16L << 20;
+  /** Largest position coordinate or size, in mm: a 100 m cell is far beyond any robot's reach. */
+  public static final double MAX_LENGTH_MM = 100_000;
 
   /** Highest register index a scenario may preset. */
   public static final int MAX_REGISTER = 200;
@@ -85,6 +87,10 @@ public final class ScenarioReader {
         return fail(name, 0, "file is " + size + " bytes; scenario files are limited to " + MAX_FILE_BYTES + " bytes");
       }
       text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
+      // Some Windows editors start UTF-8 files with a byte-order mark; it is not JSON.
+      if (text.startsWith("\uFEFF")) {
+        text = text.substring(1);
+      }
     } catch (NoSuchFileException e) {
       return fail(name, 0, "no such file");
     } catch (CharacterCodingException e) {
@@ -348,11 +354,18 @@ public final class ScenarioReader {
         }).orElse(Rgb.GREY);
         Transform pose = pose(o, "pose", at);
         Optional<String> parent = string(o, "parent", at, false);
+        // Checked here, not with the other parents: the world object itself refuses it.
+        boolean ownParent = objName.isPresent() && parent.isPresent() && parent.get().equals(objName.get());
+        if (ownParent) {
+          error(o.members().get("parent").line(), at + ".parent", "'" + objName.get() + "' cannot be its own parent");
+        }
         if (objName.isPresent() && kind.isPresent()) {
           kinds.putIfAbsent(objName.get(), kind.get());
-          parent.ifPresent(p -> parented.add(new Parented(objName.get(), p, at + ".parent", o.members().get("parent").line())));
+          if (!ownParent) {
+            parent.ifPresent(p -> parented.add(new Parented(objName.get(), p, at + ".parent", o.members().get("parent").line())));
+          }
         }
-        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null) {
+        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null && !ownParent) {
           out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent));
         }
       }
@@ -680,6 +693,10 @@ public final class ScenarioReader {
         error(o.members().get(key).line(), join(at, key), "expected a size > 0 (mm), got " + d);
         return null;
       }
+      if (d != null && d > MAX_LENGTH_MM) {
+        error(o.members().get(key).line(), join(at, key), "expected a size of at most " + (long) MAX_LENGTH_MM + " mm, got " + d);
+        return null;
+      }
       return d;
     }
 
@@ -695,6 +712,11 @@ public final class ScenarioReader {
       String[] names = {"x", "y", "z", "w", "p", "r"};
       for (int k = 0; k < 6; k++) {
         Double d = k < 3 || p.members().containsKey(names[k]) ? finiteField(p, names[k], path, true) : Double.valueOf(0);
+        if (k < 3 && d != null && Math.abs(d) > MAX_LENGTH_MM) {
+          error(p.members().get(names[k]).line(), join(path, names[k]),
+              "expected a position within +-" + (long) MAX_LENGTH_MM + " mm, got " + d);
+          d = null;
+        }
         ok &= d != null;
         v[k] = d == null ? 0 : d;
       }

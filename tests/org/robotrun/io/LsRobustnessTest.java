@@ -127,6 +127,21 @@ class LsRobustnessTest {
   }
 
   @Test
+  void aUtf8ByteOrderMarkBeforeProgIsIgnored(@org.junit.jupiter.api.io.TempDir Path dir) throws IOException {
+    Path f = dir.resolve("BOM.LS");
+    byte[] text = "/PROG  BOM\n/MN\n   1:  R[1]=1    ;\n/POS\n/END\n".getBytes(StandardCharsets.US_ASCII);
+    byte[] all = new byte[text.length + 3];
+    all[0] = (byte) 0xEF;
+    all[1] = (byte) 0xBB;
+    all[2] = (byte) 0xBF;
+    System.arraycopy(text, 0, all, 3, text.length);
+    Files.write(f, all);
+    LsReadResult r = LsReader.read(f);
+    assertThat(messages(r)).isEmpty();
+    assertThat(r.program().name()).isEqualTo("BOM");
+  }
+
+  @Test
   void aFileThatIsNotUtf8IsReadAsLatin1WithAWarning(@org.junit.jupiter.api.io.TempDir Path dir) throws IOException {
     Path f = dir.resolve("L1.LS");
     byte[] head = "/PROG  L1\n/MN\n   1:  ! caf".getBytes(StandardCharsets.US_ASCII);

@@ -243,6 +243,32 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void anObjectThatIsItsOwnParentIsAnErrorNotAnException() throws Exception {
+    String text = withObjects(TABLE.replace("}}", "}, \"parent\": \"table\"}"));
+    ScenarioError e = onlyError(write("s.json", text));
+    assertThat(e.path()).isEqualTo("objects[0].parent");
+    assertThat(e.message()).isEqualTo("'table' cannot be its own parent");
+    // A second object named like the first and sitting on it: the duplicate and the parent.
+    String dup = withObjects(TABLE + ",\n" + TABLE.replace("}}", "}, \"parent\": \"table\"}"));
+    assertThat(errors(write("d.json", dup))).extracting(ScenarioError::path)
+        .containsExactly("objects[1].name", "objects[1].parent");
+  }
+
+  @Test
+  void hugeCoordinatesAndSizesAreRefusedWithTheirPath() throws Exception {
+    String text = withObjects(TABLE.replace("\"x\": 420", "\"x\": 1e308").replace("\"y\": 700", "\"y\": 700000"));
+    assertThat(errors(write("s.json", text))).extracting(ScenarioError::path, ScenarioError::message).containsExactly(
+        org.assertj.core.groups.Tuple.tuple("objects[0].size.y", "expected a size of at most 100000 mm, got 700000.0"),
+        org.assertj.core.groups.Tuple.tuple("objects[0].pose.x", "expected a position within +-100000 mm, got 1.0E308"));
+  }
+
+  @Test
+  void aUtf8ByteOrderMarkIsIgnored() throws Exception {
+    Path f = write("bom.json", "\uFEFF" + withObjects(TABLE));
+    assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Loaded.class);
+  }
+
+  @Test
   void jointsOutsideLimitsAndProgramsAreChecked() throws Exception {
     String text = withObjects(TABLE).replace("[0, 0, 0, 0, -90, 0]", "[0, 0, 0, 0, -150, 0]")
         .replace("\"objects\"", "\"programs\": [\"PICK.LS\"], \"mainProgram\": \"PLACE\",\n  \"objects\"");
