@@ -19,19 +19,23 @@ public final class RobotStatusPanel {
     if (ImGui.begin(title, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoFocusOnAppearing)) {
       ImGui.text("JOINT (deg)");
       for (int i = 0; i < pendantDeg.length; i++) {
-        ImGui.text(String.format("  J%d %9.3f", i + 1, pendantDeg[i] + 0.0));
+        ImGui.text(String.format("  J%d %9.3f", i + 1, shown(pendantDeg[i])));
       }
       ImGui.separator();
       ImGui.text("WORLD, flange (mm, deg)");
       Xyzwpr p = flangeInWorld;
-      // Adding 0.0 turns -0.0 into 0.0, so the panel never shows "-0.000".
-      ImGui.text(String.format("  X %9.3f  W %8.3f", p.x() + 0.0, p.wDeg() + 0.0));
-      ImGui.text(String.format("  Y %9.3f  P %8.3f", p.y() + 0.0, p.pDeg() + 0.0));
-      ImGui.text(String.format("  Z %9.3f  R %8.3f", p.z() + 0.0, p.rDeg() + 0.0));
+      ImGui.text(String.format("  X %9.3f  W %8.3f", shown(p.x()), shown(p.wDeg())));
+      ImGui.text(String.format("  Y %9.3f  P %8.3f", shown(p.y()), shown(p.pDeg())));
+      ImGui.text(String.format("  Z %9.3f  R %8.3f", shown(p.z()), shown(p.rDeg())));
       ImGui.separator();
       ImGui.textDisabled("Mouse: drag orbit, right-drag pan, wheel zoom, Home resets");
       ImGui.textDisabled(String.format("%.0f frames/s", ImGui.getIO().getFramerate()));
     }
     ImGui.end();
+  }
+
+  /** A value as shown with three decimals: anything that would print as -0.000 shows 0.000. */
+  static double shown(double v) {
+    return Math.abs(v) < 0.0005 ? 0.0 : v;
   }
 }
