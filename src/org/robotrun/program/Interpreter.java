@@ -78,6 +78,14 @@ public final class Interpreter {
   private Outcome haltOutcome = Outcome.FINISHED;
   private String selected = "";
   private int cursorLine = 1;
+  /**
+   * After the top program ran past its last line: that program, the cursor line it was left on
+   * and the index of the next line (past the end). The robot then stands at the last line's
+   * point, not at the motion above the cursor, so SHIFT+BWD must start below the cursor.
+   */
+  private String finishedProgram;
+  private int finishedCursorLine = -1;
+  private int finishedNextPc = -1;
 
   private int waitKind = W_NONE;
   /** Line index of the statement being waited on (motion or WAIT). */
@@ -227,7 +235,9 @@ public final class Interpreter {
           notice = "BWD: no program " + selected;
           return Outcome.FINISHED;
         }
-        push(cp, Math.min(cursorLine - 1, cp.ops.length));
+        boolean ranOffTheEnd = cp.name.equals(finishedProgram) && cursorLine == finishedCursorLine;
+        push(cp, ranOffTheEnd ? finishedNextPc : Math.min(cursorLine - 1, cp.ops.length));
+        finishedProgram = null;
         state = State.PAUSED;
       }
       case PAUSED -> {
@@ -462,6 +472,7 @@ public final class Interpreter {
       return;
     }
     push(cp, Math.min(cursorLine - 1, cp.ops.length));
+    finishedProgram = null;
     state = State.RUNNING;
   }
 
@@ -492,6 +503,10 @@ public final class Interpreter {
   int end() {
     if (depth <= 1) {
       int line = Math.max(1, Math.min(cur.pc, cur.prog.ops.length));
+      boolean pastLastLine = cur.pc >= cur.prog.ops.length;
+      finishedProgram = pastLastLine ? cur.prog.name : null;
+      finishedCursorLine = line;
+      finishedNextPc = cur.prog.ops.length;
       deactivate(cur.prog.name, line);
       haltOutcome = Outcome.FINISHED;
       return Ops.HALT;

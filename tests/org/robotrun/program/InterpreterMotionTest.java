@@ -182,6 +182,21 @@ class InterpreterMotionTest {
   }
 
   @Test
+  void backwardRightAfterARunBacksOutOfTheLastLine() {
+    // The last line is a motion: the run ends with the cursor left on it (line 3) and the robot
+    // at P[3]. SHIFT+BWD goes to P[2] (not P[1]) and the cursor lands on line 3.
+    Rig rig = new Rig(progWithPositions("ENDMOVE", 3, joint(1), lin(2), lin(3)));
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.interp.cursorLine()).isEqualTo(3);
+    assertThat(rig.interp.backward()).isInstanceOf(Outcome.WaitingForMotion.class);
+    assertThat(x(rig.port.requests().get(3))).isEqualTo(200.0);
+    assertThat(rig.runUntilStopped(DT, 1000)).isInstanceOf(Outcome.Paused.class);
+    assertThat(rig.interp.cursorLine()).isEqualTo(3);
+    assertThat(rig.interp.backward()).isInstanceOf(Outcome.WaitingForMotion.class);
+    assertThat(x(rig.port.requests().get(4))).isEqualTo(100.0);
+  }
+
+  @Test
   void backwardStopsAtALineThatCannotRunBackward() {
     Program p = progWithPositions("B", 2, joint(1), call("SUB"), lin(2));
     Rig rig = new Rig(p, Tp.prog("SUB", setR(1, num(1))));
