@@ -17,7 +17,8 @@ import org.robotrun.world.Scenario;
  * Builds a {@link Simulation} from a loaded {@link Scenario}: one controller per robot at its
  * initial joints, placed in the cell; the first robot gets the scenario's registers and frames.
  * Programs are files and are loaded by the caller ({@code io} reads them; {@code sim} does not).
- * The active frame numbers stay 0 (WORLD, flange): programs select theirs with UFRAME_NUM /
+ * Tool and user frame 1 become active where the scenario defines them (else 0: flange, WORLD);
+ * programs still select theirs with UFRAME_NUM /
  * UTOOL_NUM. Each robot carries its scenario end effector; when the scenario sets no tool
  * frame 1, UT[1] is that end effector's TCP.
  */
@@ -67,6 +68,14 @@ public final class ScenarioCell {
     }
     scenario.toolFrames().forEach((n, X_FT) -> first.frames().setTransform(FrameKind.TOOL, n, X_FT));
     scenario.userFrames().forEach((n, X_WU) -> first.frames().setTransform(FrameKind.USER, n, X_WU));
+    // A student who opens the cell and records points should get them in the frames the
+    // exercise describes: frame 1 becomes active where the scenario defines it.
+    if (scenario.toolFrames().containsKey(1)) {
+      first.frames().select(FrameKind.TOOL, 1);
+    }
+    if (scenario.userFrames().containsKey(1)) {
+      first.frames().select(FrameKind.USER, 1);
+    }
     Simulation sim = new Simulation(controllers, placements, scenario.world(), tools, floorZ, tickSec);
     sim.setCollisionAlarms(switch (scenario.onCollision()) {
       case ALARM -> true;
