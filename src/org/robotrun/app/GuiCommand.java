@@ -79,6 +79,8 @@ public final class GuiCommand implements Callable<Integer> {
         sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
       }
       PendantKeyboard keyboard = new PendantKeyboard(pendant);
+      // The pendant panel covers the right of the window: centre the cell in what is left.
+      w.camera().setCentreShift(-0.3f);
       w.setKeyHandler(keyboard::onKey);
       w.setCharHandler(keyboard::onChar);
       w.setFocusLostHandler(() -> {

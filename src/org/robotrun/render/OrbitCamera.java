@@ -14,6 +14,8 @@ public final class OrbitCamera {
   private float distance;
   private float yaw;
   private float pitch;
+  /** Horizontal shift of the image centre in normalised device units (-1..1); 0 is centred. */
+  private float centreShiftNdc;
 
   public OrbitCamera() {
     reset();
@@ -62,10 +64,19 @@ public final class OrbitCamera {
         target.z + distance * (float) Math.sin(pitch));
   }
 
+  /**
+   * Moves the point the camera looks at away from the image centre, e.g. to the middle of the
+   * part of the window a side panel leaves free: -0.4 puts it 20% of the width left of centre.
+   */
+  public void setCentreShift(float ndc) {
+    centreShiftNdc = Math.max(-1f, Math.min(1f, ndc));
+  }
+
   /** Projection times view for a viewport of the given aspect ratio. */
   public Matrix4f viewProjection(float aspect) {
     Vector3f eye = eye();
     return new Matrix4f()
+        .translation(centreShiftNdc, 0, 0)
         .perspective(FOV_Y_RAD, aspect, Math.max(1f, distance / 200f), distance * 20f + 20000f)
         .lookAt(eye.x, eye.y, eye.z, target.x, target.y, target.z, 0, 0, 1);
   }
