@@ -52,6 +52,7 @@ public final class BenchRenderCommand implements Callable<Integer> {
       for (int i = 0; i < 10; i++) {
         r.renderFrame(scene(robot, i), camera);
       }
+      long cpuStart = processCpuNs();
       long start = System.nanoTime();
       long end = start + (long) (seconds * 1e9);
       int frames = 0;
@@ -64,14 +65,20 @@ public final class BenchRenderCommand implements Callable<Integer> {
         t = now;
       }
       double elapsed = (t - start) / 1e9;
+      double cpuMsPerFrame = (processCpuNs() - cpuStart) / 1e6 / frames;
       long[] sorted = Arrays.copyOf(frameNs, frames);
       Arrays.sort(sorted);
-      System.out.printf("fps=%.1f frames=%d seconds=%.2f width=%d height=%d samples=%d median_frame_ms=%.2f%n",
-          frames / elapsed, frames, elapsed, width, height, samples, sorted[frames / 2] / 1e6);
+      System.out.printf("fps=%.1f frames=%d seconds=%.2f width=%d height=%d samples=%d median_frame_ms=%.2f cpu_ms_per_frame=%.2f%n",
+          frames / elapsed, frames, elapsed, width, height, samples, sorted[frames / 2] / 1e6, cpuMsPerFrame);
     } catch (GlUnavailableException e) {
       throw new UserError("cannot render: " + e.getMessage(), Main.EXIT_FAILED);
     }
     return Main.EXIT_OK;
+  }
+
+  /** CPU time of the whole process (all threads, the renderer's included), in ns. */
+  private static long processCpuNs() {
+    return ProcessHandle.current().info().totalCpuDuration().map(java.time.Duration::toNanos).orElse(0L);
   }
 
   private static SceneSnapshot scene(RobotModel robot, int frame) {

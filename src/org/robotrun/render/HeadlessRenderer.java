@@ -35,7 +35,7 @@ public final class HeadlessRenderer implements AutoCloseable {
   public void renderFrame(SceneSnapshot scene, OrbitCamera camera) {
     target.bind();
     renderer.render(scene, camera, target.width(), target.height());
-    target.resolve();
+    if (!Boolean.getBoolean("rr.noresolve")) target.resolve();
     org.lwjgl.opengl.GL33C.glFinish();
   }
 

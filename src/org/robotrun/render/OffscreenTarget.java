@@ -17,21 +17,30 @@ public final class OffscreenTarget implements AutoCloseable {
   private final int msDepth;
   private final int fbo;
   private final int color;
+  private final int depth;
+  private final boolean multisampled;
 
   public OffscreenTarget(int width, int height, int samples) {
     this.width = width;
     this.height = height;
-    msFbo = glGenFramebuffers();
-    glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
-    msColor = glGenRenderbuffers();
-    glBindRenderbuffer(GL_RENDERBUFFER, msColor);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor);
-    msDepth = glGenRenderbuffers();
-    glBindRenderbuffer(GL_RENDERBUFFER, msDepth);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth);
-    check("multisampled");
+    multisampled = samples > 1;
+    if (multisampled) {
+      msFbo = glGenFramebuffers();
+      glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
+      msColor = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, msColor);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor);
+      msDepth = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, msDepth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth);
+      check("multisampled");
+    } else {
+      msFbo = 0;
+      msColor = 0;
+      msDepth = 0;
+    }
 
     fbo = glGenFramebuffers();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -39,6 +48,15 @@ public final class OffscreenTarget implements AutoCloseable {
     glBindRenderbuffer(GL_RENDERBUFFER, color);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    if (multisampled) {
+      depth = 0;
+    } else {
+      // Without multisampling the scene is drawn straight into this buffer: no resolve pass.
+      depth = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, depth);
+      glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    }
     check("resolve");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
@@ -53,11 +71,14 @@ public final class OffscreenTarget implements AutoCloseable {
 
   /** Binds the multisampled framebuffer for drawing. */
   public void bind() {
-    glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, multisampled ? msFbo : fbo);
   }
 
   /** Resolves the samples into the plain buffer. */
   public void resolve() {
+    if (!multisampled) {
+      return;
+    }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -95,10 +116,12 @@ public final class OffscreenTarget implements AutoCloseable {
 
   @Override
   public void close() {
+    // Deleting name 0 is ignored by GL, so the single-sample case needs no branches here.
     glDeleteFramebuffers(msFbo);
     glDeleteFramebuffers(fbo);
     glDeleteRenderbuffers(msColor);
     glDeleteRenderbuffers(msDepth);
     glDeleteRenderbuffers(color);
+    glDeleteRenderbuffers(depth);
   }
 }

@@ -30,9 +30,14 @@ public final class SceneRenderer implements AutoCloseable {
   private final float[] model = new float[16];
   private final Matrix4f viewProj = new Matrix4f();
 
+  static final String X_FLOOR = System.getProperty("rr.floor", "proc");
+  static final boolean X_ROBOT_FIRST = Boolean.getBoolean("rr.robotFirst");
+  static final boolean X_NOCULL = Boolean.getBoolean("rr.nocull");
+  private boolean printed;
+
   public SceneRenderer() {
     solid = ShaderProgram.load("solid");
-    floor = ShaderProgram.load("floor");
+    floor = ShaderProgram.load(X_FLOOR.equals("proc") ? "floor" : X_FLOOR.equals("flat") ? "floorflat" : "floor_" + X_FLOOR);
     floorQuad = GpuMesh.upload(new MeshData(
         new float[] {
           -20000, -20000, 0, 0, 0, 1,
@@ -50,7 +55,7 @@ public final class SceneRenderer implements AutoCloseable {
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);
+    if (X_NOCULL) glDisable(GL_CULL_FACE); else glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     viewProj.set(camera.viewProjection(width / (float) Math.max(1, height)));
     Vector3f eye = camera.eye();
@@ -59,19 +64,9 @@ public final class SceneRenderer implements AutoCloseable {
     try (MemoryStack stack = MemoryStack.stackPush()) {
       var vp = viewProj.get(stack.mallocFloat(16));
 
-      // Floor: pushed back a little in depth so the axes lying on it win.
-      floor.use();
-      glUniformMatrix4fv(floor.uniform("uViewProj"), false, vp);
-      glUniform3f(floor.uniform("uEye"), eye.x, eye.y, eye.z);
-      new Matrix4f().translation(0, 0, floorZ).get(model);
-      glUniformMatrix4fv(floor.uniform("uModel"), false, model);
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(1f, 1f);
-      glDisable(GL_CULL_FACE);
-      floorQuad.draw();
-      glEnable(GL_CULL_FACE);
-      glDisable(GL_POLYGON_OFFSET_FILL);
-
+      if (!X_ROBOT_FIRST) {
+        drawFloor(vp, eye, floorZ);
+      }
       solid.use();
       glUniformMatrix4fv(solid.uniform("uViewProj"), false, vp);
       glUniform3f(solid.uniform("uEye"), eye.x, eye.y, eye.z);
@@ -94,7 +89,35 @@ public final class SceneRenderer implements AutoCloseable {
         glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
         mesh.draw();
       }
+      if (!printed) {
+        printed = true;
+        int tris = 0;
+        for (DrawItem item : scene.items()) {
+          tris += meshes.get(item.shape()).indexCount() / 3;
+        }
+        System.err.println("items=" + scene.items().size() + " meshes=" + meshes.size() + " tris=" + tris
+            + " maxSamples=" + glGetInteger(GL_MAX_SAMPLES) + " samples=" + glGetInteger(GL_SAMPLES));
+      }
+      if (X_ROBOT_FIRST) {
+        drawFloor(vp, eye, floorZ);
+      }
     }
+  }
+
+  private void drawFloor(java.nio.FloatBuffer vp, Vector3f eye, float floorZ) {
+    // Floor: pushed back a little in depth so the axes lying on it win.
+    floor.use();
+    glUniformMatrix4fv(floor.uniform("uViewProj"), false, vp);
+    glUniform3f(floor.uniform("uEye"), eye.x, eye.y, eye.z);
+    new Matrix4f().translation(0, 0, floorZ).get(model);
+    glUniformMatrix4fv(floor.uniform("uModel"), false, model);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1f, 1f);
+    glDisable(GL_CULL_FACE);
+    floorQuad.draw();
+    glEnable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+
   }
 
   private void drawBar(int uModel, int uColor, float cx, float cy, float cz, float sx, float sy, float sz,
