@@ -4,6 +4,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.render.AntiAliasing;
 import org.robotrun.render.GlUnavailableException;
 import org.robotrun.render.HeadlessRenderer;
 import org.robotrun.render.OrbitCamera;
@@ -32,6 +33,10 @@ public final class RenderCommand implements Callable<Integer> {
 
   @Option(names = "--height", defaultValue = "800", description = "Image height in pixels (default: ${DEFAULT-VALUE}).")
   int height;
+
+  @Option(names = "--antialias", paramLabel = "MODE", defaultValue = "FXAA",
+      description = "Edge smoothing: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, as the window uses; MSAA4 is smoother and about twice as slow in software).")
+  AntiAliasing antialias;
 
   @Option(names = "--joints", paramLabel = "J1,...,J6",
       description = "Joint angles in degrees as the pendant shows them (J3 coupled to J2), for the first robot. Default: the scenario's initial joints, or all 0.")
@@ -63,7 +68,7 @@ public final class RenderCommand implements Callable<Integer> {
       scene = ScenarioFiles.initialScene(sc, joints);
       sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, camera));
     }
-    try (HeadlessRenderer r = new HeadlessRenderer(width, height)) {
+    try (HeadlessRenderer r = new HeadlessRenderer(width, height, antialias)) {
       r.renderPng(scene, camera, out);
     } catch (GlUnavailableException e) {
       throw new UserError("cannot render: " + e.getMessage(), Main.EXIT_FAILED);

@@ -29,13 +29,26 @@ public final class SceneRenderer implements AutoCloseable {
   private final Map<DrawShape, GpuMesh> meshes = new HashMap<>();
   private final float[] model = new float[16];
   private final Matrix4f viewProj = new Matrix4f();
+  private final AntiAliasing antiAliasing;
+  private final FxaaPass fxaa;
 
   static final String X_FLOOR = System.getProperty("rr.floor", "proc");
   static final boolean X_ROBOT_FIRST = Boolean.getBoolean("rr.robotFirst");
   static final boolean X_NOCULL = Boolean.getBoolean("rr.nocull");
   private boolean printed;
 
+  /** A renderer with the default edge smoothing ({@link AntiAliasing#DEFAULT}). */
   public SceneRenderer() {
+    this(AntiAliasing.DEFAULT);
+  }
+
+  /**
+   * A renderer with the given edge smoothing. For {@link AntiAliasing#MSAA4} the caller's
+   * framebuffer must be multisampled; this class only does the FXAA post pass itself.
+   */
+  public SceneRenderer(AntiAliasing antiAliasing) {
+    this.antiAliasing = antiAliasing;
+    fxaa = new FxaaPass();
     solid = ShaderProgram.load("solid");
     floor = ShaderProgram.load(X_FLOOR.equals("proc") ? "floor" : X_FLOOR.equals("flat") ? "floorflat" : "floor_" + X_FLOOR);
     floorQuad = GpuMesh.upload(new MeshData(
@@ -51,6 +64,10 @@ public final class SceneRenderer implements AutoCloseable {
 
   /** Renders into the currently bound framebuffer of the given size (pixels). */
   public void render(SceneSnapshot scene, OrbitCamera camera, int width, int height) {
+    boolean smooth = antiAliasing == AntiAliasing.FXAA;
+    if (smooth) {
+      fxaa.begin(width, height);
+    }
     glViewport(0, 0, width, height);
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -102,6 +119,9 @@ public final class SceneRenderer implements AutoCloseable {
         drawFloor(vp, eye, floorZ);
       }
     }
+    if (smooth) {
+      fxaa.end();
+    }
   }
 
   private void drawFloor(java.nio.FloatBuffer vp, Vector3f eye, float floorZ) {
@@ -151,6 +171,7 @@ public final class SceneRenderer implements AutoCloseable {
   public void close() {
     meshes.values().forEach(GpuMesh::close);
     meshes.clear();
+    fxaa.close();
     floorQuad.close();
     axisBar.close();
     solid.close();
