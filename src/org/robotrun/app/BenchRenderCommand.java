@@ -19,7 +19,7 @@ import picocli.CommandLine.Option;
     mixinStandardHelpOptions = true,
     description = {
       "Render the default scene headless (OSMesa) for a while and print frames per second.",
-      "Each frame is drawn, multisample-resolved and finished (glFinish); the arm moves every frame, so the scene is rebuilt from a fresh snapshot as in the simulator.",
+      "Each frame is drawn, edge-smoothed as robotrun render does it and finished (glFinish); the arm moves every frame, so the scene is rebuilt from a fresh snapshot as in the simulator.",
       "Output: fps=X frames=N seconds=S width=W height=H antialias=MODE median_frame_ms=T cpu_ms_per_frame=C",
       "cpu_ms_per_frame counts every thread of the process (Mesa renders on several), so it stays meaningful on a loaded machine."
     })

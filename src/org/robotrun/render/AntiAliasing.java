@@ -8,9 +8,9 @@ package org.robotrun.render;
  */
 public enum AntiAliasing {
   /** No smoothing: hard, stair-stepped silhouettes. */
-  NONE(1),
+  NONE(0),
   /** One sample per pixel, then an edge-directed blur post pass ({@code shaders/fxaa.frag}). */
-  FXAA(1),
+  FXAA(0),
   /** Four samples per pixel, resolved by a blit. */
   MSAA4(4);
 
@@ -23,7 +23,10 @@ public enum AntiAliasing {
     this.samples = samples;
   }
 
-  /** Samples per pixel of the framebuffer the scene is drawn into. */
+  /**
+   * Samples per pixel of the framebuffer the scene is drawn into, as GL and GLFW count them:
+   * 0 for an ordinary (not multisampled) framebuffer.
+   */
   public int samples() {
     return samples;
   }

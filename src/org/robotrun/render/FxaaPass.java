@@ -19,7 +19,7 @@ final class FxaaPass implements AutoCloseable {
   private int previousFbo;
 
   FxaaPass() {
-    program = ShaderProgram.load(System.getProperty("rr.fxaa", "fxaa"));
+    program = ShaderProgram.load("fxaa");
     emptyVao = glGenVertexArrays();
   }
 

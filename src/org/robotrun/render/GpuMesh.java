@@ -52,10 +52,6 @@ final class GpuMesh implements AutoCloseable {
     }
   }
 
-  int indexCount() {
-    return indexCount;
-  }
-
   void draw() {
     glBindVertexArray(vao);
     glDrawElements(mode, indexCount, GL_UNSIGNED_INT, 0);

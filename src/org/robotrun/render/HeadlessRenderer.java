@@ -33,7 +33,7 @@ public final class HeadlessRenderer implements AutoCloseable {
   public void renderFrame(SceneSnapshot scene, OrbitCamera camera) {
     target.bind();
     renderer.render(scene, camera, target.width(), target.height());
-    if (!Boolean.getBoolean("rr.noresolve")) target.resolve();
+    target.resolve();
     org.lwjgl.opengl.GL33C.glFinish();
   }
 

@@ -8,9 +8,9 @@ import java.util.Arrays;
  */
 public final class MeshFactory {
   /** Segments around a cylinder. */
-  static final int CYLINDER_SEGMENTS = Integer.getInteger("rr.seg", 48);
+  static final int CYLINDER_SEGMENTS = 48;
   /** Segments along each quarter-circle of a rounded edge. */
-  static final int ROUND_SEGMENTS = Integer.getInteger("rr.round", 5);
+  static final int ROUND_SEGMENTS = 5;
 
   private MeshFactory() {}
 
