@@ -1,5 +1,6 @@
 package org.robotrun.app;
 
+import java.io.PrintWriter;
 import java.util.Arrays;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
@@ -11,6 +12,8 @@ import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.SceneSnapshot;
 import org.robotrun.sim.SceneSnapshots;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 /** {@code robotrun bench render}: frames per second of the default scene, headless. */
@@ -24,6 +27,8 @@ import picocli.CommandLine.Option;
       "cpu_ms_per_frame counts every thread of the process (Mesa renders on several), so it stays meaningful on a loaded machine."
     })
 public final class BenchRenderCommand implements Callable<Integer> {
+  @Spec CommandSpec spec;
+
   @Option(names = "--width", defaultValue = "1280", description = "Width in pixels (default: ${DEFAULT-VALUE}).")
   int width;
 
@@ -33,9 +38,9 @@ public final class BenchRenderCommand implements Callable<Integer> {
   @Option(names = "--seconds", defaultValue = "5", description = "How long to measure (default: ${DEFAULT-VALUE}).")
   double seconds;
 
-  @Option(names = "--antialias", paramLabel = "MODE", defaultValue = "FXAA",
+  @Option(names = "--antialias", paramLabel = "MODE",
       description = "Edge smoothing: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, as robotrun render and the window use).")
-  AntiAliasing antialias;
+  AntiAliasing antialias = AntiAliasing.DEFAULT;
 
   @Override
   public Integer call() {
@@ -67,8 +72,10 @@ public final class BenchRenderCommand implements Callable<Integer> {
       double cpuMsPerFrame = (processCpuNs() - cpuStart) / 1e6 / frames;
       long[] sorted = Arrays.copyOf(frameNs, frames);
       Arrays.sort(sorted);
-      System.out.printf("fps=%.1f frames=%d seconds=%.2f width=%d height=%d antialias=%s median_frame_ms=%.2f cpu_ms_per_frame=%.2f%n",
+      PrintWriter o = spec.commandLine().getOut();
+      o.printf("fps=%.1f frames=%d seconds=%.2f width=%d height=%d antialias=%s median_frame_ms=%.2f cpu_ms_per_frame=%.2f%n",
           frames / elapsed, frames, elapsed, width, height, antialias.name().toLowerCase(java.util.Locale.ROOT), sorted[frames / 2] / 1e6, cpuMsPerFrame);
+      o.flush();
     } catch (GlUnavailableException e) {
       throw new UserError("cannot render: " + e.getMessage(), Main.EXIT_FAILED);
     }

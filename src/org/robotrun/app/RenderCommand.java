@@ -34,9 +34,9 @@ public final class RenderCommand implements Callable<Integer> {
   @Option(names = "--height", defaultValue = "800", description = "Image height in pixels (default: ${DEFAULT-VALUE}).")
   int height;
 
-  @Option(names = "--antialias", paramLabel = "MODE", defaultValue = "FXAA",
+  @Option(names = "--antialias", paramLabel = "MODE",
       description = "Edge smoothing: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, as the window uses; MSAA4 is smoother and about twice as slow in software).")
-  AntiAliasing antialias;
+  AntiAliasing antialias = AntiAliasing.DEFAULT;
 
   @Option(names = "--joints", paramLabel = "J1,...,J6",
       description = "Joint angles in degrees as the pendant shows them (J3 coupled to J2), for the first robot. Default: the scenario's initial joints, or all 0.")
