@@ -30,6 +30,8 @@ public final class SceneRenderer implements AutoCloseable {
   private final Map<DrawShape, GpuMesh> meshes = new HashMap<>();
   private final float[] model = new float[16];
   private final Matrix4f viewProj = new Matrix4f();
+  private final Matrix4f modelMatrix = new Matrix4f();
+  private final ScreenRect edges = new ScreenRect();
   private final AntiAliasing antiAliasing;
   private final FxaaPass fxaa;
 
@@ -61,9 +63,7 @@ public final class SceneRenderer implements AutoCloseable {
   /** Renders into the currently bound framebuffer of the given size (pixels). */
   public void render(SceneSnapshot scene, OrbitCamera camera, int width, int height) {
     boolean smooth = antiAliasing == AntiAliasing.FXAA;
-    if (smooth) {
-      fxaa.begin(width, height);
-    }
+    edges.reset(width, height);
     glViewport(0, 0, width, height);
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -95,6 +95,9 @@ public final class SceneRenderer implements AutoCloseable {
         GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
         item.X_WS().toColumnMajor(model);
         glUniformMatrix4fv(uModel, false, model);
+        if (smooth) {
+          edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+        }
         DrawItem.Color c = item.color();
         glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
         mesh.draw();
@@ -104,7 +107,7 @@ public final class SceneRenderer implements AutoCloseable {
       drawFloor(vp, eye, floorZ);
     }
     if (smooth) {
-      fxaa.end();
+      fxaa.apply(edges, width, height);
     }
   }
 
@@ -125,8 +128,9 @@ public final class SceneRenderer implements AutoCloseable {
 
   private void drawBar(int uModel, int uColor, float cx, float cy, float cz, float sx, float sy, float sz,
       float r, float g, float b) {
-    new Matrix4f().translation(cx, cy, cz).scale(sx, sy, sz).get(model);
+    modelMatrix.translation(cx, cy, cz).scale(sx, sy, sz).get(model);
     glUniformMatrix4fv(uModel, false, model);
+    edges.addBox(viewProj, modelMatrix, axisBar.bounds());
     glUniform4f(uColor, r, g, b, 1f);
     axisBar.draw();
   }
