@@ -65,7 +65,8 @@ public final class SceneRenderer implements AutoCloseable {
     boolean smooth = antiAliasing == AntiAliasing.FXAA;
     edges.reset(width, height);
     glViewport(0, 0, width, height);
-    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 1f);
+    // Alpha 0: background, not a solid (see fxaa.frag); nothing blends with destination alpha.
+    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);

@@ -86,9 +86,8 @@ class HeadlessRenderTest {
             .isGreaterThanOrEqualTo(10);
       }
     }
-    // At 320x200 the floor's grid lines are dense and count as edges too (about a fifth of
-    // the image); a blur of everything would change nearly all pixels.
-    assertThat(changed).as("pixels softened").isGreaterThan(100).isLessThan(W * H / 3);
+    // Only the solids' outlines and creases: the floor's grid lines are left alone.
+    assertThat(changed).as("pixels softened").isGreaterThan(100).isLessThan(W * H / 20);
   }
 
   @Test
