@@ -14,9 +14,11 @@ import org.robotrun.sim.DrawShape;
 import org.robotrun.sim.SceneSnapshot;
 
 /**
- * Draws a {@link SceneSnapshot} with OpenGL 3.3 core: the floor grid, the world axes and every
- * draw item. Meshes are built once per distinct shape and kept (the small scene graph: shape →
- * GPU mesh, item → model matrix and colour). Needs a current GL context on the calling thread.
+ * Draws a {@link SceneSnapshot} with OpenGL 3.3 core: the floor grid, the world axes, every
+ * draw item and an orientation triad in the corner, then smooths the edges (see
+ * {@link AntiAliasing}). Meshes are built once per distinct shape and kept (the small scene
+ * graph: shape → GPU mesh, item → model matrix and colour). Needs a current GL context on the
+ * calling thread.
  */
 public final class SceneRenderer implements AutoCloseable {
   private static final float[] BACKGROUND = {0.80f, 0.83f, 0.87f};
@@ -32,6 +34,8 @@ public final class SceneRenderer implements AutoCloseable {
   private final Matrix4f viewProj = new Matrix4f();
   private final Matrix4f modelMatrix = new Matrix4f();
   private final ScreenRect edges = new ScreenRect();
+  private final ScreenRect gizmoEdges = new ScreenRect();
+  private final OrientationGizmo gizmo = new OrientationGizmo();
   private final AntiAliasing antiAliasing;
   private final FxaaPass fxaa;
 
@@ -64,6 +68,7 @@ public final class SceneRenderer implements AutoCloseable {
   public void render(SceneSnapshot scene, OrbitCamera camera, int width, int height) {
     boolean smooth = antiAliasing == AntiAliasing.FXAA;
     edges.reset(width, height);
+    gizmoEdges.reset(width, height);
     glViewport(0, 0, width, height);
     // Alpha 0: background, not a solid (see fxaa.frag); nothing blends with destination alpha.
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
@@ -107,8 +112,11 @@ public final class SceneRenderer implements AutoCloseable {
       // its grid shader runs (llvmpipe tests depth early), about 6% of the frame's CPU.
       drawFloor(vp, eye, floorZ);
     }
+    gizmo.draw(solid, axisBar, camera, width, height, gizmoEdges);
     if (smooth) {
+      // Two rectangles, not their union: the corner and the robot are usually far apart.
       fxaa.apply(edges, width, height);
+      fxaa.apply(gizmoEdges, width, height);
     }
   }
 

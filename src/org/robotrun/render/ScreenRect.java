@@ -31,6 +31,14 @@ final class ScreenRect {
     maxY = Float.NEGATIVE_INFINITY;
   }
 
+  /** Grows the rectangle to include the pixels [x0, x1) × [y0, y1). */
+  void addPixels(int x0, int y0, int x1, int y1) {
+    minX = Math.min(minX, x0);
+    minY = Math.min(minY, y0);
+    maxX = Math.max(maxX, x1);
+    maxY = Math.max(maxY, y1);
+  }
+
   /**
    * Grows the rectangle by a box's projection.
    *

@@ -106,6 +106,29 @@ class HeadlessRenderTest {
     assertThat((double) yellowMsaa).isCloseTo(yellowHard, org.assertj.core.data.Percentage.withPercentage(10));
   }
 
+  @Test
+  void orientationTriadInTheBottomLeftCornerShowsABlueZBar() {
+    byte[] px = render(AntiAliasing.DEFAULT, new double[6]);
+    int size = OrientationGizmo.sizePx(W, H) + 20;
+    int blueInCorner = 0;
+    int blueElsewhere = 0;
+    for (int y = 0; y < H; y++) {
+      for (int x = 0; x < W; x++) {
+        int c = rgb(px, 3 * (y * W + x));
+        int r = (c >> 16) & 0xff, g = (c >> 8) & 0xff, b = c & 0xff;
+        boolean blue = b > 120 && b > r + 60 && b > g + 30;
+        // Rows are top first: the bottom-left corner is high y, low x.
+        if (x < size && y >= H - size) {
+          blueInCorner += blue ? 1 : 0;
+        } else {
+          blueElsewhere += blue ? 1 : 0;
+        }
+      }
+    }
+    assertThat(blueInCorner).isGreaterThan(15);
+    assertThat(blueElsewhere).isZero();
+  }
+
   private byte[] render(AntiAliasing mode, double[] q) {
     try (HeadlessRenderer r = GlTestSupport.rendererOrSkip(W, H, mode)) {
       return r.renderRgb(SceneSnapshots.singleRobot(robot, q, 0), new OrbitCamera());
