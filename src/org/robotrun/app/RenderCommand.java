@@ -35,7 +35,7 @@ public final class RenderCommand implements Callable<Integer> {
   int height;
 
   @Option(names = "--antialias", paramLabel = "MODE",
-      description = "Edge smoothing: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, as the window uses; MSAA4 is smoother and about twice as slow in software).")
+      description = "Edge smoothing: ${COMPLETION-CANDIDATES} (default: ${DEFAULT-VALUE}, as the window uses; MSAA4 is smoother at silhouettes and costs about 2.5 times the CPU in Mesa's software renderer).")
   AntiAliasing antialias = AntiAliasing.DEFAULT;
 
   @Option(names = "--joints", paramLabel = "J1,...,J6",
