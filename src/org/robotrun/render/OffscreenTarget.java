@@ -6,8 +6,9 @@ import java.nio.ByteBuffer;
 import org.lwjgl.system.MemoryUtil;
 
 /**
- * A framebuffer to render into without a window: multisampled colour and depth, resolved into
- * a plain RGBA buffer that can be read back.
+ * A framebuffer to render into without a window: colour and depth, read back as RGB. With more
+ * than one sample the scene is drawn into multisampled buffers and resolved into the plain one;
+ * with 0 or 1 it is drawn into the plain one directly.
  */
 public final class OffscreenTarget implements AutoCloseable {
   private final int width;
@@ -69,12 +70,12 @@ public final class OffscreenTarget implements AutoCloseable {
     }
   }
 
-  /** Binds the multisampled framebuffer for drawing. */
+  /** Binds the framebuffer the scene is drawn into (the multisampled one, if any). */
   public void bind() {
     glBindFramebuffer(GL_FRAMEBUFFER, multisampled ? msFbo : fbo);
   }
 
-  /** Resolves the samples into the plain buffer. */
+  /** Resolves the samples into the plain buffer; nothing to do without multisampling. */
   public void resolve() {
     if (!multisampled) {
       return;
