@@ -1,5 +1,6 @@
 #version 330 core
 // Anti-aliased grid lines every 100 mm, stronger every 1000 mm, fading with distance.
+// Alpha 0 marks floor pixels, which the edge smoothing pass (fxaa.frag) leaves alone.
 in vec3 vWorldPos;
 uniform vec3 uEye;
 out vec4 fragColor;
@@ -19,5 +20,5 @@ void main() {
   float d = length(vWorldPos.xy - uEye.xy);
   float fade = smoothstep(3000.0, 9000.0, d);
   c = mix(c, vec3(0.78, 0.80, 0.83), fade);
-  fragColor = vec4(c, 1.0);
+  fragColor = vec4(c, 0.0);  // alpha 0: not a solid, for fxaa.frag
 }

@@ -13,13 +13,15 @@ final class GpuMesh implements AutoCloseable {
   private final int ebo;
   private final int indexCount;
   private final int mode;
+  private final MeshBounds bounds;
 
-  private GpuMesh(int vao, int vbo, int ebo, int indexCount, int mode) {
+  private GpuMesh(int vao, int vbo, int ebo, int indexCount, int mode, MeshBounds bounds) {
     this.vao = vao;
     this.vbo = vbo;
     this.ebo = ebo;
     this.indexCount = indexCount;
     this.mode = mode;
+    this.bounds = bounds;
   }
 
   static GpuMesh upload(MeshData data) {
@@ -45,11 +47,16 @@ final class GpuMesh implements AutoCloseable {
       glVertexAttribPointer(1, 3, GL_FLOAT, false, 24, 12);
       glEnableVertexAttribArray(1);
       glBindVertexArray(0);
-      return new GpuMesh(vao, vbo, ebo, data.indices().length, mode);
+      return new GpuMesh(vao, vbo, ebo, data.indices().length, mode, MeshBounds.of(data));
     } finally {
       MemoryUtil.memFree(fb);
       MemoryUtil.memFree(ib);
     }
+  }
+
+  /** The mesh's bounds in its own coordinates. */
+  MeshBounds bounds() {
+    return bounds;
   }
 
   void draw() {

@@ -8,23 +8,21 @@ import org.robotrun.sim.SceneSnapshot;
 
 /** Renders snapshots to images with no display (see {@link HeadlessGl}). */
 public final class HeadlessRenderer implements AutoCloseable {
-  /** Multisample count: smooth edges at a cost the software renderer can carry. */
-  public static final int SAMPLES = 4;
-
   private final HeadlessGl gl;
   private final SceneRenderer renderer;
   private final OffscreenTarget target;
 
+  /** A renderer with the default edge smoothing, as the window uses. */
   public HeadlessRenderer(int width, int height) {
-    this(width, height, SAMPLES);
+    this(width, height, AntiAliasing.DEFAULT);
   }
 
-  /** A renderer with the given multisample count (1 = no anti-aliasing). */
-  public HeadlessRenderer(int width, int height, int samples) {
+  /** A renderer with the given edge smoothing. */
+  public HeadlessRenderer(int width, int height, AntiAliasing antiAliasing) {
     gl = HeadlessGl.create();
     try {
-      renderer = new SceneRenderer();
-      target = new OffscreenTarget(width, height, samples);
+      renderer = new SceneRenderer(antiAliasing);
+      target = new OffscreenTarget(width, height, antiAliasing.samples());
     } catch (RuntimeException e) {
       gl.close();
       throw e;

@@ -6,8 +6,9 @@ import java.nio.ByteBuffer;
 import org.lwjgl.system.MemoryUtil;
 
 /**
- * A framebuffer to render into without a window: multisampled colour and depth, resolved into
- * a plain RGBA buffer that can be read back.
+ * A framebuffer to render into without a window: colour and depth, read back as RGB. With more
+ * than one sample the scene is drawn into multisampled buffers and resolved into the plain one;
+ * with 0 or 1 it is drawn into the plain one directly.
  */
 public final class OffscreenTarget implements AutoCloseable {
   private final int width;
@@ -17,21 +18,30 @@ public final class OffscreenTarget implements AutoCloseable {
   private final int msDepth;
   private final int fbo;
   private final int color;
+  private final int depth;
+  private final boolean multisampled;
 
   public OffscreenTarget(int width, int height, int samples) {
     this.width = width;
     this.height = height;
-    msFbo = glGenFramebuffers();
-    glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
-    msColor = glGenRenderbuffers();
-    glBindRenderbuffer(GL_RENDERBUFFER, msColor);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor);
-    msDepth = glGenRenderbuffers();
-    glBindRenderbuffer(GL_RENDERBUFFER, msDepth);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth);
-    check("multisampled");
+    multisampled = samples > 1;
+    if (multisampled) {
+      msFbo = glGenFramebuffers();
+      glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
+      msColor = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, msColor);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msColor);
+      msDepth = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, msDepth);
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, msDepth);
+      check("multisampled");
+    } else {
+      msFbo = 0;
+      msColor = 0;
+      msDepth = 0;
+    }
 
     fbo = glGenFramebuffers();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -39,6 +49,15 @@ public final class OffscreenTarget implements AutoCloseable {
     glBindRenderbuffer(GL_RENDERBUFFER, color);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    if (multisampled) {
+      depth = 0;
+    } else {
+      // Without multisampling the scene is drawn straight into this buffer: no resolve pass.
+      depth = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, depth);
+      glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    }
     check("resolve");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }
@@ -51,13 +70,16 @@ public final class OffscreenTarget implements AutoCloseable {
     }
   }
 
-  /** Binds the multisampled framebuffer for drawing. */
+  /** Binds the framebuffer the scene is drawn into (the multisampled one, if any). */
   public void bind() {
-    glBindFramebuffer(GL_FRAMEBUFFER, msFbo);
+    glBindFramebuffer(GL_FRAMEBUFFER, multisampled ? msFbo : fbo);
   }
 
-  /** Resolves the samples into the plain buffer. */
+  /** Resolves the samples into the plain buffer; nothing to do without multisampling. */
   public void resolve() {
+    if (!multisampled) {
+      return;
+    }
     glBindFramebuffer(GL_READ_FRAMEBUFFER, msFbo);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
     glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -95,10 +117,12 @@ public final class OffscreenTarget implements AutoCloseable {
 
   @Override
   public void close() {
+    // Deleting name 0 is ignored by GL, so the single-sample case needs no branches here.
     glDeleteFramebuffers(msFbo);
     glDeleteFramebuffers(fbo);
     glDeleteRenderbuffers(msColor);
     glDeleteRenderbuffers(msDepth);
     glDeleteRenderbuffers(color);
+    glDeleteRenderbuffers(depth);
   }
 }

@@ -72,6 +72,11 @@ public final class OrbitCamera {
     centreShiftNdc = Math.max(-1f, Math.min(1f, ndc));
   }
 
+  /** The point the camera orbits and looks at (mm); a copy. */
+  public Vector3f target() {
+    return new Vector3f(target);
+  }
+
   /** Projection times view for a viewport of the given aspect ratio. */
   public Matrix4f viewProjection(float aspect) {
     Vector3f eye = eye();

@@ -10,6 +10,7 @@ import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
 import org.lwjgl.system.Configuration;
 import org.lwjgl.system.Platform;
+import org.robotrun.render.AntiAliasing;
 import org.robotrun.render.GlUnavailableException;
 import org.robotrun.render.OrbitCamera;
 import org.robotrun.render.SceneRenderer;
@@ -71,7 +72,7 @@ public final class SimulatorWindow implements AutoCloseable {
     if (Platform.get() == Platform.MACOSX) {
       glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     }
-    glfwWindowHint(GLFW_SAMPLES, 4);
+    glfwWindowHint(GLFW_SAMPLES, AntiAliasing.DEFAULT.samples());
     window = glfwCreateWindow(width, height, title, 0, 0);
     if (window == 0) {
       glfwTerminate();

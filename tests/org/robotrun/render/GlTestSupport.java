@@ -10,8 +10,12 @@ public final class GlTestSupport {
   private GlTestSupport() {}
 
   public static HeadlessRenderer rendererOrSkip(int width, int height) {
+    return rendererOrSkip(width, height, AntiAliasing.DEFAULT);
+  }
+
+  public static HeadlessRenderer rendererOrSkip(int width, int height, AntiAliasing antiAliasing) {
     try {
-      return new HeadlessRenderer(width, height);
+      return new HeadlessRenderer(width, height, antiAliasing);
     } catch (GlUnavailableException e) {
       if ("true".equals(System.getenv("CI"))) {
         throw new AssertionError("CI must render for real, but: " + e.getMessage(), e);

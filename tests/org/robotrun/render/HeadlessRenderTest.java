@@ -67,6 +67,91 @@ class HeadlessRenderTest {
     assertThat(changed).isGreaterThan(yellowOnlyInA);
   }
 
+  @Test
+  void edgeSmoothingChangesOnlyPixelsAtHighContrastEdges() {
+    double[] q = {0.3, 0.2, -0.1, 0, -0.6, 0};
+    byte[] hard = render(AntiAliasing.NONE, q);
+    byte[] smooth = render(AntiAliasing.FXAA, q);
+    int changed = 0;
+    for (int y = 0; y < H; y++) {
+      for (int x = 0; x < W; x++) {
+        int i = 3 * (y * W + x);
+        if (hard[i] == smooth[i] && hard[i + 1] == smooth[i + 1] && hard[i + 2] == smooth[i + 2]) {
+          continue;
+        }
+        changed++;
+        // Same threshold family as fxaa.frag: a changed pixel had a neighbour at least 1/24
+        // of full scale (about 10 of 255 in luma) away.
+        assertThat(maxNeighbourLumaStep(hard, x, y)).as("luma step around changed pixel (%d, %d)", x, y)
+            .isGreaterThanOrEqualTo(10);
+      }
+    }
+    // Only the solids' outlines and creases: the floor's grid lines are left alone.
+    assertThat(changed).as("pixels softened").isGreaterThan(100).isLessThan(W * H / 20);
+  }
+
+  @Test
+  void fourTimesMultisamplingDrawsTheSameArm() {
+    double[] q = {0.3, 0.2, -0.1, 0, -0.6, 0};
+    byte[] hard = render(AntiAliasing.NONE, q);
+    byte[] msaa = render(AntiAliasing.MSAA4, q);
+    int yellowHard = 0;
+    int yellowMsaa = 0;
+    for (int i = 0; i < hard.length; i += 3) {
+      yellowHard += isArmYellow(rgb(hard, i)) ? 1 : 0;
+      yellowMsaa += isArmYellow(rgb(msaa, i)) ? 1 : 0;
+    }
+    // Only edge pixels may differ: the yellow areas agree within a few percent.
+    assertThat(yellowHard).isGreaterThan(500);
+    assertThat((double) yellowMsaa).isCloseTo(yellowHard, org.assertj.core.data.Percentage.withPercentage(10));
+  }
+
+  @Test
+  void orientationTriadInTheBottomLeftCornerShowsABlueZBar() {
+    byte[] px = render(AntiAliasing.DEFAULT, new double[6]);
+    int size = OrientationGizmo.sizePx(W, H) + 20;
+    int blueInCorner = 0;
+    int blueElsewhere = 0;
+    for (int y = 0; y < H; y++) {
+      for (int x = 0; x < W; x++) {
+        int c = rgb(px, 3 * (y * W + x));
+        int r = (c >> 16) & 0xff, g = (c >> 8) & 0xff, b = c & 0xff;
+        boolean blue = b > 120 && b > r + 60 && b > g + 30;
+        // Rows are top first: the bottom-left corner is high y, low x.
+        if (x < size && y >= H - size) {
+          blueInCorner += blue ? 1 : 0;
+        } else {
+          blueElsewhere += blue ? 1 : 0;
+        }
+      }
+    }
+    assertThat(blueInCorner).isGreaterThan(15);
+    assertThat(blueElsewhere).isZero();
+  }
+
+  private byte[] render(AntiAliasing mode, double[] q) {
+    try (HeadlessRenderer r = GlTestSupport.rendererOrSkip(W, H, mode)) {
+      return r.renderRgb(SceneSnapshots.singleRobot(robot, q, 0), new OrbitCamera());
+    }
+  }
+
+  private static int maxNeighbourLumaStep(byte[] px, int x, int y) {
+    int centre = luma(px, x, y);
+    int best = 0;
+    int[][] offsets = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (int[] d : offsets) {
+      int nx = Math.max(0, Math.min(W - 1, x + d[0]));
+      int ny = Math.max(0, Math.min(H - 1, y + d[1]));
+      best = Math.max(best, Math.abs(luma(px, nx, ny) - centre));
+    }
+    return best;
+  }
+
+  private static int luma(byte[] px, int x, int y) {
+    int i = 3 * (y * W + x);
+    return (int) Math.round(0.299 * (px[i] & 0xff) + 0.587 * (px[i + 1] & 0xff) + 0.114 * (px[i + 2] & 0xff));
+  }
+
   private static int rgb(byte[] px, int i) {
     return (px[i] & 0xff) << 16 | (px[i + 1] & 0xff) << 8 | (px[i + 2] & 0xff);
   }

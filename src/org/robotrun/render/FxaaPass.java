@@ -1,0 +1,86 @@
+package org.robotrun.render;
+
+import static org.lwjgl.opengl.GL33C.*;
+
+/**
+ * Edge smoothing as a post pass over the part of a finished frame where the solids are
+ * ({@link ScreenRect}): that part is copied into a texture, then {@code shaders/fxaa.frag}
+ * draws it back, blended across edges, with the scissor limited to the rectangle. The floor
+ * elsewhere is left alone (its shader draws smooth grid lines), so the pass costs in
+ * proportion to the robot's size on screen, not the window's.
+ */
+final class FxaaPass implements AutoCloseable {
+  private final ShaderProgram program;
+  private final int emptyVao;
+  private int texture;
+  private int width;
+  private int height;
+
+  FxaaPass() {
+    program = ShaderProgram.load("fxaa");
+    emptyVao = glGenVertexArrays();
+  }
+
+  /**
+   * Smooths the rectangle of the framebuffer bound for drawing now.
+   *
+   * @param rect where to smooth, within a viewport of width × height pixels
+   */
+  void apply(ScreenRect rect, int viewportWidth, int viewportHeight) {
+    if (rect.isEmpty()) {
+      return;
+    }
+    if (texture == 0 || viewportWidth != width || viewportHeight != height) {
+      allocate(viewportWidth, viewportHeight);
+    }
+    int x0 = rect.x0();
+    int y0 = rect.y0();
+    int w = rect.x1() - x0;
+    int h = rect.y1() - y0;
+    // Copy one pixel more on each side than is drawn: the blend reads the four neighbours.
+    int cx0 = Math.max(0, x0 - 1);
+    int cy0 = Math.max(0, y0 - 1);
+    int cx1 = Math.min(width, x0 + w + 1);
+    int cy1 = Math.min(height, y0 + h + 1);
+    int drawFbo = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+    int readFbo = glGetInteger(GL_READ_FRAMEBUFFER_BINDING);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, drawFbo);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glCopyTexSubImage2D(GL_TEXTURE_2D, 0, cx0, cy0, cx0, cy0, cx1 - cx0, cy1 - cy0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, readFbo);
+
+    glViewport(0, 0, width, height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x0, y0, w, h);
+    program.use();
+    glUniform1i(program.uniform("uScene"), 0);
+    glBindVertexArray(emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_SCISSOR_TEST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+
+  private void allocate(int w, int h) {
+    glDeleteTextures(texture);
+    width = w;
+    height = h;
+    texture = glGenTextures();
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, 0L);
+    // The shader reads single texels (texelFetch); no filtering or mipmaps.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+
+  @Override
+  public void close() {
+    // Deleting name 0 is a no-op in GL, so this is safe if nothing was ever smoothed.
+    glDeleteTextures(texture);
+    glDeleteVertexArrays(emptyVao);
+    program.close();
+  }
+}
