@@ -2,14 +2,18 @@ package org.robotrun.render;
 
 /**
  * How the renderer smooths edges. Measured with {@code robotrun bench render} on Mesa's
- * llvmpipe (1280x800): {@link #MSAA4} costs about three times the CPU of {@link #FXAA}, because
- * llvmpipe tests depth, stores colour and clears per sample and then needs a resolve pass;
- * the FXAA post pass reads the finished frame once.
+ * llvmpipe (1280x800, default scene, CPU time per frame): {@link #NONE} 14 ms, {@link #FXAA}
+ * 16 ms, {@link #MSAA4} 40 ms, because llvmpipe tests depth, stores colour and clears per
+ * sample and then needs a resolve pass, while the FXAA pass only rereads the robot's part of
+ * the finished frame.
  */
 public enum AntiAliasing {
   /** No smoothing: hard, stair-stepped silhouettes. */
   NONE(0),
-  /** One sample per pixel, then an edge-directed blur post pass ({@code shaders/fxaa.frag}). */
+  /**
+   * One sample per pixel, then a pass that blends pixels across the solids' edges
+   * ({@link FxaaPass}, {@code shaders/fxaa.frag}).
+   */
   FXAA(0),
   /** Four samples per pixel, resolved by a blit. */
   MSAA4(4);
