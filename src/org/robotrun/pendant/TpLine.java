@@ -244,7 +244,7 @@ public final class TpLine {
       case Motion.SpeedConst c -> ExprText.plain(c.value());
       case Motion.SpeedRegister r -> ExprText.item("R", r.register());
     };
-    f.add(new Field(speed, Field.Edit.entry(speed, t -> withSpeed(m, new Motion.Speed(speedValue(t), m.speed().unit())))));
+    f.add(new Field(speed, Field.Edit.entry(speed, t -> withSpeed(m, checkedSpeed(new Motion.Speed(speedValue(t), m.speed().unit()))))));
     List<Motion.SpeedUnit> units = Arrays.stream(Motion.SpeedUnit.values()).filter(u -> u.fits(m.type())).toList();
     f.add(new Field(unit(m.speed().unit()), Field.Edit.choice(units.stream().map(TpLine::unit).toList(),
         k -> withSpeed(m, new Motion.Speed(m.speed().value(), units.get(k))))));
@@ -314,6 +314,17 @@ public final class TpLine {
           ? new Motion.Local(l.number() + 1, "") : m.target()));
     }
     return new Instruction.Move(type, m.target(), end, speed, m.termination(), m.options());
+  }
+
+  /**
+   * A typed speed as the .LS reader would accept it: a percentage is 1..100 (a program saved
+   * with 300% would not read back).
+   */
+  static Motion.Speed checkedSpeed(Motion.Speed s) throws BadText {
+    if (s.unit() == Motion.SpeedUnit.PERCENT && s.value() instanceof Motion.SpeedConst c && c.value() > 100) {
+      throw new BadText("Speed " + ExprText.plain(c.value()) + "%: enter 1 to 100");
+    }
+    return s;
   }
 
   static Instruction.Move withSpeed(Instruction.Move m, Motion.Speed s) {

@@ -70,10 +70,21 @@ class ProgramEditsTest {
     Program p = Program.of("X", List.of(j(1), new Instruction.AssignRegister(Item.of(100), new Expr.IntConst(100))),
         List.of(pos(1, 0)));
     ProgramEdits.Replaced r = ProgramEdits.replaceAll(p, "100", "250", List.of());
-    // the speed takes 250; R[250] is out of range and 250 is a fine value
-    assertThat(text(r.program())).containsExactly("J P[1:P1] 250% FINE", "R[100]=250");
-    assertThat(r.replaced()).isEqualTo(2);
-    assertThat(r.refused()).isEqualTo(1);
+    // 250% is over 100% and R[250] out of range: both refused; 250 is a fine value
+    assertThat(text(r.program())).containsExactly("J P[1:P1] 100% FINE", "R[100]=250");
+    assertThat(r.replaced()).isEqualTo(1);
+    assertThat(r.refused()).isEqualTo(2);
+  }
+
+  @Test
+  void aPercentSpeedOver100IsRefusedAtEntry() {
+    Motion.Speed ok = new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.PERCENT);
+    Motion.Speed over = new Motion.Speed(new Motion.SpeedConst(300), Motion.SpeedUnit.PERCENT);
+    Motion.Speed fast = new Motion.Speed(new Motion.SpeedConst(2000), Motion.SpeedUnit.MM_PER_SEC);
+    org.assertj.core.api.Assertions.assertThatCode(() -> TpLine.checkedSpeed(ok)).doesNotThrowAnyException();
+    org.assertj.core.api.Assertions.assertThatCode(() -> TpLine.checkedSpeed(fast)).doesNotThrowAnyException();
+    org.assertj.core.api.Assertions.assertThatThrownBy(() -> TpLine.checkedSpeed(over))
+        .hasMessageContaining("300%").hasMessageContaining("1 to 100");
   }
 
   @Test
