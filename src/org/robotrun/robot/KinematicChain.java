@@ -35,6 +35,8 @@ public final class KinematicChain {
   private final double[] axisSign = new double[DOF];
   private final double[] lower = new double[DOF];
   private final double[] upper = new double[DOF];
+  // Scratch for linkPoses: one joint's (sin, cos).
+  private final double[] sinCos = new double[2];
 
   public KinematicChain(RobotModel model) {
     for (int i = 0; i < DOF; i++) {
@@ -171,6 +173,52 @@ public final class KinematicChain {
     X_BF[9] = px + r00 * f[9] + r01 * f[10] + r02 * f[11];
     X_BF[10] = py + r10 * f[9] + r11 * f[10] + r12 * f[11];
     X_BF[11] = pz + r20 * f[9] + r21 * f[10] + r22 * f[11];
+  }
+
+  /**
+   * Every link pose, for callers that need them all (the collision check each tick): fills
+   * {@code out[0]} with {@code X_AB} (the base in some frame A) and {@code out[1..6]} with links
+   * 1..6 in A. One {@link Transform} per link; the joint factors are the ones
+   * {@link #flangePose} uses.
+   */
+  public void linkPoses(Transform X_AB, double[] q, Transform[] out) {
+    out[0] = X_AB;
+    double r00 = X_AB.r00(), r01 = X_AB.r01(), r02 = X_AB.r02();
+    double r10 = X_AB.r10(), r11 = X_AB.r11(), r12 = X_AB.r12();
+    double r20 = X_AB.r20(), r21 = X_AB.r21(), r22 = X_AB.r22();
+    double px = X_AB.x(), py = X_AB.y(), pz = X_AB.z();
+    for (int i = 0; i < DOF; i++) {
+      int o3 = i * 3;
+      double tx = t[o3], ty = t[o3 + 1], tz = t[o3 + 2];
+      px += r00 * tx + r01 * ty + r02 * tz;
+      py += r10 * tx + r11 * ty + r12 * tz;
+      pz += r20 * tx + r21 * ty + r22 * tz;
+      SinCos.sinCos(q[i], sinCos, 0);
+      double sn = sinCos[0], c = sinCos[1];
+      int o = i * 9;
+      double m00 = p[o] + c * qm[o] + sn * s[o];
+      double m01 = p[o + 1] + c * qm[o + 1] + sn * s[o + 1];
+      double m02 = p[o + 2] + c * qm[o + 2] + sn * s[o + 2];
+      double m10 = p[o + 3] + c * qm[o + 3] + sn * s[o + 3];
+      double m11 = p[o + 4] + c * qm[o + 4] + sn * s[o + 4];
+      double m12 = p[o + 5] + c * qm[o + 5] + sn * s[o + 5];
+      double m20 = p[o + 6] + c * qm[o + 6] + sn * s[o + 6];
+      double m21 = p[o + 7] + c * qm[o + 7] + sn * s[o + 7];
+      double m22 = p[o + 8] + c * qm[o + 8] + sn * s[o + 8];
+      double n00 = r00 * m00 + r01 * m10 + r02 * m20;
+      double n01 = r00 * m01 + r01 * m11 + r02 * m21;
+      double n02 = r00 * m02 + r01 * m12 + r02 * m22;
+      double n10 = r10 * m00 + r11 * m10 + r12 * m20;
+      double n11 = r10 * m01 + r11 * m11 + r12 * m21;
+      double n12 = r10 * m02 + r11 * m12 + r12 * m22;
+      double n20 = r20 * m00 + r21 * m10 + r22 * m20;
+      double n21 = r20 * m01 + r21 * m11 + r22 * m21;
+      double n22 = r20 * m02 + r21 * m12 + r22 * m22;
+      r00 = n00; r01 = n01; r02 = n02;
+      r10 = n10; r11 = n11; r12 = n12;
+      r20 = n20; r21 = n21; r22 = n22;
+      out[i + 1] = new Transform(r00, r01, r02, r10, r11, r12, r20, r21, r22, px, py, pz);
+    }
   }
 
   /** Lower joint limit i (rad). */
