@@ -13,7 +13,6 @@ import org.robotrun.render.OrbitCamera;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.SceneSnapshot;
-import org.robotrun.sim.SceneSnapshots;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
 import org.robotrun.world.CameraView;
@@ -43,23 +42,6 @@ final class ScenarioFiles {
     } catch (FileFormatException e) {
       throw new UserError("robot '" + setup.name() + "': " + e.getMessage());
     }
-  }
-
-  /**
-   * The cell as loaded: every robot at its initial joints; {@code jointsOverride} (pendant
-   * degrees, may be null) replaces the first robot's.
-   */
-  static SceneSnapshot initialScene(Scenario sc, String jointsOverride) {
-    List<SceneSnapshots.PlacedRobot> robots = new ArrayList<>();
-    for (int i = 0; i < sc.robots().size(); i++) {
-      RobotSetup setup = sc.robots().get(i);
-      RobotModel model = model(setup);
-      double[] q = i == 0 && jointsOverride != null
-          ? JointsOption.parseToKinematic(jointsOverride, model)
-          : JointConvention.pendantToKinematic(model, setup.initialJoints());
-      robots.add(new SceneSnapshots.PlacedRobot(setup.name(), model, setup.X_CB(), q));
-    }
-    return SceneSnapshots.cell(sc.world(), robots, 0);
   }
 
   /**
