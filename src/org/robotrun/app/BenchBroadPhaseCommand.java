@@ -20,9 +20,8 @@ import picocli.CommandLine.Model.CommandSpec;
     name = "broadphase",
     mixinStandardHelpOptions = true,
     description = {
-      "Time one collision update (sort-and-sweep broad phase, pair filter, SAT) on a",
-      "synthetic cell of 2 robots x 8 boxes and 200 objects, or on a scenario's cell;",
-      "prints the median per tick."
+      "Time one collision update (broad phase, pair filter, separating-axis test) per tick.",
+      "The cell is synthetic (2 robots x 8 boxes and 200 objects) or a scenario's; prints the median per tick."
     })
 public final class BenchBroadPhaseCommand implements Runnable {
   @Spec CommandSpec spec;

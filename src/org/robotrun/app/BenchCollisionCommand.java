@@ -28,8 +28,8 @@ import picocli.CommandLine.Model.CommandSpec;
     name = "collision",
     mixinStandardHelpOptions = true,
     description = {
-      "Time the OBB separating-axis test on box pairs from a CSV file; prints",
-      "'pairs=N overlapping=K ns_per_pair=X' (median of the timed passes).",
+      "Time the OBB separating-axis test on box pairs from a CSV file.",
+      "Prints 'pairs=N overlapping=K ns_per_pair=X' (median of the timed passes).",
       "CSV: a header line, then 30 columns per pair, box A then box B:",
       "cx,cy,cz (mm), hx,hy,hz (half extents, mm), r11..r33 (row-major rotation).",
       "Touching boxes count as overlapping."

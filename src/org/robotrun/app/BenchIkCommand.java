@@ -33,8 +33,8 @@ import picocli.CommandLine.Spec;
     name = "ik",
     mixinStandardHelpOptions = true,
     description = {
-      "Solve every target of a reference IK file (default robot; format in",
-      "shared/robots/README.md) and print one summary line:",
+      "Solve every target of a reference IK file with the default robot and print one summary line.",
+      "The file has the columns id, q1..q6, x, y, z (m), r11..r33, s1..s6, n1..n6 (see docs/kinematics.md):",
       "  solved=N/M in_limits=N/M same_config=N/M median_us=X p99_us=Y",
       "solved: FK of the answer within 0.1 mm and 0.01 rad of the target;",
       "same_config: joints equal the ground truth within 1e-6 rad (wrapped).",

@@ -33,14 +33,10 @@ import picocli.CommandLine.Spec;
     mixinStandardHelpOptions = true,
     description = {
       "Run a .keys script on the teach pendant and print the LCD as text at every SHOW.",
-      "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key,",
-      "WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
-      "By default the pendant drives the simulation's controller: the scenario's first robot, or without",
-      "--scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
-      "--controller stand-in uses the stand-in controller instead: the same program interpreter on a toy",
-      "gantry arm, no robot kinematics, no scenario.",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write,",
-      "2 bad option, unreadable program or malformed script (file:line)."
+      "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
+      "By default the pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
+      "--controller stand-in uses the stand-in controller instead: the same program interpreter on a toy gantry arm, no robot kinematics, no scenario.",
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write, 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   @Option(names = "--keys", required = true, paramLabel = "FILE.keys", description = "The key script to run.")
