@@ -26,9 +26,9 @@ import org.robotrun.world.WorldObject;
  * <p>Gripping: when RO[1] goes ON, a gripper or suction cup takes the part whose box overlaps
  * its pickup zone (the one nearest the TCP if several do) and keeps its pose in the flange
  * frame from then on. When RO[1] goes OFF the part stays where it is; if its bottom is within
- * {@link #SNAP_MM} of the top of a fixture under it, it is set down on that top and becomes
- * that fixture's child (it rests there); otherwise it stays in the air, a child of the cell
- * (there is no gravity). A grip is rare, so the parts are scanned directly rather than
+ * {@link #SNAP_MM} of a fixture's upper face (level, or tilted up to
+ * {@link #MAX_SUPPORT_TILT_DEG}), it is set down on that face and becomes that fixture's child
+ * (it rests there); otherwise it stays in the air, a child of the cell (there is no gravity). A grip is rare, so the parts are scanned directly rather than
  * through the collision world, which may not exist (collision checking can be off).
  *
  * <p>{@link #version} changes whenever a part jumps (set down, reset) or the held set changes,
@@ -208,52 +208,91 @@ public final class CellState {
   }
 
   /**
-   * The part released at {@code X_CP}: set on the highest fixture top within {@link #SNAP_MM}
-   * of its bottom, under its footprint, as that fixture's child; else where it is, in the cell.
+   * The part released at {@code X_CP}: set on the fixture face it is resting on, as that
+   * fixture's child; else left where it is, in the cell. A face can hold a part when its
+   * outward normal is at most {@link #MAX_SUPPORT_TILT_DEG} from straight up (a tilted jig
+   * holds one, a wall does not). The part rests on it when its lowest point along that normal
+   * is within {@link #SNAP_MM} of the face plane (above or sunk in) and its box overlaps the
+   * face; it is then moved along the normal until it just touches, keeping its orientation.
+   * If several faces qualify, the one the part is sunk deepest into wins (the highest top).
    */
   static WorldObject setDown(World world, String part, Transform X_CP) {
     WorldObject o = world.find(part).orElseThrow();
-    Obb box = o.shape().collisionBox(X_CP);
-    double[] lo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-    double[] hi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-    bounds(box, lo, hi);
-    double bottom = lo[2];
-    // A slab under the part's footprint, SNAP_MM either side of its bottom.
-    Obb slab = Obb.axisAligned((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, bottom,
-        (hi[0] - lo[0]) / 2, (hi[1] - lo[1]) / 2, SNAP_MM);
+    Obb p = o.shape().collisionBox(X_CP);
     String support = null;
-    double top = Double.NEGATIVE_INFINITY;
+    double bestGap = Double.NEGATIVE_INFINITY;
+    double nx = 0, ny = 0, nz = 0;
     for (WorldObject f : world.objects()) {
       if (f.kind() != ObjectKind.FIXTURE) {
         continue;
       }
       Obb fb = world.collisionBox(f.name());
-      if (!fb.overlaps(slab)) {
+      SupportFace face = SupportFace.upper(fb);
+      if (face.nz() < MIN_SUPPORT_NZ) {
         continue;
       }
-      double[] flo = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
-      double[] fhi = {Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
-      bounds(fb, flo, fhi);
-      if (fhi[2] <= bottom + SNAP_MM && fhi[2] > top) {
-        top = fhi[2];
-        support = f.name();
+      double plane = face.nx() * fb.cx() + face.ny() * fb.cy() + face.nz() * fb.cz() + face.halfDepth();
+      double gap = plane - lowest(p, face.nx(), face.ny(), face.nz());
+      if (gap < -SNAP_MM || gap > SNAP_MM || gap <= bestGap || !face.slab(fb).overlaps(p)) {
+        continue;
       }
+      bestGap = gap;
+      support = f.name();
+      nx = face.nx();
+      ny = face.ny();
+      nz = face.nz();
     }
     if (support == null) {
       return o.movedTo(X_CP, Optional.empty());
     }
-    Transform X_CPset = X_CP.withTranslation(X_CP.x(), X_CP.y(), X_CP.z() + (top - bottom));
+    Transform X_CPset = X_CP.withTranslation(X_CP.x() + nx * bestGap, X_CP.y() + ny * bestGap, X_CP.z() + nz * bestGap);
     Transform X_CS = world.poseInCell(support);
     return o.movedTo(X_CS.inverse().compose(X_CPset), Optional.of(support));
   }
 
-  private static void bounds(Obb box, double[] lo, double[] hi) {
-    for (int i = 0; i < 8; i++) {
-      double[] c = box.corner(i);
-      for (int k = 0; k < 3; k++) {
-        lo[k] = Math.min(lo[k], c[k]);
-        hi[k] = Math.max(hi[k], c[k]);
+  /** Steepest fixture face that still holds a released part (degrees from level). */
+  static final double MAX_SUPPORT_TILT_DEG = 45;
+
+  private static final double MIN_SUPPORT_NZ = Math.cos(Math.toRadians(MAX_SUPPORT_TILT_DEG));
+
+  /** The lowest extent of box {@code b} along the unit direction n (mm). */
+  private static double lowest(Obb b, double nx, double ny, double nz) {
+    double c = nx * b.cx() + ny * b.cy() + nz * b.cz();
+    return c - Math.abs(nx * b.r00() + ny * b.r10() + nz * b.r20()) * b.hx()
+        - Math.abs(nx * b.r01() + ny * b.r11() + nz * b.r21()) * b.hy()
+        - Math.abs(nx * b.r02() + ny * b.r12() + nz * b.r22()) * b.hz();
+  }
+
+  /**
+   * A box face, by its outward unit normal n (in the cell), the box's half extent along n, and
+   * which box axis (0..2) it is normal to.
+   */
+  private record SupportFace(double nx, double ny, double nz, double halfDepth, int axis) {
+    /** The face of {@code b} whose outward normal points most nearly up. */
+    static SupportFace upper(Obb b) {
+      double[] zOfAxis = {b.r20(), b.r21(), b.r22()};
+      int k = 0;
+      for (int i = 1; i < 3; i++) {
+        if (Math.abs(zOfAxis[i]) > Math.abs(zOfAxis[k])) {
+          k = i;
+        }
       }
+      double s = zOfAxis[k] >= 0 ? 1 : -1;
+      return switch (k) {
+        case 0 -> new SupportFace(s * b.r00(), s * b.r10(), s * b.r20(), b.hx(), 0);
+        case 1 -> new SupportFace(s * b.r01(), s * b.r11(), s * b.r21(), b.hy(), 1);
+        default -> new SupportFace(s * b.r02(), s * b.r12(), s * b.r22(), b.hz(), 2);
+      };
+    }
+
+    /** The face itself, thickened by {@link #SNAP_MM} either side: what a resting part overlaps. */
+    Obb slab(Obb b) {
+      double cx = b.cx() + nx * halfDepth;
+      double cy = b.cy() + ny * halfDepth;
+      double cz = b.cz() + nz * halfDepth;
+      return new Obb(cx, cy, cz,
+          axis == 0 ? SNAP_MM : b.hx(), axis == 1 ? SNAP_MM : b.hy(), axis == 2 ? SNAP_MM : b.hz(),
+          b.r00(), b.r01(), b.r02(), b.r10(), b.r11(), b.r12(), b.r20(), b.r21(), b.r22());
     }
   }
 
