@@ -1,7 +1,6 @@
 package org.robotrun.app;
 
 import java.io.PrintWriter;
-import java.util.Arrays;
 import java.util.Locale;
 import java.nio.file.Path;
 import org.robotrun.collision.bench.CellScene;
@@ -52,11 +51,7 @@ public final class BenchBroadPhaseCommand implements Runnable {
 
   @Override
   public void run() {
-    BenchClock clock = switch (clockName) {
-      case "wall" -> BenchClock.WALL;
-      case "cpu" -> BenchClock.CPU;
-      default -> throw new UserError("--clock: expected wall or cpu, got '" + clockName + "'");
-    };
+    BenchClock clock = BenchClock.named(clockName);
     if (ticks < 1 || repeat < 1 || warmup < 0) {
       throw new UserError("--ticks and --repeat must be at least 1, --warmup at least 0");
     }
@@ -74,20 +69,14 @@ public final class BenchBroadPhaseCommand implements Runnable {
       scene = s::tick;
       bodies = s.bodies();
     }
-    long contacts = 0;
     for (int t = 0; t < warmup; t++) {
-      contacts += scene.applyAsInt(t);
+      scene.applyAsInt(t);
     }
-    long[] ns = new long[repeat];
-    for (int r = 0; r < repeat; r++) {
-      long t0 = clock.nanos();
+    double usPerTick = clock.medianNanos(repeat, () -> {
       for (int t = 0; t < ticks; t++) {
-        contacts += scene.applyAsInt(t);
+        scene.applyAsInt(t);
       }
-      ns[r] = clock.nanos() - t0;
-    }
-    Arrays.sort(ns);
-    double usPerTick = ns[repeat / 2] / 1000.0 / ticks;
+    }) / 1000.0 / ticks;
     long perTick = 0;
     for (int t = 0; t < ticks; t++) {
       perTick += scene.applyAsInt(t);

@@ -7,7 +7,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import org.robotrun.collision.Obb;
@@ -63,11 +62,7 @@ public final class BenchCollisionCommand implements Runnable {
 
   @Override
   public void run() {
-    BenchClock clock = switch (clockName) {
-      case "wall" -> BenchClock.WALL;
-      case "cpu" -> BenchClock.CPU;
-      default -> throw new UserError("--clock: expected wall or cpu, got '" + clockName + "'");
-    };
+    BenchClock clock = BenchClock.named(clockName);
     if (repeat < 1) {
       throw new UserError("--repeat must be at least 1, got " + repeat);
     }
@@ -109,14 +104,7 @@ public final class BenchCollisionCommand implements Runnable {
       pass(pairs, overlap);
       tested += overlap.length;
     }
-    long[] ns = new long[repeat];
-    for (int r = 0; r < repeat; r++) {
-      long t0 = clock.nanos();
-      pass(pairs, overlap);
-      ns[r] = clock.nanos() - t0;
-    }
-    Arrays.sort(ns);
-    return (double) ns[repeat / 2] / pairs.count();
+    return (double) clock.medianNanos(repeat, () -> pass(pairs, overlap)) / pairs.count();
   }
 
   private static void pass(ObbPairsCsv.Pairs pairs, boolean[] overlap) {
