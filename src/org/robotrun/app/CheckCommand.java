@@ -7,9 +7,12 @@ import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
+import java.util.stream.Stream;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
@@ -20,27 +23,33 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-/** {@code robotrun check FILE.ls...}: reads TP programs and reports every problem, without running them. */
+/**
+ * {@code robotrun check FILE.ls|DIR...}: reads TP programs (every {@code *.LS} of a directory)
+ * and reports every problem, without running them.
+ */
 @Command(
     name = "check",
     mixinStandardHelpOptions = true,
     description = {
       "Check FANUC ASCII .LS programs without running them.",
       "Prints one line per problem, 'file:line: message' (warnings say 'warning:'), and nothing for a clean file.",
-      "CALL targets are checked against the programs given on the command line, so check a program together "
-          + "with the programs it calls (a lone PICK3.LS reports its CALL BEEP as unknown)."
+      "A directory stands for every *.LS file in it (any case, not in subdirectories), checked in order of name.",
+      "CALL targets are checked against all the programs given (files and directories), so check a program together "
+          + "with the programs it calls (a lone PICK3.LS reports its CALL BEEP as unknown).",
+      "A file whose name (without .LS, any case) is not its /PROG name gets a warning: a controller loads a program "
+          + "by its /PROG name."
     },
     exitCodeListHeading = "%nExit codes:%n",
     exitCodeList = {
       "0:no errors (warnings may have been printed)",
       "1:errors found in at least one program",
-      "2:a file could not be read (missing, a directory, no permission) or bad usage"
+      "2:a file or directory could not be read (missing, no permission, a directory with no .LS file) or bad usage"
     })
 public final class CheckCommand implements Callable<Integer> {
 
   @Spec CommandSpec spec;
 
-  @Parameters(arity = "1..*", paramLabel = "FILE.ls", description = "The programs to check.")
+  @Parameters(arity = "1..*", paramLabel = "FILE.ls|DIR", description = "The programs to check: .LS files or directories of them.")
   List<Path> files;
 
   @Option(names = "--known", split = ",", paramLabel = "NAME",
@@ -56,21 +65,26 @@ public final class CheckCommand implements Callable<Integer> {
     PrintWriter err = spec.commandLine().getErr();
     boolean unreadable = false;
     List<LsReadResult> results = new ArrayList<>();
-    for (Path f : files) {
+    for (Path given : files) {
+      List<Path> programs;
       try {
-        if (Files.isDirectory(f)) {
-          throw new IOException("is a directory, expected a .LS file");
-        }
-        results.add(LsReader.read(f));
-      } catch (NoSuchFileException e) {
-        err.println(f + ": cannot read: no such file");
-        unreadable = true;
-      } catch (AccessDeniedException e) {
-        err.println(f + ": cannot read: permission denied");
-        unreadable = true;
+        programs = Files.isDirectory(given) ? programsIn(given) : List.of(given);
       } catch (IOException e) {
-        err.println(f + ": cannot read: " + e.getMessage());
+        err.println(given + ": cannot read: " + reason(e));
         unreadable = true;
+        continue;
+      }
+      if (programs.isEmpty()) {
+        err.println(given + ": no .LS files in this directory");
+        unreadable = true;
+      }
+      for (Path f : programs) {
+        try {
+          results.add(LsReader.readCheckingFileName(f));
+        } catch (IOException e) {
+          err.println(f + ": cannot read: " + reason(e));
+          unreadable = true;
+        }
       }
     }
 
@@ -89,5 +103,23 @@ public final class CheckCommand implements Callable<Integer> {
       return Main.EXIT_BAD_INPUT;
     }
     return errors ? Main.EXIT_FAILED : Main.EXIT_OK;
+  }
+
+  /** The regular files of {@code dir} named *.LS (any case), sorted by name. */
+  static List<Path> programsIn(Path dir) throws IOException {
+    try (Stream<Path> entries = Files.list(dir)) {
+      return entries
+          .filter(f -> Files.isRegularFile(f) && f.getFileName().toString().toUpperCase(Locale.ROOT).endsWith(".LS"))
+          .sorted(Comparator.comparing(f -> f.getFileName().toString()))
+          .toList();
+    }
+  }
+
+  private static String reason(IOException e) {
+    return switch (e) {
+      case NoSuchFileException x -> "no such file";
+      case AccessDeniedException x -> "permission denied";
+      default -> e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    };
   }
 }

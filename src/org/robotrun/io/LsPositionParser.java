@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.robotrun.io.LsToken.Kind;
+import org.robotrun.math.PoseLimits;
 import org.robotrun.program.Config;
 import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Position;
@@ -191,6 +192,12 @@ final class LsPositionParser extends LsTokenCursor {
             throw error(u, where + ": expected '" + unit + "' after the value of " + key + ", found " + u.describe());
           }
           next();
+          boolean inRange = unit.equals("mm") ? PoseLimits.coordinateOk(v) : PoseLimits.angleOk(v);
+          if (!inRange) {
+            long max = (long) (unit.equals("mm") ? PoseLimits.MAX_COORDINATE_MM : PoseLimits.MAX_ANGLE_DEG);
+            throw error(n, where + ": " + key + " = " + (negative ? "-" : "") + LsToken.clip(n.text()) + " " + unit
+                + " is out of range: expected -" + max + ".." + max + " " + unit);
+          }
           // -0.000 is read as 0 (the writer prints zero unsigned), so a round trip keeps the model.
           if (values.put(key, negative && v != 0 ? -v : v) != null) {
             throw error(t, where + ": " + key + " appears twice");

@@ -37,8 +37,49 @@ public final class LsReader {
 
   /** Reads a file; CALL targets are not checked (the program set is unknown). */
   public static LsReadResult read(Path file) throws IOException {
+    return read(file.toString(), Files.readAllBytes(file));
+  }
+
+  /**
+   * Reads a file as {@link #read(Path)} does, and warns on the /PROG line when the file's name
+   * (without {@code .LS}, any case) is not the program's name: a controller loads a program by
+   * its /PROG name, so a student who renamed PICK3.LS to PICK.LS still has a program PICK3.
+   */
+  public static LsReadResult readCheckingFileName(Path file) throws IOException {
     byte[] bytes = Files.readAllBytes(file);
-    String name = file.toString();
+    LsReadResult r = read(file.toString(), bytes);
+    String fileName = file.getFileName().toString();
+    boolean ls = fileName.length() > 3 && fileName.regionMatches(true, fileName.length() - 3, ".ls", 0, 3);
+    String stem = ls ? fileName.substring(0, fileName.length() - 3) : fileName;
+    String program = r.program().name();
+    int line = progLine(decode(bytes));
+    if (line == 0 || stem.equalsIgnoreCase(program)
+        || r.diagnostics().stream().anyMatch(d -> d.isError() && d.line() == line)) {
+      // no /PROG, or a bad one (already an error): the name came from the file
+      return r;
+    }
+    List<Diagnostic> all = new ArrayList<>(r.diagnostics());
+    all.add(Diagnostic.warning(r.file(), line, "the program is named " + program + " (/PROG) but the file is "
+        + fileName + ": a controller loads it as " + program + ", not " + stem.toUpperCase(Locale.ROOT)));
+    return new LsReadResult(r.file(), r.program(), all, r.sourceLines());
+  }
+
+  /** The 1-based line of the /PROG header, 0 when there is none. */
+  private static int progLine(String text) {
+    String[] lines = text.split("\r?\n|\r", -1);
+    for (int i = 0; i < lines.length; i++) {
+      String t = lines[i].strip();
+      if (t.startsWith("\uFEFF")) {
+        t = t.substring(1);
+      }
+      if (t.regionMatches(true, 0, "/PROG", 0, 5)) {
+        return i + 1;
+      }
+    }
+    return 0;
+  }
+
+  private static LsReadResult read(String name, byte[] bytes) {
     int badLine = firstNonUtf8Line(bytes);
     LsReadResult r = parse(name, decode(bytes));
     if (badLine == 0) {

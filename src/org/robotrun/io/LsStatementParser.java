@@ -769,7 +769,7 @@ final class LsStatementParser extends LsTokenCursor {
   private Expr constant(LsToken t) {
     String s = t.text();
     if (s.indexOf('.') >= 0) {
-      return new Expr.RealConst(Double.parseDouble(s));
+      return new Expr.RealConst(finite(t));
     }
     try {
       return new Expr.IntConst(Integer.parseInt(s));
@@ -903,7 +903,16 @@ final class LsStatementParser extends LsTokenCursor {
       throw error("expected a number (" + what + "), found " + t.describe());
     }
     next();
-    return Double.parseDouble(t.text());
+    return finite(t);
+  }
+
+  /** A number token's value; one with hundreds of digits would be infinite, and is refused. */
+  private double finite(LsToken t) {
+    double v = Double.parseDouble(t.text());
+    if (Double.isInfinite(v)) {
+      throw error(t, "number " + LsToken.clip(t.text()) + " is too large");
+    }
+    return v;
   }
 
   private int parseIntOrFail(LsToken t, String digits) {

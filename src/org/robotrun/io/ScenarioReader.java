@@ -21,6 +21,7 @@ import org.robotrun.io.LocatedJson.JArray;
 import org.robotrun.io.LocatedJson.JNumber;
 import org.robotrun.io.LocatedJson.JObject;
 import org.robotrun.io.LocatedJson.JString;
+import org.robotrun.math.PoseLimits;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
@@ -53,8 +54,8 @@ public final class ScenarioReader {
 
   /** Largest scenario file accepted (meshes are separate files). */
   public static final long MAX_FILE_BYTES = 16L << 20;
-  /** Largest position coordinate or size, in mm: a 100 m cell is far beyond any robot's reach. */
-  public static final double MAX_LENGTH_MM = 100_000;
+  /** Largest position coordinate or size, in mm (the bound every position entry shares). */
+  public static final double MAX_LENGTH_MM = PoseLimits.MAX_COORDINATE_MM;
 
   /** Highest register index a scenario may preset. */
   public static final int MAX_REGISTER = 200;
@@ -715,6 +716,11 @@ public final class ScenarioReader {
         if (k < 3 && d != null && Math.abs(d) > MAX_LENGTH_MM) {
           error(p.members().get(names[k]).line(), join(path, names[k]),
               "expected a position within +-" + (long) MAX_LENGTH_MM + " mm, got " + d);
+          d = null;
+        }
+        if (k >= 3 && d != null && !PoseLimits.angleOk(d)) {
+          error(p.members().get(names[k]).line(), join(path, names[k]),
+              "expected an angle within +-" + (long) PoseLimits.MAX_ANGLE_DEG + " deg, got " + d);
           d = null;
         }
         ok &= d != null;

@@ -176,14 +176,16 @@ final class DataScreen implements Screen {
     }
     p.entryOrTyped("R[" + n + "] value:", typed, "", false, s -> {
       String v = s.trim();
-      Optional<Double> d = Pendant.parseNumber(v);
-      if (d.isEmpty()) {
-        return Optional.of("Bad number '" + v + "'");
+      double d;
+      try {
+        d = NumberEntry.finite("R[" + n + "]", v);
+      } catch (ExprText.BadText e) {
+        return Optional.of(e.getMessage());
       }
-      if (v.matches("-?\\d+") && Math.abs(d.get()) <= Integer.MAX_VALUE) {
-        p.control().registers().setInteger(n, (int) Math.round(d.get()));
+      if (v.matches("[+-]?\\d+") && Math.abs(d) <= Integer.MAX_VALUE) {
+        p.control().registers().setInteger(n, (int) Math.round(d));
       } else {
-        p.control().registers().setReal(n, d.get());
+        p.control().registers().setReal(n, d);
       }
       return Optional.empty();
     });

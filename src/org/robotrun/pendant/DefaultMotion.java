@@ -77,8 +77,8 @@ record DefaultMotion(Motion.Type type, Motion.Speed speed, Motion.Termination te
     if (!unit.fits(type)) {
       throw new BadText("speed unit " + unitText + " does not fit " + type + " motion");
     }
-    double v = TpLine.positive(s.substring(0, split));
+    double v = TpLine.positive("Speed", s.substring(0, split));
     Motion.Termination term = TpLine.parseTermination(parts[2]);
-    return new DefaultMotion(type, new Motion.Speed(new Motion.SpeedConst(v), unit), term);
+    return new DefaultMotion(type, TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(v), unit)), term);
   }
 }

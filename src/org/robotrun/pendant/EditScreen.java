@@ -294,7 +294,7 @@ final class EditScreen implements Screen {
         }
         return Optional.empty();
       } catch (BadText e) {
-        return Optional.of("Bad value: " + e.getMessage());
+        return Optional.of(e.promptText());
       }
     });
   }

@@ -20,8 +20,21 @@ public final class ExprText {
 
   /** Why typed text is not an expression: the message names the column and what was expected. */
   public static final class BadText extends Exception {
+    private final boolean namesField;
+
     BadText(String message) {
+      this(message, false);
+    }
+
+    /** {@code namesField}: the message starts with the field's name, so it needs no "Bad value" in front. */
+    BadText(String message, boolean namesField) {
       super(message);
+      this.namesField = namesField;
+    }
+
+    /** The text for the prompt line (one line, the field named). */
+    String promptText() {
+      return namesField ? getMessage() : "Bad value: " + getMessage();
     }
   }
 
@@ -340,7 +353,13 @@ public final class ExprText {
       String t = s.substring(start, pos);
       try {
         if (t.contains(".")) {
-          return new Expr.RealConst(Double.parseDouble(t));
+          double v = Double.parseDouble(t);
+          if (Double.isInfinite(v)) {
+            // hundreds of digits: the .LS reader refuses such a number, so the pendant does too
+            pos = start;
+            throw error("a number of at most 308 digits");
+          }
+          return new Expr.RealConst(v);
         }
         return new Expr.IntConst(Integer.parseInt(t));
       } catch (NumberFormatException e) {

@@ -22,6 +22,7 @@ import org.robotrun.program.Position;
  */
 final class FrameScreen implements Screen {
   private static final int FRAMES = 10;
+  private static final String[] ELEMENT_NAMES = {"X", "Y", "Z", "W", "P", "R"};
 
   private FrameKind kind = FrameKind.TOOL;
   private final int[] cursor = new int[2];
@@ -85,7 +86,7 @@ final class FrameScreen implements Screen {
         f.wDeg(), f.pDeg(), f.rDeg()));
     TeachMethod m = method();
     if (m.pointNames().isEmpty()) {
-      String[] names = {"X", "Y", "Z", "W", "P", "R"};
+      String[] names = ELEMENT_NAMES;
       for (int j = 1; j <= 6; j++) {
         String v = String.format(Locale.ROOT, "%10.3f", f.element(j));
         rows.add((row == j ? ">" : " ") + " " + names[j - 1] + " " + (row == j ? "{" + v + "}" : v));
@@ -212,12 +213,15 @@ final class FrameScreen implements Screen {
       return;
     }
     int j = row;
+    String field = TpLine.frameWord(fk) + "[" + n + "] " + ELEMENT_NAMES[j - 1];
     p.entryOrTyped("Enter value:", typed, "", false, s -> {
-      Optional<Double> v = Pendant.parseNumber(s);
-      if (v.isEmpty()) {
-        return Optional.of("Bad number '" + s.trim() + "'");
+      double v;
+      try {
+        v = j <= 3 ? NumberEntry.coordinateMm(field, s) : NumberEntry.angleDeg(field, s);
+      } catch (ExprText.BadText e) {
+        return Optional.of(e.getMessage());
       }
-      p.control().setFrame(fk, n, p.control().frame(fk, n).withElement(j, v.get()));
+      p.control().setFrame(fk, n, p.control().frame(fk, n).withElement(j, v));
       return Optional.empty();
     });
   }

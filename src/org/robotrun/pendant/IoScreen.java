@@ -12,6 +12,8 @@ import org.robotrun.program.IoKind;
  */
 final class IoScreen implements Screen {
   private static final List<IoKind> KINDS = List.of(IoKind.DI, IoKind.DO, IoKind.RI, IoKind.RO, IoKind.GI, IoKind.GO);
+  /** Largest group I/O value: a 16-bit group. */
+  private static final int GROUP_MAX = 65535;
   private IoKind kind = IoKind.DO;
   private final int[] cursor = new int[IoKind.values().length];
 
@@ -91,12 +93,14 @@ final class IoScreen implements Screen {
     IoKind k = kind;
     int n = cursor[k.ordinal()] + 1;
     p.entryOrTyped(k + "[" + n + "] value:", typed, "", false, s -> {
-      Optional<Integer> v = Pendant.parseInt(s, 0, 65535);
-      if (v.isEmpty()) {
-        return Optional.of("Group value must be 0..65535, got '" + s.trim() + "'");
+      int v;
+      try {
+        v = NumberEntry.wholeWithin(k + "[" + n + "]", s, 0, GROUP_MAX);
+      } catch (ExprText.BadText e) {
+        return Optional.of(e.getMessage());
       }
-      p.control().registers().setValue(k, n, v.get());
-      p.message(k + "[" + n + "]=" + v.get() + (k.writable() ? "" : " (simulated input)"));
+      p.control().registers().setValue(k, n, v);
+      p.message(k + "[" + n + "]=" + v + (k.writable() ? "" : " (simulated input)"));
       return Optional.empty();
     });
   }

@@ -617,15 +617,6 @@ public final class Pendant {
     }
   }
 
-  static Optional<Double> parseNumber(String text) {
-    try {
-      double v = Double.parseDouble(text.trim());
-      return Double.isFinite(v) ? Optional.of(v) : Optional.empty();
-    } catch (NumberFormatException e) {
-      return Optional.empty();
-    }
-  }
-
   // ---- LCD ---------------------------------------------------------------------------------
 
   /** The LCD as it stands. */

@@ -113,8 +113,7 @@ final class PositionScreen implements Screen {
     }
     rows.add(String.format(Locale.ROOT, "  UF:%d  UT:%d   %s", f[0], f[1],
         pos.get() instanceof Position.Cartesian c ? "CONF: " + config(c.config()) : "JOINT"));
-    String[] names = pos.get() instanceof Position.Cartesian ? new String[] {"X", "Y", "Z", "W", "P", "R"}
-        : new String[] {"J1", "J2", "J3", "J4", "J5", "J6"};
+    String[] names = pos.get() instanceof Position.Cartesian ? CARTESIAN_NAMES : JOINT_NAMES;
     String[] units = pos.get() instanceof Position.Cartesian ? new String[] {"mm", "mm", "mm", "deg", "deg", "deg"}
         : new String[] {"deg", "deg", "deg", "deg", "deg", "deg"};
     for (int j = 1; j <= 6; j++) {
@@ -210,15 +209,22 @@ final class PositionScreen implements Screen {
       return;
     }
     int j = row;
+    boolean cartesian = pos.get() instanceof Position.Cartesian;
+    String field = name() + " " + (cartesian ? CARTESIAN_NAMES : JOINT_NAMES)[j - 1];
     p.entryOrTyped("Enter value:", typed, "", false, t -> {
-      Optional<Double> v = Pendant.parseNumber(t);
-      if (v.isEmpty()) {
-        return Optional.of("Bad number '" + t.trim() + "'");
+      double v;
+      try {
+        v = cartesian && j <= 3 ? NumberEntry.coordinateMm(field, t) : NumberEntry.angleDeg(field, t);
+      } catch (ExprText.BadText e) {
+        return Optional.of(e.getMessage());
       }
-      store(p, position(p).orElseThrow().withElement(j, v.get()), comment(p));
+      store(p, position(p).orElseThrow().withElement(j, v), comment(p));
       return Optional.empty();
     });
   }
+
+  private static final String[] CARTESIAN_NAMES = {"X", "Y", "Z", "W", "P", "R"};
+  private static final String[] JOINT_NAMES = {"J1", "J2", "J3", "J4", "J5", "J6"};
 
   static Optional<Config> parseConfig(String text) {
     String[] parts = text.trim().toUpperCase(Locale.ROOT).split("\\s*,\\s*");

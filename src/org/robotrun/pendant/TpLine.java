@@ -131,10 +131,10 @@ public final class TpLine {
         f.add(Field.fixed("FOR "));
         f.add(itemField("R", fo.counter(), r -> new Instruction.For(r, fo.start(), fo.down(), fo.end())));
         f.add(Field.fixed("="));
-        f.add(exprField(fo.start(), e -> new Instruction.For(fo.counter(), e, fo.down(), fo.end())));
+        f.add(forBoundField(fo.start(), e -> new Instruction.For(fo.counter(), e, fo.down(), fo.end())));
         f.add(new Field(fo.down() ? " DOWNTO " : " TO ", Field.Edit.choice(List.of("TO", "DOWNTO"),
             k -> new Instruction.For(fo.counter(), fo.start(), k == 1, fo.end()))));
-        f.add(exprField(fo.end(), e -> new Instruction.For(fo.counter(), fo.start(), fo.down(), e)));
+        f.add(forBoundField(fo.end(), e -> new Instruction.For(fo.counter(), fo.start(), fo.down(), e)));
       }
       case Instruction.EndFor e -> f.add(Field.fixed("ENDFOR"));
       case Instruction.WaitTime w -> {
@@ -143,7 +143,7 @@ public final class TpLine {
         // FANUC shows a constant wait with two decimals and no leading zero: WAIT .20(sec)
         String shown = constant ? String.format(Locale.ROOT, "%.2f", number(w.seconds())).replaceFirst("^(-?)0\\.", "$1.")
             : ExprText.format(w.seconds());
-        f.add(new Field(shown, Field.Edit.entry(shown, t -> new Instruction.WaitTime(ExprText.parse(t)))));
+        f.add(new Field(shown, Field.Edit.entry(shown, t -> new Instruction.WaitTime(waitTime(t)))));
         if (constant) {
           f.add(Field.fixed("(sec)"));
         }
@@ -176,7 +176,7 @@ public final class TpLine {
               case 2 -> new Instruction.Pulse(s.kind(), s.port(), OptionalDouble.empty());
               default -> new Instruction.SetIo(s.kind(), s.port(), new Expr.Register(Item.of(1)));
             },
-            ExprText.format(s.value()), t -> new Instruction.SetIo(s.kind(), s.port(), ExprText.parse(t)))));
+            ExprText.format(s.value()), t -> new Instruction.SetIo(s.kind(), s.port(), value(t)))));
       }
       case Instruction.Pulse p -> {
         f.add(ioField(p.kind(), p.port(), (k, port) -> new Instruction.Pulse(k, port, p.widthSec())));
@@ -187,7 +187,7 @@ public final class TpLine {
         String width = p.widthSec().isPresent() ? "," + ExprText.plain(p.widthSec().getAsDouble()) + "sec" : "";
         f.add(new Field(width, Field.Edit.entry(p.widthSec().isPresent() ? ExprText.plain(p.widthSec().getAsDouble()) : "",
             t -> new Instruction.Pulse(p.kind(), p.port(),
-                t.isBlank() ? OptionalDouble.empty() : OptionalDouble.of(positive(t))))));
+                t.isBlank() ? OptionalDouble.empty() : OptionalDouble.of(positive("Pulse width", t))))));
       }
       case Instruction.Comment c -> {
         f.add(Field.fixed("!"));
@@ -209,7 +209,8 @@ public final class TpLine {
       }
       case Instruction.SetOverride o -> {
         f.add(Field.fixed("OVERRIDE="));
-        f.add(exprField(o.percent(), Instruction.SetOverride::new));
+        String pct = ExprText.format(o.percent());
+        f.add(new Field(pct, Field.Edit.entry(pct, t -> new Instruction.SetOverride(overridePercent(t)))));
         if (o.percent() instanceof Expr.IntConst) {
           f.add(Field.fixed("%"));
         }
@@ -414,7 +415,7 @@ public final class TpLine {
     if (t.toUpperCase(Locale.ROOT).startsWith("R")) {
       return new Motion.SpeedRegister(ExprText.parseItem("R", t));
     }
-    return new Motion.SpeedConst(positive(t));
+    return new Motion.SpeedConst(positive("Speed", t));
   }
 
   static Motion.Termination parseTermination(String text) throws BadText {
@@ -457,7 +458,78 @@ public final class TpLine {
 
   private static Field exprField(Expr e, Function<Expr, Instruction> make) {
     String text = ExprText.format(e);
-    return new Field(text, Field.Edit.entry(text, t -> make.apply(ExprText.parse(t))));
+    return new Field(text, Field.Edit.entry(text, t -> make.apply(value(t))));
+  }
+
+  /** A FOR bound: the .LS reader takes a whole-number constant, R[i] or AR[i], nothing else. */
+  private static Field forBoundField(Expr e, Function<Expr, Instruction> make) {
+    String text = ExprText.format(e);
+    return new Field(text, Field.Edit.entry(text, t -> {
+      Expr b = ExprText.parse(t);
+      if (!(b instanceof Expr.IntConst || b instanceof Expr.Register || b instanceof Expr.Arg)) {
+        throw NumberEntry.refusal("FOR", t, "not allowed", "an integer, R[i] or AR[i]");
+      }
+      return make.apply(b);
+    }));
+  }
+
+  /**
+   * A typed expression as the .LS reader takes it inside a statement: a string ('...') only as a
+   * whole CALL argument.
+   */
+  static Expr value(String text) throws BadText {
+    Expr e = ExprText.parse(text);
+    if (hasString(e)) {
+      throw new BadText("a string ('...') is allowed only as a CALL argument");
+    }
+    return e;
+  }
+
+  private static boolean hasString(Expr e) {
+    return switch (e) {
+      case Expr.StringConst s -> true;
+      case Expr.Unary u -> hasString(u.operand());
+      case Expr.Binary b -> hasString(b.left()) || hasString(b.right());
+      case Expr.Group g -> hasString(g.inner());
+      case Expr.IntConst x -> false;
+      case Expr.RealConst x -> false;
+      case Expr.OnOff x -> false;
+      case Expr.Register x -> false;
+      case Expr.PosElement x -> false;
+      case Expr.Io x -> false;
+      case Expr.Timer x -> false;
+      case Expr.Arg x -> false;
+    };
+  }
+
+  /** A WAIT time: 0 or more seconds, or an expression (the reader refuses a negative constant). */
+  static Expr waitTime(String text) throws BadText {
+    Expr e = value(text);
+    boolean negative = switch (e) {
+      case Expr.IntConst i -> i.value() < 0;
+      case Expr.RealConst r -> r.value() < 0;
+      default -> false;
+    };
+    if (negative) {
+      throw NumberEntry.refusal("WAIT", text, "out of range", "0 or more (sec) or R[i]");
+    }
+    return e;
+  }
+
+  /** OVERRIDE=n% (1..100, as the controller accepts it) or OVERRIDE=R[i]. */
+  static Expr overridePercent(String text) throws BadText {
+    String t = text.trim();
+    if (t.endsWith("%")) {
+      t = t.substring(0, t.length() - 1).trim();
+    }
+    if (t.toUpperCase(Locale.ROOT).startsWith("R")) {
+      try {
+        return new Expr.Register(ExprText.parseItem("R", t));
+      } catch (BadText e) {
+        throw NumberEntry.refusal("OVERRIDE", t, "not allowed", "1 to 100 (%) or R[i]");
+      }
+    }
+    return new Expr.IntConst(NumberEntry.wholeWithin("OVERRIDE", t, 1, 100));
   }
 
   private static Field indexField(Index i, Function<Index, Instruction> make) {
@@ -582,7 +654,8 @@ public final class TpLine {
       String inner = t.substring(open + 1, t.length() - 1).trim();
       if (!inner.isEmpty()) {
         for (String a : splitTopLevel(inner)) {
-          args.add(ExprText.parse(a));
+          Expr arg = ExprText.parse(a);
+          args.add(arg instanceof Expr.StringConst ? arg : value(a));
         }
       }
     }
@@ -666,16 +739,9 @@ public final class TpLine {
     }
   }
 
-  static double positive(String text) throws BadText {
-    try {
-      double v = Double.parseDouble(text.trim());
-      if (!(v > 0) || Double.isInfinite(v)) {
-        throw new BadText("expected a number above 0, got " + text.trim());
-      }
-      return v;
-    } catch (NumberFormatException e) {
-      throw new BadText("'" + text.trim() + "' is not a number");
-    }
+  /** A number above 0 ({@code what} names the field in the message), as the reader takes speeds and widths. */
+  static double positive(String what, String text) throws BadText {
+    return NumberEntry.positive(what, text);
   }
 
   private static double number(Expr e) {

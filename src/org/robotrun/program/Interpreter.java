@@ -160,6 +160,8 @@ public final class Interpreter {
    * (a held motion continues). Does nothing while running or alarmed (RESET first).
    */
   public void forward() {
+    // a notice answers the command that caused it (a BWD at the top); a new command starts clean
+    notice = "";
     switch (state) {
       case IDLE -> start();
       case PAUSED -> {
@@ -221,6 +223,7 @@ public final class Interpreter {
    *     (HOLD first; nothing happens)
    */
   public Outcome backward() {
+    notice = "";
     switch (state) {
       case RUNNING -> {
         notice = "BWD: program is running; HOLD first";
@@ -324,7 +327,7 @@ public final class Interpreter {
     return Collections.unmodifiableList(userScreen);
   }
 
-  /** The last note for the user (e.g. why backward execution stopped), "" when none. */
+  /** The note about the last SHIFT+FWD or SHIFT+BWD (e.g. why backward execution stopped), "" when none. */
   public String notice() {
     return notice;
   }

@@ -76,7 +76,7 @@ class CheckCommandTest {
 
     Run directory = run("check", dir.toString());
     assertThat(directory.exit()).isEqualTo(2);
-    assertThat(directory.err()).contains(dir + ": cannot read: is a directory");
+    assertThat(directory.err()).isEqualTo(dir + ": no .LS files in this directory\n");
 
     Run none = run("check");
     assertThat(none.exit()).isEqualTo(2);
@@ -96,7 +96,54 @@ class CheckCommandTest {
     assertThat(top.out()).contains("check");
     Run r = run("check", "--help");
     assertThat(r.exit()).isEqualTo(0);
-    assertThat(r.out()).contains("file:line: message", "--known", "--quiet", "Exit codes:", "2   a file could not be read");
+    assertThat(r.out()).contains("file:line: message", "--known", "--quiet", "Exit codes:", "2   a file or directory could not be read",
+        "FILE.ls|DIR", "every *.LS file in it", "/PROG name");
+  }
+
+  /** A program with one error on file line 5: a jump to a label it does not define. */
+  private static String badProgram(String name) {
+    return "/PROG  " + name + "\n/ATTR\n/MN\n   1:  END ;\n   2:  JMP LBL[4] ;\n/POS\n/END\n";
+  }
+
+  @Test
+  void aDirectoryIsEveryLsFileInItInOrderOfNameWithCallsResolvedAmongThem(@TempDir Path dir) throws IOException {
+    Files.copy(Path.of(PROGRAMS, "PICK3.LS"), dir.resolve("PICK3.LS"));
+    Files.copy(Path.of(PROGRAMS, "BEEP.LS"), dir.resolve("BEEP.LS"));
+    Files.writeString(dir.resolve("ZED.ls"), badProgram("ZED"));
+    Files.writeString(dir.resolve("ALPHA.LS"), badProgram("ALPHA"));
+    // neither a subdirectory (even one named like a program) nor another file is checked
+    Files.createDirectories(dir.resolve("OLD.LS"));
+    Files.writeString(dir.resolve("OLD.LS").resolve("GONE.LS"), badProgram("GONE"));
+    Files.writeString(dir.resolve("notes.txt"), "not a program");
+
+    Run r = run("check", dir.toString());
+    // PICK3's CALL BEEP is resolved by BEEP.LS in the same directory; errors come in order of file name
+    assertThat(r.out().lines().toList()).containsExactly(
+        dir.resolve("ALPHA.LS") + ":5: LBL[4] is not defined in this program",
+        dir.resolve("ZED.ls") + ":5: LBL[4] is not defined in this program");
+    assertThat(r.exit()).isEqualTo(1);
+    assertThat(r.err()).isEmpty();
+
+    // the worst code wins: a missing file next to the directory makes it 2
+    Run worse = run("check", dir.toString(), dir.resolve("NOPE.LS").toString());
+    assertThat(worse.exit()).isEqualTo(2);
+    assertThat(worse.out().lines()).hasSize(2);
+
+    Files.delete(dir.resolve("ALPHA.LS"));
+    Files.delete(dir.resolve("ZED.ls"));
+    assertThat(run("check", dir.toString())).isEqualTo(new Run(0, "", ""));
+  }
+
+  @Test
+  void aFileNamedOtherThanItsProgramGetsAWarning(@TempDir Path dir) throws IOException {
+    Files.copy(Path.of(PROGRAMS, "PICK3.LS"), dir.resolve("PICK.LS"));
+    Files.copy(Path.of(PROGRAMS, "BEEP.LS"), dir.resolve("beep.ls"));
+    Run r = run("check", dir.toString());
+    assertThat(r.out()).isEqualTo(dir.resolve("PICK.LS")
+        + ":1: warning: the program is named PICK3 (/PROG) but the file is PICK.LS: a controller loads it as PICK3, not PICK\n");
+    assertThat(r.exit()).isEqualTo(0);
+    assertThat(run("check", "-q", dir.resolve("PICK.LS").toString(), dir.resolve("beep.ls").toString()))
+        .isEqualTo(new Run(0, "", ""));
   }
 
   @Test

@@ -61,6 +61,63 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void aBwdNoticeLeavesThePromptLineWithTheNextCommandButAnAlarmStaysUntilReset() {
+    keys("""
+        SELECT
+        F1
+        TYPE BACK
+        ENTER
+        SHIFT+F1
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        RELEASE SHIFT
+        SHIFT+F1
+        UP
+        SHIFT+BWD
+        """);
+    assertThat(p.lcd().promptLine()).contains("BWD: top of program");
+    // the student moves on: SHIFT+FWD runs line 1 and says nothing about BWD
+    keys("""
+        STEP
+        SHIFT+FWD
+        WAIT 3
+        """);
+    assertThat(p.lcd().statusLine()).contains("LINE 2");
+    assertThat(p.lcd().promptLine()).doesNotContain("BWD");
+    keys("SHIFT+BWD");
+    assertThat(p.lcd().promptLine()).contains("BWD");
+    keys("DOWN");
+    assertThat(p.lcd().promptLine()).isBlank();
+
+    // an alarm is not a prompt-line message: it stays on its line through other keys until RESET
+    keys("""
+        FCTN
+        1
+        STEP
+        F2
+        5
+        2
+        ITEM
+        TYPE 1
+        ENTER
+        SHIFT+FWD
+        WAIT 0.5
+        """);
+    String alarm = p.lcd().alarmLine();
+    assertThat(alarm).contains("LBL[1]");
+    keys("""
+        DOWN
+        DATA
+        EDIT
+        """);
+    assertThat(p.lcd().alarmLine()).isEqualTo(alarm);
+    keys("RESET");
+    assertThat(p.lcd().alarmLine()).isBlank();
+  }
+
+  @Test
   void createRecordEditInsertRunAndStepBack() {
     createWithThreePoints();
     keys("""

@@ -325,6 +325,47 @@ class LsReaderTest {
   }
 
   @Test
+  void absurdPositionValuesAreRefusedWithTheSharedBound() {
+    String pos = String.join("\n",
+        "/POS",
+        "P[1]{",
+        "   GP1:",
+        "\tUF : 0, UT : 1,\t\tCONFIG : 'N U T, 0, 0, 0',",
+        "\tX =  99999999.000  mm,\tY =   0.000  mm,\tZ =   0.000  mm,",
+        "\tW =   0.000 deg,\tP =   0.000 deg,\tR =   0.000 deg",
+        "};",
+        "P[2]{",
+        "   GP1:",
+        "\tUF : 0, UT : 1,",
+        "\tJ1=   0.000 deg,\tJ2=   0.000 deg,\tJ3=   0.000 deg,",
+        "\tJ4=   0.000 deg,\tJ5=   -36000.001 deg,\tJ6=   0.000 deg",
+        "};",
+        "P[3]{",
+        "   GP1:",
+        "\tUF : 0, UT : 1,\t\tCONFIG : 'N U T, 0, 0, 0',",
+        "\tX =  -100000.000  mm,\tY =   100000.000  mm,\tZ =   0.000  mm,",
+        "\tW =   36000.000 deg,\tP =   0.000 deg,\tR =   -36000.000 deg",
+        "};",
+        "/END",
+        "");
+    LsReadResult r = LsReader.parse("p.ls", HEAD + "   1:  END ;\n" + pos);
+    assertThat(messages(r)).containsExactly(
+        "p.ls:9: P[1]: X = 99999999.000 mm is out of range: expected -100000..100000 mm",
+        "p.ls:16: P[2]: J5 = -36000.001 deg is out of range: expected -36000..36000 deg");
+    // the bounds themselves are fine
+    assertThat(r.program().positions().keySet()).containsExactly(3);
+  }
+
+  @Test
+  void aNumberTooLargeForADoubleIsAnErrorNotInfinity() {
+    String huge = "1" + "0".repeat(400) + ".0";
+    assertThat(messages(mn("   1:  R[1]=" + huge + " ;\n"))).singleElement().asString()
+        .startsWith("t.ls:4: number 1000").endsWith("is too large");
+    assertThat(messages(mn("   1:  DO[1]=PULSE," + huge + "sec ;\n"))).singleElement().asString()
+        .endsWith("is too large");
+  }
+
+  @Test
   void attributesAreKeptInOrderWithDefaultsAddedAndLineCountCorrected() {
     LsReadResult r = LsReader.parse("a.ls", "/PROG  A\n/ATTR\nZETA\t= 1;\nOWNER\t= ME;\nLINE_COUNT\t= 9;\n"
         + "COMMENT\t= \"hi\";\n/MN\n   1:  END ;\n/POS\n/END\n");

@@ -263,6 +263,13 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void anglesBeyondTheSharedBoundAreRefusedWithTheirPath() throws Exception {
+    String text = withObjects(TABLE.replace("\"z\": -330}", "\"z\": -330, \"w\": 36001, \"r\": -36000}"));
+    assertThat(errors(write("s.json", text))).extracting(ScenarioError::path, ScenarioError::message).containsExactly(
+        org.assertj.core.groups.Tuple.tuple("objects[0].pose.w", "expected an angle within +-36000 deg, got 36001.0"));
+  }
+
+  @Test
   void aUtf8ByteOrderMarkIsIgnored() throws Exception {
     Path f = write("bom.json", "\uFEFF" + withObjects(TABLE));
     assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Loaded.class);

@@ -261,7 +261,7 @@ class PendantProgramTest {
         TYPE abc
         ENTER
         """);
-    assertThat(p.lcd().promptLine()).contains("Bad value").contains("abc");
+    assertThat(p.lcd().promptLine()).contains("Speed abc: not a number, enter a number above 0");
 
     // duplicate label
     run(p, """

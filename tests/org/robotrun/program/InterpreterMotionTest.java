@@ -173,9 +173,10 @@ class InterpreterMotionTest {
     assertThat(rig.interp.notice()).contains("top of program");
     assertThat(rig.port.requests()).hasSize(5);
 
-    // SHIFT+FWD from here re-runs line 2 forward.
+    // SHIFT+FWD from here re-runs line 2 forward; the BWD notice belongs to the BWD and goes.
     rig.interp.setStepMode(true);
     rig.interp.forward();
+    assertThat(rig.interp.notice()).isEmpty();
     rig.runUntilStopped(DT, 1000);
     assertThat(x(rig.port.requests().get(5))).isEqualTo(200.0);
     assertThat(rig.port.requests().get(5).backward()).isFalse();
