@@ -11,7 +11,8 @@ import picocli.CommandLine.Command;
     versionProvider = Main.Version.class,
     description = {
       "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate and program robots.",
-      "With no subcommand it opens the simulator window.",
+      "With no subcommand it opens the simulator window; 'robotrun --scenario FILE.json'",
+      "(or just 'robotrun FILE.json') opens it on a scenario's cell, as 'robotrun gui' does.",
       ""
     },
     subcommands = {
@@ -42,7 +43,34 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
   /** Runs the command line and returns the exit code (tests call this). */
   public static int execute(String... args) {
     CommandLine cl = commandLine();
-    return cl.execute(args);
+    return cl.execute(withDefaultCommand(args));
+  }
+
+  /**
+   * The window is the default command, so its options work without naming it:
+   * {@code robotrun --scenario F} and {@code robotrun F.json} mean {@code robotrun gui --scenario F}.
+   * Anything else (a subcommand, --help, --version) is left as it is.
+   */
+  static String[] withDefaultCommand(String[] args) {
+    if (args.length == 0) {
+      return args;
+    }
+    String first = args[0];
+    boolean topLevelOption = first.equals("-h") || first.equals("--help") || first.equals("-V") || first.equals("--version");
+    if (first.startsWith("-") && !topLevelOption) {
+      return prepend("gui", args);
+    }
+    if (args.length == 1 && first.toLowerCase(java.util.Locale.ROOT).endsWith(".json")) {
+      return new String[] {"gui", "--scenario", first};
+    }
+    return args;
+  }
+
+  private static String[] prepend(String first, String[] rest) {
+    String[] out = new String[rest.length + 1];
+    out[0] = first;
+    System.arraycopy(rest, 0, out, 1, rest.length);
+    return out;
   }
 
   static CommandLine commandLine() {

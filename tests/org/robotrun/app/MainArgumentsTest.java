@@ -1,0 +1,37 @@
+package org.robotrun.app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.Test;
+
+/** The window is the default command: its options and a scenario file work without naming it. */
+class MainArgumentsTest {
+  @Test
+  void windowOptionsWithoutTheCommandGoToTheWindow() {
+    assertThat(Main.withDefaultCommand(new String[] {"--scenario", "cell.json"}))
+        .containsExactly("gui", "--scenario", "cell.json");
+    assertThat(Main.withDefaultCommand(new String[] {"--width=800"})).containsExactly("gui", "--width=800");
+  }
+
+  @Test
+  void aLoneScenarioFileOpensTheWindowOnIt() {
+    assertThat(Main.withDefaultCommand(new String[] {"scenarios/Pick.JSON"}))
+        .containsExactly("gui", "--scenario", "scenarios/Pick.JSON");
+  }
+
+  @Test
+  void subcommandsHelpAndVersionAreLeftAlone() {
+    assertThat(Main.withDefaultCommand(new String[] {})).isEmpty();
+    assertThat(Main.withDefaultCommand(new String[] {"--help"})).containsExactly("--help");
+    assertThat(Main.withDefaultCommand(new String[] {"-V"})).containsExactly("-V");
+    assertThat(Main.withDefaultCommand(new String[] {"run", "--scenario", "x.json"}))
+        .containsExactly("run", "--scenario", "x.json");
+    assertThat(Main.withDefaultCommand(new String[] {"check", "a.json"})).containsExactly("check", "a.json");
+  }
+
+  @Test
+  void aBadWindowOptionIsReportedByTheWindowCommand() {
+    // Exit 2 with a one-line message, as for any bad option; nothing opens.
+    assertThat(Main.execute("--no-such-option")).isEqualTo(Main.EXIT_BAD_INPUT);
+  }
+}
