@@ -48,6 +48,69 @@ class PendantEditPausedProgramTest {
     control.saveProgram(r.program());
   }
 
+  private static String jointPos(int n, double j1Deg) {
+    return String.format(java.util.Locale.ROOT, """
+        P[%d]{
+           GP1:
+        	UF : 0, UT : 0,
+        	J1=  %8.3f deg,	J2=     0.000 deg,	J3=     0.000 deg,
+        	J4=     0.000 deg,	J5=   -90.000 deg,	J6=     0.000 deg
+        };""", n, j1Deg);
+  }
+
+  /** MOVE: J P[1] (J1 0), J P[2] (J1 60) slowly; held half-way along line 2. */
+  private void heldHalfWayAlongLine2(String line2) {
+    String text = String.join("\n", "/PROG  MOVE", "/ATTR", "/MN", "   1:  J P[1] 100% FINE ;",
+        "   2:  " + line2 + " ;", "/POS", jointPos(1, 0), jointPos(2, 60), jointPos(3, -30), "/END") + "\n";
+    LsReadResult r = LsReader.parse("MOVE.LS", text);
+    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    control.saveProgram(r.program());
+    assertThat(control.run("MOVE", 1, true)).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Ok.class);
+    for (int i = 0; i < 400 && control.status().line() < 2; i++) {
+      control.advance(0.05);
+    }
+    control.advance(0.5);
+    control.hold();
+    control.advance(0.5);
+    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("MOVE", 2, ExecState.PAUSED));
+    assertThat(control.currentJoints().j1Deg()).isBetween(1.0, 59.0);
+  }
+
+  private void resumeAtStatusLineAndFinish() {
+    assertThat(control.run("MOVE", control.status().line(), true)).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Ok.class);
+    for (int i = 0; i < 600 && control.status().state() != ExecState.IDLE; i++) {
+      control.advance(0.05);
+    }
+    assertThat(control.status().state()).isEqualTo(ExecState.IDLE);
+    assertThat(control.activeAlarm()).isEmpty();
+  }
+
+  @Test
+  void aHeldMotionContinuesAfterAnInsertionAboveIt() {
+    heldHalfWayAlongLine2("J P[2] 10% FINE");
+    Program before = control.program("MOVE").orElseThrow();
+    List<org.robotrun.program.Instruction> lines = new ArrayList<>(before.lines());
+    lines.add(0, new org.robotrun.program.Instruction.Comment("inserted"));
+    control.saveProgram(new Program("MOVE", before.attributes(), before.comment(), lines, before.positions()));
+    assertThat(control.status().line()).isEqualTo(3);
+    resumeAtStatusLineAndFinish();
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(60, org.assertj.core.api.Assertions.within(0.01));
+  }
+
+  @Test
+  void aHeldMotionWhoseLineWasEditedRunsTheEditedLineFromWhereTheArmStands() {
+    heldHalfWayAlongLine2("J P[2] 10% FINE");
+    Program before = control.program("MOVE").orElseThrow();
+    List<org.robotrun.program.Instruction> lines = new ArrayList<>(before.lines());
+    org.robotrun.program.Instruction.Move m = (org.robotrun.program.Instruction.Move) lines.get(1);
+    lines.set(1, new org.robotrun.program.Instruction.Move(m.type(), new org.robotrun.program.Motion.Local(3, ""),
+        m.circularEnd(), m.speed(), m.termination(), m.options()));
+    control.saveProgram(new Program("MOVE", before.attributes(), before.comment(), lines, before.positions()));
+    assertThat(control.status().line()).isEqualTo(2);
+    resumeAtStatusLineAndFinish();
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(-30, org.assertj.core.api.Assertions.within(0.01));
+  }
+
   /** Creates EDT on the pendant (open in EDIT) with {@code lines}, STEP on, runs line 1: paused at line 2. */
   private void pausedAtLine2(String... lines) {
     keys("""
