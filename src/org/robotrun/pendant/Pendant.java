@@ -568,8 +568,20 @@ public final class Pendant {
     while (stack.size() > UNDO_DEPTH) {
       stack.removeLast();
     }
-    control.saveProgram(after);
+    saveKeepingCursor(after);
     return true;
+  }
+
+  /**
+   * Saves an edit. A paused program goes on in the edited code, so its line may shift (lines
+   * inserted above it); that is not execution moving, so the operator's cursor stays put.
+   */
+  private void saveKeepingCursor(Program edited) {
+    ExecutionStatus before = control.status();
+    control.saveProgram(edited);
+    if (before.equals(lastFollowed)) {
+      lastFollowed = control.status();
+    }
   }
 
   /** A label number defined twice in {@code after} but not in {@code before}, as a message. */
@@ -604,7 +616,7 @@ public final class Pendant {
       message = "Nothing to undo";
       return;
     }
-    control.saveProgram(stack.pop());
+    saveKeepingCursor(stack.pop());
     message = "Undone (" + stack.size() + " more)";
   }
 

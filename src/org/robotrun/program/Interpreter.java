@@ -162,9 +162,13 @@ public final class Interpreter {
   public void forward() {
     // a notice answers the command that caused it (a BWD at the top); a new command starts clean
     notice = "";
+    reload();
     switch (state) {
       case IDLE -> start();
       case PAUSED -> {
+        if (structureErrorOnStack()) {
+          return;
+        }
         if (waitKind == W_MOTION && motionHeld) {
           port.resume(motionHandle);
           motionHeld = false;
@@ -224,6 +228,7 @@ public final class Interpreter {
    */
   public Outcome backward() {
     notice = "";
+    reload();
     switch (state) {
       case RUNNING -> {
         notice = "BWD: program is running; HOLD first";
@@ -244,6 +249,9 @@ public final class Interpreter {
         state = State.PAUSED;
       }
       case PAUSED -> {
+        if (structureErrorOnStack()) {
+          return alarmOutcome;
+        }
         if (waitKind == W_MOTION) {
           // A held motion is abandoned; backing out of it returns to its start point.
           port.cancel(motionHandle);
@@ -255,6 +263,88 @@ public final class Interpreter {
       }
     }
     return backwardStep();
+  }
+
+  /**
+   * Brings every program on the call stack up to date with the store after an edit, so what runs
+   * is what the store (the pendant) shows (docs/tp-execution.md, "Editing a paused program").
+   * Each program whose stored version changed is recompiled and its place carried over by
+   * {@link LineMap}: the paused line (the line waited on, else the next line) keeps its identity
+   * when the edit left it alone; when it was changed or deleted, the line that took its place
+   * runs next (the end when none). A caller goes on just below its CALL line. A held motion or
+   * WAIT whose line and positions are unchanged stays resumable; otherwise it is cancelled and
+   * its line (its replacement) runs again from where the robot stands. While running, a motion
+   * in flight is let finish. FOR loops in progress keep their state on kept lines. Cheap when
+   * nothing changed; {@link #forward()} and {@link #backward()} call it too.
+   */
+  public void reload() {
+    for (int i = 0; i < depth; i++) {
+      Frame f = frames[i];
+      CompiledProgram now = compiledOrNull(f.prog.name);
+      if (now == null || now == f.prog) {
+        // unchanged, or no longer stored (the controller refuses to delete an active program)
+        continue;
+      }
+      CompiledProgram was = f.prog;
+      LineMap map = LineMap.between(was.program.lines(), now.program.lines());
+      int pc;
+      if (i < depth - 1) {
+        pc = map.returnPoint(f.pc);
+      } else if (waitKind == W_NONE) {
+        pc = map.position(f.pc);
+      } else {
+        pc = carryWait(map, was, now, f.pc);
+      }
+      f.remap(now, map, Math.min(pc, now.ops.length));
+    }
+  }
+
+  /** The top frame's new pc when it waits (motion, WAIT) in a program just edited; see {@link #reload()}. */
+  private int carryWait(LineMap map, CompiledProgram was, CompiledProgram now, int oldPc) {
+    int kept = map.kept(waitLine);
+    boolean positionsChanged = waitKind == W_MOTION && !was.program.positions().equals(now.program.positions());
+    if (!motionBackward && kept >= 0 && !(positionsChanged && state == State.PAUSED)) {
+      // the same line in the new code: the wait goes on; its label targets are the new program's
+      waitLine = kept;
+      if (waitKind == W_MOTION) {
+        motionSkip = ((Ops.MoveOp) now.ops[kept]).skip;
+      } else if (waitKind == W_CONDITION) {
+        waitOp = (Ops.WaitConditionOp) now.ops[kept];
+      }
+      return kept + 1;
+    }
+    if (state == State.PAUSED || waitKind == W_CONDITION) {
+      // re-run the edited line (or the one in its place) from here; a backward step starts over
+      int at = motionBackward ? map.position(oldPc) : map.position(waitLine);
+      cancelWait();
+      return at;
+    }
+    // running: a motion or a timed WAIT of a changed line finishes; the program goes on after it
+    motionSkip = null;
+    waitLine = Math.max(0, Math.min(map.position(waitLine), now.ops.length - 1));
+    return map.position(oldPc);
+  }
+
+  /** Whether a program on the stack no longer compiles (an edit broke FOR/IF/SELECT): alarms if so. */
+  private boolean structureErrorOnStack() {
+    for (int i = depth - 1; i >= 0; i--) {
+      CompiledProgram p = frames[i].prog;
+      if (p.structureError != null) {
+        raise(new AlarmSignal(AlarmKind.STRUCTURE, p.structureError), p.name, p.structureErrorLine + 1);
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /** Whether {@code program} is on the call stack of an active (running or paused) program. */
+  public boolean isActive(String program) {
+    for (int i = 0; i < depth; i++) {
+      if (frames[i].prog.name.equals(program)) {
+        return true;
+      }
+    }
+    return false;
   }
 
   /**
@@ -858,6 +948,25 @@ public final class Interpreter {
       } else {
         java.util.Arrays.fill(forReg, 0, n, 0);
       }
+    }
+
+    /** Switches to an edited version of the program at {@code newPc}, carrying running FOR loops over. */
+    void remap(CompiledProgram p, LineMap map, int newPc) {
+      int n = p.ops.length;
+      int[] reg = new int[Math.max(n, forReg.length)];
+      int[] end = new int[reg.length];
+      int oldN = prog.ops.length;
+      for (int i = 0; i < oldN; i++) {
+        int k = map.kept(i);
+        if (forReg[i] != 0 && k >= 0) {
+          reg[k] = forReg[i];
+          end[k] = forEnd[i];
+        }
+      }
+      forReg = reg;
+      forEnd = end;
+      prog = p;
+      pc = newPc;
     }
 
     void ensureArgs(int n) {

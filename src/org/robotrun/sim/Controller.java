@@ -241,14 +241,19 @@ public final class Controller implements MotionPort {
     return Optional.ofNullable(programs.get(programName));
   }
 
-  /** Stores (creates or replaces) a program. */
+  /**
+   * Stores (creates or replaces) a program. A program that is paused or waiting for a CALL to
+   * return goes on in the new version ({@link Interpreter#reload()}): what runs is what the
+   * pendant shows.
+   */
   public void saveProgram(Program p) {
     programs.put(p.name(), p);
+    interpreter.reload();
   }
 
-  /** Deletes a program; refused while it is active. */
+  /** Deletes a program; refused while it is active (running, paused, or a caller of either). */
   public CommandResult deleteProgram(String programName) {
-    if (busy() && interpreter.currentProgram().equals(programName)) {
+    if (interpreter.isActive(programName) || (busy() && interpreter.currentProgram().equals(programName))) {
       return CommandResult.refused(programName + " is running or paused: ABORT it first");
     }
     return programs.remove(programName) == null
