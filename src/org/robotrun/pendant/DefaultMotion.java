@@ -77,7 +77,7 @@ record DefaultMotion(Motion.Type type, Motion.Speed speed, Motion.Termination te
     if (!unit.fits(type)) {
       throw new BadText("speed unit " + unitText + " does not fit " + type + " motion");
     }
-    double v = TpLine.positive("Speed", s.substring(0, split));
+    double v = NumberEntry.positive("Speed", s.substring(0, split));
     Motion.Termination term = TpLine.parseTermination(parts[2]);
     return new DefaultMotion(type, TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(v), unit)), term);
   }

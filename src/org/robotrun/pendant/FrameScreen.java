@@ -86,10 +86,9 @@ final class FrameScreen implements Screen {
         f.wDeg(), f.pDeg(), f.rDeg()));
     TeachMethod m = method();
     if (m.pointNames().isEmpty()) {
-      String[] names = ELEMENT_NAMES;
       for (int j = 1; j <= 6; j++) {
         String v = String.format(Locale.ROOT, "%10.3f", f.element(j));
-        rows.add((row == j ? ">" : " ") + " " + names[j - 1] + " " + (row == j ? "{" + v + "}" : v));
+        rows.add((row == j ? ">" : " ") + " " + ELEMENT_NAMES[j - 1] + " " + (row == j ? "{" + v + "}" : v));
       }
     } else {
       Position.Joint[] pts = points();

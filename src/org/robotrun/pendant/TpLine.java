@@ -187,7 +187,7 @@ public final class TpLine {
         String width = p.widthSec().isPresent() ? "," + ExprText.plain(p.widthSec().getAsDouble()) + "sec" : "";
         f.add(new Field(width, Field.Edit.entry(p.widthSec().isPresent() ? ExprText.plain(p.widthSec().getAsDouble()) : "",
             t -> new Instruction.Pulse(p.kind(), p.port(),
-                t.isBlank() ? OptionalDouble.empty() : OptionalDouble.of(positive("Pulse width", t))))));
+                t.isBlank() ? OptionalDouble.empty() : OptionalDouble.of(NumberEntry.positive("Pulse width", t))))));
       }
       case Instruction.Comment c -> {
         f.add(Field.fixed("!"));
@@ -415,7 +415,7 @@ public final class TpLine {
     if (t.toUpperCase(Locale.ROOT).startsWith("R")) {
       return new Motion.SpeedRegister(ExprText.parseItem("R", t));
     }
-    return new Motion.SpeedConst(positive("Speed", t));
+    return new Motion.SpeedConst(NumberEntry.positive("Speed", t));
   }
 
   static Motion.Termination parseTermination(String text) throws BadText {
@@ -480,9 +480,13 @@ public final class TpLine {
   static Expr value(String text) throws BadText {
     Expr e = ExprText.parse(text);
     if (hasString(e)) {
-      throw new BadText("a string ('...') is allowed only as a CALL argument");
+      throw stringNotAllowed();
     }
     return e;
+  }
+
+  private static BadText stringNotAllowed() {
+    return new BadText("a string ('...') is allowed only as a CALL argument");
   }
 
   private static boolean hasString(Expr e) {
@@ -654,8 +658,12 @@ public final class TpLine {
       String inner = t.substring(open + 1, t.length() - 1).trim();
       if (!inner.isEmpty()) {
         for (String a : splitTopLevel(inner)) {
+          // a whole argument may be a string; a string inside an expression is refused
           Expr arg = ExprText.parse(a);
-          args.add(arg instanceof Expr.StringConst ? arg : value(a));
+          if (!(arg instanceof Expr.StringConst) && hasString(arg)) {
+            throw stringNotAllowed();
+          }
+          args.add(arg);
         }
       }
     }
@@ -737,11 +745,6 @@ public final class TpLine {
     } catch (NumberFormatException e) {
       throw new BadText(what + ": '" + text.trim() + "' is not a whole number");
     }
-  }
-
-  /** A number above 0 ({@code what} names the field in the message), as the reader takes speeds and widths. */
-  static double positive(String what, String text) throws BadText {
-    return NumberEntry.positive(what, text);
   }
 
   private static double number(Expr e) {
