@@ -44,6 +44,10 @@ public final class CellState {
   public static final int INPUT_HOLDING = 2;
   /** How far a released part may be above (or sunk into) a fixture top and still be set on it (mm). */
   public static final double SNAP_MM = 2;
+  /** Steepest fixture face that still holds a released part (degrees from level). */
+  static final double MAX_SUPPORT_TILT_DEG = 45;
+
+  private static final double MIN_SUPPORT_NZ = Math.cos(Math.toRadians(MAX_SUPPORT_TILT_DEG));
 
   /** A grip, a release or a reset, for the collision check's allowances. */
   sealed interface Event {
@@ -249,11 +253,6 @@ public final class CellState {
     Transform X_CS = world.poseInCell(support);
     return o.movedTo(X_CS.inverse().compose(X_CPset), Optional.of(support));
   }
-
-  /** Steepest fixture face that still holds a released part (degrees from level). */
-  static final double MAX_SUPPORT_TILT_DEG = 45;
-
-  private static final double MIN_SUPPORT_NZ = Math.cos(Math.toRadians(MAX_SUPPORT_TILT_DEG));
 
   /** The lowest extent of box {@code b} along the unit direction n (mm). */
   private static double lowest(Obb b, double nx, double ny, double nz) {
