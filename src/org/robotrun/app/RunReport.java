@@ -5,9 +5,8 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
+import org.robotrun.io.AtomicFiles;
 import org.robotrun.math.Xyzwpr;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
@@ -29,12 +28,10 @@ final class RunReport {
 
   private RunReport() {}
 
-  /** Writes atomically (temp file, then rename). */
+  /** Writes through {@link AtomicFiles}: a crash leaves the old report or the new one, never half. */
   static void write(Path file, String program, HeadlessRun.Result result, Simulation sim) throws IOException {
     ObjectNode root = build(program, result, sim);
-    Path tmp = file.resolveSibling(file.getFileName() + ".tmp");
-    JSON.writeValue(tmp.toFile(), root);
-    Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+    AtomicFiles.write(file, JSON.writeValueAsBytes(root));
   }
 
   static ObjectNode build(String program, HeadlessRun.Result result, Simulation sim) {

@@ -2,10 +2,8 @@ package org.robotrun.io;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.List;
 import java.util.Map;
 import org.robotrun.program.Config;
@@ -50,20 +48,9 @@ public final class LsWriter {
     return sb.toString();
   }
 
-  /** Writes the file atomically (temporary file, then rename), so a crash never leaves half a program. */
+  /** Writes the file through {@link AtomicFiles}, so a crash never leaves half a program. */
   public static void write(Program program, Path file) throws IOException {
-    Path dir = file.toAbsolutePath().getParent();
-    Path tmp = Files.createTempFile(dir, ".robotrun-", ".tmp");
-    try {
-      Files.writeString(tmp, write(program), StandardCharsets.UTF_8);
-      try {
-        Files.move(tmp, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-      } catch (AtomicMoveNotSupportedException e) {
-        Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING);
-      }
-    } finally {
-      Files.deleteIfExists(tmp);
-    }
+    AtomicFiles.write(file, write(program).getBytes(StandardCharsets.UTF_8));
   }
 
   // ---- /ATTR --------------------------------------------------------------------------------
