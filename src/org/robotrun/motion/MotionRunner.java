@@ -78,6 +78,12 @@ public final class MotionRunner {
   private boolean held;
   private double pathScale = 1;
   private double stallSec;
+  /** T1 speed limit of the TCP and the flange (mm/s); infinite when off. */
+  private double cartesianCapMmPerSec = Double.POSITIVE_INFINITY;
+  /** The tool whose TCP the cap watches (the flange is always watched). */
+  private Transform X_FTCap = Transform.IDENTITY;
+  /** How far the cap slows the path now (1 = not at all); kept apart from {@link #pathScale} so T1 is no stall. */
+  private double capScale = 1;
 
   /**
    * @param q0 starting joints (rad, kinematic convention)
@@ -174,6 +180,36 @@ public final class MotionRunner {
 
   public double override() {
     return overrideFraction;
+  }
+
+  /**
+   * Caps the Cartesian speed of the flange and of the TCP of tool {@code X_FT} at
+   * {@code mmPerSec} (T1 mode: 250 mm/s); every program move is slowed along its path as far as
+   * needed, joint moves included. {@link Double#POSITIVE_INFINITY} turns the cap off.
+   */
+  public void setCartesianSpeedCap(double mmPerSec, Transform X_FT) {
+    if (!(mmPerSec > 0)) {
+      throw new IllegalArgumentException("speed cap must be > 0 mm/s, got " + mmPerSec);
+    }
+    cartesianCapMmPerSec = mmPerSec;
+    X_FTCap = java.util.Objects.requireNonNull(X_FT, "X_FT");
+  }
+
+  /** The Cartesian speed cap (mm/s), infinite when off. */
+  public double cartesianSpeedCap() {
+    return cartesianCapMmPerSec;
+  }
+
+  /**
+   * The largest Cartesian displacement (mm) of the flange and of the TCP of {@code X_FT} between
+   * joints {@code qa} and {@code qb} (radians, kinematic convention).
+   */
+  public static double cartesianStepMm(RobotModel model, double[] qa, double[] qb, Transform X_FT) {
+    Transform fa = ForwardKinematics.flangePoseInWorld(model, qa);
+    Transform fb = ForwardKinematics.flangePoseInWorld(model, qb);
+    double flange = fa.translationVector().distanceTo(fb.translationVector());
+    double tcp = fa.compose(X_FT).translationVector().distanceTo(fb.compose(X_FT).translationVector());
+    return Math.max(flange, tcp);
   }
 
   /** HOLD: decelerate along the path to a stop and wait for {@link #resume}. */
@@ -345,6 +381,9 @@ public final class MotionRunner {
     if (!accepted) {
       return fail(lastTag(), cannotFollow());
     }
+    if (!capStep(step, dtSec)) {
+      return fail(lastTag(), cannotFollow());
+    }
     int bad = firstOutside(qTry);
     if (bad >= 0) {
       return fail(lastTag(), new MotionFault(MotionFault.Kind.JOINT_LIMIT, limitMessage(bad, qTry[bad])));
@@ -352,6 +391,10 @@ public final class MotionRunner {
     boolean cartesian = !jointLead() || active.size() > 1 && active.get(active.size() - 1) instanceof Segment.CartesianSegment;
     if (cartesian && entersWristSingularity(q, qTry)) {
       return fail(lastTag(), singularity());
+    }
+    if (!Double.isNaN(shortenedStep)) {
+      step = shortenedStep;
+      shortenedStep = Double.NaN;
     }
     for (Segment s : active) {
       s.tSec += step;
@@ -371,6 +414,39 @@ public final class MotionRunner {
     }
     return true;
   }
+
+  /**
+   * T1: shortens the accepted {@code step} until neither the flange nor the TCP moves faster than
+   * the cap this tick (the check is on the candidate, so no tick ever exceeds it), then lets the
+   * path speed recover slowly. Leaves {@link #qTry} on the step taken; false if a shorter step
+   * cannot be reached.
+   */
+  private boolean capStep(double step, double dtSec) {
+    if (Double.isInfinite(cartesianCapMmPerSec)) {
+      return true;
+    }
+    double limitMm = cartesianCapMmPerSec * dtSec;
+    double scale = Math.min(1, capScale * 1.02 + 1e-4);
+    for (int attempt = 0; attempt < 20; attempt++) {
+      if (scale < 1 && (!candidate(step * scale) || !finite(qTry))) {
+        return false;
+      }
+      double moved = cartesianStepMm(model, q, qTry, X_FTCap);
+      if (moved <= limitMm) {
+        capScale = scale;
+        if (scale < 1) {
+          // the segments advance by the shortened step
+          shortenedStep = step * scale;
+        }
+        return true;
+      }
+      scale *= 0.98 * limitMm / moved;
+    }
+    return false;
+  }
+
+  /** Set by {@link #capStep} when it shortened the step (NaN otherwise). */
+  private double shortenedStep = Double.NaN;
 
   /**
    * Fills {@link #qTry} with the joints after advancing every active move by {@code step}:

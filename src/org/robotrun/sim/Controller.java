@@ -24,6 +24,7 @@ import org.robotrun.motion.MoveRequest;
 import org.robotrun.motion.Speed;
 import org.robotrun.motion.Termination;
 import org.robotrun.program.Alarm;
+import org.robotrun.program.AlarmCode;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.Interpreter;
 import org.robotrun.program.InterpreterSettings;
@@ -95,6 +96,11 @@ public final class Controller implements MotionPort {
   private int overridePct = 100;
   private JogFrame coord = JogFrame.JOINT;
   private boolean deadman = true;
+  /** Headless default: a controller without a pendant runs as in AUTO ({@code robotrun run}). */
+  private OperatingMode mode = OperatingMode.AUTO;
+  /** Which E-stop buttons are pressed (pendant, operator panel). */
+  private boolean estopPendant;
+  private boolean estopPanel;
   private String jogMessage = "";
   private final List<ControllerAlarm> activeAlarms = new ArrayList<>();
   private final Deque<ControllerAlarm> history = new ArrayDeque<>();
@@ -160,6 +166,8 @@ public final class Controller implements MotionPort {
   /** Advances by {@code dtSec}: the program runs, then the arm moves (program motion or jog). */
   public void tick(double dtSec) {
     timeSec += dtSec;
+    // the T1 cap watches the active tool's TCP (the pendant may select another at any time)
+    applySpeedCap();
     if (defaultGripperIo) {
       gripper.tick(registers, dtSec);
     }
@@ -194,7 +202,9 @@ public final class Controller implements MotionPort {
         jogger.stop(jogKeys);
       }
       double[] q = runner.joints();
+      double[] q0 = q.clone();
       JogResult r = jogger.tick(q, jogKeys, coord, overridePct / 100.0, frames.activeTool(), frames.activeUser(), dtSec);
+      capJogStep(q0, q, dtSec);
       switch (r) {
         case JogResult.Moving m -> runner.setJoints(q);
         case JogResult.Stopped s -> {
@@ -208,6 +218,24 @@ public final class Controller implements MotionPort {
     if (state == Interpreter.State.IDLE && !Double.isNaN(runStartSec) && runner.idle()) {
       lastCycleTimeSec = timeSec - runStartSec;
       runStartSec = Double.NaN;
+    }
+  }
+
+  /**
+   * T1: a jog tick that would move the flange or the TCP faster than 250 mm/s is shortened to
+   * that speed (a joint jog of J1 far from the axis would otherwise outrun it).
+   */
+  private void capJogStep(double[] q0, double[] q, double dtSec) {
+    if (mode != OperatingMode.T1) {
+      return;
+    }
+    double limit = OperatingMode.T1_SPEED_MM_PER_SEC * dtSec;
+    double moved = MotionRunner.cartesianStepMm(model, q0, q, frames.activeTool());
+    if (moved > limit) {
+      double s = 0.999 * limit / moved;
+      for (int i = 0; i < q.length; i++) {
+        q[i] = q0[i] + (q[i] - q0[i]) * s;
+      }
     }
   }
 
@@ -384,6 +412,12 @@ public final class Controller implements MotionPort {
     if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
       return CommandResult.refused("cannot jog while the robot moves under a program");
     }
+    if (mode == OperatingMode.AUTO) {
+      return CommandResult.refused("AUTO mode: the pendant cannot jog (turn the mode switch to T1)");
+    }
+    if (estopped()) {
+      return CommandResult.refused("E-stop pressed: release it and RESET");
+    }
     jogMessage = "";
     jogKeys.keyDown(axis - 1, sign, press);
     return CommandResult.ok();
@@ -423,6 +457,69 @@ public final class Controller implements MotionPort {
     return overridePct;
   }
 
+  // ================================================================ safety
+
+  /** The mode switch. */
+  public OperatingMode mode() {
+    return mode;
+  }
+
+  /**
+   * Turns the mode switch. A running program pauses and jogging stops (a controller stops the
+   * arm when the switch turns); in T1 every motion is capped at 250 mm/s at the TCP and flange.
+   */
+  public void setMode(OperatingMode newMode) {
+    Objects.requireNonNull(newMode, "mode");
+    if (newMode != mode && interpreter.state() == Interpreter.State.RUNNING) {
+      hold();
+    }
+    jogger.stop(jogKeys);
+    mode = newMode;
+    applySpeedCap();
+  }
+
+  private void applySpeedCap() {
+    runner.setCartesianSpeedCap(mode == OperatingMode.T1 ? OperatingMode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY,
+        frames.activeTool());
+  }
+
+  /**
+   * An E-stop button goes down: {@code fromPendant} the teach pendant's (SRVO-002), else the
+   * operator panel's (SRVO-001). The arm stops at once (no deceleration along the path), a running
+   * program pauses, jogging stops. RESET clears the alarm only after every E-stop is released.
+   */
+  public void emergencyStop(boolean fromPendant) {
+    boolean was = fromPendant ? estopPendant : estopPanel;
+    if (fromPendant) {
+      estopPendant = true;
+    } else {
+      estopPanel = true;
+    }
+    if (!was) {
+      AlarmCode code = fromPendant ? AlarmCode.SRVO_002 : AlarmCode.SRVO_001;
+      raiseAlarm(code.code(), code.text());
+    }
+  }
+
+  /** Releases (twists out) both E-stop buttons; the alarm stays until RESET. */
+  public void releaseEmergencyStop() {
+    estopPendant = false;
+    estopPanel = false;
+  }
+
+  /** Whether an E-stop button is pressed. */
+  public boolean estopped() {
+    return estopPendant || estopPanel;
+  }
+
+  /**
+   * The DEADMAN switch was let go while the pendant is enabled: SRVO-003. The arm stops at once,
+   * a running program pauses (SHIFT+FWD resumes it after RESET with the DEADMAN held).
+   */
+  public void deadmanReleased() {
+    raiseAlarm(AlarmCode.SRVO_003.code(), AlarmCode.SRVO_003.text());
+  }
+
   /** Speed override 1..100 %: scales every motion, program and jog, at once (ramped). */
   @Override
   public void setOverridePct(int percent) {
@@ -446,6 +543,9 @@ public final class Controller implements MotionPort {
    * the same program resumes from where it stopped (a held motion continues).
    */
   public CommandResult run(String programName, int line, boolean forward) {
+    if (estopped()) {
+      return CommandResult.refused("E-stop pressed: release it and RESET");
+    }
     if (!activeAlarms.isEmpty()) {
       return CommandResult.refused("alarm active: RESET first (" + activeAlarms.get(0).display() + ")");
     }
@@ -501,6 +601,10 @@ public final class Controller implements MotionPort {
 
   /** RESET: clears the active alarms (the history keeps them). */
   public void reset() {
+    if (estopped()) {
+      // RESET does nothing while an E-stop button is still pressed
+      return;
+    }
     activeAlarms.clear();
     interpreter.reset();
     lastInterpreterAlarm = null;

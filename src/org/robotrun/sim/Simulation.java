@@ -44,7 +44,7 @@ public final class Simulation {
   public static final DrawItem.Color TOOL_COLOR = DrawItem.Color.rgb(0.55, 0.56, 0.6);
 
   /** Alarm code of a collision. */
-  public static final String COLLISION_ALARM = "SRVO-050";
+  public static final String COLLISION_ALARM = org.robotrun.program.AlarmCode.SRVO_050.code();
   /** Collision events kept (the oldest are dropped beyond this). */
   static final int MAX_EVENTS = 1000;
 

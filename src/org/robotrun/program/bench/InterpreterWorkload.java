@@ -101,7 +101,7 @@ public final class InterpreterWorkload {
   private static final class NoMotion implements MotionPort {
     @Override
     public Start startMotion(MotionRequest request) {
-      return new Start.Rejected("BENCH-001", "the benchmark has no robot");
+      return new Start.Rejected(org.robotrun.program.AlarmCode.SIMU_011.code(), "the benchmark has no robot");
     }
 
     @Override
@@ -111,7 +111,7 @@ public final class InterpreterWorkload {
 
     @Override
     public Start.Rejected failure(long handle) {
-      return new Start.Rejected("BENCH-001", "the benchmark has no robot");
+      return new Start.Rejected(org.robotrun.program.AlarmCode.SIMU_011.code(), "the benchmark has no robot");
     }
 
     @Override

@@ -1,0 +1,176 @@
+package org.robotrun.program;
+
+import java.util.Arrays;
+import java.util.Optional;
+
+/**
+ * The alarm table: every alarm RobotRun raises, with the controller's code and text, its
+ * severity, and a cause and remedy written for students. docs/alarms.md is this table in prose;
+ * a test checks that every alarm code the sources can raise has a row here.
+ *
+ * <p>Codes of the controller's families (INTP, MOTN, SRVO) are the FANUC R-30iB codes for the
+ * same fault; {@link Source} says how each one was checked. Where no controller code fits (a
+ * simulator-only fault, or one whose controller code could not be verified), the alarm is in
+ * RobotRun's own family {@code SIMU-nnn}, so it can never be mistaken for a controller's.
+ */
+public enum AlarmCode {
+  // ---- servo and safety ---------------------------------------------------------------------
+  SRVO_001("SRVO-001", AlarmSeverity.SERVO, "Operator panel E-stop", Source.VERIFIED,
+      "The emergency stop button on the operator panel was pressed. The arm stopped at once and the servo power is off.",
+      "Make the cell safe, then twist the operator panel E-stop out (RELEASE ESTOP) and press RESET."),
+  SRVO_002("SRVO-002", AlarmSeverity.SERVO, "Teach pendant E-stop", Source.VERIFIED,
+      "The emergency stop button on the teach pendant was pressed. The arm stopped at once and the servo power is off.",
+      "Make the cell safe, then twist the pendant E-stop out (RELEASE ESTOP) and press RESET."),
+  SRVO_003("SRVO-003", AlarmSeverity.SERVO, "Deadman switch released", Source.VERIFIED,
+      "The teach pendant is enabled (TP ON) but the DEADMAN switch was let go (or squeezed too hard). The arm stopped at once.",
+      "Hold the DEADMAN in its middle position and press RESET. To run from the operator panel instead, "
+          + "turn the pendant off (TP OFF) and the mode switch to AUTO."),
+  SRVO_050("SRVO-050", AlarmSeverity.SERVO, "Collision Detect alarm", Source.RECALLED,
+      "The arm (or its tool or a held part) touched something in the cell. The arm stopped at once; the program paused.",
+      "RESET, then jog the arm clear with SHIFT held (slowly: lower the override), and fix the position or path that "
+          + "led into the obstacle before running again."),
+
+  // ---- program (interpreter) ----------------------------------------------------------------
+  INTP_203("INTP-203", AlarmSeverity.ABORT, "Variable type mismatch", Source.RECALLED,
+      "A value of the wrong type was used: arithmetic on ON/OFF, AND/OR on numbers, a real number where a whole number "
+          + "is needed, or a joint PR where a Cartesian one is needed.",
+      "Look at the line the alarm names and check the type of every register and I/O it uses."),
+  INTP_204("INTP-204", AlarmSeverity.ABORT, "Invalid value for index", Source.RECALLED,
+      "A register, I/O, PR element, argument or frame index is out of range, or an indirect index (R[R[1]]) is not "
+          + "a whole number.",
+      "Check the index the message shows (and the register that holds it, for an indirect index)."),
+  INTP_213("INTP-213", AlarmSeverity.ABORT, "UALM", Source.RECALLED,
+      "The program raised its own user alarm (UALM[i]) with the text set on the user alarm screen.",
+      "Read the text: the program's author says there what went wrong. Fix it, RESET, and continue."),
+  INTP_222("INTP-222", AlarmSeverity.ABORT, "Call program failed", Source.RECALLED,
+      "CALL (or SHIFT+FWD) names a program that does not exist.",
+      "Check the program name on the SELECT screen; create or load the program, or fix the CALL."),
+  INTP_224("INTP-224", AlarmSeverity.ABORT, "Jump label is fail", Source.VERIFIED,
+      "JMP LBL[n] (or SELECT, a WAIT TIMEOUT, a Skip condition) jumps to a label the program does not have.",
+      "Add the LBL[n] the jump needs, or correct the label number in the jump."),
+  INTP_302("INTP-302", AlarmSeverity.ABORT, "Stack overflow", Source.RECALLED,
+      "Programs call each other deeper than the controller allows (usually a program that CALLs itself without end).",
+      "Follow the CALLs from the program the alarm names and break the loop."),
+  INTP_304("INTP-304", AlarmSeverity.ABORT, "Specified value exceeds limit", Source.VERIFIED,
+      "A value is outside what the instruction accepts: OVERRIDE outside 1..100, a frame number outside 0..10, CNT "
+          + "outside 0..100, ACC outside 0..150, a speed not above 0.",
+      "Change the value on the line to one inside the range the message shows."),
+  INTP_311("INTP-311", AlarmSeverity.ABORT, "Uninitialized data is used", Source.VERIFIED,
+      "The line uses a position P[n] that was never taught (the program's /POS block has no P[n]), or an Offset "
+          + "with no OFFSET CONDITION set.",
+      "Teach the position (move the arm there and TOUCHUP), or add the OFFSET CONDITION before the move."),
+
+  // ---- motion -------------------------------------------------------------------------------
+  MOTN_017("MOTN-017", AlarmSeverity.ABORT, "Limit error", Source.VERIFIED,
+      "A joint would have to pass its limit to reach the target or a point on the way to it.",
+      "RESET, then choose a target the joints can reach, another configuration (CONFIG), or a joint move (J) "
+          + "instead of a straight line (L)."),
+  MOTN_018("MOTN-018", AlarmSeverity.ABORT, "Position not reachable", Source.RECALLED,
+      "The target (or a point of the straight or circular path) is out of the arm's reach.",
+      "RESET and move the target closer to the robot, or check the user and tool frames it was taught in."),
+  MOTN_023("MOTN-023", AlarmSeverity.ABORT, "In singularity", Source.VERIFIED,
+      "A straight or circular move runs the wrist into its singularity (J5 near 0: J4 and J6 in line), where the "
+          + "joints would have to turn infinitely fast.",
+      "RESET, then tilt the tool a little at that point so J5 stays away from 0, or use a joint move (J) there."),
+
+  // ---- RobotRun's own (no controller code fits, or none could be verified) --------------------
+  SIMU_001("SIMU-001", AlarmSeverity.ABORT, "Divide by zero", Source.OWN,
+      "The line divides by zero ('/', DIV or MOD with a zero divisor). (A controller raises an INTP alarm here; its "
+          + "number could not be verified, so RobotRun uses its own.)",
+      "Check the register the divisor comes from; guard the division with an IF."),
+  SIMU_002("SIMU-002", AlarmSeverity.ABORT, "Statement structure", Source.OWN,
+      "FOR without ENDFOR, ELSE or ENDIF without IF...THEN, a SELECT case outside a SELECT, or a CALL into a broken "
+          + "program. (A controller refuses such a program when it is loaded.)",
+      "Fix the block structure the message names; `robotrun check` lists every such line."),
+  SIMU_003("SIMU-003", AlarmSeverity.ABORT, "Runaway loop", Source.OWN,
+      "The program ran a very large number of lines in one tick without moving or waiting: an endless loop. "
+          + "(A controller would just loop; the simulator stops it so the window stays usable.)",
+      "Add a WAIT or a motion to the loop, or fix its exit condition."),
+  SIMU_004("SIMU-004", AlarmSeverity.ABORT, "Write protected", Source.OWN,
+      "The program assigned an input (DI, RI, GI), which only the outside world sets. "
+          + "(A controller refuses the line when it is entered.)",
+      "Write to an output (DO, RO, GO) instead."),
+  SIMU_005("SIMU-005", AlarmSeverity.ABORT, "Program aborted", Source.OWN,
+      "The program ran an ABORT instruction and ended. (A controller ends the program without an alarm; RobotRun "
+          + "shows one so a grader can see why it ended.)",
+      "Nothing to fix if the program meant to end; otherwise check why it reached ABORT."),
+  SIMU_006("SIMU-006", AlarmSeverity.ABORT, "Circular path invalid", Source.OWN,
+      "The three points of a circular move (start, via, target) lie on one line or two are the same, so no circle "
+          + "passes through them.",
+      "Teach the via point off the line between start and target."),
+  SIMU_007("SIMU-007", AlarmSeverity.ABORT, "Frame number mismatch", Source.OWN,
+      "The position was taught in a user or tool frame (UF/UT) other than the active ones. (A controller raises an "
+          + "INTP alarm here; its number could not be verified.)",
+      "Select the frames the position was taught in (UFRAME_NUM / UTOOL_NUM), or re-teach it in the active ones."),
+  SIMU_008("SIMU-008", AlarmSeverity.ABORT, "Invalid speed or ACC", Source.OWN,
+      "The move's speed or ACC value cannot be used (out of range for its unit).",
+      "Change the speed or ACC on the line to a value in range."),
+  SIMU_009("SIMU-009", AlarmSeverity.ABORT, "Invalid offset", Source.OWN,
+      "An Offset or Tool_Offset uses a joint PR where a Cartesian one is needed.",
+      "Store the offset as a Cartesian PR (X, Y, Z, W, P, R)."),
+  SIMU_010("SIMU-010", AlarmSeverity.ABORT, "Motion queue busy", Source.OWN,
+      "A move was asked while another one was already waiting to start.",
+      "Wait for the arm to finish (or HOLD and ABORT) before giving another move."),
+  SIMU_011("SIMU-011", AlarmSeverity.ABORT, "Motion failed", Source.OWN,
+      "The motion planner refused a move for a reason it could not name more precisely.",
+      "RESET, then check the target position and the frames it was taught in.");
+
+  /** How a code was checked against the controller. */
+  public enum Source {
+    /** Code and text checked against a copy of FANUC's alarm documentation (docs/alarms.md cites it). */
+    VERIFIED,
+    /** The controller's code as the R-30iB alarm code manual gives it, from memory; no copy could be checked here. */
+    RECALLED,
+    /** RobotRun's own alarm ({@code SIMU-nnn}): no controller code fits or none could be verified. */
+    OWN
+  }
+
+  private final String code;
+  private final AlarmSeverity severity;
+  private final String text;
+  private final Source source;
+  private final String cause;
+  private final String remedy;
+
+  AlarmCode(String code, AlarmSeverity severity, String text, Source source, String cause, String remedy) {
+    this.code = code;
+    this.severity = severity;
+    this.text = text;
+    this.source = source;
+    this.cause = cause;
+    this.remedy = remedy;
+  }
+
+  /** The code shown on the pendant, e.g. {@code INTP-224}. */
+  public String code() {
+    return code;
+  }
+
+  public AlarmSeverity severity() {
+    return severity;
+  }
+
+  /** The controller's alarm text, e.g. "Jump label is fail". */
+  public String text() {
+    return text;
+  }
+
+  public Source source() {
+    return source;
+  }
+
+  /** Why it happens, for students. */
+  public String cause() {
+    return cause;
+  }
+
+  /** What to do, for students. */
+  public String remedy() {
+    return remedy;
+  }
+
+  /** The row for {@code code} ("INTP-224"), if the table has one. */
+  public static Optional<AlarmCode> of(String code) {
+    return Arrays.stream(values()).filter(a -> a.code.equals(code)).findFirst();
+  }
+}
