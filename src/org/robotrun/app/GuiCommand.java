@@ -69,6 +69,8 @@ public final class GuiCommand implements Callable<Integer> {
     }
     Controller controller = sim.controllers().get(0);
     SimRobotControl control = new SimRobotControl(sim, controller);
+    // a fresh window is a cold start: mode T1 (the port's default), override $SCR.$COLDOVRD = 10%
+    control.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
     programs.forEach(control::saveProgram);
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);

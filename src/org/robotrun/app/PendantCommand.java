@@ -16,7 +16,6 @@ import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
 import org.robotrun.pendant.RobotControl;
-import org.robotrun.pendant.StandInRobotControl;
 import org.robotrun.program.Program;
 import org.robotrun.world.Scenario;
 import org.robotrun.sim.DefaultCell;
@@ -33,12 +32,15 @@ import picocli.CommandLine.Spec;
     mixinStandardHelpOptions = true,
     description = {
       "Run a .keys script on the teach pendant and print the LCD as text at every SHOW.",
-      "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
-      "By default the pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
-      "--controller stand-in uses the stand-in controller instead: the same program interpreter on a toy gantry arm, no robot kinematics, no scenario.",
+      "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key (HOLD DEADMAN, HOLD SHIFT), TP ON|OFF, MODE T1|T2|AUTO, ESTOP [PANEL], RELEASE ESTOP, CYCLE START, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
+      "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
+      "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
       "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write, 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
+  /** The override a cold start sets ($SCR.$COLDOVRD on a controller): 10%. */
+  static final int COLD_START_OVERRIDE_PCT = 10;
+
   @Option(names = "--keys", required = true, paramLabel = "FILE.keys", description = "The key script to run.")
   Path keys;
 
@@ -46,9 +48,17 @@ public final class PendantCommand implements Callable<Integer> {
       description = "A TP program (.LS) to load before the script runs; repeat for more. A file with errors is exit 2.")
   List<Path> programs = new java.util.ArrayList<>();
 
-  @Option(names = "--controller", paramLabel = "sim|stand-in", defaultValue = "sim",
-      description = "Which controller the pendant drives: sim (default) or stand-in.")
-  String controller;
+  @Option(names = "--mode", paramLabel = "T1|T2|AUTO", defaultValue = "T1",
+      description = "The operator panel's mode switch at the start (default: ${DEFAULT-VALUE}).")
+  String mode;
+
+  @Option(names = "--override", paramLabel = "PCT", defaultValue = "10",
+      description = "Speed override at the start, 1..100 (default: ${DEFAULT-VALUE}, the controller's cold start, $SCR.$COLDOVRD).")
+  int overridePct;
+
+  @Option(names = "--trace", paramLabel = "FILE.csv",
+      description = "Write one CSV row per simulation tick (the same columns as run --trace; docs/run-report.md).")
+  Path trace;
 
   @Option(names = "--save", paramLabel = "DIR",
       description = "After the script, write every program to DIR/NAME.LS (the directory must exist).")
@@ -79,38 +89,61 @@ public final class PendantCommand implements Callable<Integer> {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new UserError(bad.error().display());
     };
+    RobotControl.Mode startMode;
+    try {
+      startMode = RobotControl.Mode.valueOf(mode.toUpperCase(java.util.Locale.ROOT));
+    } catch (IllegalArgumentException e) {
+      throw new UserError("--mode: expected T1, T2 or AUTO, got '" + mode + "'");
+    }
+    if (overridePct < 1 || overridePct > 100) {
+      throw new UserError("--override: expected 1..100, got " + overridePct);
+    }
+    if (trace != null) {
+      try {
+        org.robotrun.io.AtomicFiles.checkWritable(trace);
+      } catch (IOException e) {
+        throw new UserError("--trace: " + e.getMessage());
+      }
+    }
     List<Path> programFiles = new java.util.ArrayList<>();
-    RobotControl control = switch (controller) {
-      case "sim" -> {
-        Simulation sim;
-        if (scenario != null) {
-          Scenario sc = ScenarioFiles.load(scenario);
-          try {
-            sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
-          } catch (FileFormatException | IllegalArgumentException e) {
-            throw new UserError(scenario + ": " + e.getMessage());
-          }
-          programFiles.addAll(sc.programs());
-        } else {
-          sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
-        }
-        // the pendant drives the scenario's first robot
-        yield new SimRobotControl(sim, sim.controllers().get(0));
+    Simulation sim;
+    if (scenario != null) {
+      Scenario sc = ScenarioFiles.load(scenario);
+      try {
+        sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      } catch (FileFormatException | IllegalArgumentException e) {
+        throw new UserError(scenario + ": " + e.getMessage());
       }
-      case "stand-in" -> {
-        if (scenario != null) {
-          throw new UserError("--scenario needs the simulation controller (--controller sim)");
-        }
-        yield new StandInRobotControl(new RobotFrameTeacher());
-      }
-      default -> throw new UserError("--controller: expected sim or stand-in, got '" + controller + "'");
-    };
+      programFiles.addAll(sc.programs());
+    } else {
+      sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+    }
+    // the pendant drives the scenario's first robot
+    SimRobotControl control = new SimRobotControl(sim, sim.controllers().get(0));
+    control.setMode(startMode);
+    control.setOverridePct(overridePct);
     programFiles.addAll(programs);
     for (Path file : programFiles) {
       control.saveProgram(readProgram(file));
     }
     PrintWriter out = spec.commandLine().getOut();
-    script.run(new Pendant(control, new LsLineParser()), text -> out.print(text));
+    Pendant pendant = new Pendant(control, new LsLineParser());
+    if (trace == null) {
+      script.run(pendant, text -> out.print(text));
+    } else {
+      try {
+        org.robotrun.io.AtomicFiles.write(trace, stream -> {
+          java.io.Writer w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(stream, StandardCharsets.UTF_8));
+          org.robotrun.sim.TraceWriter tw = new org.robotrun.sim.TraceWriter(w, sim.controllers());
+          tw.write(sim);
+          control.setAfterTick(tw::write);
+          script.run(pendant, text -> out.print(text));
+          w.flush();
+        });
+      } catch (IOException e) {
+        throw new UserError("--trace: cannot write " + trace + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+      }
+    }
     out.flush();
     if (saveDir != null) {
       for (String name : control.programNames()) {

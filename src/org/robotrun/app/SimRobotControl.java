@@ -18,6 +18,7 @@ import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.CommandResult;
 import org.robotrun.sim.Controller;
 import org.robotrun.sim.ControllerAlarm;
+import org.robotrun.sim.OperatingMode;
 import org.robotrun.sim.Simulation;
 
 /**
@@ -32,6 +33,7 @@ public final class SimRobotControl implements RobotControl {
   private final Controller controller;
   private double pendingSec;
   private final RobotFrameTeacher teacher = new RobotFrameTeacher();
+  private java.util.function.Consumer<Simulation> afterTick = s -> { };
 
   /** Drives {@code controller}; {@link #advance} steps {@code simulation} (which owns it). */
   public SimRobotControl(Simulation simulation, Controller controller) {
@@ -40,6 +42,8 @@ public final class SimRobotControl implements RobotControl {
     if (!simulation.controllers().contains(controller)) {
       throw new IllegalArgumentException("controller " + controller.name() + " is not in the simulation");
     }
+    // a pendant in hand: the mode switch starts at T1, as a window or script starts
+    controller.setMode(OperatingMode.T1);
   }
 
   private static Result result(CommandResult r) {
@@ -229,6 +233,36 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
+  public Mode mode() {
+    return Mode.valueOf(controller.mode().name());
+  }
+
+  @Override
+  public void setMode(Mode mode) {
+    controller.setMode(OperatingMode.valueOf(mode.name()));
+  }
+
+  @Override
+  public void emergencyStop(boolean fromPendant) {
+    controller.emergencyStop(fromPendant);
+  }
+
+  @Override
+  public void releaseEmergencyStop() {
+    controller.releaseEmergencyStop();
+  }
+
+  @Override
+  public boolean emergencyStopped() {
+    return controller.estopped();
+  }
+
+  @Override
+  public void deadmanReleased() {
+    controller.deadmanReleased();
+  }
+
+  @Override
   public ExecutionStatus status() {
     org.robotrun.sim.ExecutionStatus s = controller.status();
     ExecState state = switch (s.state()) {
@@ -266,6 +300,16 @@ public final class SimRobotControl implements RobotControl {
     return controller.interpreter().userScreen();
   }
 
+  /** Called after every simulation tick {@link #advance} runs (a CSV trace). */
+  public void setAfterTick(java.util.function.Consumer<Simulation> listener) {
+    afterTick = Objects.requireNonNull(listener, "listener");
+  }
+
+  /** The simulation this port steps. */
+  public Simulation simulation() {
+    return simulation;
+  }
+
   /** Steps the simulation in whole ticks; a remainder under one tick carries over to the next call. */
   @Override
   public void advance(double dtSec) {
@@ -276,6 +320,7 @@ public final class SimRobotControl implements RobotControl {
     double tick = simulation.tickSec();
     while (pendingSec >= tick - 1e-12) {
       simulation.step();
+      afterTick.accept(simulation);
       pendingSec -= tick;
     }
   }

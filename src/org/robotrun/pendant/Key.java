@@ -9,7 +9,7 @@ import java.util.Optional;
  */
 public enum Key {
   F1("F1"), F2("F2"), F3("F3"), F4("F4"), F5("F5"),
-  PREV("PREV"), NEXT("NEXT"), SHIFT("SHIFT"), MENU("MENU"), SELECT("SELECT"), EDIT("EDIT"), DATA("DATA"),
+  PREV("PREV"), NEXT("NEXT"), SHIFT("SHIFT"), DEADMAN("DEADMAN"), MENU("MENU"), SELECT("SELECT"), EDIT("EDIT"), DATA("DATA"),
   FCTN("FCTN"), DISP("DISP"), POSN("POSN"), IO("I/O"), STATUS("STATUS"), ITEM("ITEM"), ENTER("ENTER"),
   BACKSPACE("BACKSPACE"), UP("UP"), DOWN("DOWN"), LEFT("LEFT"), RIGHT("RIGHT"),
   D0("0"), D1("1"), D2("2"), D3("3"), D4("4"), D5("5"), D6("6"), D7("7"), D8("8"), D9("9"),

@@ -19,11 +19,19 @@ import java.util.function.Consumer;
  * HOLD SHIFT                key down (stays down)
  * RELEASE SHIFT             key up
  * CLICK +X                  an on-screen click: latches a jog key on (a second CLICK turns it off)
+ * HOLD DEADMAN              the DEADMAN gripped (RELEASE DEADMAN lets go: SRVO-003 if the TP is on)
+ * TP ON / TP OFF            the pendant's TP ENABLE switch
+ * MODE T1 / T2 / AUTO       the operator panel's mode switch
+ * ESTOP / ESTOP PANEL       the pendant's / the operator panel's E-stop pressed
+ * RELEASE ESTOP             both E-stops twisted out (RESET then clears the alarm)
+ * CYCLE START               the operator panel's CYCLE START (AUTO, TP off)
  * WAIT 2.5                  2.5 s of simulated time
  * SHOW                      print the LCD
  * </pre>
  *
- * A script is parsed whole before it runs, so a malformed line stops it before any key is
+ * A script starts like a student picking up the pendant of a cold-started controller: TP ON,
+ * DEADMAN released, mode T1 (the override's cold start, 10%, is set by whoever starts the
+ * controller: {@code robotrun pendant}, the window). A script is parsed whole before it runs, so a malformed line stops it before any key is
  * pressed.
  */
 public final class KeyScript {
@@ -52,6 +60,21 @@ public final class KeyScript {
 
     /** Print the LCD. */
     record Show(int line) implements Step {}
+
+    /** TP ENABLE on or off. */
+    record TpSwitch(int line, boolean on) implements Step {}
+
+    /** The mode switch. */
+    record Mode(int line, RobotControl.Mode mode) implements Step {}
+
+    /** An E-stop pressed (the pendant's, or the operator panel's). */
+    record Estop(int line, boolean fromPendant) implements Step {}
+
+    /** Both E-stops released. */
+    record ReleaseEstop(int line) implements Step {}
+
+    /** CYCLE START on the operator panel. */
+    record CycleStart(int line) implements Step {}
   }
 
   /** A parse failure: where and what. */
@@ -113,6 +136,37 @@ public final class KeyScript {
             return bad(file, n, "WAIT needs seconds (e.g. WAIT 2.5), got '" + rest + "'");
           }
         }
+        case "TP" -> {
+          switch (rest.toUpperCase(Locale.ROOT)) {
+            case "ON" -> steps.add(new Step.TpSwitch(n, true));
+            case "OFF" -> steps.add(new Step.TpSwitch(n, false));
+            default -> {
+              return bad(file, n, "TP needs ON or OFF, got '" + rest + "'");
+            }
+          }
+        }
+        case "MODE" -> {
+          try {
+            steps.add(new Step.Mode(n, RobotControl.Mode.valueOf(rest.toUpperCase(Locale.ROOT))));
+          } catch (IllegalArgumentException e) {
+            return bad(file, n, "MODE needs T1, T2 or AUTO, got '" + rest + "'");
+          }
+        }
+        case "ESTOP" -> {
+          switch (rest.toUpperCase(Locale.ROOT)) {
+            case "", "TP", "PENDANT" -> steps.add(new Step.Estop(n, true));
+            case "PANEL" -> steps.add(new Step.Estop(n, false));
+            default -> {
+              return bad(file, n, "ESTOP takes nothing (the pendant's) or PANEL (the operator panel's), got '" + rest + "'");
+            }
+          }
+        }
+        case "CYCLE" -> {
+          if (!rest.equalsIgnoreCase("START")) {
+            return bad(file, n, "did you mean CYCLE START? got '" + t + "'");
+          }
+          steps.add(new Step.CycleStart(n));
+        }
         case "CLICK" -> {
           Optional<Key> k = Key.parse(rest);
           if (k.isEmpty()) {
@@ -128,6 +182,10 @@ public final class KeyScript {
               continue;
             }
             return bad(file, n, "RELEASE needs a key name");
+          }
+          if (word.equals("RELEASE") && rest.equalsIgnoreCase("ESTOP")) {
+            steps.add(new Step.ReleaseEstop(n));
+            continue;
           }
           Optional<Key> k = Key.parse(rest);
           if (k.isEmpty()) {
@@ -158,7 +216,7 @@ public final class KeyScript {
           }
           if (k.isEmpty()) {
             return bad(file, n, "unknown key or command '" + keyText + "' (keys: F1..F5, ENTER, SHIFT+FWD, +X/J1...;"
-                + " commands: TYPE, HOLD, RELEASE, CLICK, WAIT, SHOW)");
+                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, WAIT, SHOW)");
           }
           steps.add(new Step.Tap(n, k.get(), shift, times));
         }
@@ -207,6 +265,11 @@ public final class KeyScript {
           pendant.advance(w.seconds());
           timeSec += w.seconds();
         }
+        case Step.TpSwitch sw -> pendant.setTpEnabled(sw.on());
+        case Step.Mode m -> pendant.setMode(m.mode());
+        case Step.Estop e -> pendant.emergencyStop(e.fromPendant());
+        case Step.ReleaseEstop r -> pendant.releaseEmergencyStop();
+        case Step.CycleStart c -> pendant.cycleStart();
         case Step.Show sh -> show.accept(String.format(Locale.ROOT, "-- SHOW (line %d, t=%.3f s) --%n%s", sh.line(),
             timeSec, pendant.render()));
       }

@@ -26,10 +26,12 @@ import org.robotrun.program.Program;
  * LCD as text ({@link #lcd()}). No drawing and no toolkit: the desktop UI draws {@link Lcd} rows
  * and forwards keys; scripts and tests do the same with {@code .keys} files.
  *
- * <p>SHIFT works held ({@link #press}/{@link #release}) and toggled (a SHIFT press and release
- * with no other key and no time between latches it on or off). SHIFT is also the deadman: jog
- * keys move the robot only while it is on, and releasing it stops jogging. Every error the
- * operator can cause ends as a message on the prompt line; no key throws.
+ * <p>Three controls, as on an iPendant: TP ENABLE (on/off, {@link #setTpEnabled}), DEADMAN
+ * ({@link Key#DEADMAN}, held) and SHIFT (held; never latched). Jogging and SHIFT+FWD/BWD need all
+ * three; letting the DEADMAN go with the pendant enabled is SRVO-003 and stops the arm; in T1 and
+ * T2 a program runs only while SHIFT and DEADMAN are held (hold-to-run). In AUTO the pendant cannot
+ * jog; programs start from the operator panel's CYCLE START ({@link #cycleStart}) with the pendant
+ * disabled. Every error the operator can cause ends as a message on the prompt line; no key throws.
  */
 public final class Pendant {
   /** Undo depth of the program editor (the issue asks for at least 50). */
@@ -53,8 +55,10 @@ public final class Pendant {
   private String message = "";
 
   private boolean shiftHeld;
-  private boolean shiftLatched;
-  private boolean keySinceShiftPress;
+  /** The three-position DEADMAN in its middle (enabling) position. */
+  private boolean deadmanHeld;
+  /** TP ENABLE: a cold-started controller's pendant is picked up switched on. */
+  private boolean tpEnabled = true;
   private CoordSystem coord = CoordSystem.JOINT;
   /** Whether a jog key went down since the last stop (for the deadman message). */
   private boolean jogging;
@@ -93,10 +97,12 @@ public final class Pendant {
   public void press(Key k) {
     if (k == Key.SHIFT) {
       shiftHeld = true;
-      keySinceShiftPress = false;
       return;
     }
-    keySinceShiftPress = true;
+    if (k == Key.DEADMAN) {
+      deadmanHeld = true;
+      return;
+    }
     if (k.isJog()) {
       jogPress(k);
       return;
@@ -106,24 +112,110 @@ public final class Pendant {
     followExecution();
   }
 
-  /** A key comes up: a held jog key stops; SHIFT released with no key between toggles the latch. */
+  /**
+   * A key comes up: a held jog key stops. SHIFT up stops jogging and, in T1/T2, pauses a running
+   * program (hold-to-run); DEADMAN up with the pendant enabled is SRVO-003.
+   */
   public void release(Key k) {
     if (k == Key.SHIFT) {
-      shiftHeld = false;
-      if (!keySinceShiftPress) {
-        shiftLatched = !shiftLatched;
-        message = shiftLatched ? "SHIFT latched on (deadman held)" : "SHIFT latch off";
+      if (!shiftHeld) {
+        return;
       }
-      if (!shift() && jogging) {
+      shiftHeld = false;
+      if (jogging) {
         control.jogStop();
         jogging = false;
-        message = "Jog stopped: deadman (SHIFT) released";
+        message = "Jog stopped: SHIFT released";
+      }
+      holdToRun("SHIFT released");
+      return;
+    }
+    if (k == Key.DEADMAN) {
+      if (!deadmanHeld) {
+        return;
+      }
+      deadmanHeld = false;
+      jogging = false;
+      if (tpEnabled) {
+        boolean running = control.status().state() == ExecState.RUNNING;
+        control.deadmanReleased();
+        message = org.robotrun.program.AlarmCode.SRVO_003.code() + " " + org.robotrun.program.AlarmCode.SRVO_003.text() + (running ? ": program paused" : "")
+            + " (hold DEADMAN, RESET)";
       }
       return;
     }
     if (k.isJog()) {
       control.jogKeyUp(k.jogAxis(), k.jogSign());
     }
+  }
+
+  /** T1/T2: a running program pauses when SHIFT or DEADMAN lets go (the arm decelerates). */
+  private void holdToRun(String why) {
+    if (control.mode().holdToRun() && control.status().state() == ExecState.RUNNING) {
+      control.hold();
+      message = "Program paused: " + why + " (hold-to-run in " + control.mode() + "; SHIFT+FWD resumes)";
+    }
+  }
+
+  // ---- the pendant's switches and the operator panel ------------------------------------------
+
+  /** TP ENABLE switched on or off. Turning it off stops jogging. */
+  public void setTpEnabled(boolean on) {
+    if (!on && jogging) {
+      control.jogStop();
+      jogging = false;
+    }
+    if (!on && tpEnabled && control.mode().holdToRun()) {
+      holdToRun("TP disabled");
+    }
+    tpEnabled = on;
+    message = on ? "TP enabled" : "TP disabled";
+  }
+
+  /** Whether the TP ENABLE switch is on. */
+  public boolean tpEnabled() {
+    return tpEnabled;
+  }
+
+  /** Whether the DEADMAN is held. */
+  public boolean deadmanHeld() {
+    return deadmanHeld;
+  }
+
+  /** The operator panel's mode switch turns: a running program pauses, jogging stops. */
+  public void setMode(RobotControl.Mode mode) {
+    control.setMode(mode);
+    jogging = false;
+    message = "Mode " + mode;
+  }
+
+  /** An E-stop button is pressed: the pendant's (SRVO-002) or the operator panel's (SRVO-001). */
+  public void emergencyStop(boolean fromPendant) {
+    control.emergencyStop(fromPendant);
+    jogging = false;
+    message = (fromPendant ? "Teach pendant E-stop" : "Operator panel E-stop") + ": release it, then RESET";
+  }
+
+  /** The E-stop buttons are twisted out (the alarm stays until RESET). */
+  public void releaseEmergencyStop() {
+    control.releaseEmergencyStop();
+    message = "E-stop released: press RESET";
+  }
+
+  /**
+   * The operator panel's CYCLE START: in AUTO, with the pendant disabled, runs the selected
+   * program from its cursor line (a paused one resumes).
+   */
+  public void cycleStart() {
+    if (control.mode() != RobotControl.Mode.AUTO) {
+      message = "CYCLE START works in AUTO: in " + control.mode() + " run from the pendant (SHIFT+FWD)";
+      return;
+    }
+    if (tpEnabled) {
+      message = "CYCLE START refused: the TP is enabled (turn it OFF to run in AUTO)";
+      return;
+    }
+    startProgram(true);
   }
 
   /**
@@ -135,7 +227,6 @@ public final class Pendant {
       tap(k);
       return;
     }
-    keySinceShiftPress = true;
     jogDown(k, true);
   }
 
@@ -147,7 +238,6 @@ public final class Pendant {
 
   /** Typed text: goes to an open entry, or starts one on the field under the cursor. */
   public void type(String text) {
-    keySinceShiftPress = true;
     if (modal instanceof Modal.Entry e) {
       e.append(text);
       return;
@@ -165,10 +255,6 @@ public final class Pendant {
 
   /** Advances simulated time; the EDIT cursor follows the executing line as it goes. */
   public void advance(double dtSec) {
-    if (shiftHeld && dtSec > 0) {
-      // SHIFT held through time is a hold, not a tap: its release must not toggle the latch
-      keySinceShiftPress = true;
-    }
     double left = dtSec;
     while (left > 1e-12) {
       double dt = Math.min(FOLLOW_SLICE_SEC, left);
@@ -186,9 +272,9 @@ public final class Pendant {
     return modal instanceof Modal.Entry;
   }
 
-  /** Whether SHIFT is on (held or latched). */
+  /** Whether SHIFT is held. */
   public boolean shift() {
-    return shiftHeld || shiftLatched;
+    return shiftHeld;
   }
 
   /** The jog coordinate system COORD selects. */
@@ -201,8 +287,9 @@ public final class Pendant {
   }
 
   private void jogDown(Key k, boolean latched) {
-    if (!shift()) {
-      message = "Hold SHIFT (deadman) to jog";
+    Optional<String> refused = motionRefusal("jog");
+    if (refused.isPresent()) {
+      message = refused.get();
       return;
     }
     Result r = control.jogKeyDown(coord, k.jogAxis(), k.jogSign(), latched);
@@ -213,6 +300,30 @@ public final class Pendant {
       }
       case Result.Refused no -> message = no.reason();
     }
+  }
+
+  /**
+   * Why the pendant may not jog or run now ({@code what}: "jog", "run"), checked as a controller
+   * does: mode, TP ENABLE, E-stop, DEADMAN, SHIFT.
+   */
+  private Optional<String> motionRefusal(String what) {
+    if (control.mode() == RobotControl.Mode.AUTO) {
+      return Optional.of(what.equals("jog") ? "AUTO mode: the pendant cannot jog (mode switch to T1)"
+          : "AUTO mode: start from the operator panel (TP OFF, CYCLE START)");
+    }
+    if (!tpEnabled) {
+      return Optional.of("TP disabled: turn TP ENABLE on to " + what);
+    }
+    if (control.emergencyStopped()) {
+      return Optional.of("E-stop pressed: release it and RESET");
+    }
+    if (!deadmanHeld) {
+      return Optional.of("Hold the DEADMAN to " + what);
+    }
+    if (!shift()) {
+      return Optional.of("Hold SHIFT and the DEADMAN to " + what);
+    }
+    return Optional.empty();
   }
 
   private void handle(Key k) {
@@ -253,7 +364,8 @@ public final class Pendant {
           coord = CoordSystem.values()[(coord.ordinal() + 1) % CoordSystem.values().length];
           control.jogStop();
           jogging = false;
-          message = "Jog coordinates: " + coord;
+          message = "Jog coordinates: " + coord + "  (Tool " + control.activeFrame(FrameKind.TOOL) + ", User "
+              + control.activeFrame(FrameKind.USER) + ")";
         }
       }
       case STEP -> {
@@ -266,6 +378,10 @@ public final class Pendant {
       }
       case FWD, BWD -> run(k == Key.FWD);
       case RESET -> {
+        if (control.emergencyStopped()) {
+          message = "E-stop still pressed: release it first, then RESET";
+          return;
+        }
         boolean had = control.activeAlarm().isPresent();
         control.reset();
         message = had ? "Alarm reset" : "RESET";
@@ -286,13 +402,22 @@ public final class Pendant {
   }
 
   private void run(boolean forward) {
-    // the program in the editor (a callee the cursor followed into), else the selected one
-    String name = !editScreen.programName.isEmpty() && control.program(editScreen.programName).isPresent()
-        ? editScreen.programName : selectedProgram;
     if (!shift()) {
       message = "Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run";
       return;
     }
+    Optional<String> refused = motionRefusal("run");
+    if (refused.isPresent()) {
+      message = refused.get();
+      return;
+    }
+    startProgram(forward);
+  }
+
+  private void startProgram(boolean forward) {
+    // the program in the editor (a callee the cursor followed into), else the selected one
+    String name = !editScreen.programName.isEmpty() && control.program(editScreen.programName).isPresent()
+        ? editScreen.programName : selectedProgram;
     if (name.isEmpty() || control.program(name).isEmpty()) {
       message = "No program selected: choose one on SELECT";
       return;
@@ -360,15 +485,11 @@ public final class Pendant {
   }
 
   private void function() {
-    choose("FUNCTION", List.of("ABORT (ALL)", "SHIFT latch off", "Set active UTOOL/UFRAME"), i -> {
+    choose("FUNCTION", List.of("ABORT (ALL)", "Set active UTOOL/UFRAME"), i -> {
       switch (i) {
         case 0 -> {
           control.abort();
           message = "Program aborted";
-        }
-        case 1 -> {
-          shiftLatched = false;
-          message = "SHIFT latch off";
         }
         default -> frameSelectMenu();
       }
@@ -671,21 +792,42 @@ public final class Pendant {
     return lcd().toString();
   }
 
+  /**
+   * The status line as an iPendant shows it: program, line, mode (T1/T2/AUTO), execution state
+   * (a program that is neither running nor paused reads ABORTED, as after END on a controller),
+   * jog coordinates and override; then the lamps STEP, and SHIFT/DEADMAN/TP OFF. The active
+   * frame numbers are on the POSITION screen and in the COORD message, where a controller shows
+   * them.
+   */
   private String statusLine() {
     ExecutionStatus st = control.status();
     String prog = st.program().isEmpty() ? selectedProgram : st.program();
     int line = st.program().isEmpty() || st.state() == ExecState.IDLE && !st.program().equals(selectedProgram)
         ? (selectedProgram.isEmpty() ? 0 : editScreen.cursorLine(this)) : st.line();
     String state = switch (st.state()) {
-      case IDLE -> "IDLE";
+      case IDLE, ABORTED -> "ABORTED";
       case RUNNING -> "RUNNING";
       case PAUSED -> "PAUSED";
-      case ABORTED -> "ABORTED";
     };
-    return String.format(Locale.ROOT, "%-12s LINE %-4d %-7s %-4s %-5s T%-2d U%-2d %3d%%%s",
-        prog.isEmpty() ? "(none)" : prog.length() > 12 ? prog.substring(0, 12) : prog, line, state,
-        control.stepMode() ? "STEP" : "", coord, control.activeFrame(FrameKind.TOOL), control.activeFrame(FrameKind.USER),
-        control.overridePct(), shift() ? " SHIFT" : "");
+    StringBuilder lamps = new StringBuilder();
+    if (control.stepMode()) {
+      lamps.append(" STEP");
+    }
+    if (!tpEnabled) {
+      lamps.append(" TP-OFF");
+    }
+    if (deadmanHeld) {
+      lamps.append(" DEADMAN");
+    }
+    if (shift()) {
+      lamps.append(" SHIFT");
+    }
+    if (control.emergencyStopped()) {
+      lamps.append(" E-STOP");
+    }
+    return String.format(Locale.ROOT, "%-12s LINE %-4d %-4s %-7s %-5s %3d%%%s",
+        prog.isEmpty() ? "(none)" : prog.length() > 12 ? prog.substring(0, 12) : prog, line,
+        control.mode(), state, coord, control.overridePct(), lamps);
   }
 
   private static List<String> choiceBody(Modal.Choice c) {

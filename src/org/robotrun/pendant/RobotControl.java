@@ -11,7 +11,7 @@ import org.robotrun.program.Registers;
 /**
  * What the pendant needs from one robot's controller. The pendant owns screens and keys; the
  * controller owns programs, registers, frames, motion and execution. {@code sim.Controller} is
- * reached through an adapter ({@link StandInRobotControl} serves until then, and in tests).
+ * reached through an adapter in {@code app} (the tests also have a stand-in).
  *
  * <p>Units at this boundary are the pendant's: mm and degrees; joints in FANUC's coupled-J3
  * convention. Every method a user can make fail answers with a {@link Result}, never an
@@ -191,6 +191,44 @@ public interface RobotControl {
 
   /** Every jog axis off (deadman released, COORD changed, HOLD). */
   void jogStop();
+
+  // ---- safety: the operator panel's mode switch and E-stop, the pendant's E-stop and deadman ----
+
+  /** The operator panel's mode switch, as on an R-30iB. */
+  enum Mode {
+    /** Teach at reduced speed: TCP and flange at most 250 mm/s, hold-to-run. */
+    T1,
+    /** Teach at programmed speed, hold-to-run. */
+    T2,
+    /** Production: programs start from the operator panel with the pendant disabled; no jogging. */
+    AUTO;
+
+    /** Whether a program runs only while SHIFT and DEADMAN are held. */
+    public boolean holdToRun() {
+      return this != AUTO;
+    }
+  }
+
+  /** The mode switch. */
+  Mode mode();
+
+  /** Turns the mode switch: a running program pauses, jogging stops. */
+  void setMode(Mode mode);
+
+  /**
+   * An E-stop button goes down ({@code fromPendant}: the teach pendant's, SRVO-002; else the
+   * operator panel's, SRVO-001): the arm stops at once, a running program pauses.
+   */
+  void emergencyStop(boolean fromPendant);
+
+  /** The E-stop buttons are twisted out; the alarm stays until RESET. */
+  void releaseEmergencyStop();
+
+  /** Whether an E-stop button is pressed (RESET does nothing until it is released). */
+  boolean emergencyStopped();
+
+  /** The DEADMAN was let go with the pendant enabled: SRVO-003, the arm stops, a program pauses. */
+  void deadmanReleased();
 
   // ---- execution ---------------------------------------------------------------------------
 

@@ -113,7 +113,11 @@ public enum AlarmCode {
       "Wait for the arm to finish (or HOLD and ABORT) before giving another move."),
   SIMU_011("SIMU-011", AlarmSeverity.ABORT, "Motion failed", Source.OWN,
       "The motion planner refused a move for a reason it could not name more precisely.",
-      "RESET, then check the target position and the frames it was taught in.");
+      "RESET, then check the target position and the frames it was taught in."),
+  RUN_001("RUN-001", AlarmSeverity.ABORT, "Time limit", Source.OWN,
+      "`robotrun run` stopped the program because it ran longer than --max-sim-seconds of simulated time (a "
+          + "headless-run limit; no controller has it).",
+      "Look for a WAIT that never ends or an endless loop; raise --max-sim-seconds if the program is just long.");
 
   /** How a code was checked against the controller. */
   public enum Source {
@@ -121,7 +125,10 @@ public enum AlarmCode {
     VERIFIED,
     /** The controller's code as the R-30iB alarm code manual gives it, from memory; no copy could be checked here. */
     RECALLED,
-    /** RobotRun's own alarm ({@code SIMU-nnn}): no controller code fits or none could be verified. */
+    /**
+   * RobotRun's own alarm ({@code SIMU-nnn}; {@code RUN-nnn} for the headless runner): no
+   * controller code fits or none could be verified.
+   */
     OWN
   }
 

@@ -321,6 +321,11 @@ public final class Controller implements MotionPort {
   }
 
   /** The TCP of the active tool in WORLD. */
+  public Vec3 flangeInWorld() {
+    return resolver.tcp(runner.joints(), Transform.IDENTITY).translationVector();
+  }
+
+  /** The active tool's TCP in WORLD. */
   public Xyzwpr tcpInWorld() {
     return Xyzwpr.fromTransform(resolver.tcp(runner.joints(), frames.activeTool()));
   }

@@ -11,7 +11,7 @@ import java.util.function.Consumer;
  */
 public final class HeadlessRun {
   /** Alarm code reported when the time limit ends the run. */
-  public static final String TIME_LIMIT_CODE = "RUN-001";
+  public static final String TIME_LIMIT_CODE = org.robotrun.program.AlarmCode.RUN_001.code();
 
   private HeadlessRun() {}
 

@@ -9,13 +9,14 @@ import org.robotrun.program.Position;
 
 /**
  * Writes a CSV trace, one row per tick: {@code time_s}, then per robot J1..J6 (deg, pendant
- * convention) and the active tool's TCP in WORLD (x, y, z in mm; w, p, r in deg). Numbers are
+ * convention), the active tool's TCP in WORLD (x, y, z in mm; w, p, r in deg) and the flange's
+ * origin in WORLD (fx, fy, fz in mm; T1 caps the speed of both). Numbers are
  * fixed-point with a fixed number of decimals and no locale, so equal states give equal bytes.
  * With more than one robot the columns are prefixed with the robot's name.
  */
 public final class TraceWriter {
   private static final String[] COLUMNS = {"j1_deg", "j2_deg", "j3_deg", "j4_deg", "j5_deg", "j6_deg",
-      "x_mm", "y_mm", "z_mm", "w_deg", "p_deg", "r_deg"};
+      "x_mm", "y_mm", "z_mm", "w_deg", "p_deg", "r_deg", "fx_mm", "fy_mm", "fz_mm"};
 
   private final Writer out;
   private final StringBuilder row = new StringBuilder(256);
@@ -51,6 +52,11 @@ public final class TraceWriter {
         appendFixed(row, v, 4);
       }
       for (double v : new double[] {p.wDeg(), p.pDeg(), p.rDeg()}) {
+        row.append(',');
+        appendFixed(row, v, 4);
+      }
+      org.robotrun.math.Vec3 f = c.flangeInWorld();
+      for (double v : new double[] {f.x(), f.y(), f.z()}) {
         row.append(',');
         appendFixed(row, v, 4);
       }

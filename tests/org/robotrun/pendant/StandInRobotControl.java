@@ -441,8 +441,59 @@ public final class StandInRobotControl implements RobotControl {
     move = null;
   }
 
+  // ---- safety: mode switch, E-stop, deadman (the controller's rules, without an arm model) ----
+
+  private Mode mode = Mode.T1;
+  private boolean estop;
+
+  @Override
+  public Mode mode() {
+    return mode;
+  }
+
+  @Override
+  public void setMode(Mode newMode) {
+    if (newMode != mode && interpreter.state() == Interpreter.State.RUNNING) {
+      hold();
+    }
+    jogStop();
+    mode = newMode;
+  }
+
+  @Override
+  public void emergencyStop(boolean fromPendant) {
+    if (!estop) {
+      org.robotrun.program.AlarmCode c = fromPendant ? org.robotrun.program.AlarmCode.SRVO_002
+          : org.robotrun.program.AlarmCode.SRVO_001;
+      raise(new AlarmEntry(c.code(), c.text(), "", 0));
+    }
+    estop = true;
+    jogStop();
+    move = null;
+  }
+
+  @Override
+  public void releaseEmergencyStop() {
+    estop = false;
+  }
+
+  @Override
+  public boolean emergencyStopped() {
+    return estop;
+  }
+
+  @Override
+  public void deadmanReleased() {
+    org.robotrun.program.AlarmCode c = org.robotrun.program.AlarmCode.SRVO_003;
+    raise(new AlarmEntry(c.code(), c.text(), "", 0));
+    jogStop();
+  }
+
   @Override
   public void reset() {
+    if (estop) {
+      return;
+    }
     interpreter.reset();
     ownAlarm = null;
     reportedAlarm = null;
@@ -581,7 +632,7 @@ public final class StandInRobotControl implements RobotControl {
       }
       if (target instanceof Position.Cartesian c && (wp.userFrame() != activeFrame(FrameKind.USER)
           || wp.toolFrame() != activeFrame(FrameKind.TOOL))) {
-        return new Start.Rejected("INTP-251", wp.name() + " was taught in UF " + wp.userFrame() + " UT " + wp.toolFrame()
+        return new Start.Rejected(org.robotrun.program.AlarmCode.SIMU_007.code(), wp.name() + " was taught in UF " + wp.userFrame() + " UT " + wp.toolFrame()
             + " but UF " + activeFrame(FrameKind.USER) + " UT " + activeFrame(FrameKind.TOOL) + " are active");
       }
       if (r.incremental()) {
@@ -631,7 +682,7 @@ public final class StandInRobotControl implements RobotControl {
 
     @Override
     public Start.Rejected failure(long handle) {
-      return failures.getOrDefault(handle, new Start.Rejected("MOTN-000", "motion failed"));
+      return failures.getOrDefault(handle, new Start.Rejected(org.robotrun.program.AlarmCode.SIMU_011.code(), "motion failed"));
     }
 
     @Override
