@@ -11,10 +11,12 @@ import org.robotrun.pendant.Pendant;
 
 /**
  * The computer keyboard as pendant keys. Keys act while held, as on a real pendant: a jog key
- * moves the arm from press to release, and SHIFT (either Shift key) is the deadman.
+ * moves the arm from press to release; SHIFT (either Shift key) and the DEADMAN (either Ctrl key)
+ * are held, never latched. Jogging needs both held (and TP ENABLE on: a switch on the panel).
  *
  * <pre>
- * Shift          SHIFT (deadman)      F1..F5          F1..F5
+ * Shift          SHIFT (held)         Ctrl            DEADMAN (held)
+ *                                     F1..F5          F1..F5
  * arrows         cursor               Enter, Backspace ENTER, BACKSPACE
  * 0-9 . - ,      keypad               Escape          PREV
  * Q W E R T Y    +X/J1 ... +ZR/J6     A S D F G H     -X/J1 ... -ZR/J6
@@ -25,11 +27,12 @@ import org.robotrun.pendant.Pendant;
  * <p>While the pendant has an entry open (a program name, a comment, a number), letter keys
  * are text, not jog keys: the characters arrive through {@link #onChar}. A key is released to the
  * pendant only if its press reached it, so a Shift pressed while a text field of the window had
- * the keyboard cannot toggle the pendant's SHIFT latch when it comes up.
+ * the keyboard does not reach the pendant when it comes up.
  */
 public final class PendantKeyboard {
   private static final Map<Integer, Key> KEYS = Map.ofEntries(
       Map.entry(GLFW_KEY_LEFT_SHIFT, Key.SHIFT), Map.entry(GLFW_KEY_RIGHT_SHIFT, Key.SHIFT),
+      Map.entry(GLFW_KEY_LEFT_CONTROL, Key.DEADMAN), Map.entry(GLFW_KEY_RIGHT_CONTROL, Key.DEADMAN),
       Map.entry(GLFW_KEY_F1, Key.F1), Map.entry(GLFW_KEY_F2, Key.F2), Map.entry(GLFW_KEY_F3, Key.F3),
       Map.entry(GLFW_KEY_F4, Key.F4), Map.entry(GLFW_KEY_F5, Key.F5),
       Map.entry(GLFW_KEY_UP, Key.UP), Map.entry(GLFW_KEY_DOWN, Key.DOWN),

@@ -27,6 +27,7 @@ class PendantCommandTest {
   void scriptRunsAndEveryShowPrintsTheLcd(@TempDir Path dir) throws Exception {
     Path keys = dir.resolve("demo.keys");
     Files.writeString(keys, """
+        HOLD DEADMAN
         # make a program with one point and run it
         SELECT
         F1
@@ -34,14 +35,16 @@ class PendantCommandTest {
         ENTER
         SHIFT+F1
         SHOW
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 1
+        RELEASE SHIFT
         SHOW
         """);
     Run r = run("pendant", "--keys", keys.toString());
     assertThat(r.exitCode()).isEqualTo(0);
     assertThat(r.err()).isEmpty();
-    assertThat(r.out()).contains("-- SHOW (line 7, t=0.000 s) --").contains("-- SHOW (line 10, t=1.000 s) --")
+    assertThat(r.out()).contains("-- SHOW (line 8, t=0.000 s) --").contains("-- SHOW (line 13, t=1.000 s) --")
         .contains("J P[1] 100% FINE").contains("EDIT DEMO");
   }
 
@@ -50,7 +53,7 @@ class PendantCommandTest {
     Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys");
     assertThat(r.exitCode()).isEqualTo(0);
     assertThat(r.out()).contains("L P[2] 200mm/sec {CNT50}").contains("IF {R[1]<3},JMP LBL[1]")
-        .contains("    RUNNING").contains("LINE 6    IDLE").contains("R[  1:            ]  = {3}");
+        .contains("T1   RUNNING").contains("LINE 6    T1   ABORTED").contains("R[  1:            ]  = {3}");
   }
 
   @Test
@@ -85,7 +88,7 @@ class PendantCommandTest {
   }
 
   @Test
-  void scenarioCellsLoadForTheSimulationControllerOnly(@TempDir Path dir) throws Exception {
+  void scenarioCellsLoad(@TempDir Path dir) throws Exception {
     Path keys = dir.resolve("k.keys");
     Files.writeString(keys, "POSN\nSHOW\nMENU\n5\nSHOW\n");
     Run r = run("pendant", "--scenario", "scenarios/frame-teaching.json", "--keys", keys.toString());
@@ -94,14 +97,10 @@ class PendantCommandTest {
     Run s = run("pendant", "--keys", keys.toString(), "--scenario", dir.resolve("x.json").toString());
     assertThat(s.exitCode()).isEqualTo(2);
     assertThat(s.err()).contains("--scenario: no such file");
-    Run t = run("pendant", "--keys", keys.toString(), "--scenario", "scenarios/frame-teaching.json", "--controller",
-        "stand-in");
-    assertThat(t.exitCode()).isEqualTo(2);
-    assertThat(t.err()).contains("--scenario needs the simulation controller");
   }
 
   @Test
-  void programsLoadFromLsFilesAndTheStandInCanBeChosen(@TempDir Path dir) throws Exception {
+  void programsLoadFromLsFiles(@TempDir Path dir) throws Exception {
     Path ls = dir.resolve("HELLO.LS");
     Files.writeString(ls, """
         /PROG  HELLO
@@ -113,15 +112,10 @@ class PendantCommandTest {
         /END
         """);
     Path keys = dir.resolve("k.keys");
-    Files.writeString(keys, "SELECT\nSHOW\nENTER\nSHIFT+FWD\nWAIT 0.1\nDATA\nSHOW\n");
-    for (String controller : new String[] {"sim", "stand-in"}) {
-      Run r = run("pendant", "--program", ls.toString(), "--controller", controller, "--keys", keys.toString());
-      assertThat(r.exitCode()).as(controller).isEqualTo(0);
-      assertThat(r.out()).contains("HELLO").contains("from a file").contains("R[  1:            ]  = {7}");
-    }
-    Run bad = run("pendant", "--controller", "real", "--keys", keys.toString());
-    assertThat(bad.exitCode()).isEqualTo(2);
-    assertThat(bad.err()).contains("--controller: expected sim or stand-in, got 'real'");
+    Files.writeString(keys, "HOLD DEADMAN\nSELECT\nSHOW\nENTER\nHOLD SHIFT\nFWD\nWAIT 0.1\nRELEASE SHIFT\nDATA\nSHOW\n");
+    Run r = run("pendant", "--program", ls.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).isEqualTo(0);
+    assertThat(r.out()).contains("HELLO").contains("from a file").contains("R[  1:            ]  = {7}");
     Path broken = dir.resolve("BROKEN.LS");
     Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  FROB ;\n/END\n");
     Run b = run("pendant", "--program", broken.toString(), "--keys", keys.toString());
@@ -130,10 +124,28 @@ class PendantCommandTest {
   }
 
   @Test
-  void helpSaysWhichControllerItRuns() {
+  void helpSaysWhichControllerItRunsAndHowTheScriptStarts() {
     Run r = run("pendant", "--help");
     assertThat(r.exitCode()).isEqualTo(0);
-    assertThat(r.out()).contains("--keys").contains("--scenario").contains("--program").contains("--controller")
-        .contains("simulation's controller").contains("stand-in");
+    assertThat(r.out()).contains("--keys").contains("--scenario").contains("--program").contains("--mode")
+        .contains("--override").contains("--trace").contains("simulation's controller").contains("cold-started")
+        .doesNotContain("--controller").doesNotContain("stand-in");
+  }
+
+  @Test
+  void modeAndOverrideOptionsSetTheStartAndBadOnesAreExit2(@TempDir Path dir) throws Exception {
+    Path keys = dir.resolve("k.keys");
+    Files.writeString(keys, "SHOW\n");
+    Run cold = run("pendant", "--keys", keys.toString());
+    assertThat(cold.out()).contains("T1   ABORTED JOINT  10%");
+    Run r = run("pendant", "--keys", keys.toString(), "--mode", "auto", "--override", "40");
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(0);
+    assertThat(r.out()).contains("AUTO ABORTED JOINT  40%");
+    Run badMode = run("pendant", "--keys", keys.toString(), "--mode", "T3");
+    assertThat(badMode.exitCode()).isEqualTo(2);
+    assertThat(badMode.err()).contains("--mode: expected T1, T2 or AUTO, got 'T3'");
+    Run badOverride = run("pendant", "--keys", keys.toString(), "--override", "0");
+    assertThat(badOverride.exitCode()).isEqualTo(2);
+    assertThat(badOverride.err()).contains("--override: expected 1..100, got 0");
   }
 }

@@ -121,12 +121,15 @@ class PendantEditPausedProgramTest {
         """);
     store("EDT", lines);
     keys("""
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.2
+        RELEASE SHIFT
         """);
     assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 2, ExecState.PAUSED));
     assertThat(r(1)).isEqualTo(1);
@@ -145,6 +148,7 @@ class PendantEditPausedProgramTest {
     pausedAtLine2("R[1]=1", "R[2]=2", "R[3]=3");
     // the QA reproduction: insert JMP LBL[1] (no such label) as line 3, back to the paused line
     keys("""
+        HOLD DEADMAN
         DOWN
         F2
         5
@@ -154,8 +158,10 @@ class PendantEditPausedProgramTest {
         ENTER
         UP
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
+        RELEASE SHIFT
         """);
     assertThat(lineCount()).isEqualTo(4);
     assertThat(r(2)).isEqualTo(2);
@@ -167,6 +173,7 @@ class PendantEditPausedProgramTest {
   void withTheCursorLeftOnTheInsertedJumpItRunsFromThere() {
     pausedAtLine2("R[1]=1", "R[2]=2", "R[3]=3");
     keys("""
+        HOLD DEADMAN
         DOWN
         F2
         5
@@ -175,8 +182,10 @@ class PendantEditPausedProgramTest {
         TYPE 1
         ENTER
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().alarmLine()).contains("(EDT, 3)").contains("LBL[1]");
     assertThat(r(3)).isZero();
@@ -198,10 +207,13 @@ class PendantEditPausedProgramTest {
     // the operator's cursor stays on the inserted line (an edit is not execution moving)
     assertThat(p.lcd().body().get(0)).startsWith("> {1:}");
     keys("""
+        HOLD DEADMAN
         DOWN *3
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
+        RELEASE SHIFT
         """);
     assertThat(control.status().state()).isEqualTo(ExecState.IDLE);
     assertThat(p.lcd().alarmLine()).isBlank();
@@ -220,9 +232,12 @@ class PendantEditPausedProgramTest {
     assertThat(lineCount()).isEqualTo(3);
     assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 2, ExecState.PAUSED));
     keys("""
+        HOLD DEADMAN
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
+        RELEASE SHIFT
         """);
     assertThat(control.status().state()).isEqualTo(ExecState.IDLE);
     assertThat(new double[] {r(2), r(3), r(4)}).containsExactly(0, 3, 4);
@@ -239,12 +254,15 @@ class PendantEditPausedProgramTest {
         """);
     store("EDT", "CALL SUB", "R[2]=2", "R[3]=3");
     keys("""
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.2
+        RELEASE SHIFT
         """);
     // STEP goes into the callee: paused on SUB line 1, EDT waits for the return
     assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("SUB", 1, ExecState.PAUSED));
@@ -252,9 +270,12 @@ class PendantEditPausedProgramTest {
     store("EDT", "R[6]=6", "CALL SUB", "R[5]=5", "R[2]=2", "R[3]=3");
     assertThat(control.deleteProgram("EDT")).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Refused.class);
     keys("""
+        HOLD DEADMAN
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
+        RELEASE SHIFT
         """);
     assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 5, ExecState.IDLE));
     assertThat(p.lcd().alarmLine()).isBlank();

@@ -40,6 +40,7 @@ class PendantOnSimControllerTest {
 
   private void createWithThreePoints() {
     keys("""
+        HOLD DEADMAN
         SELECT
         F1
         TYPE PICK1
@@ -63,6 +64,7 @@ class PendantOnSimControllerTest {
   @Test
   void aBwdNoticeLeavesThePromptLineWithTheNextCommandButAnAlarmStaysUntilReset() {
     keys("""
+        HOLD DEADMAN
         SELECT
         F1
         TYPE BACK
@@ -75,24 +77,30 @@ class PendantOnSimControllerTest {
         RELEASE SHIFT
         SHIFT+F1
         UP
-        SHIFT+BWD
+        HOLD SHIFT
+        BWD
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().promptLine()).contains("BWD: top of program");
     // the student moves on: SHIFT+FWD runs line 1 and says nothing about BWD
     keys("""
+        HOLD DEADMAN
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 3
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().statusLine()).contains("LINE 2");
     assertThat(p.lcd().promptLine()).doesNotContain("BWD");
-    keys("SHIFT+BWD");
+    keys("HOLD DEADMAN\nSHIFT+BWD");
     assertThat(p.lcd().promptLine()).contains("BWD");
     keys("DOWN");
     assertThat(p.lcd().promptLine()).isBlank();
 
     // an alarm is not a prompt-line message: it stays on its line through other keys until RESET
     keys("""
+        HOLD DEADMAN
         FCTN
         1
         STEP
@@ -102,8 +110,10 @@ class PendantOnSimControllerTest {
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
+        RELEASE SHIFT
         """);
     String alarm = p.lcd().alarmLine();
     assertThat(alarm).contains("LBL[1]");
@@ -145,15 +155,18 @@ class PendantOnSimControllerTest {
     assertThat(body()).contains("L P[2] 200mm/sec CNT50").contains("4:  R[1]=R[1]+1").contains("IF {R[1]>5},JMP LBL[1]");
     Position.Cartesian p3 = (Position.Cartesian) control.program("PICK1").orElseThrow().position(3).orElseThrow().position();
     keys("""
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.2
         """);
     assertThat(p.lcd().statusLine()).contains("RUNNING");
-    keys("WAIT 10");
-    assertThat(p.lcd().statusLine()).contains("LINE 5").contains("IDLE");
+    keys("WAIT 10\nRELEASE SHIFT");
+    // after END: the program's last line, ABORTED, as a controller shows it
+    assertThat(p.lcd().statusLine()).contains("LINE 5").contains("ABORTED");
     assertThat(p.lcd().alarmLine()).isBlank();
     assertThat(control.registers().number(1)).isEqualTo(1.0);
     Position.Cartesian here = control.currentPose(1, 1);
@@ -163,11 +176,14 @@ class PendantOnSimControllerTest {
     // SHIFT+BWD from line 4 backs out of line 3: the robot returns to P[2]
     Position.Cartesian p2 = (Position.Cartesian) control.program("PICK1").orElseThrow().position(2).orElseThrow().position();
     keys("""
+        HOLD DEADMAN
         ITEM
         TYPE 4
         ENTER
-        SHIFT+BWD
+        HOLD SHIFT
+        BWD
         WAIT 10
+        RELEASE SHIFT
         """);
     here = control.currentPose(1, 1);
     assertThat(here.xMm()).isCloseTo(p2.xMm(), within(0.01));
@@ -178,6 +194,7 @@ class PendantOnSimControllerTest {
   @Test
   void teachUserFrameByThreePoints() {
     keys("""
+        HOLD DEADMAN
         MENU
         5
         F1
@@ -218,6 +235,7 @@ class PendantOnSimControllerTest {
     // rotations in TOOL coordinates pivot about the active pointer's tip (UTOOL 1, 100 mm):
     // three approaches of that tip teach UTOOL 2 = the same TCP, with the robot's own FrameTeaching
     keys("""
+        HOLD DEADMAN
         MENU
         5
         DOWN
@@ -296,6 +314,7 @@ class PendantOnSimControllerTest {
     double z0 = control.currentPose(0, 1).zMm();
     String before = body();
     keys("""
+        HOLD DEADMAN
         HOLD SHIFT
         HOLD +X
         WAIT 0.5
@@ -312,6 +331,7 @@ class PendantOnSimControllerTest {
   @Test
   void alarmOnTopLineClearedByReset() {
     keys("""
+        HOLD DEADMAN
         SELECT
         F1
         TYPE BADJMP
@@ -322,8 +342,10 @@ class PendantOnSimControllerTest {
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.1
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().alarmLine()).contains("(BADJMP, 1)").contains("LBL[1]");
     keys("POSN");

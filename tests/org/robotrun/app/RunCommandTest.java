@@ -125,7 +125,7 @@ class RunCommandTest {
     int code = Main.execute("run", "--program", "BAD", "--programs", dir.toString(), "--report", report.toString());
     assertThat(code).isEqualTo(1);
     JsonNode alarm = new ObjectMapper().readTree(report.toFile()).get("alarm");
-    assertThat(alarm.get("code").asText()).isEqualTo("INTP-202");
+    assertThat(alarm.get("code").asText()).isEqualTo("SIMU-001");
     assertThat(alarm.get("line").asInt()).isEqualTo(2);
     assertThat(alarm.get("program").asText()).isEqualTo("BAD");
   }

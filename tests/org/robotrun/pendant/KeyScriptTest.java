@@ -53,9 +53,41 @@ class KeyScriptTest {
   }
 
   @Test
+  void parsesTheSafetyLines() {
+    KeyScript.Parsed r = parse("""
+        TP OFF
+        tp on
+        HOLD DEADMAN
+        RELEASE DEADMAN
+        MODE AUTO
+        mode t2
+        ESTOP
+        ESTOP PANEL
+        RELEASE ESTOP
+        CYCLE START
+        """);
+    assertThat(r).isInstanceOf(KeyScript.Parsed.Ok.class);
+    assertThat(((KeyScript.Parsed.Ok) r).script().steps()).containsExactly(
+        new KeyScript.Step.TpSwitch(1, false),
+        new KeyScript.Step.TpSwitch(2, true),
+        new KeyScript.Step.Press(3, Key.DEADMAN),
+        new KeyScript.Step.Release(4, Key.DEADMAN),
+        new KeyScript.Step.Mode(5, RobotControl.Mode.AUTO),
+        new KeyScript.Step.Mode(6, RobotControl.Mode.T2),
+        new KeyScript.Step.Estop(7, true),
+        new KeyScript.Step.Estop(8, false),
+        new KeyScript.Step.ReleaseEstop(9),
+        new KeyScript.Step.CycleStart(10));
+    assertThat(bad("TP MAYBE")).isEqualTo("t.keys:1: TP needs ON or OFF, got 'MAYBE'");
+    assertThat(bad("MODE T3")).isEqualTo("t.keys:1: MODE needs T1, T2 or AUTO, got 'T3'");
+    assertThat(bad("ESTOP DOOR")).startsWith("t.keys:1: ESTOP takes nothing");
+    assertThat(bad("CYCLE STOP")).isEqualTo("t.keys:1: did you mean CYCLE START? got 'CYCLE STOP'");
+  }
+
+  @Test
   void malformedLinesNameFileAndLine() {
     assertThat(bad("ENTER\nFROB\n")).isEqualTo("t.keys:2: unknown key or command 'FROB' (keys: F1..F5, ENTER, SHIFT+FWD, "
-        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, WAIT, SHOW)");
+        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, WAIT, SHOW)");
     assertThat(bad("WAIT soon")).isEqualTo("t.keys:1: WAIT needs seconds (e.g. WAIT 2.5), got 'soon'");
     assertThat(bad("WAIT -1")).startsWith("t.keys:1: WAIT seconds must be 0..3600");
     assertThat(bad("\n\nTYPE")).isEqualTo("t.keys:3: TYPE needs the text to type");

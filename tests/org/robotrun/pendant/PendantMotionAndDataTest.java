@@ -36,6 +36,7 @@ class PendantMotionAndDataTest {
     double z0 = posnValue(body(p), "WORLD", "Z");
     // 0.2 s at 250 mm/s (100 % override) along world +X
     run(p, """
+        HOLD DEADMAN
         HOLD SHIFT
         HOLD +X
         WAIT 0.2
@@ -49,16 +50,51 @@ class PendantMotionAndDataTest {
   }
 
   @Test
-  void jogKeysNeedShiftAsDeadman() {
+  void jogNeedsTpEnableDeadmanAndShiftAndAShiftTapLatchesNothing() {
     Position.Joint before = control.currentJoints();
+    // SHIFT alone: the DEADMAN is missing
     run(p, """
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        RELEASE SHIFT
+        """);
+    assertThat(control.currentJoints()).isEqualTo(before);
+    assertThat(p.lcd().promptLine()).contains("Hold the DEADMAN");
+    // DEADMAN alone: SHIFT is missing
+    run(p, """
+        HOLD DEADMAN
         HOLD +X/J1
         WAIT 0.5
         RELEASE +X/J1
         """);
     assertThat(control.currentJoints()).isEqualTo(before);
-    assertThat(p.lcd().promptLine()).contains("Hold SHIFT (deadman)");
-    // releasing SHIFT mid-jog stops the robot
+    assertThat(p.lcd().promptLine()).contains("Hold SHIFT");
+    // TP disabled: refused with a message, though DEADMAN and SHIFT are held
+    run(p, """
+        TP OFF
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        RELEASE SHIFT
+        TP ON
+        """);
+    assertThat(control.currentJoints()).isEqualTo(before);
+    assertThat(p.message()).isEqualTo("TP enabled");
+    run(p, """
+        TP OFF
+        HOLD SHIFT
+        HOLD +X/J1
+        """);
+    assertThat(p.lcd().promptLine()).contains("TP disabled");
+    run(p, """
+        RELEASE +X/J1
+        RELEASE SHIFT
+        TP ON
+        """);
+    // all three: the arm moves; releasing SHIFT mid-jog stops it
     run(p, """
         HOLD SHIFT
         HOLD +X/J1
@@ -68,28 +104,54 @@ class PendantMotionAndDataTest {
         RELEASE +X/J1
         """);
     assertThat(control.currentJoints().j1Deg()).isCloseTo(0.2 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
-    // a SHIFT tap latches it: jogging works without holding it
+    assertThat(p.lcd().promptLine()).contains("SHIFT released");
+    // a SHIFT tap latches nothing: jogging without holding it does not move the arm
     run(p, """
         SHIFT
         HOLD -X/J1
         WAIT 0.2
         RELEASE -X/J1
-        SHIFT
         """);
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(0.2 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
+    assertThat(p.shift()).isFalse();
+    // letting the DEADMAN go mid-jog with the TP on: SRVO-003, the arm stops
+    run(p, """
+        HOLD SHIFT
+        HOLD -X/J1
+        WAIT 0.1
+        RELEASE DEADMAN
+        WAIT 0.5
+        RELEASE -X/J1
+        RELEASE SHIFT
+        """);
+    assertThat(control.currentJoints().j1Deg()).isCloseTo(0.1 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
+    assertThat(p.lcd().alarmLine()).contains("SRVO-003");
+    // RESET with the DEADMAN held clears it, and jogging works again
+    run(p, """
+        HOLD DEADMAN
+        RESET
+        HOLD SHIFT
+        HOLD -X/J1
+        WAIT 0.1
+        RELEASE -X/J1
+        """);
+    assertThat(p.lcd().alarmLine()).isBlank();
     assertThat(control.currentJoints().j1Deg()).isCloseTo(0, within(1e-9));
   }
 
   @Test
   void latchedJogRunsUntilClickedAgainAndKeysCombine() {
     run(p, """
+        HOLD DEADMAN
         COORD
-        SHIFT
+        HOLD SHIFT
         CLICK +X
         WAIT 0.2
         """);
     Position.Cartesian a = control.currentPose(0, 0);
     assertThat(a.xMm()).isCloseTo(650, within(1e-6));
     run(p, """
+        HOLD DEADMAN
         CLICK +X
         WAIT 0.2
         """);
@@ -101,13 +163,14 @@ class PendantMotionAndDataTest {
         WAIT 0.2
         RELEASE +X
         RELEASE +Y
-        SHIFT
+        RELEASE SHIFT
         """);
     Position.Cartesian b = control.currentPose(0, 0);
     assertThat(b.xMm()).isCloseTo(700, within(1e-6));
     assertThat(b.yMm()).isCloseTo(50, within(1e-6));
     // a latched axis stops when the deadman goes off
     run(p, """
+        HOLD DEADMAN
         HOLD SHIFT
         CLICK -X
         WAIT 0.2
@@ -115,7 +178,7 @@ class PendantMotionAndDataTest {
         WAIT 0.2
         """);
     assertThat(control.currentPose(0, 0).xMm()).isCloseTo(650, within(1e-6));
-    assertThat(p.lcd().promptLine()).contains("deadman");
+    assertThat(p.lcd().promptLine()).contains("SHIFT released");
   }
 
   @Test
@@ -148,6 +211,7 @@ class PendantMotionAndDataTest {
   @Test
   void teachUserFrameByThreePointsShowsTheResult() {
     run(p, """
+        HOLD DEADMAN
         MENU
         5
         F1
@@ -245,6 +309,7 @@ class PendantMotionAndDataTest {
     control.setFrame(FrameKind.TOOL, 2, tcp);
     control.selectFrame(FrameKind.TOOL, 2);
     run(p, """
+        HOLD DEADMAN
         MENU
         5
         F2
@@ -381,6 +446,7 @@ class PendantMotionAndDataTest {
   @Test
   void alarmOnTheTopLineOfEveryScreenUntilReset() {
     run(p, """
+        HOLD DEADMAN
         SELECT
         F1
         TYPE BADJMP
@@ -391,8 +457,10 @@ class PendantMotionAndDataTest {
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.1
+        RELEASE SHIFT
         """);
     String alarm = p.lcd().alarmLine();
     assertThat(alarm).contains("BADJMP, 1").contains("LBL[1]");
@@ -402,8 +470,11 @@ class PendantMotionAndDataTest {
     assertThat(body(p)).contains("ACTIVE:").contains("History:");
     // SHIFT+FWD is refused while the alarm stands
     run(p, """
+        HOLD DEADMAN
         EDIT
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().promptLine()).contains("RESET");
     run(p, "RESET");
@@ -421,7 +492,11 @@ class PendantMotionAndDataTest {
         ENTER
         """);
     assertThat(control.activeFrame(FrameKind.TOOL)).isEqualTo(3);
-    assertThat(p.lcd().statusLine()).contains("T3");
+    // the controller shows the active frames on the POSITION screen and in the COORD message
+    run(p, "POSN");
+    assertThat(body(p)).contains("Tool: 3");
+    run(p, "COORD");
+    assertThat(p.lcd().promptLine()).contains("Tool 3");
     run(p, """
         SHIFT+COORD
         2

@@ -18,6 +18,7 @@ class PendantProgramTest {
   /** Creates PICK1 and records three points, jogging J1 then J2 between them. */
   private void createWithThreePoints() {
     run(p, """
+        HOLD DEADMAN
         SELECT
         F1
         TYPE PICK1
@@ -79,14 +80,16 @@ class PendantProgramTest {
 
     // run from line 1
     run(p, """
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.1
         """);
     assertThat(p.lcd().statusLine()).contains("RUNNING");
-    run(p, "WAIT 5");
+    run(p, "WAIT 5\nRELEASE SHIFT");
     assertThat(p.lcd().statusLine()).doesNotContain("RUNNING").doesNotContain("PAUSED");
     assertThat(p.lcd().alarmLine()).isBlank();
     assertThat(control.registers().number(1)).isEqualTo(1.0);
@@ -102,19 +105,25 @@ class PendantProgramTest {
   void stepBackwardReturnsToThePreviousPoint() {
     createWithThreePoints();
     run(p, """
-        SHIFT+FWD
+        HOLD DEADMAN
+        HOLD SHIFT
+        FWD
         WAIT 0.1
+        RELEASE SHIFT
         """);
     // cursor follows execution; the program runs all three moves
     run(p, "WAIT 5");
     double j2AtP3 = control.currentJoints().j2Deg();
     assertThat(j2AtP3).isGreaterThan(10);
     run(p, """
+        HOLD DEADMAN
         ITEM
         TYPE 4
         ENTER
-        SHIFT+BWD
+        HOLD SHIFT
+        BWD
         WAIT 5
+        RELEASE SHIFT
         """);
     // backed out of line 3: the robot is at P[2] (J2 = 0) and the cursor is on line 3
     assertThat(control.currentJoints().j2Deg()).isCloseTo(0, within(1e-6));
@@ -126,18 +135,24 @@ class PendantProgramTest {
   void stepModeRunsOneLinePerShiftFwd() {
     createWithThreePoints();
     run(p, """
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 3
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().statusLine()).contains("STEP").contains("PAUSED");
     assertThat(p.lcd().cursorRow().orElseThrow()).contains("2:");
     run(p, """
-        SHIFT+FWD
+        HOLD DEADMAN
+        HOLD SHIFT
+        FWD
         WAIT 3
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
   }
@@ -150,29 +165,35 @@ class PendantProgramTest {
         new Instruction.AssignRegister(org.robotrun.program.Item.of(1), new org.robotrun.program.Expr.IntConst(5)),
         new Instruction.WaitTime(new org.robotrun.program.Expr.RealConst(1.0)))));
     run(p, """
+        HOLD DEADMAN
         SELECT
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.5
         """);
     assertThat(p.lcd().row(2)).startsWith("EDIT SUB");
     assertThat(p.lcd().cursorRow().orElseThrow()).contains("2:").contains("WAIT");
     assertThat(p.lcd().statusLine()).startsWith("SUB").contains("RUNNING");
-    run(p, "WAIT 1");
+    run(p, "WAIT 1\nRELEASE SHIFT");
     assertThat(control.registers().number(2)).isEqualTo(9.0);
-    assertThat(p.lcd().statusLine()).contains("IDLE");
+    // after END the state reads as on a controller
+    assertThat(p.lcd().statusLine()).contains("ABORTED");
   }
 
   @Test
   void aPausedProgramsCursorCanBeMovedAndRunsOnFromThere() {
     createWithThreePoints();
     run(p, """
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
         STEP
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 3
+        RELEASE SHIFT
         ITEM
         TYPE 3
         ENTER
@@ -181,8 +202,11 @@ class PendantProgramTest {
     assertThat(p.lcd().statusLine()).contains("PAUSED");
     assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
     run(p, """
-        SHIFT+FWD
+        HOLD DEADMAN
+        HOLD SHIFT
+        FWD
         WAIT 5
+        RELEASE SHIFT
         """);
     // line 3 ran from the moved cursor: the robot is at P[3] (J1 and J2 jogged 15 deg each)
     assertThat(control.currentJoints().j1Deg()).isCloseTo(15, within(1e-6));
@@ -194,10 +218,13 @@ class PendantProgramTest {
     control.saveProgram(Program.of("HELLO", java.util.List.of(new Instruction.Message("PART READY"),
         new Instruction.Message("DONE"))));
     run(p, """
+        HOLD DEADMAN
         SELECT
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.1
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().promptLine()).startsWith("MESSAGE: DONE");
     run(p, """
@@ -213,11 +240,14 @@ class PendantProgramTest {
   void holdPausesAndShiftFwdResumes() {
     createWithThreePoints();
     run(p, """
+        HOLD DEADMAN
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
         WAIT 0.3
+        RELEASE SHIFT
         HOLD
         """);
     assertThat(p.lcd().statusLine()).contains("PAUSED");
@@ -225,8 +255,11 @@ class PendantProgramTest {
     run(p, "WAIT 1");
     assertThat(control.currentJoints()).isEqualTo(held);
     run(p, """
-        SHIFT+FWD
+        HOLD DEADMAN
+        HOLD SHIFT
+        FWD
         WAIT 5
+        RELEASE SHIFT
         """);
     assertThat(p.lcd().statusLine()).doesNotContain("PAUSED").doesNotContain("RUNNING");
   }
@@ -280,13 +313,16 @@ class PendantProgramTest {
 
     // deleting the running program
     run(p, """
+        HOLD DEADMAN
         F2
         4
         1
         ITEM
         TYPE 1
         ENTER
-        SHIFT+FWD
+        HOLD SHIFT
+        FWD
+        RELEASE SHIFT
         HOLD
         SELECT
         F2

@@ -47,7 +47,7 @@ class InterpreterAlarmTest {
     for (Expr.BinaryOp op : List.of(DIVIDE, DIV, MOD)) {
       Alarm a = alarmOf(prog("MAIN", setR(1, num(1)), setR(2, op(num(5), op, r(3)))));
       assertThat(a.kind()).isEqualTo(AlarmKind.DIVIDE_BY_ZERO);
-      assertThat(a.code()).isEqualTo("INTP-202");
+      assertThat(a.code()).isEqualTo("SIMU-001");
       assertThat(a.program()).isEqualTo("MAIN");
       assertThat(a.line()).isEqualTo(2);
       assertThat(a.message()).contains(op.symbol());
@@ -203,7 +203,7 @@ class InterpreterAlarmTest {
         .isEqualTo(AlarmKind.BAD_VALUE);
     Alarm di = alarmOf(prog("O", setIo(IoKind.DI, 1, on())));
     assertThat(di.kind()).isEqualTo(AlarmKind.WRITE_PROTECTED);
-    assertThat(di.code()).isEqualTo("INTP-211");
+    assertThat(di.code()).isEqualTo("SIMU-004");
   }
 
   @Test
@@ -228,6 +228,6 @@ class InterpreterAlarmTest {
     Alarm a = alarmOf(prog("MAIN", setR(1, num(0)), call("SUB"), end()), prog("SUB", setR(1, num(1)), setR(2, op(num(1), DIV, num(0)))));
     assertThat(a.program()).isEqualTo("SUB");
     assertThat(a.line()).isEqualTo(2);
-    assertThat(a.display()).isEqualTo("INTP-202 (SUB, 2) division by zero in 'DIV'");
+    assertThat(a.display()).isEqualTo("SIMU-001 (SUB, 2) division by zero in 'DIV'");
   }
 }

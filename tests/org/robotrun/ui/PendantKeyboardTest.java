@@ -45,20 +45,26 @@ class PendantKeyboardTest {
   }
 
   @Test
-  void aShiftReleaseWhosePressWentElsewhereDoesNotToggleTheLatch() {
+  void aShiftReleaseWhosePressWentElsewhereDoesNothingAndATapNeverLatches() {
     // The press went to a text field of the window (never forwarded), the release comes here.
     for (int i = 0; i < 3; i++) {
       keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_RELEASE);
     }
     assertThat(pendant.shift()).isFalse();
 
-    tap(GLFW_KEY_LEFT_SHIFT);  // a real tap still latches
+    tap(GLFW_KEY_LEFT_SHIFT);  // SHIFT is held, never latched: a tap leaves it off
+    assertThat(pendant.shift()).isFalse();
+    keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     assertThat(pendant.shift()).isTrue();
+    keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_RELEASE);
+    assertThat(pendant.shift()).isFalse();
   }
 
   @Test
   void withNoEntryOpenLetterKeysAreJogKeysAndCharactersAreIgnored() {
     double j1Before = control.currentJoints().j1Deg();
+    keyboard.onKey(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS);  // DEADMAN
+    assertThat(pendant.deadmanHeld()).isTrue();
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_Q, GLFW_PRESS);
     assertThat(keyboard.onChar('Q')).isFalse();
@@ -71,11 +77,13 @@ class PendantKeyboardTest {
 
   @Test
   void losingTheFocusReleasesAHeldJogKey() {
+    keyboard.onKey(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_Q, GLFW_PRESS);
     pendant.advance(0.2);
     keyboard.releaseAll();
     double j1 = control.currentJoints().j1Deg();
+    assertThat(j1).as("the held jog moved J1 before the focus went").isGreaterThan(0);
     pendant.advance(0.5);
 
     assertThat(control.currentJoints().j1Deg()).isEqualTo(j1);
