@@ -809,21 +809,22 @@ public final class Pendant {
       case RUNNING -> "RUNNING";
       case PAUSED -> "PAUSED";
     };
+    // lamps, most urgent first (the row is 64 characters: the last ones may be cut)
     StringBuilder lamps = new StringBuilder();
+    if (control.emergencyStopped()) {
+      lamps.append(" E-STOP");
+    }
     if (control.stepMode()) {
       lamps.append(" STEP");
     }
     if (!tpEnabled) {
       lamps.append(" TP-OFF");
     }
-    if (deadmanHeld) {
-      lamps.append(" DEADMAN");
-    }
     if (shift()) {
       lamps.append(" SHIFT");
     }
-    if (control.emergencyStopped()) {
-      lamps.append(" E-STOP");
+    if (deadmanHeld) {
+      lamps.append(" DEADMAN");
     }
     return String.format(Locale.ROOT, "%-12s LINE %-4d %-4s %-7s %-5s %3d%%%s",
         prog.isEmpty() ? "(none)" : prog.length() > 12 ? prog.substring(0, 12) : prog, line,

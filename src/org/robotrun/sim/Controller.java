@@ -119,6 +119,10 @@ public final class Controller implements MotionPort {
     double startSec = Double.NaN;
     boolean finished;
     Start.Rejected failure;
+    /** The planner's request, to plan it again from where the arm stopped. */
+    MoveRequest request;
+    /** Stopped at once (servo alarm, E-stop) before it finished: SHIFT+FWD plans it again. */
+    boolean interrupted;
 
     MoveState(String program, int line, boolean fine) {
       this.program = program;
@@ -579,6 +583,9 @@ public final class Controller implements MotionPort {
         interpreter.setCursor(line);
       }
     }
+    if (interpreter.state() == Interpreter.State.PAUSED && forward) {
+      replanInterrupted();
+    }
     runner.resume();
     if (forward) {
       interpreter.forward();
@@ -587,6 +594,32 @@ public final class Controller implements MotionPort {
     }
     String notice = interpreter.notice();
     return new CommandResult.Ok(notice);
+  }
+
+  /**
+   * After a stop at once (servo alarm, E-stop), the move the program waits on is planned again
+   * from where the arm stands to its target, as a controller resumes an interrupted motion;
+   * earlier moves it was blending out of count as done.
+   */
+  private void replanInterrupted() {
+    long last = -1;
+    for (Map.Entry<Long, MoveState> e : moves.entrySet()) {
+      if (e.getValue().interrupted) {
+        last = Math.max(last, e.getKey());
+      }
+    }
+    for (Map.Entry<Long, MoveState> e : moves.entrySet()) {
+      MoveState m = e.getValue();
+      if (!m.interrupted) {
+        continue;
+      }
+      m.interrupted = false;
+      if (e.getKey() == last && runner.idle() && m.request != null) {
+        runner.enqueue(m.request);
+      } else {
+        m.finished = true;
+      }
+    }
   }
 
   /** HOLD: the program pauses, the arm decelerates along its path, jogging stops. */
@@ -686,6 +719,9 @@ public final class Controller implements MotionPort {
   }
 
   private void stopMotion() {
+    for (MoveState m : moves.values()) {
+      m.interrupted = !m.finished && m.failure == null;
+    }
     runner.stopNow();
     dropWhenStopped = false;
     arcHistory.clear();
@@ -719,7 +755,9 @@ public final class Controller implements MotionPort {
           arcHistory.add(m.X_WTarget().translationVector());
         }
         lastTargetW = m.X_WTarget();
-        moves.put(h, new MoveState(request.program(), request.line(), request.fine()));
+        MoveState state = new MoveState(request.program(), request.line(), request.fine());
+        state.request = m.move();
+        moves.put(h, state);
         runner.enqueue(m.move());
         yield new Start.Started(h);
       }

@@ -191,6 +191,10 @@ class ControllerTest {
   void jogNeedsTheDeadmanAndMovesInWorld() {
     Simulation sim = cell();
     Controller c = sim.controllers().get(0);
+    // a controller starts headless, as in AUTO: no jogging until the mode switch turns to T1
+    assertThat(c.mode()).isEqualTo(OperatingMode.AUTO);
+    assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(CommandResult.Refused.class);
+    c.setMode(OperatingMode.T1);
     c.setDeadman(false);
     assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(CommandResult.Refused.class);
     c.setDeadman(true);
