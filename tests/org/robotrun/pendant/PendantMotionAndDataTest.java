@@ -480,7 +480,14 @@ class PendantMotionAndDataTest {
     run(p, "RESET");
     assertThat(p.lcd().alarmLine()).isBlank();
     run(p, "STATUS");
-    assertThat(body(p)).contains("(BADJMP, 1)");
+    assertThat(body(p)).contains("(BADJMP, 1)").contains("INTP-224");
+    // F5 HELP: the detail page of the alarm under the cursor, from the alarm table
+    run(p, "F5");
+    assertThat(body(p)).contains("INTP-224 (BADJMP, 1)").contains("Severity ABORT: the program is aborted")
+        .contains("Cause: JMP LBL[n]").contains("Remedy: Add the LBL[n]");
+    run(p, "PREV");
+    assertThat(body(p)).contains("History:");
+    assertThat(p.screen()).isSameAs(p.alarmScreen);
   }
 
   @Test
