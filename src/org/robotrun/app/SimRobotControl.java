@@ -121,6 +121,26 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
+  public Position.Cartesian jogFrame(int number) {
+    return controller.frames().jogFrame(number);
+  }
+
+  @Override
+  public void setJogFrame(int number, Position.Cartesian value) {
+    controller.frames().setJogFrame(number, value);
+  }
+
+  @Override
+  public int activeJogFrame() {
+    return controller.frames().activeJogNumber();
+  }
+
+  @Override
+  public void selectJogFrame(int number) {
+    controller.frames().selectJogFrame(number);
+  }
+
+  @Override
   public TeachResult teachFrame(FrameKind kind, int number, TeachMethod method, List<Position.Joint> points) {
     if (method.kind() != kind) {
       return new TeachResult.Failed(method.title() + " teaches " + method.kind() + " frames, not " + kind);
@@ -178,6 +198,12 @@ public final class SimRobotControl implements RobotControl {
   public Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched) {
     controller.setCoordSystem(JogFrame.valueOf(coord.name()));
     return result(controller.jogKeyDown(axis, sign, latched ? JogState.Press.LATCHED : JogState.Press.HELD));
+  }
+
+  @Override
+  public Result jogIncrement(CoordSystem coord, int axis, int sign, boolean veryFine) {
+    controller.setCoordSystem(JogFrame.valueOf(coord.name()));
+    return result(controller.jogIncrement(axis, sign, veryFine));
   }
 
   @Override

@@ -4,6 +4,8 @@ package org.robotrun.motion;
 public enum JogFrame {
   /** Each key pair moves one joint. */
   JOINT,
+  /** Translation along / rotation about the active jog frame's axes (JOGFRAME[n]), through the TCP. */
+  JGFRM,
   /** Translation along / rotation about WORLD's axes, through the TCP. */
   WORLD,
   /** Translation along / rotation about the active tool frame's axes, through the TCP. */

@@ -57,7 +57,7 @@ public final class Jogger {
   double fullSpeed(JogFrame frame, int axis) {
     return switch (frame) {
       case JOINT -> JOINT_JOG_FRACTION * limits.jointSpeed(axis);
-      case WORLD, TOOL, USER -> axis < 3 ? LINEAR_JOG_MM_PER_SEC : ROTATION_JOG_RAD_PER_SEC;
+      case WORLD, TOOL, USER, JGFRM -> axis < 3 ? LINEAR_JOG_MM_PER_SEC : ROTATION_JOG_RAD_PER_SEC;
     };
   }
 
@@ -145,6 +145,50 @@ public final class Jogger {
     return Math.max(chain.lower(j), Math.min(chain.upper(j), v));
   }
 
+  /**
+   * Incremental jog: moves {@code q} (in place) by one step of axis {@code axis} (0..5) in
+   * {@code sign} direction: {@code stepMm} along X/Y/Z, {@code stepRad} about them or of a joint.
+   * Refused (joints unchanged) past a joint limit or out of reach.
+   *
+   * @param X_WAxes the frame whose axes USER/JGFRM jog along (WORLD: identity; TOOL uses the TCP)
+   */
+  public JogResult step(double[] q, JogFrame frame, int axis, int sign, double stepMm, double stepRad,
+      Transform X_FT, Transform X_WAxes) {
+    System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
+    if (frame == JogFrame.JOINT) {
+      qTry[axis] += sign * stepRad;
+      if (axis == 1 && model.coupledJ3()) {
+        qTry[2] += sign * stepRad;
+      }
+    } else {
+      Transform X_WT = org.robotrun.robot.ForwardKinematics.flangePoseInWorld(model, q).compose(X_FT);
+      Transform axes = switch (frame) {
+        case WORLD, JOINT -> Transform.IDENTITY;
+        case USER, JGFRM -> X_WAxes;
+        case TOOL -> X_WT;
+      };
+      Vec3 unit = axes.rotate(new Vec3(axis % 3 == 0 ? 1 : 0, axis % 3 == 1 ? 1 : 0, axis % 3 == 2 ? 1 : 0));
+      Transform want;
+      if (axis < 3) {
+        Vec3 p = X_WT.translationVector().plus(unit.times(sign * stepMm));
+        want = X_WT.withTranslation(p.x(), p.y(), p.z());
+      } else {
+        Vec3 p = X_WT.translationVector();
+        want = Rotations.exp(unit.times(sign), stepRad).compose(X_WT.withTranslation(0, 0, 0)).withTranslation(p.x(), p.y(), p.z());
+      }
+      if (!tracker.track(qTry, want, X_FT, 1e-5, 1e-8)) {
+        return new JogResult.Stopped("step out of reach");
+      }
+    }
+    for (int i = 0; i < 6; i++) {
+      if (!(qTry[i] >= chain.lower(i) && qTry[i] <= chain.upper(i))) {
+        return new JogResult.Stopped(String.format("J%d at its limit", i + 1));
+      }
+    }
+    System.arraycopy(qTry, 0, q, 0, RobotModel.DOF);
+    return MOVING;
+  }
+
   private JogResult jogCartesian(double[] q, JogState keys, JogFrame frame, Transform X_FT, Transform X_WU,
       double dtSec) {
     Transform X_WT = org.robotrun.robot.ForwardKinematics.flangePoseInWorld(model, q).compose(X_FT);
@@ -153,7 +197,7 @@ public final class Jogger {
     }
     Transform axes = switch (frame) {
       case WORLD, JOINT -> Transform.IDENTITY;
-      case USER -> X_WU;
+      case USER, JGFRM -> X_WU;
       case TOOL -> X_WTdesired;
     };
     // Near a singularity the joints would have to outrun their limits: jog slower (down to 5% of

@@ -33,6 +33,12 @@ final class FrameScreen implements Screen {
   private final Map<String, Position.Joint[]> recorded = new HashMap<>();
   private final Map<String, String> results = new HashMap<>();
 
+  /** Shows tool or user frames. */
+  void showKind(FrameKind k) {
+    kind = k;
+    detail = false;
+  }
+
   private int number() {
     return cursor[kind.ordinal()] + 1;
   }
@@ -132,8 +138,7 @@ final class FrameScreen implements Screen {
     switch (k) {
       case UP -> cursor[t] = Math.max(0, cursor[t] - 1);
       case DOWN -> cursor[t] = Math.min(FRAMES - 1, cursor[t] + 1);
-      case F1 -> p.choose("Frame type", List.of("Tool Frame", "User Frame"),
-          i -> kind = i == 0 ? FrameKind.TOOL : FrameKind.USER);
+      case F1 -> p.frameTypeMenu();
       case F2, ENTER -> {
         detail = true;
         row = 0;

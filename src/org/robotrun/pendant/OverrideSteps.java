@@ -1,55 +1,61 @@
 package org.robotrun.pendant;
 
+import java.util.ArrayList;
+import java.util.List;
+
 /**
- * Speed override steps as a controller takes them: fine steps at the bottom (1, 5, 10 %), 5 %
- * steps above; with SHIFT the big steps 5, 50, 100 %.
+ * Speed override steps as an R-30iB takes them with the +% / -% keys: VFINE, FINE, 1, 5, 10 %,
+ * then 5 % steps to 100 %; with SHIFT held, VFINE, FINE, 1, 5, 50, 100 %. VFINE and FINE are
+ * not speeds but incremental jogging (one small step per jog key press; programs run at 1 %).
+ * Levels are ints: {@link #VFINE}, {@link #FINE}, or the percentage.
  */
 final class OverrideSteps {
   private OverrideSteps() {}
 
-  private static final int[] FINE = {1, 5, 10};
-  private static final int[] BIG = {5, 50, 100};
+  /** Level of VFINE (incremental jog, very fine steps). */
+  static final int VFINE = -2;
+  /** Level of FINE (incremental jog, fine steps). */
+  static final int FINE = -1;
 
-  /** The next override from {@code currentPct} up or down. */
-  static int next(int currentPct, boolean up, boolean shift) {
-    int[] steps = shift ? BIG : null;
-    if (steps != null) {
-      return pick(steps, currentPct, up);
+  private static final List<Integer> PLAIN = plain();
+  private static final List<Integer> SHIFTED = List.of(VFINE, FINE, 1, 5, 50, 100);
+
+  private static List<Integer> plain() {
+    List<Integer> l = new ArrayList<>(List.of(VFINE, FINE, 1));
+    for (int pct = 5; pct <= 100; pct += 5) {
+      l.add(pct);
     }
-    if (up) {
-      for (int s : FINE) {
-        if (s > currentPct) {
-          return s;
-        }
-      }
-      return Math.min(100, (currentPct / 5 + 1) * 5);
-    }
-    if (currentPct > 10) {
-      return Math.max(10, ((currentPct - 1) / 5) * 5);
-    }
-    int best = FINE[0];
-    for (int s : FINE) {
-      if (s < currentPct) {
-        best = s;
-      }
-    }
-    return best;
+    return List.copyOf(l);
   }
 
-  private static int pick(int[] steps, int current, boolean up) {
+  /**
+   * The next level from {@code current} (a level: VFINE, FINE or 1..100) up or down; an override
+   * between steps (a program's OVERRIDE=37) goes to the next step in that direction.
+   */
+  static int next(int current, boolean up, boolean shift) {
+    List<Integer> steps = shift ? SHIFTED : PLAIN;
     if (up) {
       for (int s : steps) {
         if (s > current) {
           return s;
         }
       }
-      return steps[steps.length - 1];
+      return steps.get(steps.size() - 1);
     }
-    for (int i = steps.length - 1; i >= 0; i--) {
-      if (steps[i] < current) {
-        return steps[i];
+    for (int i = steps.size() - 1; i >= 0; i--) {
+      if (steps.get(i) < current) {
+        return steps.get(i);
       }
     }
-    return 1;
+    return steps.get(0);
+  }
+
+  /** The level as the status line shows it: "VFINE", "FINE" or "10%". */
+  static String display(int level) {
+    return switch (level) {
+      case VFINE -> "VFINE";
+      case FINE -> "FINE";
+      default -> level + "%";
+    };
   }
 }

@@ -46,6 +46,7 @@ public final class Pendant {
   final IoScreen ioScreen = new IoScreen();
   final PosnScreen posnScreen = new PosnScreen();
   final FrameScreen frameScreen = new FrameScreen();
+  final JogFrameScreen jogFrameScreen = new JogFrameScreen();
   final AlarmScreen alarmScreen = new AlarmScreen();
   final UserScreen userScreen = new UserScreen();
 
@@ -60,6 +61,8 @@ public final class Pendant {
   /** TP ENABLE: a cold-started controller's pendant is picked up switched on. */
   private boolean tpEnabled = true;
   private CoordSystem coord = CoordSystem.JOINT;
+  /** {@link OverrideSteps#VFINE} or {@link OverrideSteps#FINE} while the override is on one of them, else 0. */
+  private int incremental;
   /** Whether a jog key went down since the last stop (for the deadman message). */
   private boolean jogging;
 
@@ -286,10 +289,30 @@ public final class Pendant {
     jogDown(k, false);
   }
 
+  /**
+   * The override level: {@link OverrideSteps#VFINE}, {@link OverrideSteps#FINE} or the
+   * percentage (a program's OVERRIDE or another pendant key leaves VFINE/FINE).
+   */
+  int overrideLevel() {
+    if (incremental != 0 && control.overridePct() != 1) {
+      incremental = 0;
+    }
+    return incremental != 0 ? incremental : control.overridePct();
+  }
+
   private void jogDown(Key k, boolean latched) {
     Optional<String> refused = motionRefusal("jog");
     if (refused.isPresent()) {
       message = refused.get();
+      return;
+    }
+    if (overrideLevel() < 0) {
+      // VFINE / FINE: one increment per key press, nothing while the key stays down
+      Result r = control.jogIncrement(coord, k.jogAxis(), k.jogSign(), overrideLevel() == OverrideSteps.VFINE);
+      message = switch (r) {
+        case Result.Ok ok -> ok.message();
+        case Result.Refused no -> no.reason();
+      };
       return;
     }
     Result r = control.jogKeyDown(coord, k.jogAxis(), k.jogSign(), latched);
@@ -364,8 +387,8 @@ public final class Pendant {
           coord = CoordSystem.values()[(coord.ordinal() + 1) % CoordSystem.values().length];
           control.jogStop();
           jogging = false;
-          message = "Jog coordinates: " + coord + "  (Tool " + control.activeFrame(FrameKind.TOOL) + ", User "
-              + control.activeFrame(FrameKind.USER) + ")";
+          message = "Jog coordinates: " + coord + "  (Tool " + control.activeFrame(FrameKind.TOOL) + ", Jog "
+              + control.activeJogFrame() + ", User " + control.activeFrame(FrameKind.USER) + ")";
         }
       }
       case STEP -> {
@@ -387,8 +410,12 @@ public final class Pendant {
         message = had ? "Alarm reset" : "RESET";
       }
       case OVERRIDE_UP, OVERRIDE_DOWN -> {
-        control.setOverridePct(OverrideSteps.next(control.overridePct(), k == Key.OVERRIDE_UP, shift()));
-        message = "Override " + control.overridePct() + "%";
+        int level = OverrideSteps.next(overrideLevel(), k == Key.OVERRIDE_UP, shift());
+        // VFINE and FINE jog in increments; programs run at 1 % meanwhile
+        incremental = level < 0 ? level : 0;
+        control.setOverridePct(Math.max(1, level));
+        message = "Override " + OverrideSteps.display(level)
+            + (level < 0 ? ": incremental jog, one step per jog key press" : "");
       }
       case TOOL1, TOOL2 -> toggleHand(k == Key.TOOL1 ? 1 : 2);
       default -> screen.key(this, k);
@@ -492,6 +519,18 @@ public final class Pendant {
           message = "Program aborted";
         }
         default -> frameSelectMenu();
+      }
+    });
+  }
+
+  /** SETUP Frames [TYPE]: tool, user or jog frames. */
+  void frameTypeMenu() {
+    choose("Frame type", List.of("Tool Frame", "User Frame", "Jog Frame"), i -> {
+      if (i == 2) {
+        screen = jogFrameScreen;
+      } else {
+        frameScreen.showKind(i == 0 ? FrameKind.TOOL : FrameKind.USER);
+        screen = frameScreen;
       }
     });
   }
@@ -826,9 +865,9 @@ public final class Pendant {
     if (deadmanHeld) {
       lamps.append(" DEADMAN");
     }
-    return String.format(Locale.ROOT, "%-12s LINE %-4d %-4s %-7s %-5s %3d%%%s",
+    return String.format(Locale.ROOT, "%-12s LINE %-4d %-4s %-7s %-5s %4s%s",
         prog.isEmpty() ? "(none)" : prog.length() > 12 ? prog.substring(0, 12) : prog, line,
-        control.mode(), state, coord, control.overridePct(), lamps);
+        control.mode(), state, coord, OverrideSteps.display(overrideLevel()), lamps);
   }
 
   private static List<String> choiceBody(Modal.Choice c) {

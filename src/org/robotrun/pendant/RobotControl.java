@@ -76,6 +76,18 @@ public interface RobotControl {
    */
   TeachResult teachFrame(FrameKind kind, int number, TeachMethod method, List<Position.Joint> points);
 
+  /** JOGFRAME[n], n = 1..5, in WORLD (mm, deg): the axes JGFRM jogs along. */
+  Position.Cartesian jogFrame(int number);
+
+  /** Sets JOGFRAME[n] (direct entry). */
+  void setJogFrame(int number, Position.Cartesian value);
+
+  /** The jog frame JGFRM uses, 1..5. */
+  int activeJogFrame();
+
+  /** Selects the jog frame JGFRM uses, 1..5. */
+  void selectJogFrame(int number);
+
   /** Frame teaching methods (direct entry needs no points). */
   enum TeachMethod {
     TOOL_THREE_POINT(FrameKind.TOOL, "Three Point", List.of("Approach point 1", "Approach point 2", "Approach point 3")),
@@ -175,7 +187,7 @@ public interface RobotControl {
 
   /** Jog coordinate systems, in the order COORD cycles them. */
   enum CoordSystem {
-    JOINT, WORLD, TOOL, USER
+    JOINT, JGFRM, WORLD, TOOL, USER
   }
 
   /**
@@ -185,6 +197,13 @@ public interface RobotControl {
    * only sends this with the deadman (SHIFT) on.
    */
   Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched);
+
+  /**
+   * Incremental jog (override VFINE or FINE): one step of axis 1..6 by {@code sign} in
+   * {@code coord}, at once. Step sizes as an R-30iB documents them: FINE about 0.023 mm
+   * (0.001 deg for joints and rotations), VFINE about 0.002 mm (0.0001 deg).
+   */
+  Result jogIncrement(CoordSystem coord, int axis, int sign, boolean veryFine);
 
   /** A held jog key comes up (latched axes go on). */
   void jogKeyUp(int axis, int sign);

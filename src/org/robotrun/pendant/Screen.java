@@ -8,7 +8,7 @@ import java.util.List;
  * control) and hands the rest here. Screens keep their own cursor between visits.
  */
 public sealed interface Screen
-    permits SelectScreen, EditScreen, PositionScreen, DataScreen, IoScreen, PosnScreen, FrameScreen, AlarmScreen,
+    permits SelectScreen, EditScreen, PositionScreen, DataScreen, IoScreen, PosnScreen, FrameScreen, JogFrameScreen, AlarmScreen,
         UserScreen {
 
   /** The title row. */

@@ -207,7 +207,7 @@ public final class Controller implements MotionPort {
       }
       double[] q = runner.joints();
       double[] q0 = q.clone();
-      JogResult r = jogger.tick(q, jogKeys, coord, overridePct / 100.0, frames.activeTool(), frames.activeUser(), dtSec);
+      JogResult r = jogger.tick(q, jogKeys, coord, overridePct / 100.0, frames.activeTool(), jogAxes(), dtSec);
       capJogStep(q0, q, dtSec);
       switch (r) {
         case JogResult.Moving m -> runner.setJoints(q);
@@ -430,6 +430,57 @@ public final class Controller implements MotionPort {
     jogMessage = "";
     jogKeys.keyDown(axis - 1, sign, press);
     return CommandResult.ok();
+  }
+
+  /** The frame USER and JGFRM jog along: the active user frame or the active jog frame. */
+  private Transform jogAxes() {
+    return coord == JogFrame.JGFRM ? frames.activeJogFrame() : frames.activeUser();
+  }
+
+  /** Incremental jog, FINE: mm per key press (X, Y, Z). */
+  public static final double FINE_STEP_MM = 0.023;
+  /** Incremental jog, FINE: degrees per key press (joints, rotations). */
+  public static final double FINE_STEP_DEG = 0.001;
+  /** Incremental jog, VFINE: mm per key press. */
+  public static final double VFINE_STEP_MM = 0.002;
+  /** Incremental jog, VFINE: degrees per key press. */
+  public static final double VFINE_STEP_DEG = 0.0001;
+
+  /**
+   * Incremental jog (override FINE or VFINE): one step of axis 1..6 in the current jog
+   * coordinates, at once: FINE {@value #FINE_STEP_MM} mm / {@value #FINE_STEP_DEG} deg, VFINE
+   * {@value #VFINE_STEP_MM} mm / {@value #VFINE_STEP_DEG} deg (the R-30iB's approximate sizes).
+   */
+  public CommandResult jogIncrement(int axis, int sign, boolean veryFine) {
+    if (!activeAlarms.isEmpty()) {
+      return CommandResult.refused("alarm active: RESET first");
+    }
+    if (!deadman) {
+      return CommandResult.refused("hold SHIFT (deadman) to jog");
+    }
+    if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
+      return CommandResult.refused("cannot jog while the robot moves under a program");
+    }
+    if (mode == OperatingMode.AUTO) {
+      return CommandResult.refused("AUTO mode: the pendant cannot jog (turn the mode switch to T1)");
+    }
+    if (estopped()) {
+      return CommandResult.refused("E-stop pressed: release it and RESET");
+    }
+    jogger.stop(jogKeys);
+    double mm = veryFine ? VFINE_STEP_MM : FINE_STEP_MM;
+    double deg = veryFine ? VFINE_STEP_DEG : FINE_STEP_DEG;
+    double[] q = runner.joints();
+    JogResult r = jogger.step(q, coord, axis - 1, sign, mm, Math.toRadians(deg), frames.activeTool(), jogAxes());
+    return switch (r) {
+      case JogResult.Stopped s -> CommandResult.refused(s.message());
+      default -> {
+        runner.setJoints(q);
+        boolean linear = coord != JogFrame.JOINT && axis <= 3;
+        yield new CommandResult.Ok(String.format(java.util.Locale.ROOT, "%s step: %s%s", veryFine ? "VFINE" : "FINE",
+            linear ? mm : deg, linear ? " mm" : " deg"));
+      }
+    };
   }
 
   /** A jog key comes up (a held axis stops; latched axes go on). */

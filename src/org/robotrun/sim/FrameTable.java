@@ -93,6 +93,52 @@ public final class FrameTable {
     return users[activeUser];
   }
 
+  // ---- jog frames (JOGFRAME[1..5], used only by the JGFRM jog coordinates) --------------------
+
+  /** Jog frames a controller has: JOGFRAME[1..5]. */
+  public static final int JOG_COUNT = 5;
+  private final Transform[] jogFrames = filled(JOG_COUNT + 1);
+  private int activeJog = 1;
+
+  private static Transform[] filled(int n) {
+    Transform[] t = new Transform[n];
+    Arrays.fill(t, Transform.IDENTITY);
+    return t;
+  }
+
+  private static void checkJog(int number) {
+    if (number < 1 || number > JOG_COUNT) {
+      throw new IllegalArgumentException("jog frame number must be 1.." + JOG_COUNT + ", got " + number);
+    }
+  }
+
+  /** JOGFRAME[n] in WORLD ({@code X_WJ}), n = 1..5; WORLD until set. */
+  public Position.Cartesian jogFrame(int number) {
+    checkJog(number);
+    return Position.Cartesian.of(Xyzwpr.fromTransform(jogFrames[number]), Config.DEFAULT);
+  }
+
+  /** Sets JOGFRAME[n] (mm, deg). */
+  public void setJogFrame(int number, Position.Cartesian value) {
+    checkJog(number);
+    jogFrames[number] = value.toXyzwpr().toTransform();
+  }
+
+  /** The jog frame number JGFRM jogs in, 1..5. */
+  public int activeJogNumber() {
+    return activeJog;
+  }
+
+  public void selectJogFrame(int number) {
+    checkJog(number);
+    activeJog = number;
+  }
+
+  /** The active jog frame's {@code X_WJ}. */
+  public Transform activeJogFrame() {
+    return jogFrames[activeJog];
+  }
+
   private static void check(int number, int lowest) {
     if (number < lowest || number > COUNT) {
       throw new IllegalArgumentException("frame number must be " + lowest + ".." + COUNT + ", got " + number);

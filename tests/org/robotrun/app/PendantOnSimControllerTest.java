@@ -205,7 +205,7 @@ class PendantOnSimControllerTest {
         1
         DOWN
         SHIFT+F5
-        COORD
+        COORD *2
         HOLD SHIFT
         HOLD +X
         WAIT 0.4
@@ -244,8 +244,7 @@ class PendantOnSimControllerTest {
         1
         DOWN
         SHIFT+F5
-        COORD
-        COORD
+        COORD *3
         HOLD SHIFT
         HOLD +XR
         WAIT 1.5
@@ -308,7 +307,7 @@ class PendantOnSimControllerTest {
   void jogInWorldChangesPosn() {
     keys("""
         POSN
-        COORD
+        COORD *2
         """);
     double x0 = control.currentPose(0, 1).xMm();
     double z0 = control.currentPose(0, 1).zMm();

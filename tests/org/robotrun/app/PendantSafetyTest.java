@@ -265,4 +265,80 @@ class PendantSafetyTest {
     assertThat(shows[1]).contains("T1   ABORTED JOINT  10%");
     assertThat(shows[2]).contains(" 15%");
   }
+
+  @Test
+  void vfineAndFineJogOneStepPerKeyPressOfTheDocumentedSize(@TempDir Path dir) throws Exception {
+    Outcome o = pendant(dir, """
+        -% *4
+        SHOW
+        COORD *2
+        HOLD DEADMAN
+        HOLD SHIFT
+        +X
+        +X
+        +X
+        WAIT 0.1
+        HOLD +X
+        WAIT 1
+        RELEASE +X
+        WAIT 0.1
+        +%
+        SHOW
+        -X
+        WAIT 0.1
+        RELEASE SHIFT
+        COORD *3
+        HOLD SHIFT
+        J1+
+        WAIT 0.1
+        """);
+    String[] shows = o.out().split("-- SHOW");
+    assertThat(shows[1]).contains("VFINE");
+    assertThat(shows[2]).contains(" FINE");
+    double[] first = o.rows().get(0);
+    // VFINE: four presses (one held for a second) = four steps of 0.002 mm along WORLD X
+    double[] afterVfine = o.rows().get(o.rowAt(1.2));
+    assertThat(afterVfine[TCP_X] - first[TCP_X]).isCloseTo(4 * 0.002, within(2e-4));
+    assertThat(afterVfine[TCP_X + 1] - first[TCP_X + 1]).isCloseTo(0, within(2e-4));
+    // FINE: one press back = 0.023 mm
+    double[] afterFine = o.rows().get(o.rowAt(1.3));
+    assertThat(afterVfine[TCP_X] - afterFine[TCP_X]).isCloseTo(0.023, within(2e-4));
+    // FINE in JOINT: 0.001 deg of J1
+    double[] last = o.rows().get(o.rows().size() - 1);
+    assertThat(last[1] - first[1]).isCloseTo(0.001, within(1e-6));
+  }
+
+  @Test
+  void jgfrmJogsAlongTheActiveJogFrameSetInSetupFrames(@TempDir Path dir) throws Exception {
+    Outcome o = pendant(dir, """
+        MENU
+        5
+        F1
+        3
+        F2
+        DOWN *5
+        TYPE 90
+        ENTER
+        SHOW
+        PREV
+        COORD
+        HOLD DEADMAN
+        HOLD SHIFT
+        HOLD +X
+        WAIT 0.5
+        RELEASE +X
+        WAIT 0.2
+        RELEASE SHIFT
+        SHOW
+        """);
+    String[] shows = o.out().split("-- SHOW");
+    assertThat(shows[1]).contains("Jog Frame 1").contains("R {    90.000}");
+    assertThat(shows[2]).contains("JGFRM");
+    double[] first = o.rows().get(0);
+    double[] last = o.rows().get(o.rows().size() - 1);
+    // JOGFRAME[1] is WORLD turned 90 deg about Z: its +X is WORLD +Y
+    double dy = last[TCP_X + 1] - first[TCP_X + 1];
+    assertThat(dy).isGreaterThan(5);
+    assertThat(Math.abs(last[TCP_X] - first[TCP_X])).isLessThan(0.01 * dy);
+  }
 }

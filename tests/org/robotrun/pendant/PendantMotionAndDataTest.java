@@ -29,7 +29,7 @@ class PendantMotionAndDataTest {
   void jogInWorldMovesTheTcpAndPosnShowsIt() {
     run(p, """
         POSN
-        COORD
+        COORD *2
         """);
     assertThat(p.lcd().statusLine()).contains("WORLD");
     double x0 = posnValue(body(p), "WORLD", "X");
@@ -143,7 +143,7 @@ class PendantMotionAndDataTest {
   void latchedJogRunsUntilClickedAgainAndKeysCombine() {
     run(p, """
         HOLD DEADMAN
-        COORD
+        COORD *2
         HOLD SHIFT
         CLICK +X
         WAIT 0.2
@@ -184,7 +184,13 @@ class PendantMotionAndDataTest {
   @Test
   void overrideStepsFineAtTheBottomAndBigWithShift() {
     run(p, "-% *30");
+    // VFINE at the bottom: programs run at 1 %, jogging goes in increments
     assertThat(control.overridePct()).isEqualTo(1);
+    assertThat(p.lcd().statusLine()).contains("VFINE");
+    run(p, "+%");
+    assertThat(p.lcd().statusLine()).contains(" FINE");
+    run(p, "+%");
+    assertThat(p.lcd().statusLine()).contains("  1%");
     run(p, "+%");
     assertThat(control.overridePct()).isEqualTo(5);
     run(p, "+% *2");
@@ -199,13 +205,13 @@ class PendantMotionAndDataTest {
   }
 
   @Test
-  void coordCyclesJointWorldToolUser() {
+  void coordCyclesJointJgfrmWorldToolUser() {
     StringBuilder seen = new StringBuilder();
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < 5; i++) {
       run(p, "COORD");
       seen.append(p.coord()).append(' ');
     }
-    assertThat(seen.toString().trim()).isEqualTo("WORLD TOOL USER JOINT");
+    assertThat(seen.toString().trim()).isEqualTo("JGFRM WORLD TOOL USER JOINT");
   }
 
   @Test
@@ -221,7 +227,7 @@ class PendantMotionAndDataTest {
         1
         DOWN
         SHIFT+F5
-        COORD
+        COORD *2
         HOLD SHIFT
         HOLD +X
         WAIT 0.4
@@ -315,8 +321,7 @@ class PendantMotionAndDataTest {
         F2
         DOWN
         SHIFT+F5
-        COORD
-        COORD
+        COORD *3
         HOLD SHIFT
         HOLD +XR/J4
         WAIT 1.0

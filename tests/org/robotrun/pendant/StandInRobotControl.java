@@ -288,6 +288,11 @@ public final class StandInRobotControl implements RobotControl {
   }
 
   @Override
+  public Result jogIncrement(CoordSystem coord, int axis, int sign, boolean veryFine) {
+    return Result.refused("incremental jog needs the simulation controller");
+  }
+
+  @Override
   public void jogKeyUp(int axis, int sign) {
     if (!jogLatched[axis] && jogDirection[axis] == sign) {
       jogDirection[axis] = 0;
@@ -331,6 +336,7 @@ public final class StandInRobotControl implements RobotControl {
         case WORLD, JOINT -> Transform.IDENTITY;
         case TOOL -> X_WT;
         case USER -> userFrame(activeFrame(FrameKind.USER));
+        case JGFRM -> jogFrames[activeJog].toXyzwpr().toTransform();
       };
       Vec3 axisW = X_WJ.axis((jogAxis - 1) % 3);
       Transform X_WT2;
@@ -480,6 +486,30 @@ public final class StandInRobotControl implements RobotControl {
   @Override
   public boolean emergencyStopped() {
     return estop;
+  }
+
+  private final Position.Cartesian[] jogFrames = java.util.Collections.nCopies(6, Position.Cartesian.ZERO)
+      .toArray(Position.Cartesian[]::new);
+  private int activeJog = 1;
+
+  @Override
+  public Position.Cartesian jogFrame(int number) {
+    return jogFrames[number];
+  }
+
+  @Override
+  public void setJogFrame(int number, Position.Cartesian value) {
+    jogFrames[number] = value;
+  }
+
+  @Override
+  public int activeJogFrame() {
+    return activeJog;
+  }
+
+  @Override
+  public void selectJogFrame(int number) {
+    activeJog = number;
   }
 
   @Override
