@@ -20,6 +20,7 @@ import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
 import org.robotrun.ui.CellPanel;
 import org.robotrun.ui.PendantKeyboard;
+import org.robotrun.ui.OperatorPanel;
 import org.robotrun.ui.PendantPanel;
 import org.robotrun.ui.RobotStatusPanel;
 import org.robotrun.ui.SimulatorWindow;
@@ -74,6 +75,7 @@ public final class GuiCommand implements Callable<Integer> {
     programs.forEach(control::saveProgram);
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);
+    OperatorPanel operatorPanel = new OperatorPanel(pendant);
     CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
     try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height)) {
@@ -101,6 +103,7 @@ public final class GuiCommand implements Callable<Integer> {
             double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
             RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
             pendantPanel.draw(fw, fh);
+            operatorPanel.draw(fw, fh);
             cellPanel.draw();
           });
     } catch (GlUnavailableException e) {

@@ -14,23 +14,26 @@ import org.robotrun.pendant.Pendant;
 
 /**
  * Draws the teach pendant: its LCD (text from the pendant state machine) and its keys as
- * buttons. It only forwards input: a click is a key press and release; jog keys clicked on
- * screen latch (they stay down until clicked again, the other key of the pair switches
- * direction), SHIFT clicked on screen toggles.
+ * buttons. It only forwards input: a click is a key press and release; a jog key or SHIFT is
+ * down while the mouse holds it (never latched), so SHIFT held on the keyboard and a jog key
+ * held with the mouse jog together. TP ENABLE, DEADMAN and the E-stop are switches
+ * ({@link SafetySwitches}).
  */
 public final class PendantPanel {
   private static final float LCD_BG_R = 0.80f, LCD_BG_G = 0.86f, LCD_BG_B = 0.78f;
 
   private final Pendant pendant;
+  private final SafetySwitches switches;
   private final ImString typed = new ImString(128);
-  /** Jog keys latched by the mouse. */
+  /** Jog keys the mouse holds down. */
   private final Set<Key> latched = EnumSet.noneOf(Key.class);
 
   public PendantPanel(Pendant pendant) {
     this.pendant = pendant;
+    this.switches = new SafetySwitches(pendant);
   }
 
-  /** Releases every latched jog key (the window lost focus, or the panel closes). */
+  /** Releases every jog key the mouse holds (the window lost focus, or the panel closes). */
   public void releaseLatched() {
     for (Key k : latched) {
       pendant.release(k);
@@ -42,6 +45,7 @@ public final class PendantPanel {
     ImGui.setNextWindowPos(framebufferWidth - 560, 10, ImGuiCond.FirstUseEver);
     ImGui.setNextWindowSize(550, Math.min(framebufferHeight - 20, 780), ImGuiCond.FirstUseEver);
     if (ImGui.begin("Teach pendant", ImGuiWindowFlags.NoCollapse)) {
+      switches.draw();
       drawLcd();
       drawFunctionKeys();
       ImGui.separator();
@@ -134,7 +138,7 @@ public final class PendantPanel {
 
     ImGui.sameLine(0, 18);
     ImGui.beginGroup();
-    ImGui.textDisabled("Jog (with SHIFT)");
+    ImGui.textDisabled("Jog (hold: DEADMAN + SHIFT)");
     for (int axis = 1; axis <= 6; axis++) {
       jogKey(Key.jog(axis, -1), bw);
       ImGui.sameLine();
@@ -149,45 +153,44 @@ public final class PendantPanel {
     }
   }
 
+  private boolean shiftByMouse;
+
+  /** SHIFT is down while the mouse holds the button. */
   private void shiftKey(float width) {
     boolean on = pendant.shift();
     if (on) {
       ImGui.pushStyleColor(ImGuiCol.Button, 0.85f, 0.55f, 0.1f, 1f);
     }
-    if (ImGui.button((on ? "SHIFT (on)" : "SHIFT") + "##SHIFT", width, 0)) {
-      // A press and release with nothing between toggles the pendant's SHIFT latch.
+    ImGui.button((on ? "SHIFT (held)" : "SHIFT") + "##SHIFT", width, 0);
+    boolean active = ImGui.isItemActive();
+    if (active && !shiftByMouse) {
       pendant.press(Key.SHIFT);
+    } else if (!active && shiftByMouse) {
       pendant.release(Key.SHIFT);
-      if (!pendant.shift()) {
-        releaseLatched();
-      }
     }
+    shiftByMouse = active;
     if (on) {
       ImGui.popStyleColor();
     }
   }
 
+  /** A jog key is down while the mouse holds it (SHIFT and the DEADMAN held too: keyboard, switch). */
   private void jogKey(Key k, float width) {
     boolean down = latched.contains(k);
     if (down) {
       ImGui.pushStyleColor(ImGuiCol.Button, 0.2f, 0.6f, 0.25f, 1f);
     }
-    if (ImGui.button(k.label() + "##" + k.name(), width, 0)) {
-      if (down) {
-        pendant.release(k);
-        latched.remove(k);
-      } else {
-        // The other key of the pair switches direction.
-        Key other = Key.jog(k.jogAxis(), -k.jogSign());
-        if (latched.remove(other)) {
-          pendant.release(other);
-        }
-        pendant.press(k);
-        latched.add(k);
-      }
-    }
+    ImGui.button(k.label() + "##" + k.name(), width, 0);
+    boolean active = ImGui.isItemActive();
     if (down) {
       ImGui.popStyleColor();
+    }
+    if (active && !down) {
+      pendant.press(k);
+      latched.add(k);
+    } else if (!active && down) {
+      pendant.release(k);
+      latched.remove(k);
     }
   }
 }
