@@ -14,6 +14,7 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.program.SimulatorEffects;
 import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
@@ -90,7 +91,7 @@ public final class CheckCommand implements Callable<Integer> {
 
     boolean errors = false;
     for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known))) {
-      for (Diagnostic d : r.diagnostics()) {
+      for (Diagnostic d : withSimulatorWarnings(r)) {
         errors |= d.isError();
         if (d.isError() || !quiet) {
           out.println(d);
@@ -103,6 +104,23 @@ public final class CheckCommand implements Callable<Integer> {
       return Main.EXIT_BAD_INPUT;
     }
     return errors ? Main.EXIT_FAILED : Main.EXIT_OK;
+  }
+
+  /**
+   * The file's diagnostics plus a warning for each line the simulator runs without effect
+   * (PAYLOAD, Wjnt: {@link SimulatorEffects}), in line order.
+   */
+  static List<Diagnostic> withSimulatorWarnings(LsReadResult r) {
+    List<Diagnostic> all = new ArrayList<>(r.diagnostics());
+    if (r.program() != null) {
+      List<org.robotrun.program.Instruction> lines = r.program().lines();
+      for (int i = 0; i < lines.size() && i < r.sourceLines().size(); i++) {
+        int line = r.sourceLines().get(i);
+        SimulatorEffects.noEffect(lines.get(i)).ifPresent(w -> all.add(Diagnostic.warning(r.file(), line, w)));
+      }
+    }
+    all.sort(java.util.Comparator.comparingInt(Diagnostic::line));
+    return all;
   }
 
   /** The regular files of {@code dir} named *.LS (any case), sorted by name. */

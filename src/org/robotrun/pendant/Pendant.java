@@ -729,7 +729,26 @@ public final class Pendant {
       stack.removeLast();
     }
     saveKeepingCursor(after);
+    warnNoEffect(before.get(), after);
     return true;
+  }
+
+  private void warnNoEffect(Program before, Program after) {
+    noEffectAdded(before, after).ifPresent(w -> message = "Warning: " + w);
+  }
+
+  /** The warning for a line {@code after} adds that the simulator runs without effect (PAYLOAD, Wjnt). */
+  static Optional<String> noEffectAdded(Program before, Program after) {
+    java.util.Set<Instruction> had = new java.util.HashSet<>(before.lines());
+    for (Instruction in : after.lines()) {
+      if (!had.contains(in)) {
+        Optional<String> w = org.robotrun.program.SimulatorEffects.noEffect(in);
+        if (w.isPresent()) {
+          return w;
+        }
+      }
+    }
+    return Optional.empty();
   }
 
   /**

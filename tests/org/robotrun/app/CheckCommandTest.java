@@ -14,6 +14,8 @@ import picocli.CommandLine;
 class CheckCommandTest {
 
   private static final String PROGRAMS = "tests/resources/programs/";
+  private static final String PAYLOAD_WARNING =
+      "PAYLOAD has no effect in the simulator: motion is planned without payload dynamics";
 
   /** Exit code, stdout and stderr of one command line. */
   private record Run(int exit, String out, String err) {}
@@ -32,14 +34,16 @@ class CheckCommandTest {
   void pick3AloneReportsItsUnknownCallAndExitsOne() {
     Run r = run("check", PROGRAMS + "PICK3.LS");
     assertThat(r.exit()).isEqualTo(1);
-    assertThat(r.out()).isEqualTo(PROGRAMS + "PICK3.LS:44: CALL BEEP: no program named BEEP is known\n");
+    assertThat(r.out()).isEqualTo(PROGRAMS + "PICK3.LS:25: warning: " + PAYLOAD_WARNING + "\n"
+        + PROGRAMS + "PICK3.LS:44: CALL BEEP: no program named BEEP is known\n");
     assertThat(r.err()).isEmpty();
   }
 
   @Test
-  void pick3WithTheProgramItCallsIsClean() {
+  void pick3WithTheProgramItCallsIsCleanButForItsPayloadWarning() {
     Run r = run("check", PROGRAMS + "PICK3.LS", PROGRAMS + "BEEP.LS");
-    assertThat(r.out()).isEmpty();
+    assertThat(r.out()).isEqualTo(PROGRAMS + "PICK3.LS:25: warning: " + PAYLOAD_WARNING + "\n");
+    assertThat(run("check", "--quiet", PROGRAMS + "PICK3.LS", PROGRAMS + "BEEP.LS").out()).isEmpty();
     assertThat(r.exit()).isEqualTo(0);
     assertThat(run("check", "--known", "BEEP,OTHER", PROGRAMS + "PICK3.LS").exit()).isEqualTo(0);
   }
@@ -57,6 +61,19 @@ class CheckCommandTest {
         bad + ":6: speed unit mm/sec does not fit a J motion: expected %, sec or msec",
         bad + ":7: LBL[4] is not defined in this program");
     assertThat(run("check", "--quiet", bad.toString()).out()).doesNotContain("warning");
+  }
+
+  @Test
+  void payloadAndWjntWarnThatTheyHaveNoEffectInTheSimulator(@TempDir Path dir) throws IOException {
+    Path w = dir.resolve("PAY.LS");
+    Files.writeString(w, "/PROG  PAY\n/ATTR\n/MN\n   1:  PAYLOAD[2] ;\n   2:L P[1] 100mm/sec FINE Wjnt ;\n"
+        + "   3:L P[1] 100mm/sec FINE ;\n/POS\nP[1]{\n   GP1:\n\tUF : 0, UT : 1,\t\tCONFIG : 'N U T, 0, 0, 0',\n"
+        + "\tX = 400.000 mm,\tY = 0.000 mm,\tZ = 300.000 mm,\n\tW = 180.000 deg,\tP = 0.000 deg,\tR = 0.000 deg\n};\n/END\n");
+    Run r = run("check", w.toString());
+    assertThat(r.out().lines().toList()).containsExactly(
+        w + ":4: warning: PAYLOAD has no effect in the simulator: motion is planned without payload dynamics",
+        w + ":5: warning: Wjnt has no effect in the simulator: the tool orientation is interpolated as without it");
+    assertThat(r.exit()).isEqualTo(0);
   }
 
   @Test
@@ -120,6 +137,7 @@ class CheckCommandTest {
     // PICK3's CALL BEEP is resolved by BEEP.LS in the same directory; errors come in order of file name
     assertThat(r.out().lines().toList()).containsExactly(
         dir.resolve("ALPHA.LS") + ":5: LBL[4] is not defined in this program",
+        dir.resolve("PICK3.LS") + ":25: warning: " + PAYLOAD_WARNING,
         dir.resolve("ZED.ls") + ":5: LBL[4] is not defined in this program");
     assertThat(r.exit()).isEqualTo(1);
     assertThat(r.err()).isEmpty();
@@ -127,11 +145,11 @@ class CheckCommandTest {
     // the worst code wins: a missing file next to the directory makes it 2
     Run worse = run("check", dir.toString(), dir.resolve("NOPE.LS").toString());
     assertThat(worse.exit()).isEqualTo(2);
-    assertThat(worse.out().lines()).hasSize(2);
+    assertThat(worse.out().lines()).hasSize(3);
 
     Files.delete(dir.resolve("ALPHA.LS"));
     Files.delete(dir.resolve("ZED.ls"));
-    assertThat(run("check", dir.toString())).isEqualTo(new Run(0, "", ""));
+    assertThat(run("check", "--quiet", dir.toString())).isEqualTo(new Run(0, "", ""));
   }
 
   @Test
@@ -140,7 +158,8 @@ class CheckCommandTest {
     Files.copy(Path.of(PROGRAMS, "BEEP.LS"), dir.resolve("beep.ls"));
     Run r = run("check", dir.toString());
     assertThat(r.out()).isEqualTo(dir.resolve("PICK.LS")
-        + ":1: warning: the program is named PICK3 (/PROG) but the file is PICK.LS: a controller loads it as PICK3, not PICK\n");
+        + ":1: warning: the program is named PICK3 (/PROG) but the file is PICK.LS: a controller loads it as PICK3, not PICK\n"
+        + dir.resolve("PICK.LS") + ":25: warning: " + PAYLOAD_WARNING + "\n");
     assertThat(r.exit()).isEqualTo(0);
     assertThat(run("check", "-q", dir.resolve("PICK.LS").toString(), dir.resolve("beep.ls").toString()))
         .isEqualTo(new Run(0, "", ""));

@@ -462,4 +462,15 @@ class PendantProgramTest {
     assertThat(p.lcd().promptLine()).contains("9 field(s) replaced");
     assertThat(body(p)).contains("J P[1] 50% FINE");
   }
+
+  @Test
+  void enteringPayloadOrWjntWarnsThatItHasNoEffectInTheSimulator() {
+    Program before = Program.of("P", java.util.List.of(new Instruction.Comment("x")));
+    Program withPayload = Program.of("P", java.util.List.of(new Instruction.Comment("x"),
+        new Instruction.Payload(new org.robotrun.program.Index.Direct(1))));
+    assertThat(Pendant.noEffectAdded(before, withPayload)).hasValueSatisfying(w -> assertThat(w).startsWith("PAYLOAD has no effect"));
+    // a line that was there already is not warned about again
+    assertThat(Pendant.noEffectAdded(withPayload, withPayload)).isEmpty();
+    assertThat(Pendant.noEffectAdded(withPayload, before)).isEmpty();
+  }
 }
