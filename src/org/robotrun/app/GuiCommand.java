@@ -72,6 +72,9 @@ public final class GuiCommand implements Callable<Integer> {
     SimRobotControl control = new SimRobotControl(sim, controller);
     // a fresh window is a cold start: mode T1 (the port's default), override $SCR.$COLDOVRD = 10%
     control.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
+    if (sc != null && sc.mode().isPresent()) {
+      control.setMode(org.robotrun.pendant.RobotControl.Mode.valueOf(sc.mode().get()));
+    }
     programs.forEach(control::saveProgram);
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);

@@ -48,8 +48,8 @@ public final class PendantCommand implements Callable<Integer> {
       description = "A TP program (.LS) to load before the script runs; repeat for more. A file with errors is exit 2.")
   List<Path> programs = new java.util.ArrayList<>();
 
-  @Option(names = "--mode", paramLabel = "T1|T2|AUTO", defaultValue = "T1",
-      description = "The operator panel's mode switch at the start (default: ${DEFAULT-VALUE}).")
+  @Option(names = "--mode", paramLabel = "T1|T2|AUTO",
+      description = "The operator panel's mode switch at the start (default: the scenario's \"mode\", else T1).")
   String mode;
 
   @Option(names = "--override", paramLabel = "PCT", defaultValue = "10",
@@ -89,11 +89,13 @@ public final class PendantCommand implements Callable<Integer> {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new UserError(bad.error().display());
     };
-    RobotControl.Mode startMode;
-    try {
-      startMode = RobotControl.Mode.valueOf(mode.toUpperCase(java.util.Locale.ROOT));
-    } catch (IllegalArgumentException e) {
-      throw new UserError("--mode: expected T1, T2 or AUTO, got '" + mode + "'");
+    RobotControl.Mode startMode = RobotControl.Mode.T1;
+    if (mode != null) {
+      try {
+        startMode = RobotControl.Mode.valueOf(mode.toUpperCase(java.util.Locale.ROOT));
+      } catch (IllegalArgumentException e) {
+        throw new UserError("--mode: expected T1, T2 or AUTO, got '" + mode + "'");
+      }
     }
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
@@ -115,6 +117,9 @@ public final class PendantCommand implements Callable<Integer> {
         throw new UserError(scenario + ": " + e.getMessage());
       }
       programFiles.addAll(sc.programs());
+      if (mode == null && sc.mode().isPresent()) {
+        startMode = RobotControl.Mode.valueOf(sc.mode().get());
+      }
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     }

@@ -65,7 +65,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision");
+      "onCollision", "mode");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo");
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
@@ -150,13 +150,14 @@ public final class ScenarioReader {
       Optional<CameraView> camera = camera(top);
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
+      Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
       if (!errors.isEmpty()) {
         errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
         return new ScenarioLoad.Failed(errors);
       }
       try {
         return new ScenarioLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision));
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
         return new ScenarioLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
@@ -254,6 +255,14 @@ public final class ScenarioReader {
             + RobotDefinitions.DEFAULT_ROBOT + "\")");
         return Optional.empty();
       }
+    }
+
+    private String mode(String s, JObject top) {
+      if (!Scenario.MODES.contains(s)) {
+        error(top.members().get("mode").line(), "mode", "unknown mode '" + s + "': expected one of " + Scenario.MODES);
+        return "T1";
+      }
+      return s;
     }
 
     private CollisionResponse onCollision(String s, JObject top) {

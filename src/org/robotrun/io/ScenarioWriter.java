@@ -100,6 +100,9 @@ public final class ScenarioWriter {
       if (s.onCollision() != org.robotrun.world.CollisionResponse.ALARM) {
         g.writeStringField("onCollision", s.onCollision().fileName());
       }
+      if (s.mode().isPresent()) {
+        g.writeStringField("mode", s.mode().get());
+      }
       if (s.camera().isPresent()) {
         CameraView c = s.camera().get();
         g.writeObjectFieldStart("camera");

@@ -23,6 +23,8 @@ import org.robotrun.math.Transform;
  * @param userFrames user frames UF[i] (pose in WORLD), by number
  * @param camera the initial view, if given
  * @param onCollision whether a collision stops the robot with an alarm or is only shown
+ * @param mode the operator panel's mode switch when the window or a pendant script opens the
+ *     cell: "T1", "T2" or "AUTO" (empty: T1, the window's default; {@code robotrun run} is AUTO)
  */
 public record Scenario(
     String name,
@@ -35,7 +37,11 @@ public record Scenario(
     SortedMap<Integer, Transform> toolFrames,
     SortedMap<Integer, Transform> userFrames,
     Optional<CameraView> camera,
-    CollisionResponse onCollision) {
+    CollisionResponse onCollision,
+    Optional<String> mode) {
+
+  /** The values {@code mode} may take. */
+  public static final java.util.List<String> MODES = java.util.List.of("T1", "T2", "AUTO");
 
   public Scenario {
     robots = List.copyOf(robots);
@@ -47,6 +53,17 @@ public record Scenario(
       throw new IllegalArgumentException("a scenario needs at least one robot");
     }
     java.util.Objects.requireNonNull(onCollision, "onCollision");
+    if (mode.isPresent() && !MODES.contains(mode.get())) {
+      throw new IllegalArgumentException("mode must be one of " + MODES + ", got " + mode.get());
+    }
+  }
+
+  /** A scenario that leaves the mode switch at its default (T1). */
+  public Scenario(String name, String description, List<RobotSetup> robots, World world, List<Path> programs,
+      Optional<String> mainProgram, SortedMap<Integer, Double> registers, SortedMap<Integer, Transform> toolFrames,
+      SortedMap<Integer, Transform> userFrames, Optional<CameraView> camera, CollisionResponse onCollision) {
+    this(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames, camera,
+        onCollision, Optional.empty());
   }
 
   /** A scenario whose collisions raise alarms. */

@@ -141,6 +141,12 @@ class PendantCommandTest {
     Run r = run("pendant", "--keys", keys.toString(), "--mode", "auto", "--override", "40");
     assertThat(r.exitCode()).as(r.err()).isEqualTo(0);
     assertThat(r.out()).contains("AUTO ABORTED JOINT  40%");
+    // a scenario's "mode" sets the start unless --mode is given
+    Path sc = dir.resolve("t2.json");
+    Files.writeString(sc, Files.readString(Path.of("scenarios/empty-cell.json")).replaceFirst("\\{", "{\n  \"mode\": \"T2\","));
+    assertThat(run("pendant", "--keys", keys.toString(), "--scenario", sc.toString()).out()).contains("T2   ABORTED");
+    assertThat(run("pendant", "--keys", keys.toString(), "--scenario", sc.toString(), "--mode", "T1").out())
+        .contains("T1   ABORTED");
     Run badMode = run("pendant", "--keys", keys.toString(), "--mode", "T3");
     assertThat(badMode.exitCode()).isEqualTo(2);
     assertThat(badMode.err()).contains("--mode: expected T1, T2 or AUTO, got 'T3'");

@@ -91,6 +91,23 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void modeIsReadAndWrittenBackAndABadOneIsNamedWithItsLine() throws Exception {
+    String text = withObjects(TABLE).replace("\"format\": 1,", "\"format\": 1,\n  \"mode\": \"AUTO\",");
+    Path file = write("mode.json", text);
+    Scenario s = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario();
+    assertThat(s.mode()).contains("AUTO");
+    ScenarioWriter.write(s, file);
+    assertThat(Files.readString(file)).contains("\"mode\" : \"AUTO\"");
+    // absent: the window's default, T1
+    assertThat(((ScenarioLoad.Loaded) ScenarioReader.read(write("ok.json", withObjects(TABLE)))).scenario().mode()).isEmpty();
+    String bad = withObjects(TABLE).replace("\"format\": 1,", "\"format\": 1,\n  \"mode\": \"T3\",");
+    ScenarioError e = onlyError(write("badmode.json", bad));
+    assertThat(e.path()).isEqualTo("mode");
+    assertThat(e.line()).isEqualTo(lineOf(bad, "\"mode\""));
+    assertThat(e.message()).contains("'T3'").contains("T1").contains("AUTO");
+  }
+
+  @Test
   void unknownCollisionResponseIsNamedWithItsLine() throws Exception {
     String text = withObjects(TABLE).replace("\"format\": 1,", "\"format\": 1,\n  \"onCollision\": \"ignore\",");
     ScenarioError e = onlyError(write("bad.json", text));
