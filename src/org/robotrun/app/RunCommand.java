@@ -40,6 +40,7 @@ import picocli.CommandLine.Option;
     mixinStandardHelpOptions = true,
     description = {
       "Run a TP program with no window, as fast as the machine allows, in 4 ms simulation ticks.",
+      "The controller runs as in AUTO mode (operator panel start, no T1 speed cap, no hold-to-run) at --override.",
       "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
           + "before --programs; --program defaults to its main program); the program runs on the first robot.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
