@@ -33,7 +33,7 @@ import picocli.CommandLine.Spec;
     description = {
       "Run a .keys script on the teach pendant and print the LCD as text at every SHOW.",
       "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key (HOLD DEADMAN, HOLD SHIFT), TP ON|OFF, MODE T1|T2|AUTO, ESTOP [PANEL], RELEASE ESTOP, CYCLE START, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
-      "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
+      "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10%% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
       "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
       "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write, 2 bad option, unreadable program or malformed script (file:line)."
     })
