@@ -129,7 +129,8 @@ class PendantCommandTest {
     assertThat(r.exitCode()).isEqualTo(0);
     assertThat(r.out()).contains("--keys").contains("--scenario").contains("--program").contains("--mode")
         .contains("--override").contains("--trace").contains("simulation's controller").contains("cold-started")
-        .doesNotContain("--controller").doesNotContain("stand-in");
+        .doesNotContain("--controller").doesNotContain("stand-in").contains("override 10%");
+    assertThat(r.err()).isEmpty();
   }
 
   @Test
