@@ -194,7 +194,7 @@ public interface RobotControl {
    * A jog key goes down: axis 1..6 (X,Y,Z,W,P,R or J1..J6), sign +1/-1, in {@code coord}. Held:
    * the axis moves until {@link #jogKeyUp}; latched (an on-screen click): the first press turns it
    * on, a second press of the same key turns it off. Keys of different axes combine. The pendant
-   * only sends this with the deadman (SHIFT) on.
+   * only sends this with TP ENABLE on and the DEADMAN and SHIFT held.
    */
   Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched);
 

@@ -416,7 +416,7 @@ public final class Controller implements MotionPort {
       return CommandResult.refused("alarm active: RESET first");
     }
     if (!deadman) {
-      return CommandResult.refused("hold SHIFT (deadman) to jog");
+      return CommandResult.refused("hold the DEADMAN to jog");
     }
     if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
       return CommandResult.refused("cannot jog while the robot moves under a program");
@@ -456,7 +456,7 @@ public final class Controller implements MotionPort {
       return CommandResult.refused("alarm active: RESET first");
     }
     if (!deadman) {
-      return CommandResult.refused("hold SHIFT (deadman) to jog");
+      return CommandResult.refused("hold the DEADMAN to jog");
     }
     if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
       return CommandResult.refused("cannot jog while the robot moves under a program");
@@ -498,7 +498,7 @@ public final class Controller implements MotionPort {
     return jogKeys.direction(axis - 1);
   }
 
-  /** The deadman (SHIFT) state: releasing it stops jogging and holds a running program. */
+  /** The enabling (DEADMAN) signal as the controller sees it (the pendant gates TP ENABLE, DEADMAN and SHIFT): off stops jogging. */
   public void setDeadman(boolean held) {
     deadman = held;
     if (!held) {
