@@ -76,7 +76,7 @@ public final class SceneRenderer implements AutoCloseable {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    viewProj.set(camera.viewProjection(width / (float) Math.max(1, height)));
+    viewProj.set(camera.viewProjection(width, height));
     Vector3f eye = camera.eye();
     float floorZ = (float) scene.floorZ();
 
