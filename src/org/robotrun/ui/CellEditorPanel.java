@@ -34,6 +34,7 @@ public final class CellEditorPanel {
 
   private final CellEditor editor;
   private final Map<String, ImString> fields = new HashMap<>();
+  private final Map<String, float[]> buttons = new HashMap<>();
   private final ImString stlPath = new ImString(512);
   private final ImString stlScale = new ImString("1", 32);
   private final ImString newScenario = new ImString(64);
@@ -119,6 +120,7 @@ public final class CellEditorPanel {
     if (ImGui.button("Add box")) {
       addAndSelect(editor.addBox());
     }
+    remember("Add box");
     ImGui.sameLine();
     if (ImGui.button("Add cylinder")) {
       addAndSelect(editor.addCylinder());
@@ -336,6 +338,15 @@ public final class CellEditorPanel {
     }
   }
 
+  private void remember(String button) {
+    buttons.put(button, new float[] {ImGui.getItemRectMinX(), ImGui.getItemRectMinY(), ImGui.getItemRectSizeX(), ImGui.getItemRectSizeY()});
+  }
+
+  /** Where a button ("Add box", "Save") was drawn last frame: x, y, w, h in display pixels (tests). */
+  public Optional<float[]> buttonRect(String button) {
+    return Optional.ofNullable(buttons.get(button));
+  }
+
   /** Saves the active scenario as a scenario file (until the workspace saves the cell with it). */
   private void drawSave() {
     ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.65f);
@@ -344,6 +355,7 @@ public final class CellEditorPanel {
     if (ImGui.button("Save")) {
       report(save(Path.of(savePath.get().trim())));
     }
+    remember("Save");
   }
 
   /** Writes the active scenario to {@code file} (scenario format 1, through AtomicFiles). */

@@ -19,7 +19,6 @@ import org.robotrun.math.Xyzwpr;
 import org.robotrun.pendant.Pendant;
 import org.robotrun.render.OrbitCamera;
 import org.robotrun.sim.DrawItem;
-import org.robotrun.sim.DrawShape;
 import org.robotrun.sim.SceneSnapshot;
 import org.robotrun.world.CellEditor;
 
@@ -256,38 +255,15 @@ public final class Workbench implements SimulatorWindow.Panels {
       framed = true;
       List<Vector3f> pts = new ArrayList<>();
       for (DrawItem it : scene.get().items()) {
-        var t = it.X_WS();
-        float r = (float) reach(it.shape());
-        for (int i = 0; i < 6; i++) {
-          float s = i % 2 == 0 ? r : -r;
-          pts.add(new Vector3f((float) t.x() + (i / 2 == 0 ? s : 0), (float) t.y() + (i / 2 == 1 ? s : 0),
-              (float) t.z() + (i / 2 == 2 ? s : 0)));
-        }
+        SceneBounds.addCorners(it, pts);
       }
       float before = camera.distance();
-      camera.fitDistance(pts, w / (float) h, 0.25f);
+      camera.fitDistance(pts, w / (float) h, 0.08f);
       if (camera.distance() < before) {
         // keep the scenario's own (wider) view when everything already fits
         camera.set(camera.target().x, camera.target().y, camera.target().z, before, camera.yaw(), camera.pitch());
       }
     }
-  }
-
-  /** How far a drawn shape reaches from its frame's origin (mm), at most. */
-  private static double reach(DrawShape shape) {
-    return switch (shape) {
-      case DrawShape.Box b -> b.size().norm() / 2;
-      case DrawShape.WireBox b -> b.size().norm() / 2;
-      case DrawShape.Cylinder c -> Math.hypot(c.radius(), c.length());
-      case DrawShape.Mesh m -> {
-        double r2 = 0;
-        float[] v = m.triangles();
-        for (int i = 0; i + 2 < v.length; i += 3) {
-          r2 = Math.max(r2, v[i] * v[i] + v[i + 1] * v[i + 1] + v[i + 2] * v[i + 2]);
-        }
-        yield Math.sqrt(r2);
-      }
-    };
   }
 
   /** Draws the main menu bar; returns its height. */
