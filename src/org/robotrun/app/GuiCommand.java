@@ -72,10 +72,8 @@ public final class GuiCommand implements Callable<Integer> {
     try {
       Session s = open(scenario, width, height, WindowSettings.forUser());
       try (SimulatorWindow w = s.window()) {
-        if (System.getenv("ROBOTRUN_FIRST_FRAME_LOG") != null) {
-          long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
-          w.setFirstFrameHandler(() -> System.err.println("robotrun: first frame "
-              + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started"));
+        if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
+          logFrames(w);
         }
         run(s);
       }
@@ -184,6 +182,27 @@ public final class GuiCommand implements Callable<Integer> {
           return moved || lcdChanged || jog || s.controller().interpreter().state() == Interpreter.State.RUNNING;
         });
     warn(s.settings().save(s.bench().layoutState()));
+  }
+
+  /**
+   * Benchmark hook (ROBOTRUN_FRAME_LOG set): the time from JVM start to the first frame on screen,
+   * then the frames drawn in every 5 s, on stderr.
+   */
+  private static void logFrames(SimulatorWindow w) {
+    long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+    w.setFirstFrameHandler(() -> System.err.println("robotrun: first frame "
+        + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started"));
+    long[] since = {System.nanoTime(), 0};
+    w.setAfterFrameHandler(() -> {
+      long now = System.nanoTime();
+      if (now - since[0] >= 5_000_000_000L) {
+        long n = w.frames() - since[1];
+        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s)%n", n, (now - since[0]) / 1e9,
+            n / ((now - since[0]) / 1e9));
+        since[0] = now;
+        since[1] = w.frames();
+      }
+    });
   }
 
   private static void warn(String problem) {

@@ -24,7 +24,9 @@ public final class RobotStatusPanel {
       ImGui.text(String.format("  Y %9.3f  P %8.3f", shown(p.y()), shown(p.pDeg())));
       ImGui.text(String.format("  Z %9.3f  R %8.3f", shown(p.z()), shown(p.rDeg())));
       ImGui.separator();
+      ImGui.pushTextWrapPos(0);
       ImGui.textDisabled("Mouse: drag orbit, right-drag pan, wheel zoom, Home resets");
+      ImGui.popTextWrapPos();
       ImGui.textDisabled(String.format("%.0f frames/s", ImGui.getIO().getFramerate()));
     }
   }
