@@ -297,17 +297,36 @@ public final class CellEditorPanel {
   }
 
   private void numbers(String object, NumberField... fs) {
-    float w = (ImGui.getContentRegionAvailX() - (fs.length - 1) * ImGui.getStyle().getItemSpacingX()) / fs.length;
+    float spacing = ImGui.getStyle().getItemSpacingX();
+    float labels = 0;
+    for (NumberField f : fs) {
+      labels += ImGui.calcTextSize(shortLabel(f)).x + spacing;
+    }
+    float w = (ImGui.getContentRegionAvailX() - labels - (fs.length - 1) * spacing) / fs.length;
     for (int i = 0; i < fs.length; i++) {
       if (i > 0) {
         ImGui.sameLine();
       }
       NumberField f = fs[i];
+      ImGui.alignTextToFramePadding();
+      ImGui.textDisabled(shortLabel(f));
+      ImGui.sameLine();
       double v = editor.number(object, f);
       String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "");
       ImGui.setNextItemWidth(w);
       textInput(f.label(), object + "/" + f.name(), shown, t -> editor.setNumber(object, f, t), f.label() + " (" + f.unit() + ")");
     }
+  }
+
+  private static String shortLabel(NumberField f) {
+    return switch (f) {
+      case LENGTH -> "L";
+      case WIDTH -> "W";
+      case HEIGHT -> "H";
+      case RADIUS -> "r";
+      case SCALE -> "scale";
+      default -> f.label();
+    };
   }
 
   private void field(String label, String object, String value, Function<String, Result> apply) {

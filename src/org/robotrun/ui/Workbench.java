@@ -6,7 +6,6 @@ import imgui.ImGui;
 import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiTreeNodeFlags;
 import imgui.flag.ImGuiWindowFlags;
-import imgui.type.ImBoolean;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -55,7 +54,6 @@ public final class Workbench implements SimulatorWindow.Panels {
   private final List<MenuContributor> menus = new ArrayList<>();
   private final AxisHandles handles = new AxisHandles();
   private LayoutState state;
-  private final ImBoolean taskOpen = new ImBoolean();
   private WindowLayout layout;
   private int framebufferW;
   private int framebufferH;
