@@ -71,7 +71,7 @@ public final class SimulatorWindow implements AutoCloseable {
   /** After the last input, keep drawing this long (hover highlights, tooltips settle). */
   private static final long IDLE_AFTER_NANOS = 500_000_000L;
   /** While idle, draw once every this many seconds anyway. */
-  private static final double IDLE_REDRAW_SEC = 1.0;
+  private static final double IDLE_REDRAW_SEC = 5.0;
 
   /** Receives keyboard events that no panel text field wants. */
   @FunctionalInterface
@@ -272,7 +272,7 @@ public final class SimulatorWindow implements AutoCloseable {
   /**
    * Runs the event and render loop, with panels over the scene, until the window is closed.
    * Quiet when idle: while {@code busy} says nothing moves and no input came for half a second,
-   * the loop sleeps in {@code glfwWaitEventsTimeout} and draws about once a second; any input
+   * the loop sleeps in {@code glfwWaitEventsTimeout} and draws every 5 s; any input
    * wakes it at once.
    *
    * @param busy whether something on screen changes by itself (the arm moves, a program runs)
