@@ -3,7 +3,6 @@ package org.robotrun.app;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
@@ -69,8 +68,15 @@ public final class GuiCommand implements Callable<Integer> {
     if (height != 0) {
       RenderCommand.checkSize("--height", height);
     }
+    boolean log = System.getenv("ROBOTRUN_FRAME_LOG") != null;
+    if (log) {
+      stage("command line parsed");
+    }
     try {
       Session s = open(scenario, width, height, WindowSettings.forUser());
+      if (log) {
+        stage("cell and window ready");
+      }
       try (SimulatorWindow w = s.window()) {
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
           logFrames(w);
@@ -83,23 +89,59 @@ public final class GuiCommand implements Callable<Integer> {
     return Main.EXIT_OK;
   }
 
+  /** The cell as loaded: built off the main thread while the window opens. */
+  private record Cell(Simulation sim, Scenario scenario, List<Program> programs) {}
+
+  private static Cell loadCell(Path scenario) {
+    if (scenario == null) {
+      return new Cell(DefaultCell.simulation(RobotDefinitions.defaultRobot()), null, List.of());
+    }
+    Scenario sc = ScenarioFiles.load(scenario);
+    try {
+      Simulation sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      return new Cell(sim, sc, RunCommand.loadPrograms(sc.programs()));
+    } catch (IllegalArgumentException e) {
+      throw new UserError(scenario + ": " + e.getMessage());
+    } catch (IOException e) {
+      throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
+    }
+  }
+
+  private static Cell join(java.util.concurrent.CompletableFuture<Cell> f) {
+    try {
+      return f.join();
+    } catch (java.util.concurrent.CompletionException e) {
+      if (e.getCause() instanceof RuntimeException r) {
+        throw r;
+      }
+      throw e;
+    }
+  }
+
   /** Builds the cell, the pendant and the window (not yet running). */
   public static Session open(Path scenario, int width, int height, WindowSettings settings) {
-    Simulation sim;
-    List<Program> programs = new ArrayList<>();
-    Scenario sc = null;
-    if (scenario == null) {
-      sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
-    } else {
-      sc = ScenarioFiles.load(scenario);
-      try {
-        sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
-        programs.addAll(RunCommand.loadPrograms(sc.programs()));
-      } catch (IllegalArgumentException e) {
-        throw new UserError(scenario + ": " + e.getMessage());
-      } catch (IOException e) {
-        throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
-      }
+    // The cell loads (JSON, robot model, programs) on another thread while GLFW, OpenGL and
+    // ImGui start on this one: the two together are most of the time to the first frame.
+    var loading = java.util.concurrent.CompletableFuture.supplyAsync(() -> loadCell(scenario));
+    SimulatorWindow w;
+    try {
+      w = new SimulatorWindow("RobotRun", width, height);
+    } catch (GlUnavailableException e) {
+      join(loading);  // a bad scenario is reported as such, even without a display
+      throw e;
+    }
+    Cell cell;
+    try {
+      cell = join(loading);
+    } catch (RuntimeException e) {
+      w.close();
+      throw e;
+    }
+    Simulation sim = cell.sim();
+    Scenario sc = cell.scenario();
+    List<Program> programs = cell.programs();
+    if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
+      stage("cell built");
     }
     Controller controller = sim.controllers().get(0);
     SimRobotControl control = new SimRobotControl(sim, controller);
@@ -111,7 +153,7 @@ public final class GuiCommand implements Callable<Integer> {
     CellEditor editor = sc == null ? null : new CellEditor(sc, GuiCommand::loadStl);
     CellEditorPanel editorPanel = editor == null ? null
         : new CellEditorPanel(editor, scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json"));
-    SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height);
+    w.setTitle("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()));
     if (sc != null) {
       sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
     }
@@ -182,6 +224,11 @@ public final class GuiCommand implements Callable<Integer> {
           return moved || lcdChanged || jog || s.controller().interpreter().state() == Interpreter.State.RUNNING;
         });
     warn(s.settings().save(s.bench().layoutState()));
+  }
+
+  private static void stage(String what) {
+    long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+    System.err.println("robotrun: " + what + " " + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started");
   }
 
   /**

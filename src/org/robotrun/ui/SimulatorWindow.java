@@ -331,6 +331,10 @@ public final class SimulatorWindow implements AutoCloseable {
     glfwSetWindowShouldClose(window, true);
   }
 
+  public void setTitle(String title) {
+    glfwSetWindowTitle(window, title);
+  }
+
   /** Frames drawn so far. */
   public long frames() {
     return frames;
