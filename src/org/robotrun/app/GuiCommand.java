@@ -171,6 +171,8 @@ public final class GuiCommand implements Callable<Integer> {
           }
         },
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
+    // Menus of other parts of the window go into the menu bar here, left of View and Help:
+    // bench.addMenus(fileMenu::draw) for the workspace's File menu.
     PendantKeyboard keyboard = new PendantKeyboard(pendant);
     w.setKeyHandler(keyboard::onKey);
     w.setCharHandler(cp -> bench.onChar(cp) || keyboard.onChar(cp));

@@ -95,7 +95,8 @@ public final class HelpWindows {
       ImGui.setNextWindowSizeConstraints(0, 0, Math.max(200, view.w() - 20), Math.max(150, view.h() - 20));
       if (ImGui.begin("Key map (Ctrl+H)", keyMap, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
         ImGui.textDisabled("Keys act while held, as on the pendant. Shift is the deadman.");
-        var map = PendantKeyboard.keyMap();
+        // the keypad keys are their own characters: one line for them below
+        var map = PendantKeyboard.keyMap().stream().filter(r -> !r[0].matches("[0-9.,\\-]")).toList();
         int half = (map.size() + 1) / 2;
         if (ImGui.beginTable("keys", 4, ImGuiTableFlags.RowBg | ImGuiTableFlags.SizingFixedFit)) {
           for (int i = 0; i < half; i++) {
@@ -109,9 +110,12 @@ public final class HelpWindows {
           }
           ImGui.endTable();
         }
+        ImGui.text("0-9 . - ,   the keypad");
         ImGui.separator();
-        ImGui.text("Window: Ctrl+H or ? this map, Ctrl+Z / Ctrl+Y undo / redo a cell edit, Home resets the view");
-        ImGui.text("Mouse: left drag orbits, right or middle drag pans, wheel zooms, click selects an object");
+        ImGui.pushTextWrapPos(ImGui.getFontSize() * 30);
+        ImGui.textWrapped("Window: Ctrl+H or ? this map, Ctrl+Z / Ctrl+Y undo / redo a cell edit, Home resets the view.");
+        ImGui.textWrapped("Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object.");
+        ImGui.popTextWrapPos();
       }
       ImGui.end();
     }
