@@ -111,7 +111,6 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     }
     glfwWindowHint(GLFW_SAMPLES, AntiAliasing.DEFAULT.samples());
-    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
     int[] size = defaultSize(width, height);
     window = glfwCreateWindow(size[0], size[1], title, 0, 0);
     if (window == 0) {
