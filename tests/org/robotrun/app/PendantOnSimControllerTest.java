@@ -61,6 +61,19 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void aWorldJogToTheEdgeOfReachSaysWhyItStopped() {
+    keys("""
+        COORD
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 120
+        RELEASE +X/J1
+        RELEASE SHIFT
+        """);
+    assertThat(p.lcd().promptLine()).contains("Jog stopped").containsAnyOf("edge of reach", "singularity", "limit");
+  }
+
+  @Test
   void aJogThatRunsIntoAJointLimitSaysSoOnThePromptLineWithAxisAndValue() {
     keys("""
         HOLD SHIFT
