@@ -326,6 +326,11 @@ public final class SimRobotControl implements RobotControl {
     return controller.interpreter().userScreen();
   }
 
+  @Override
+  public String jogStopReason() {
+    return controller.jogMessage();
+  }
+
   /** Called after every simulation tick {@link #advance} runs (a CSV trace). */
   public void setAfterTick(java.util.function.Consumer<Simulation> listener) {
     afterTick = Objects.requireNonNull(listener, "listener");

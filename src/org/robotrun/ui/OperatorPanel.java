@@ -1,55 +1,49 @@
 package org.robotrun.ui;
 
 import imgui.ImGui;
-import imgui.flag.ImGuiCond;
-import imgui.flag.ImGuiWindowFlags;
 import org.robotrun.pendant.Pendant;
 import org.robotrun.pendant.RobotControl;
 
 /**
- * The controller cabinet's operator panel: the mode switch (T1 / T2 / AUTO), CYCLE START (runs
- * the selected program in AUTO with the pendant disabled) and the panel's E-stop (SRVO-001).
+ * The controller cabinet's operator panel, drawn as a section of the window's left column: the
+ * mode switch (T1 / T2 / AUTO), CYCLE START (runs the selected program in AUTO with the pendant
+ * disabled) and the panel's E-stop (SRVO-001).
  */
 public final class OperatorPanel {
+  /** The section title. */
+  public static final String TITLE = "Operator panel";
+
   private final Pendant pendant;
 
   public OperatorPanel(Pendant pendant) {
     this.pendant = pendant;
   }
 
-  public void draw(int framebufferWidth, int framebufferHeight) {
-    ImGui.setNextWindowPos(10, framebufferHeight - 130, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowSize(430, 115, ImGuiCond.FirstUseEver);
-    if (ImGui.begin("Operator panel", ImGuiWindowFlags.NoCollapse)) {
-      RobotControl.Mode mode = pendant.control().mode();
-      ImGui.text("Mode");
-      for (RobotControl.Mode m : RobotControl.Mode.values()) {
-        ImGui.sameLine();
-        if (ImGui.radioButton(m.name() + "##mode", mode == m) && m != mode) {
-          pendant.setMode(m);
-        }
-      }
-      SafetySwitches.hint("T1: TCP at most 250 mm/s, hold-to-run; T2: programmed speed, hold-to-run; "
-          + "AUTO: run with CYCLE START, pendant off");
-      if (ImGui.button("CYCLE START", 130, 0)) {
-        pendant.cycleStart();
-      }
-      SafetySwitches.hint("AUTO only, TP ENABLE off: runs the selected program");
+  /** The panel's controls, inside whatever window or section the caller opened. */
+  public void drawContents() {
+    RobotControl.Mode mode = pendant.control().mode();
+    ImGui.text("Mode");
+    for (RobotControl.Mode m : RobotControl.Mode.values()) {
       ImGui.sameLine();
-      boolean estop = pendant.control().emergencyStopped();
-      if (SafetySwitches.coloured((estop ? "E-STOP (pressed)" : "E-STOP") + "##panelestop", true, 0.8f, 0.1f, 0.1f, 140)) {
-        if (estop) {
-          pendant.releaseEmergencyStop();
-        } else {
-          pendant.emergencyStop(false);
-        }
-      }
-      SafetySwitches.hint(estop ? "Click to twist the E-stop out, then RESET" : "Operator panel E-stop (SRVO-001)");
-      String prompt = pendant.message();
-      if (!prompt.isEmpty()) {
-        ImGui.textWrapped(prompt);
+      if (ImGui.radioButton(m.name() + "##mode", mode == m) && m != mode) {
+        pendant.setMode(m);
       }
     }
-    ImGui.end();
+    SafetySwitches.hint("T1: TCP at most 250 mm/s, hold-to-run; T2: programmed speed, hold-to-run; "
+        + "AUTO: run with CYCLE START, pendant off");
+    if (ImGui.button("CYCLE START")) {
+      pendant.cycleStart();
+    }
+    SafetySwitches.hint("AUTO only, TP ENABLE off: runs the selected program");
+    ImGui.sameLine();
+    boolean estop = pendant.control().emergencyStopped();
+    if (SafetySwitches.coloured((estop ? "E-STOP (pressed)" : "E-STOP") + "##panelestop", true, 0.8f, 0.1f, 0.1f, 0)) {
+      if (estop) {
+        pendant.releaseEmergencyStop();
+      } else {
+        pendant.emergencyStop(false);
+      }
+    }
+    SafetySwitches.hint(estop ? "Click to twist the E-stop out, then RESET" : "Operator panel E-stop (SRVO-001)");
   }
 }

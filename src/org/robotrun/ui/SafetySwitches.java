@@ -8,7 +8,7 @@ import org.robotrun.pendant.Pendant;
 /**
  * The pendant's safety controls for the mouse: TP ENABLE and DEADMAN as switches whose state is
  * always visible (one pointer cannot hold the DEADMAN and click a key at once), and the pendant's
- * E-stop. On the keyboard the DEADMAN is held with Ctrl and SHIFT with Shift ({@link PendantKeyboard}).
+ * E-stop. On the keyboard the DEADMAN is held with Space and SHIFT with Shift ({@link PendantKeyboard}).
  */
 public final class SafetySwitches {
   private final Pendant pendant;
@@ -20,23 +20,23 @@ public final class SafetySwitches {
   /** One row: TP ENABLE, DEADMAN, E-STOP. */
   public void draw() {
     boolean enabled = pendant.tpEnabled();
-    if (coloured("TP ENABLE: " + (enabled ? "ON " : "OFF") + "##tpenable", enabled, 0.2f, 0.6f, 0.25f, 150)) {
+    if (coloured("TP ENABLE: " + (enabled ? "ON " : "OFF") + "##tpenable", enabled, 0.2f, 0.6f, 0.25f, 0)) {
       pendant.setTpEnabled(!enabled);
     }
     hint("TP ENABLE switch: ON to jog and run from the pendant (T1/T2); OFF to run from the operator panel in AUTO");
     ImGui.sameLine();
     boolean held = pendant.deadmanHeld();
-    if (coloured("DEADMAN: " + (held ? "HELD" : "released") + "##deadman", held, 0.2f, 0.6f, 0.25f, 170)) {
+    if (coloured("DEADMAN: " + (held ? "HELD" : "released") + "##deadman", held, 0.2f, 0.6f, 0.25f, 0)) {
       if (held) {
         pendant.release(Key.DEADMAN);
       } else {
         pendant.press(Key.DEADMAN);
       }
     }
-    hint("DEADMAN (also: hold Ctrl). Jogging and SHIFT+FWD need it held; letting it go with the TP on is SRVO-003");
+    hint("DEADMAN (also: hold Space). Jogging and SHIFT+FWD need it held; letting it go with the TP on is SRVO-003");
     ImGui.sameLine();
     boolean estop = pendant.control().emergencyStopped();
-    if (coloured((estop ? "E-STOP (pressed)" : "E-STOP") + "##tpestop", true, 0.8f, 0.1f, 0.1f, 140)) {
+    if (coloured((estop ? "E-STOP (pressed)" : "E-STOP") + "##tpestop", true, 0.8f, 0.1f, 0.1f, 0)) {
       if (estop) {
         pendant.releaseEmergencyStop();
       } else {

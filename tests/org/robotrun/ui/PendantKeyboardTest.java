@@ -63,7 +63,7 @@ class PendantKeyboardTest {
   @Test
   void withNoEntryOpenLetterKeysAreJogKeysAndCharactersAreIgnored() {
     double j1Before = control.currentJoints().j1Deg();
-    keyboard.onKey(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS);  // DEADMAN
+    keyboard.onKey(GLFW_KEY_SPACE, GLFW_PRESS);  // DEADMAN
     assertThat(pendant.deadmanHeld()).isTrue();
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_Q, GLFW_PRESS);
@@ -77,7 +77,7 @@ class PendantKeyboardTest {
 
   @Test
   void losingTheFocusReleasesAHeldJogKey() {
-    keyboard.onKey(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS);
+    keyboard.onKey(GLFW_KEY_SPACE, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_Q, GLFW_PRESS);
     pendant.advance(0.2);
@@ -88,5 +88,14 @@ class PendantKeyboardTest {
 
     assertThat(control.currentJoints().j1Deg()).isEqualTo(j1);
     assertThat(pendant.shift()).isFalse();
+  }
+
+  @Test
+  void everyKeyOnTheKeyboardShowsItsShortcutAndTheKeyMapListsThem() {
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.SHIFT)).isEqualTo("Shift");
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.JOG_PLUS_1)).isEqualTo("Q");
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.SELECT)).isEqualTo("Insert");
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.MENU)).as("only on screen").isEmpty();
+    assertThat(PendantKeyboard.keyMap()).extracting(r -> r[0] + "=" + r[1]).contains("F1=F1", "ENTER=Enter", "-X/J1=A");
   }
 }
