@@ -42,7 +42,7 @@ import picocli.CommandLine.Option;
     description = {
       "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant side by side.",
       "Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object; Home resets the view.",
-      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys. Ctrl+H or ? shows the key map."
+      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): hold Space for the DEADMAN and Shift for SHIFT (with TP ENABLE on) to jog and run, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys. Ctrl+H or ? shows the key map."
     })
 public final class GuiCommand implements Callable<Integer> {
   @Option(names = "--width", defaultValue = "0",

@@ -71,16 +71,17 @@ public final class HelpWindows {
           ImGui.textWrapped(task);
           ImGui.separator();
         }
-        ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "1. The deadman");
-        ImGui.textWrapped("The robot only moves while you hold the deadman: hold Shift (the pendant's SHIFT). "
-            + "Let go and it stops at once, as on a real teach pendant.");
+        ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "1. TP ENABLE, DEADMAN, SHIFT");
+        ImGui.textWrapped("As on a real teach pendant the robot only moves with TP ENABLE on and the DEADMAN and "
+            + "SHIFT held: click DEADMAN above the LCD (or hold Space) and hold Shift. Letting the DEADMAN go is "
+            + "alarm SRVO-003 (hold it, then RESET = F12). The cell starts in T1 (at most 250 mm/s) at 10% override.");
         ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "2. Jogging");
-        ImGui.textWrapped("Hold Shift and Q W E R T Y to move +J1..+J6 (or +X +Y +Z +W +P +R), "
-            + "A S D F G H for the minus direction. F7 (COORD) switches JOINT / WORLD / TOOL / USER. "
+        ImGui.textWrapped("With the DEADMAN held, hold Shift and Q W E R T Y to move +J1..+J6 (or +X +Y +Z +W +P +R), "
+            + "A S D F G H for the minus direction. F7 (COORD) switches JOINT / JGFRM / WORLD / TOOL / USER. "
             + "Page Up / Page Down change the speed override.");
         ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "3. Your first program");
         ImGui.textWrapped("SELECT (Insert) -> F1 CREATE, type a name, Enter. Then jog and press Shift+F1 "
-            + "(POINT) to record each position. Shift+F9 (FWD) runs it.");
+            + "(POINT) to record each position. Shift+F9 (FWD) runs it while you keep Shift held (T1 hold-to-run).");
         ImGui.separator();
         ImGui.textDisabled("Every key: Help > Key map (Ctrl+H).  Hover a pendant key to see its keyboard key.");
         ImGui.popTextWrapPos();
@@ -94,7 +95,7 @@ public final class HelpWindows {
       ImGui.setNextWindowPos(cx, cy, ImGuiCond.Appearing, 0.5f, 0.5f);
       ImGui.setNextWindowSizeConstraints(0, 0, Math.max(200, view.w() - 20), Math.max(150, view.h() - 20));
       if (ImGui.begin("Key map (Ctrl+H)", keyMap, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
-        ImGui.textDisabled("Keys act while held, as on the pendant. Shift is the deadman.");
+        ImGui.textDisabled("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.");
         // the keypad keys are their own characters: one line for them below
         var map = PendantKeyboard.keyMap().stream().filter(r -> !r[0].matches("[0-9.,\\-]")).toList();
         int half = (map.size() + 1) / 2;
