@@ -13,6 +13,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import org.robotrun.program.TpLexer;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpToken;
+import org.robotrun.program.TpTokenCursor;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Program;
@@ -468,7 +473,7 @@ public final class LsReader {
               "line number " + clip(text.substring(digitsStart, p)) + " out of order: expected " + expected));
         }
         Body body = body(text, p + 1, line);
-        List<LsToken> tokens = body.tokens;
+        List<TpToken> tokens = body.tokens;
         boolean terminated = body.terminated;
         if (!terminated && k < end && isContinuation(lines[k])) {
           // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement.
@@ -476,14 +481,14 @@ public final class LsReader {
           int colon = cont.indexOf(':');
           Body second = body(cont, colon + 1, k + 1);
           k++;
-          List<LsToken> joined = new ArrayList<>(tokens.subList(0, tokens.size() - 1));
+          List<TpToken> joined = new ArrayList<>(tokens.subList(0, tokens.size() - 1));
           joined.addAll(second.tokens);
           tokens = joined;
           terminated = second.terminated;
         }
         Instruction in;
         try {
-          LsStatementParser.Parsed parsed = LsStatementParser.parse(tokens);
+          TpStatementParser.Parsed parsed = TpStatementParser.parse(tokens);
           in = parsed.instruction();
           for (String w : parsed.warnings()) {
             diags.add(Diagnostic.warning(file, line, w));
@@ -491,7 +496,7 @@ public final class LsReader {
           if (!terminated) {
             diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
           }
-        } catch (LsSyntaxError e) {
+        } catch (TpSyntaxError e) {
           diags.add(Diagnostic.error(file, e.line(), e.getMessage()));
           // Keep the numbering of the following lines: the bad line stays as commented-out text.
           String raw = text.substring(p + 1).strip();
@@ -502,7 +507,7 @@ public final class LsReader {
       }
     }
 
-    private record Body(List<LsToken> tokens, boolean terminated) {}
+    private record Body(List<TpToken> tokens, boolean terminated) {}
 
     /** Tokens of a statement starting at {@code from}, without its final {@code ;}. */
     private static Body body(String text, int from, int line) {
@@ -514,7 +519,7 @@ public final class LsReader {
       if (terminated) {
         endIdx--;
       }
-      return new Body(LsLexer.tokenize(text.substring(from, endIdx), line, from + 1, true), terminated);
+      return new Body(TpLexer.tokenize(text.substring(from, endIdx), line, from + 1, true), terminated);
     }
 
     private static boolean isContinuation(String text) {

@@ -6,6 +6,12 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.robotrun.program.FanucFormat;
+import org.robotrun.program.TpLexer;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpToken;
+import org.robotrun.program.TpTokenCursor;
 import org.robotrun.program.Config;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
@@ -129,7 +135,7 @@ public final class LsWriter {
       case Motion.SpeedConst c -> sb.append(FanucFormat.plain(c.value()));
       case Motion.SpeedRegister r -> item("R", r.register(), sb);
     }
-    sb.append(LsStatementParser.unitText(m.speed().unit())).append(' ');
+    sb.append(TpStatementParser.unitText(m.speed().unit())).append(' ');
     switch (m.termination()) {
       case Motion.Fine f -> sb.append("FINE");
       case Motion.Cnt c -> sb.append("CNT").append(c.value());

@@ -1,4 +1,4 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import java.math.BigDecimal;
 import java.util.Locale;

@@ -1,4 +1,4 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -6,22 +6,13 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
-import org.robotrun.io.LsToken.Kind;
-import org.robotrun.program.Expr;
-import org.robotrun.program.Index;
-import org.robotrun.program.Instruction;
+import org.robotrun.program.TpToken.Kind;
 import org.robotrun.program.Instruction.FrameKind;
-import org.robotrun.program.IoKind;
-import org.robotrun.program.Item;
-import org.robotrun.program.LabelRef;
-import org.robotrun.program.Motion;
-import org.robotrun.program.Program;
-import org.robotrun.program.Registers;
 
 /**
  * Recursive-descent parser for one /MN statement (TP-LANGUAGE.md, "Statements"). It sees the
  * tokens of a single statement (a circular motion's continuation line appended), so a bad
- * statement is reported with {@link LsSyntaxError} and the reader continues with the next line.
+ * statement is reported with {@link TpSyntaxError} and the reader continues with the next line.
  *
  * <p>Expressions use the precedence of {@link Expr.BinaryOp} everywhere, so FANUC's short form
  * {@code R[1]=R[2]+1} and a parenthesised expression are parsed alike. Parentheses may nest at
@@ -29,7 +20,7 @@ import org.robotrun.program.Registers;
  * operators: beyond that the statement is rejected with a diagnostic instead of risking a stack
  * overflow here or in whoever walks the tree later.
  */
-final class LsStatementParser extends LsTokenCursor {
+public final class TpStatementParser extends TpTokenCursor {
 
   /** Deepest parenthesis nesting accepted; far beyond what anyone types on a pendant. */
   static final int MAX_NESTING = 64;
@@ -89,7 +80,7 @@ final class LsStatementParser extends LsTokenCursor {
   private int operators;
   private final List<String> warnings = new ArrayList<>(0);
 
-  private LsStatementParser(List<LsToken> tokens) {
+  private TpStatementParser(List<TpToken> tokens) {
     super(tokens);
   }
 
@@ -98,10 +89,10 @@ final class LsStatementParser extends LsTokenCursor {
    *
    * @param tokens the statement's tokens, ending in one {@link Kind#EOL} (the terminating
    *     {@code ;} already removed by the reader)
-   * @throws LsSyntaxError naming the line and what was expected
+   * @throws TpSyntaxError naming the line and what was expected
    */
-  static Parsed parse(List<LsToken> tokens) {
-    LsStatementParser p = new LsStatementParser(tokens);
+  public static Parsed parse(List<TpToken> tokens) {
+    TpStatementParser p = new TpStatementParser(tokens);
     Instruction in = p.statement();
     if (p.peek().is(Kind.SEMICOLON)) {
       throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
@@ -116,12 +107,12 @@ final class LsStatementParser extends LsTokenCursor {
    * A statement and the warnings about it (a register number outside the controller's table:
    * legal text, but running the line raises an alarm).
    */
-  record Parsed(Instruction instruction, List<String> warnings) {}
+  public record Parsed(Instruction instruction, List<String> warnings) {}
 
   // ---- statements -------------------------------------------------------------------------
 
   private Instruction statement() {
-    LsToken t = peek();
+    TpToken t = peek();
     switch (t.kind()) {
       case EOL -> {
         return new Instruction.Blank();
@@ -150,13 +141,13 @@ final class LsStatementParser extends LsTokenCursor {
     }
   }
 
-  private Instruction wordStatement(LsToken t) {
+  private Instruction wordStatement(TpToken t) {
     String w = t.text().toUpperCase(Locale.ROOT);
     if (isMotionType(w) && (peek(1).isWord("P") || peek(1).isWord("PR"))) {
       return motion();
     }
     if (w.startsWith("$")) {
-      throw error("not supported: system variable assignment (" + LsToken.clip(t.text()) + ")");
+      throw error("not supported: system variable assignment (" + TpToken.clip(t.text()) + ")");
     }
     next();
     return switch (w) {
@@ -172,7 +163,7 @@ final class LsStatementParser extends LsTokenCursor {
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
-        LsToken a = expectWord("START, STOP or RESET");
+        TpToken a = expectWord("START, STOP or RESET");
         yield switch (a.text().toUpperCase(Locale.ROOT)) {
           case "START" -> new Instruction.TimerSet(timer, Instruction.TimerAction.START);
           case "STOP" -> new Instruction.TimerSet(timer, Instruction.TimerAction.STOP);
@@ -248,13 +239,13 @@ final class LsStatementParser extends LsTokenCursor {
     };
   }
 
-  private LsSyntaxError unknownStatement(LsToken t) {
+  private TpSyntaxError unknownStatement(TpToken t) {
     String w = t.text().toUpperCase(Locale.ROOT);
     String name = UNSUPPORTED.get(w);
     if (name != null) {
       return error(t, "not supported: " + name);
     }
-    return error(t, "unknown statement '" + LsToken.clip(t.text())
+    return error(t, "unknown statement '" + TpToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
 
@@ -273,7 +264,7 @@ final class LsStatementParser extends LsTokenCursor {
     }
     Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
     expect(Kind.EQ, "'=' after PR[...]");
-    LsToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
+    TpToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
     Instruction.PosSource src = switch (s.text().toUpperCase(Locale.ROOT)) {
       case "PR" -> {
         Item from = item("PR");
@@ -322,9 +313,9 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Instruction call() {
-    LsToken name = expectWord("a program name after CALL");
+    TpToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
-      throw error(name, "'" + LsToken.clip(name.text())
+      throw error(name, "'" + TpToken.clip(name.text())
           + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
     List<Expr> args = new ArrayList<>();
@@ -341,7 +332,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Instruction.Branch branch() {
-    LsToken w = expectWord("JMP LBL[n] or CALL NAME");
+    TpToken w = expectWord("JMP LBL[n] or CALL NAME");
     if (w.isWord("JMP")) {
       return (Instruction.Jump) jump();
     }
@@ -366,7 +357,7 @@ final class LsStatementParser extends LsTokenCursor {
     Item counter = item("R");
     expect(Kind.EQ, "'=' after FOR R[...]");
     Expr start = forBound();
-    LsToken dir = expectWord("TO or DOWNTO");
+    TpToken dir = expectWord("TO or DOWNTO");
     boolean down;
     if (dir.isWord("TO")) {
       down = false;
@@ -462,7 +453,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.Target motionTarget() {
-    LsToken w = next();
+    TpToken w = next();
     if (w.isWord("P")) {
       Item p = item("P");
       return new Motion.Local(directNumber(p, "P"), p.comment());
@@ -472,7 +463,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   private Motion.Speed speed(Motion.Type type) {
     Motion.SpeedValue value;
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.NUMBER)) {
       value = new Motion.SpeedConst(number("speed"));
     } else if (t.isWord("R")) {
@@ -502,7 +493,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.SpeedUnit speedUnit() {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.PERCENT)) {
       next();
       return Motion.SpeedUnit.PERCENT;
@@ -527,7 +518,7 @@ final class LsStatementParser extends LsTokenCursor {
       throw error(t, "expected a speed unit (%, mm/sec, cm/min, inch/min, deg/sec, sec, msec), found " + t.describe());
     }
     next();
-    LsToken per = expectWord("sec or min after '/'");
+    TpToken per = expectWord("sec or min after '/'");
     String full = u + "/" + per.text().toLowerCase(Locale.ROOT);
     return switch (full) {
       case "mm/sec" -> Motion.SpeedUnit.MM_PER_SEC;
@@ -539,7 +530,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   /** How a unit is written in TP; the writer uses the same table. */
-  static String unitText(Motion.SpeedUnit unit) {
+  public static String unitText(Motion.SpeedUnit unit) {
     return switch (unit) {
       case PERCENT -> "%";
       case SEC -> "sec";
@@ -552,7 +543,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.Termination termination() {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.isWord("FINE")) {
       next();
       return new Motion.Fine();
@@ -580,7 +571,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.Option motionOption() {
-    LsToken t = next();
+    TpToken t = next();
     if (t.is(Kind.WORD)) {
       String w = t.text().toUpperCase(Locale.ROOT);
       switch (w) {
@@ -620,9 +611,9 @@ final class LsStatementParser extends LsTokenCursor {
             throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
           }
           if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
-            throw error(t, "not supported: motion option " + LsToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
+            throw error(t, "not supported: motion option " + TpToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
           }
-          throw error(t, "not supported: motion option '" + LsToken.clip(t.text())
+          throw error(t, "not supported: motion option '" + TpToken.clip(t.text())
               + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
         }
       }
@@ -651,7 +642,7 @@ final class LsStatementParser extends LsTokenCursor {
     }
   }
 
-  private static Expr.BinaryOp binaryOp(LsToken t) {
+  private static Expr.BinaryOp binaryOp(TpToken t) {
     return switch (t.kind()) {
       case STAR -> Expr.BinaryOp.MUL;
       case SLASH -> Expr.BinaryOp.DIVIDE;
@@ -675,7 +666,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Expr unary() {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.MINUS)) {
       next();
       if (peek().is(Kind.NUMBER)) {
@@ -708,7 +699,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** A single value: constant, register, I/O, parenthesised expression. */
   private Expr operand() {
-    LsToken t = next();
+    TpToken t = next();
     switch (t.kind()) {
       case NUMBER -> {
         return constant(t);
@@ -766,7 +757,7 @@ final class LsStatementParser extends LsTokenCursor {
     return new Expr.PosElement(new Item(idx, itemCommentAndClose("PR[i,j]")), element);
   }
 
-  private Expr constant(LsToken t) {
+  private Expr constant(TpToken t) {
     String s = t.text();
     if (s.indexOf('.') >= 0) {
       return new Expr.RealConst(finite(t));
@@ -774,7 +765,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return new Expr.IntConst(Integer.parseInt(s));
     } catch (NumberFormatException e) {
-      throw error(t, "integer " + LsToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
+      throw error(t, "integer " + TpToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
     }
   }
 
@@ -811,7 +802,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** The number inside brackets: a non-negative integer or {@code R[i]} (indirect). */
   private Index indexValue(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.NUMBER)) {
       int n = intConst("index of " + what + "[...]");
       checkRange(what, n);
@@ -861,7 +852,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** {@code n} or {@code R[i]} as in {@code UFRAME_NUM=n|R[i]}. */
   private Index numberOrRegister(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.NUMBER)) {
       return new Index.Direct(intConst(what + " value"));
     }
@@ -889,7 +880,7 @@ final class LsStatementParser extends LsTokenCursor {
   // ---- tokens -----------------------------------------------------------------------------
 
   private int intConst(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (!t.is(Kind.NUMBER) || t.text().indexOf('.') >= 0) {
       throw error("expected an integer (" + what + "), found " + t.describe());
     }
@@ -898,7 +889,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private double number(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (!t.is(Kind.NUMBER)) {
       throw error("expected a number (" + what + "), found " + t.describe());
     }
@@ -907,19 +898,19 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   /** A number token's value; one with hundreds of digits would be infinite, and is refused. */
-  private double finite(LsToken t) {
+  private double finite(TpToken t) {
     double v = Double.parseDouble(t.text());
     if (Double.isInfinite(v)) {
-      throw error(t, "number " + LsToken.clip(t.text()) + " is too large");
+      throw error(t, "number " + TpToken.clip(t.text()) + " is too large");
     }
     return v;
   }
 
-  private int parseIntOrFail(LsToken t, String digits) {
+  private int parseIntOrFail(TpToken t, String digits) {
     try {
       return Integer.parseInt(digits);
     } catch (NumberFormatException e) {
-      throw error(t, "number " + LsToken.clip(digits) + " is too large");
+      throw error(t, "number " + TpToken.clip(digits) + " is too large");
     }
   }
 

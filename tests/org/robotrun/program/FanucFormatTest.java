@@ -1,4 +1,4 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
