@@ -30,6 +30,15 @@ final class LsPositionParser extends TpTokenCursor {
   private final String file;
   private final List<Diagnostic> diagnostics;
 
+  private final java.util.Set<String> warned = new java.util.HashSet<>();
+
+  private void warnOnce(TpToken at, String message) {
+    if (warned.add(message)) {
+      diagnostics.add(Diagnostic.of(file, at.line(), at.column(), Diagnostic.Severity.WARNING,
+          Diagnostic.Kind.UNSUPPORTED, message));
+    }
+  }
+
   private LsPositionParser(String file, List<Diagnostic> diagnostics) {
     this.file = file;
     this.diagnostics = diagnostics;
@@ -61,6 +70,9 @@ final class LsPositionParser extends TpTokenCursor {
       TpToken start = peek();
       try {
         LocalPosition lp = block();
+        if (lp == null) {
+          continue;
+        }
         Integer earlier = firstLineOf.putIfAbsent(lp.number(), start.line());
         if (earlier != null) {
           diagnostics.add(Diagnostic.error(file, start.line(),
@@ -148,7 +160,13 @@ final class LsPositionParser extends TpTokenCursor {
       if (key.startsWith("GP")) {
         expect(Kind.COLON, "':' after " + t.text());
         if (!key.equals("GP1")) {
-          throw error(t, "not supported: motion group " + key + " in " + where + " (RobotRun moves one group, GP1)");
+          // Another motion group (a positioner, a second arm): kept in the file, not moved.
+          warnOnce(t, "not supported: motion group " + key + " (RobotRun moves group 1; the others are kept, not moved)");
+          while (!peek().is(Kind.EOL) && !peek().is(Kind.RBRACE)
+              && !(peek().is(Kind.WORD) && peek().text().toUpperCase(Locale.ROOT).startsWith("GP") && peek(1).is(Kind.COLON))) {
+            next();
+          }
+          continue;
         }
         if (sawGroup) {
           throw error(t, where + ": GP1 appears twice");
@@ -176,7 +194,17 @@ final class LsPositionParser extends TpTokenCursor {
         }
         default -> {
           if (key.matches("E\\d+")) {
-            throw error(t, "not supported: extended axis " + key + " in " + where);
+            // An extended axis (a rail, a turntable): read and kept in the file, not moved.
+            warnOnce(t, "not supported: extended axes (E1...) (kept, not moved)");
+            expect(Kind.EQ, "'=' after " + key);
+            if (peek().is(Kind.MINUS)) {
+              next();
+            }
+            expect(Kind.NUMBER, "a number after " + key + " =");
+            if (peek().isWord("mm") || peek().isWord("deg")) {
+              next();
+            }
+            continue;
           }
           boolean cart = indexOf(CARTESIAN, key) >= 0;
           boolean joint = indexOf(JOINT, key) >= 0;
@@ -209,6 +237,9 @@ final class LsPositionParser extends TpTokenCursor {
           }
         }
       }
+    }
+    if (!sawGroup && uf == null && ut == null && values.isEmpty()) {
+      return null; // only other groups' data: kept in the file, nothing for group 1
     }
     if (uf == null || ut == null) {
       throw error(start, where + ": expected 'UF : n, UT : n' (the frames the position was taught in)");

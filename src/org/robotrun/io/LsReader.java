@@ -170,6 +170,7 @@ public final class LsReader {
     private int lineCountLine;
     private final List<Instruction> instructions = new ArrayList<>();
     private final List<Integer> sourceLines = new ArrayList<>();
+    private final Map<String, Integer> unsupportedSeen = new java.util.HashMap<>();
     private Map<Integer, LocalPosition> positions = Map.of();
 
     Parse(String file, String text) {
@@ -317,14 +318,21 @@ public final class LsReader {
       }
       if (!Program.isValidName(words[0])) {
         diags.add(Diagnostic.error(file, line, "'" + clip(words[0])
-            + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
+            + "' is not a program name: expected letters, digits and '_', not starting with a digit, at most "
             + Program.MAX_NAME_LENGTH + " characters"));
       } else {
         name = words[0].toUpperCase(Locale.ROOT);
       }
       if (words.length > 1) {
-        diags.add(Diagnostic.warning(file, line,
-            "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
+        String sub = words[1];
+        attributes.put(Program.SUBTYPE_KEY, sub);
+        if (sub.equalsIgnoreCase("Cond")) {
+          diags.add(Diagnostic.warning(file, line,
+              "not supported: condition program (Cond sub-type, for MONITOR/WHEN): it is kept but not monitored"));
+        } else if (!sub.equalsIgnoreCase("Macro") && !sub.equalsIgnoreCase("Job") && !sub.equalsIgnoreCase("Process")) {
+          diags.add(Diagnostic.warning(file, line,
+              "not supported: program sub-type '" + clip(sub) + "' (read as a normal program)"));
+        }
       }
     }
 
@@ -475,8 +483,11 @@ public final class LsReader {
         Body body = body(text, p + 1, line);
         List<TpToken> tokens = body.tokens;
         boolean terminated = body.terminated;
-        if (!terminated && k < end && isContinuation(lines[k])) {
-          // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement.
+        StringBuilder raw = new StringBuilder(body.text);
+        int firstLine = k - 1;
+        while (!terminated && k < end && isContinuation(lines[k])) {
+          // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement;
+          // other statements a controller lists over several lines continue the same way.
           String cont = lines[k];
           int colon = cont.indexOf(':');
           Body second = body(cont, colon + 1, k + 1);
@@ -485,29 +496,48 @@ public final class LsReader {
           joined.addAll(second.tokens);
           tokens = joined;
           terminated = second.terminated;
+          raw.append('\n').append(cont, 0, cont.length() - (second.terminated ? cont.length() - cont.lastIndexOf(';') : 0));
         }
         Instruction in;
+        final int lineBase = firstLine;
         try {
-          TpStatementParser.Parsed parsed = TpStatementParser.parse(tokens);
+          TpStatementParser.Parsed parsed = TpStatementParser.parse(tokens,
+              l -> l - 1 >= lineBase && l - 1 < lines.length ? lines[l - 1] : null);
           in = parsed.instruction();
           for (String w : parsed.warnings()) {
-            diags.add(Diagnostic.warning(file, line, w));
+            diags.add(Diagnostic.of(file, line, 1, Diagnostic.Severity.WARNING, Diagnostic.Kind.RANGE, w));
+          }
+          if (in instanceof Instruction.Move m) {
+            for (var o : m.options()) {
+              if (o instanceof org.robotrun.program.Motion.RawOption r) {
+                notSupported(line, 1, r.what(), true, " (the motion runs without it)");
+              }
+            }
           }
           if (!terminated) {
             diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
           }
         } catch (TpSyntaxError e) {
-          diags.add(Diagnostic.error(file, e.line(), e.getMessage()));
-          // Keep the numbering of the following lines: the bad line stays as commented-out text.
-          String raw = text.substring(p + 1).strip();
-          in = new Instruction.CommentedOut(raw.endsWith(";") ? raw.substring(0, raw.length() - 1).stripTrailing() : raw);
+          String rawText = stripSemicolon(raw.toString().strip());
+          if (e.unsupported().isPresent()) {
+            String what = e.unsupported().get();
+            in = new Instruction.Unsupported(rawText, what, e.runnable());
+            notSupported(e.line(), e.column(), what, e.runnable(),
+                e.runnable() ? " (the line is skipped when it runs)" : " (the line alarms when it runs)");
+          } else {
+            diags.add(Diagnostic.of(file, e.line(), e.column(), Diagnostic.Severity.ERROR, Diagnostic.Kind.SYNTAX,
+                e.getMessage()));
+            // Keep the numbering of the following lines: the bad line stays as commented-out text.
+            String one = rawText.replace('\n', ' ');
+            in = new Instruction.CommentedOut(one.startsWith("//") ? one.substring(2).stripTrailing() : one);
+          }
         }
         instructions.add(in);
         sourceLines.add(line);
       }
     }
 
-    private record Body(List<TpToken> tokens, boolean terminated) {}
+    private record Body(List<TpToken> tokens, boolean terminated, String text) {}
 
     /** Tokens of a statement starting at {@code from}, without its final {@code ;}. */
     private static Body body(String text, int from, int line) {
@@ -519,7 +549,30 @@ public final class LsReader {
       if (terminated) {
         endIdx--;
       }
-      return new Body(TpLexer.tokenize(text.substring(from, endIdx), line, from + 1, true), terminated);
+      String body = text.substring(from, endIdx);
+      return new Body(TpLexer.tokenize(body, line, from + 1, true), terminated, body);
+    }
+
+    private static String stripSemicolon(String s) {
+      return s.endsWith(";") ? s.substring(0, s.length() - 1).stripTrailing() : s;
+    }
+
+    /** Reports a kind RobotRun does not run once per file: the first line, and how many lines have it. */
+    private void notSupported(int line, int column, String what, boolean runnable, String effect) {
+      Integer first = unsupportedSeen.get(what);
+      if (first == null) {
+        unsupportedSeen.put(what, diags.size());
+        diags.add(Diagnostic.of(file, line, column,
+            runnable ? Diagnostic.Severity.WARNING : Diagnostic.Severity.ERROR, Diagnostic.Kind.UNSUPPORTED,
+            "not supported: " + what + effect));
+      } else {
+        Diagnostic d = diags.get(first);
+        String msg = d.message();
+        int more = msg.endsWith(" more)") ? Integer.parseInt(msg.substring(msg.lastIndexOf(" and ") + 5, msg.lastIndexOf(' '))) + 1 : 1;
+        String base = more > 1 ? msg.substring(0, msg.lastIndexOf(" (and ")) : msg;
+        diags.set(first, Diagnostic.of(d.file(), d.line(), d.column(), d.severity(), d.kind(),
+            base + " (and " + more + " more)"));
+      }
     }
 
     private static boolean isContinuation(String text) {

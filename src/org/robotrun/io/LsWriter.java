@@ -39,7 +39,12 @@ public final class LsWriter {
   /** The file text (LF line ends). */
   public static String write(Program program) {
     StringBuilder sb = new StringBuilder(64 + program.lineCount() * 40);
-    sb.append("/PROG  ").append(program.name()).append('\n');
+    sb.append("/PROG  ").append(program.name());
+    String sub = program.attributes().get(Program.SUBTYPE_KEY);
+    if (sub != null) {
+      sb.append('\t').append(sub);
+    }
+    sb.append('\n');
     attributes(program, sb);
     sb.append("/MN\n");
     List<Instruction> lines = program.lines();
@@ -75,7 +80,8 @@ public final class LsWriter {
       }
     }
     for (Map.Entry<String, String> e : attrs.entrySet()) {
-      if (!LsAttributes.DEFAULTS.containsKey(e.getKey()) && !e.getKey().equals(LsAttributes.COMMENT)) {
+      if (!LsAttributes.DEFAULTS.containsKey(e.getKey()) && !e.getKey().equals(LsAttributes.COMMENT)
+          && !e.getKey().equals(Program.SUBTYPE_KEY)) {
         attribute(e.getKey(), e.getValue(), sb);
       }
     }
@@ -163,6 +169,7 @@ public final class LsWriter {
         }
         case Motion.Wjnt x -> sb.append("Wjnt");
         case Motion.Inc x -> sb.append("INC");
+        case Motion.RawOption x -> sb.append(x.text());
       }
     }
     sb.append("    ;\n");
@@ -331,6 +338,7 @@ public final class LsWriter {
       case Instruction.Blank b -> {
         // nothing: "   5:   ;"
       }
+      case Instruction.Unsupported u -> sb.append(u.text());
     }
   }
 

@@ -52,9 +52,19 @@ public record Program(String name, Map<String, String> attributes, String commen
     return new Program(name, Map.of(), "", lines, byNumber);
   }
 
-  /** Whether {@code name} is a valid program name (letters, digits, '_'; a letter first; ≤ 36). */
+  /**
+   * The /ATTR key under which the program's sub-type ({@code Macro}, {@code Cond}, {@code Job},
+   * {@code Process}) is kept: it is written on the /PROG line, not in /ATTR.
+   */
+  public static final String SUBTYPE_KEY = "/PROG SUBTYPE";
+
+  /**
+   * Whether {@code name} is a valid program name: letters, digits and '_', not starting with a
+   * digit, at most 36 characters. Controllers write names that start with '_' (background logic
+   * and system programs such as {@code _BGT_BTN_ABORT}).
+   */
   public static boolean isValidName(String name) {
-    if (name.isEmpty() || name.length() > MAX_NAME_LENGTH || !isAsciiLetter(name.charAt(0))) {
+    if (name.isEmpty() || name.length() > MAX_NAME_LENGTH || !(isAsciiLetter(name.charAt(0)) || name.charAt(0) == '_')) {
       return false;
     }
     for (int i = 1; i < name.length(); i++) {

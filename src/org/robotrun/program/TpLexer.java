@@ -18,6 +18,42 @@ import org.robotrun.program.TpToken.Kind;
 public final class TpLexer {
   private TpLexer() {}
 
+  /**
+   * Keywords of German controller listings and their English form: a German listing reads as
+   * the same program as its English one. The table holds the words seen in German .LS files
+   * (WARTE, AUFRUF, SPRUNG, MARKE, KONFIG ...); an unedited file is written back as read, and an
+   * edited line is written in English, which every controller reads.
+   */
+  private static final java.util.Map<String, String> GERMAN = java.util.Map.ofEntries(
+      java.util.Map.entry("WARTE", "WAIT"),
+      java.util.Map.entry("AUFRUF", "CALL"),
+      java.util.Map.entry("SPRUNG", "JMP"),
+      java.util.Map.entry("MARKE", "LBL"),
+      java.util.Map.entry("WENN", "IF"),
+      java.util.Map.entry("DANN", "THEN"),
+      java.util.Map.entry("SONST", "ELSE"),
+      java.util.Map.entry("ENDE", "END"),
+      java.util.Map.entry("ABBRUCH", "ABORT"),
+      java.util.Map.entry("FEIN", "FINE"),
+      java.util.Map.entry("KONFIG", "CONFIG"),
+      java.util.Map.entry("MELDUNG", "MESSAGE"),
+      java.util.Map.entry("AUSWAHL", "SELECT"),
+      java.util.Map.entry("UND", "AND"),
+      java.util.Map.entry("ODER", "OR"),
+      java.util.Map.entry("EIN", "ON"),
+      java.util.Map.entry("AUS", "OFF"),
+      java.util.Map.entry("SEK", "sec"));
+
+  /** The English keyword for a German one, else {@code word} itself (never after CALL: that is a name). */
+  static String english(String word, List<TpToken> before) {
+    String en = GERMAN.get(word.toUpperCase(java.util.Locale.ROOT));
+    if (en == null || (!before.isEmpty() && (before.get(before.size() - 1).isWord("CALL")
+        || before.get(before.size() - 1).isWord("RUN")))) {
+      return word;
+    }
+    return en;
+  }
+
   /** Shared one-character token texts, so punctuation does not allocate a string per token. */
   private static final String[] ONE_CHAR = new String[128];
 
@@ -55,6 +91,13 @@ public final class TpLexer {
           i = n;
           continue;
         }
+        if (c == '-' && i + 1 < n && text.charAt(i + 1) == '-') {
+          // "--eg:text": a remark line (some controller versions write them)
+          out.add(new TpToken(Kind.MINUS, "--", line, col));
+          out.add(new TpToken(Kind.RAW, text.substring(i + 2), line, col + 2));
+          i = n;
+          continue;
+        }
         if (c == '/' && i + 1 < n && text.charAt(i + 1) == '/') {
           out.add(new TpToken(Kind.SLASH, "//", line, col));
           out.add(new TpToken(Kind.RAW, text.substring(i + 2), line, col + 2));
@@ -67,7 +110,7 @@ public final class TpLexer {
         while (j < n && isWordPart(text.charAt(j))) {
           j++;
         }
-        out.add(new TpToken(Kind.WORD, text.substring(i, j), line, col));
+        out.add(new TpToken(Kind.WORD, english(text.substring(i, j), out), line, col));
         i = j;
         continue;
       }

@@ -74,10 +74,75 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("VOFFSET", "vision offset VOFFSET"),
       Map.entry("VISION", "iRVision"),
       Map.entry("COORD", "coordinated motion COORD"),
-      Map.entry("RTCP", "remote TCP (RTCP)"));
+      Map.entry("RTCP", "remote TCP (RTCP)"),
+      Map.entry("ERROR_PROG", "ERROR_PROG"),
+      Map.entry("RESUME_PROG", "RESUME_PROG"),
+      Map.entry("CLEAR_RESUME_PROG", "CLEAR_RESUME_PROG"),
+      Map.entry("RETURN_PATH_DSBL", "RETURN_PATH_DSBL"),
+      Map.entry("WHEN", "WHEN (condition program)"),
+      Map.entry("MONITOR_END", "MONITOR END"),
+      Map.entry("PL", "palletizing register PL[]"),
+      Map.entry("PAL", "palletizing"),
+      Map.entry("PALLETIZING_B", "PALLETIZING-B"),
+      Map.entry("PALLETIZING_END", "PALLETIZING-END"),
+      Map.entry("ARC_START", "arc welding"),
+      Map.entry("ARC_END", "arc welding"),
+      Map.entry("TRACK_END", "seam tracking"),
+      Map.entry("SEMAPHORE", "SEMAPHORE"),
+      Map.entry("POST_SEMAPHORE", "SEMAPHORE"),
+      Map.entry("WAIT_SEMAPHORE", "SEMAPHORE"),
+      Map.entry("SOFTFLOAT", "SOFTFLOAT"),
+      Map.entry("SOFT_FLOAT", "SOFTFLOAT"),
+      Map.entry("CNV", "conveyor tracking"),
+      Map.entry("LINE_TRACK", "line tracking"),
+      Map.entry("AIR", "AIR"),
+      Map.entry("STICK", "STICK"),
+      Map.entry("TOUCH", "touch sensing"),
+      Map.entry("SEARCH", "touch sensing SEARCH"),
+      Map.entry("GRIPPER", "gripper instruction"),
+      Map.entry("HAND", "HAND"),
+      Map.entry("PATH", "PATH"),
+      Map.entry("USER_ALARM", "user alarm"),
+      Map.entry("GROUP_OUTPUT", "group output"),
+      Map.entry("PTOOL", "PTOOL"),
+      Map.entry("CONST_PATH", "constant path"),
+      Map.entry("FORCE", "force control"),
+      Map.entry("FORCE_CTRL", "force control"),
+      Map.entry("TORQ_LIMIT", "TORQ_LIMIT"),
+      Map.entry("TORQ_LIMIT_END", "TORQ_LIMIT"),
+      Map.entry("CD_PAIR", "coordinated motion"),
+      Map.entry("ORG", "ORG"),
+      Map.entry("SET", "SET instruction"),
+      Map.entry("JOINT", "JOINT"),
+      Map.entry("GET_OFFSET", "vision GET_OFFSET"),
+      Map.entry("GET_PASSFAIL", "vision GET_PASSFAIL"),
+      Map.entry("GET_NFOUND", "vision GET_NFOUND"),
+      Map.entry("SET_REFERENCE", "vision SET_REFERENCE"),
+      Map.entry("CAMERA_CALIB", "vision CAMERA_CALIB"),
+      Map.entry("PRINT", "PRINT"),
+      Map.entry("DEFAULT", "DEFAULT"),
+      Map.entry("MACRO", "macro"),
+      Map.entry("MROT", "MROT"),
+      Map.entry("BREAK", "BREAK"),
+      Map.entry("COL_DETECT", "COL DETECT"),
+      Map.entry("COL_GUARD_ADJUST", "COL GUARD ADJUST"),
+      Map.entry("REMARK", "remark"),
+      Map.entry("FREE", "FREE"));
+
+  /**
+   * Kinds the program can run on without (a warning, the line is skipped): settings, monitors
+   * and diagnostics that change no position, flow or output a one-arm course relies on. Every
+   * other unsupported kind is an error: the line alarms when it runs.
+   */
+  private static final java.util.Set<String> RUNNABLE = java.util.Set.of(
+      "COL DETECT", "COL GUARD ADJUST", "JOINT_MAX_SPEED", "LINEAR_MAX_SPEED", "max_speed", "TIMER_OVERFLOW",
+      "DIAGNOSTIC", "LOCK PREG", "UNLOCK PREG", "TC_ONLINE", "PTH", "remark", "system variable assignment",
+      "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "PRINT", "BREAK", "MROT",
+      "constant path", "TORQ_LIMIT");
 
   private int nesting;
   private int operators;
+  private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
 
   private TpStatementParser(List<TpToken> tokens) {
@@ -92,7 +157,17 @@ public final class TpStatementParser extends TpTokenCursor {
    * @throws TpSyntaxError naming the line and what was expected
    */
   public static Parsed parse(List<TpToken> tokens) {
+    return parse(tokens, l -> null);
+  }
+
+  /**
+   * Parses one statement as {@link #parse(List)} does; {@code lineText} gives the text of a
+   * line by number (columns of the tokens index into it), so options RobotRun does not run
+   * are kept exactly as written. It may answer null; then they are rebuilt from the tokens.
+   */
+  public static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
     TpStatementParser p = new TpStatementParser(tokens);
+    p.lineText = lineText;
     Instruction in = p.statement();
     if (p.peek().is(Kind.SEMICOLON)) {
       throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
@@ -128,6 +203,12 @@ public final class TpStatementParser extends TpTokenCursor {
         next();
         return new Instruction.CommentedOut(next().text().stripTrailing());
       }
+      case MINUS -> {
+        if (t.text().equals("--")) {
+          throw unsupported(t, "remark (--eg:)", true);
+        }
+        throw error("expected a statement, found '-'");
+      }
       case EQ -> {
         next();
         Expr value = expression();
@@ -146,8 +227,12 @@ public final class TpStatementParser extends TpTokenCursor {
     if (isMotionType(w) && (peek(1).isWord("P") || peek(1).isWord("PR"))) {
       return motion();
     }
+    if (isMotionType(w) && peek(1).is(Kind.WORD) && peek(2).is(Kind.LBRACKET)) {
+      // J PAL_1[A_1] 100% CNT100, L VR[1]...: a target RobotRun has no positions for
+      throw unsupported(peek(1), "motion to " + targetKind(peek(1).text()), false);
+    }
     if (w.startsWith("$")) {
-      throw error("not supported: system variable assignment (" + TpToken.clip(t.text()) + ")");
+      throw unsupported(t, "system variable assignment", true);
     }
     next();
     return switch (w) {
@@ -239,14 +324,39 @@ public final class TpStatementParser extends TpTokenCursor {
     };
   }
 
+  private static String targetKind(String word) {
+    String w = word.toUpperCase(Locale.ROOT);
+    return w.startsWith("PAL_") ? "a palletizing point (PAL_n)" : w + "[]";
+  }
+
   private TpSyntaxError unknownStatement(TpToken t) {
     String w = t.text().toUpperCase(Locale.ROOT);
     String name = UNSUPPORTED.get(w);
     if (name != null) {
-      return error(t, "not supported: " + name);
+      return unsupported(t, name, RUNNABLE.contains(name));
+    }
+    if (w.startsWith("PALLETIZING") || w.startsWith("PAL_")) {
+      return unsupported(t, "palletizing", false);
+    }
+    if (t.is(Kind.WORD) && onlyWordsFollow()) {
+      // A macro is listed by its name alone ("OPEN_HAND", "HAND1 OPEN"); RobotRun has no macro table yet.
+      return unsupported(t, "macro call " + TpToken.clip(t.text()), false);
     }
     return error(t, "unknown statement '" + TpToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
+  }
+
+  /** True when the rest of the statement (after the current token) is words and numbers only. */
+  private boolean onlyWordsFollow() {
+    for (int k = 0; ; k++) {
+      TpToken x = peek(k);
+      if (x.is(Kind.EOL)) {
+        return true;
+      }
+      if (!x.is(Kind.WORD) && !x.is(Kind.NUMBER)) {
+        return false;
+      }
+    }
   }
 
   private Instruction positionRegisterAssignment() {
@@ -283,8 +393,17 @@ public final class TpStatementParser extends TpTokenCursor {
       case "JPOS" -> new Instruction.CurrentJpos();
       case "UFRAME" -> new Instruction.FromFrame(FrameKind.USER, index("UFRAME"));
       case "UTOOL" -> new Instruction.FromFrame(FrameKind.TOOL, index("UTOOL"));
-      default -> throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
+      default -> {
+        if (s.text().startsWith("$") || UNSUPPORTED.containsKey(s.text().toUpperCase(Locale.ROOT))) {
+          throw unsupported(s, "PR[i]=" + s.text().toUpperCase(Locale.ROOT) + "...", false);
+        }
+        throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
+      }
     };
+    if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+      // PR[1]=LPOS-PR[2], PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: position arithmetic beyond PR+PR
+      throw unsupported(peek(), "position arithmetic with LPOS, JPOS, P[] or more than two terms", false);
+    }
     return new Instruction.AssignPosReg(reg, src);
   }
 
@@ -349,6 +468,10 @@ public final class TpStatementParser extends TpTokenCursor {
       return new Instruction.IfThen(cond);
     }
     expect(Kind.COMMA, "',' then JMP or CALL (or THEN) after the IF condition");
+    if (!peek().isWord("JMP") && !peek().isWord("CALL") && !peek().is(Kind.EOL)) {
+      // IF (DI[49]),DO[73]=PULSE,0.5sec ; IF R[1]=1,R[2]=5 : an action instead of a branch
+      throw unsupported(peek(), "IF with an action (assignment, output or pulse)", false);
+    }
     return new Instruction.If(cond, branch());
   }
 
@@ -436,7 +559,7 @@ public final class TpStatementParser extends TpTokenCursor {
     if (type == Motion.Type.C) {
       if (!(peek().isWord("P") || peek().isWord("PR"))) {
         if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
-          throw error("not supported: motion options on the via point of a C motion (found " + peek().describe() + ")");
+          throw unsupported(peek(), "motion options on the via point of a C motion", false);
         }
         throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found "
             + peek().describe());
@@ -470,7 +593,7 @@ public final class TpStatementParser extends TpTokenCursor {
       next();
       value = new Motion.SpeedRegister(item("R"));
     } else if (t.is(Kind.WORD) && UNSUPPORTED.containsKey(t.text().toUpperCase(Locale.ROOT))) {
-      throw error(t, "not supported: " + UNSUPPORTED.get(t.text().toUpperCase(Locale.ROOT)));
+      throw unsupported(t, UNSUPPORTED.get(t.text().toUpperCase(Locale.ROOT)), false);
     } else {
       throw error("expected a speed (30%, 400mm/sec, 2sec, R[i]%...), found " + t.describe());
     }
@@ -591,7 +714,12 @@ public final class TpStatementParser extends TpTokenCursor {
         case "SKIP" -> {
           expect(Kind.COMMA, "',LBL[n]' after Skip");
           expectWordNamed("LBL", "LBL[n] after Skip,");
-          return new Motion.Skip(labelRef());
+          LabelRef l = labelRef();
+          if (peek().is(Kind.COMMA)) {
+            // Skip,LBL[1],PR[2]=LPOS: high-speed skip storing the position
+            return rawOption(t, "high-speed skip Skip,LBL[],PR[]=LPOS");
+          }
+          return new Motion.Skip(l);
         }
         case "WJNT" -> {
           return new Motion.Wjnt();
@@ -607,18 +735,59 @@ public final class TpStatementParser extends TpTokenCursor {
             }
             return new Motion.Acc(acc);
           }
-          if (UNSUPPORTED.containsKey(w)) {
-            throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
-          }
-          if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
-            throw error(t, "not supported: motion option " + TpToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
-          }
-          throw error(t, "not supported: motion option '" + TpToken.clip(t.text())
-              + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
+          return rawOption(t, optionKind(w));
         }
       }
     }
     throw error(t, "expected a motion option or the end of the statement, found " + t.describe());
+  }
+
+  private static String optionKind(String w) {
+    return switch (w) {
+      case "TB", "TA", "TIME" -> "TIME BEFORE/AFTER (TB/TA)";
+      case "DB", "DISTANCE" -> "DISTANCE BEFORE (DB)";
+      case "VOFFSET" -> "vision offset VOFFSET";
+      case "PTH" -> "PTH";
+      case "RTCP" -> "remote TCP (RTCP)";
+      case "COORD" -> "coordinated motion COORD";
+      case "MROT" -> "MROT";
+      case "BREAK" -> "BREAK";
+      case "CR" -> "corner region CR";
+      case "PSPD" -> "process speed PSPD";
+      default -> {
+        String name = UNSUPPORTED.get(w);
+        yield name != null ? name + " (as a motion option)" : "motion option " + TpToken.clip(w);
+      }
+    };
+  }
+
+  /**
+   * The rest of the statement from {@code from} (already consumed) to its end, kept as
+   * written: a motion option RobotRun does not run yet. Options after it go with it.
+   */
+  private Motion.RawOption rawOption(TpToken from, String what) {
+    TpToken last = from;
+    while (!peek().is(Kind.EOL)) {
+      last = next();
+    }
+    TpToken eol = peek();
+    String text = lineText.apply(from.line());
+    String raw;
+    if (text != null && eol.line() == from.line() && eol.column() - 1 <= text.length() && from.column() >= 1) {
+      raw = text.substring(from.column() - 1, eol.column() - 1).strip();
+    } else {
+      StringBuilder sb = new StringBuilder();
+      for (int k = tokens.indexOf(from); k >= 0 && k <= tokens.indexOf(last); k++) {
+        TpToken x = tokens.get(k);
+        if (k > 0 && sb.length() > 0 && tokens.get(k - 1).line() == x.line()
+            && tokens.get(k - 1).column() + tokens.get(k - 1).text().length() < x.column()) {
+          sb.append(' ');
+        }
+        sb.append(x.is(Kind.STRING) ? "'" + x.text() + "'" : x.text());
+      }
+      raw = sb.toString();
+    }
+    return new Motion.RawOption(raw, what);
   }
 
   // ---- expressions ------------------------------------------------------------------------
@@ -817,7 +986,10 @@ public final class TpStatementParser extends TpTokenCursor {
       return new Index.Indirect(reg, comment);
     }
     if (t.isWord("AR")) {
-      throw error(t, "not supported: an index through AR[] (use R[i])");
+      throw unsupported(t, "an index through AR[]", false);
+    }
+    if (t.is(Kind.WORD) && t.text().regionMatches(true, 0, "GP", 0, 2)) {
+      throw unsupported(t, "a group in " + what + "[GPn:...] (multi-group)", false);
     }
     throw error("expected an index (a number or R[i]) inside " + what + "[...], found " + t.describe());
   }

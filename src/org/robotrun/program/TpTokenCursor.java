@@ -67,10 +67,15 @@ public abstract class TpTokenCursor {
 
   /** An error on the line of the next token. */
   protected final TpSyntaxError error(String message) {
-    return new TpSyntaxError(peek().line(), message);
+    return TpSyntaxError.at(peek().line(), peek().column(), message);
   }
 
   protected static TpSyntaxError error(TpToken at, String message) {
-    return new TpSyntaxError(at.line(), message);
+    return TpSyntaxError.at(at.line(), at.column(), message);
+  }
+
+  /** A form the controller has and RobotRun does not run, at {@code at}. */
+  protected static TpSyntaxError unsupported(TpToken at, String what, boolean runnable) {
+    return TpSyntaxError.unsupported(at.line(), at.column(), what, runnable);
   }
 }

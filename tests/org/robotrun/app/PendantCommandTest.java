@@ -58,7 +58,7 @@ class PendantCommandTest {
     Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys", "--save", dir.toString());
     assertThat(r.exitCode()).isEqualTo(0);
     org.robotrun.io.LsReadResult back = org.robotrun.io.LsReader.read(dir.resolve("PICK1.LS"));
-    assertThat(back.hasErrors()).as(back.diagnostics().toString()).isFalse();
+    assertThat(back.hasAnyError()).as(back.diagnostics().toString()).isFalse();
     assertThat(back.program().lineCount()).isEqualTo(6);
     assertThat(back.program().positions()).containsKeys(1, 2, 3);
     assertThat(Files.readString(dir.resolve("PICK1.LS"))).contains("L P[2] 200mm/sec CNT50");
