@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.robotrun.program.FanucFormat;
 import org.robotrun.program.TpLexer;
 import org.robotrun.program.TpStatementParser;
 import org.robotrun.program.TpSyntaxError;
@@ -218,7 +219,8 @@ final class LsPositionParser extends TpTokenCursor {
             next();
           }
           TpToken n = expect(Kind.NUMBER, "a number after " + key + " =");
-          double v = Double.parseDouble(n.text());
+          // Held to 0.001 as a controller holds and prints it, so the model writes back as read.
+          double v = Double.parseDouble(FanucFormat.positionValue(Double.parseDouble(n.text())).strip());
           String unit = (key.equals("X") || key.equals("Y") || key.equals("Z")) ? "mm" : "deg";
           TpToken u = peek();
           if (!u.isWord(unit)) {

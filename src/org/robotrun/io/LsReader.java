@@ -21,6 +21,7 @@ import org.robotrun.program.TpTokenCursor;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Program;
+import org.robotrun.program.ProgramSource;
 
 /**
  * Reads FANUC ASCII {@code .LS} programs (TP-LANGUAGE.md): {@code /PROG}, {@code /ATTR},
@@ -86,13 +87,14 @@ public final class LsReader {
 
   private static LsReadResult read(String name, byte[] bytes) {
     int badLine = firstNonUtf8Line(bytes);
-    LsReadResult r = parse(name, decode(bytes));
+    java.nio.charset.Charset cs = badLine == 0 ? StandardCharsets.UTF_8 : StandardCharsets.ISO_8859_1;
+    LsReadResult r = new Parse(name, decode(bytes), bytes, cs).run();
     if (badLine == 0) {
       return r;
     }
     List<Diagnostic> all = new ArrayList<>(r.diagnostics());
     all.add(Diagnostic.warning(name, badLine,
-        "not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly"));
+        "not UTF-8: read as Latin-1 (ISO-8859-1), as controllers write it; written back in Latin-1"));
     return new LsReadResult(r.file(), r.program(), all, r.sourceLines());
   }
 
@@ -103,7 +105,7 @@ public final class LsReader {
 
   /** Parses text; CALL targets are not checked. */
   public static LsReadResult parse(String fileName, String text) {
-    return new Parse(fileName, text).run();
+    return new Parse(fileName, text, text.getBytes(StandardCharsets.UTF_8), StandardCharsets.UTF_8).run();
   }
 
   /** Parses text and checks CALL targets against {@code knownPrograms}. */
@@ -173,8 +175,18 @@ public final class LsReader {
     private final Map<String, Integer> unsupportedSeen = new java.util.HashMap<>();
     private Map<Integer, LocalPosition> positions = Map.of();
 
-    Parse(String file, String text) {
+    private final String text;
+    private final byte[] bytes;
+    private final java.nio.charset.Charset charset;
+    private final List<Integer> statementStart = new ArrayList<>();
+    private final List<String> sectionOrder = new ArrayList<>();
+    private final Map<String, Integer> sectionIndex = new java.util.HashMap<>();
+
+    Parse(String file, String text, byte[] bytes, java.nio.charset.Charset charset) {
       this.file = file;
+      this.text = text;
+      this.bytes = bytes;
+      this.charset = charset;
       // Some Windows editors put a UTF-8 byte-order mark before '/PROG'; it is not text.
       this.lines = splitLines(text.startsWith("\uFEFF") ? text.substring(1) : text);
       this.name = defaultName(file);
@@ -214,6 +226,8 @@ public final class LsReader {
           end++;
         }
         int headerLine = i + 1;
+        sectionOrder.add(header);
+        sectionIndex.putIfAbsent(header, i);
         switch (header) {
           case "/PROG" -> {
             if (sawProg) {
@@ -305,7 +319,70 @@ public final class LsReader {
       attrs.put(LsAttributes.LINE_COUNT, Integer.toString(instructions.size()));
       Program program = new Program(name, attrs, comment, instructions, positions);
       diags.addAll(LsProgramChecks.check(file, program, sourceLines));
-      return new LsReadResult(file, program, diags, sourceLines);
+      return new LsReadResult(file, withSource(program), diags, sourceLines);
+    }
+
+    /**
+     * The program with the text it was read from, when the file has the usual shape (/PROG,
+     * /ATTR, optionally /APPL, /MN, /POS, /END in that order, each once); else the program alone,
+     * and the writer lays the whole file out afresh.
+     */
+    private Program withSource(Program program) {
+      List<String> order = sectionOrder;
+      List<String> usual = new ArrayList<>(List.of("/PROG"));
+      if (order.contains("/ATTR")) {
+        usual.add("/ATTR");
+      }
+      if (order.contains("/APPL")) {
+        usual.add("/APPL");
+      }
+      usual.add("/MN");
+      if (order.contains("/POS")) {
+        usual.add("/POS");
+      }
+      usual.add("/END");
+      if (!order.equals(usual) || bytes == null) {
+        return program;
+      }
+      List<String> raw = rawLines(text);
+      if (raw.size() != lines.length) {
+        return program;
+      }
+      int mn = sectionIndex.get("/MN");
+      int tailStart = sectionIndex.getOrDefault("/POS", sectionIndex.get("/END"));
+      int firstStatement = statementStart.isEmpty() ? tailStart : statementStart.get(0);
+      List<String> header = raw.subList(0, firstStatement);
+      List<String> appl = order.contains("/APPL") ? raw.subList(sectionIndex.get("/APPL"), mn) : List.of();
+      List<List<String>> statements = new ArrayList<>();
+      for (int j = 0; j < statementStart.size(); j++) {
+        int from = statementStart.get(j);
+        int to = j + 1 < statementStart.size() ? statementStart.get(j + 1) : tailStart;
+        if (to < from) {
+          return program;
+        }
+        statements.add(raw.subList(from, to));
+      }
+      String lineEnd = text.contains("\r\n") ? "\r\n" : "\n";
+      ProgramSource src = new ProgramSource(bytes, charset, lineEnd, program, header, appl, statements,
+          raw.subList(tailStart, raw.size()));
+      return new Program(program.name(), program.attributes(), program.comment(), program.lines(),
+          program.positions(), java.util.Optional.of(src));
+    }
+
+    /** The text's lines split as {@link #splitLines} splits them, each keeping its line end. */
+    private static List<String> rawLines(String text) {
+      List<String> out = new ArrayList<>();
+      int s = 0;
+      for (int i = 0; i < text.length(); i++) {
+        if (text.charAt(i) == '\n') {
+          out.add(text.substring(s, i + 1));
+          s = i + 1;
+        }
+      }
+      if (s < text.length()) {
+        out.add(text.substring(s));
+      }
+      return out;
     }
 
     // ---- /PROG --------------------------------------------------------------------------
@@ -534,6 +611,7 @@ public final class LsReader {
         }
         instructions.add(in);
         sourceLines.add(line);
+        statementStart.add(line - 1);
       }
     }
 

@@ -18,15 +18,25 @@ import java.util.Optional;
  * @param comment the COMMENT attribute without its quotes ("" when absent)
  * @param lines the /MN lines; line n is {@code lines.get(n - 1)}
  * @param positions the /POS block: P[n] by number, in the order read
+ * @param source the text the program was read from, when it was read from a file: the writer
+ *     keeps what was not edited as it was. Not part of the program's value: two programs with
+ *     the same name, attributes, comment, lines and positions are equal whatever text they came from.
  */
 public record Program(String name, Map<String, String> attributes, String comment, List<Instruction> lines,
-    Map<Integer, LocalPosition> positions) {
+    Map<Integer, LocalPosition> positions, Optional<ProgramSource> source) {
 
   /** Longest program name FANUC accepts. */
   public static final int MAX_NAME_LENGTH = 36;
 
+  /** A program not read from a file. */
+  public Program(String name, Map<String, String> attributes, String comment, List<Instruction> lines,
+      Map<Integer, LocalPosition> positions) {
+    this(name, attributes, comment, lines, positions, Optional.empty());
+  }
+
   public Program {
     Objects.requireNonNull(name, "name");
+    Objects.requireNonNull(source, "source");
     Objects.requireNonNull(comment, "comment");
     attributes = Collections.unmodifiableMap(new LinkedHashMap<>(attributes));
     lines = List.copyOf(lines);
@@ -78,6 +88,34 @@ public record Program(String name, Map<String, String> attributes, String commen
 
   private static boolean isAsciiLetter(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+  }
+
+  /** This program with other lines and positions, keeping the source text it was read from. */
+  public Program withBody(List<Instruction> newLines, Map<Integer, LocalPosition> newPositions) {
+    return new Program(name, attributes, comment, newLines, newPositions, source);
+  }
+
+  /** This program without its source text (as if never read from a file). */
+  public Program withoutSource() {
+    return source.isEmpty() ? this : new Program(name, attributes, comment, lines, positions);
+  }
+
+  /** Equality of the program's value: name, attributes, comment, lines and positions (not the source text). */
+  @Override
+  public boolean equals(Object o) {
+    return o instanceof Program p && name.equals(p.name) && attributes.equals(p.attributes)
+        && comment.equals(p.comment) && lines.equals(p.lines) && positions.equals(p.positions);
+  }
+
+  @Override
+  public int hashCode() {
+    return Objects.hash(name, attributes, comment, lines, positions);
+  }
+
+  @Override
+  public String toString() {
+    return "Program[name=" + name + ", attributes=" + attributes + ", comment=" + comment + ", lines=" + lines
+        + ", positions=" + positions + "]";
   }
 
   /** Number of /MN lines. */

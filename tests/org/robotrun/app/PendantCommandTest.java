@@ -123,7 +123,7 @@ class PendantCommandTest {
     assertThat(bad.exitCode()).isEqualTo(2);
     assertThat(bad.err()).contains("--controller: expected sim or stand-in, got 'real'");
     Path broken = dir.resolve("BROKEN.LS");
-    Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  FROB ;\n/END\n");
+    Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  R[1]= ;\n/END\n");
     Run b = run("pendant", "--program", broken.toString(), "--keys", keys.toString());
     assertThat(b.exitCode()).isEqualTo(2);
     assertThat(b.err()).contains("--program: ").contains("BROKEN.LS:");

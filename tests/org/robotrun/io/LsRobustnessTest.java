@@ -153,8 +153,10 @@ class LsRobustnessTest {
     Files.write(f, all);
     LsReadResult r = LsReader.read(f);
     assertThat(messages(r)).containsExactly(
-        f + ":3: warning: not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly");
+        f + ":3: warning: not UTF-8: read as Latin-1 (ISO-8859-1), as controllers write it; written back in Latin-1");
     assertThat(r.program().line(1)).isEqualTo(new org.robotrun.program.Instruction.Comment(" caf\u00e9"));
+    // Written back as read: the Latin-1 byte is not turned into UTF-8.
+    assertThat(LsWriter.bytes(r.program())).isEqualTo(all);
   }
 
   @Test
