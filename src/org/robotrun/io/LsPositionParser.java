@@ -32,6 +32,7 @@ final class LsPositionParser extends TpTokenCursor {
   private final List<Diagnostic> diagnostics;
 
   private final java.util.Set<String> warned = new java.util.HashSet<>();
+  private java.util.Set<Integer> otherGroupsOnly = new java.util.HashSet<>();
 
   private void warnOnce(TpToken at, String message) {
     if (warned.add(message)) {
@@ -54,7 +55,14 @@ final class LsPositionParser extends TpTokenCursor {
    * @return P[n] by number in file order; bad blocks are left out (and reported)
    */
   static Map<Integer, LocalPosition> parse(String file, List<String> lines, int firstLine, List<Diagnostic> diagnostics) {
+    return parse(file, lines, firstLine, diagnostics, new java.util.HashSet<>());
+  }
+
+  /** As {@link #parse(String, List, int, List)}; adds to {@code otherGroupsOnly} the P[n] that hold no group-1 data. */
+  static Map<Integer, LocalPosition> parse(String file, List<String> lines, int firstLine, List<Diagnostic> diagnostics,
+      java.util.Set<Integer> otherGroupsOnly) {
     LsPositionParser p = new LsPositionParser(file, diagnostics);
+    p.otherGroupsOnly = otherGroupsOnly;
     for (int i = 0; i < lines.size(); i++) {
       List<TpToken> t = TpLexer.tokenize(lines.get(i), firstLine + i, 1, false);
       p.tokens.addAll(t.subList(0, t.size() - 1));
@@ -241,6 +249,7 @@ final class LsPositionParser extends TpTokenCursor {
       }
     }
     if (!sawGroup && uf == null && ut == null && values.isEmpty()) {
+      otherGroupsOnly.add(number);
       return null; // only other groups' data: kept in the file, nothing for group 1
     }
     if (uf == null || ut == null) {

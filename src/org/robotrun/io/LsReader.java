@@ -172,7 +172,8 @@ public final class LsReader {
     private int lineCountLine;
     private final List<Instruction> instructions = new ArrayList<>();
     private final List<Integer> sourceLines = new ArrayList<>();
-    private final Map<String, Integer> unsupportedSeen = new java.util.HashMap<>();
+    private final Map<String, int[]> unsupportedSeen = new java.util.HashMap<>();
+    private final Set<Integer> otherGroupsOnly = new java.util.HashSet<>();
     private Map<Integer, LocalPosition> positions = Map.of();
 
     private final String text;
@@ -265,7 +266,7 @@ public final class LsReader {
             for (int k = start; k < end; k++) {
               body.add(lines[k]);
             }
-            positions = LsPositionParser.parse(file, body, start + 1, diags);
+            positions = LsPositionParser.parse(file, body, start + 1, diags, otherGroupsOnly);
           }
           case "/END" -> {
             sawEnd = true;
@@ -318,7 +319,13 @@ public final class LsReader {
       }
       attrs.put(LsAttributes.LINE_COUNT, Integer.toString(instructions.size()));
       Program program = new Program(name, attrs, comment, instructions, positions);
-      diags.addAll(LsProgramChecks.check(file, program, sourceLines));
+      for (Diagnostic d : LsProgramChecks.check(file, program, sourceLines)) {
+        // A point of another motion group only (GP2 and no GP1) is there; it was reported once.
+        boolean otherGroup = otherGroupsOnly.stream().anyMatch(n -> d.message().startsWith("P[" + n + "] is used but /POS has no"));
+        if (!otherGroup) {
+          diags.add(d);
+        }
+      }
       return new LsReadResult(file, withSource(program), diags, sourceLines);
     }
 
@@ -637,21 +644,20 @@ public final class LsReader {
 
     /** Reports a kind RobotRun does not run once per file: the first line, and how many lines have it. */
     private void notSupported(int line, int column, String what, boolean runnable, String effect) {
-      Integer first = unsupportedSeen.get(what);
-      if (first == null) {
-        unsupportedSeen.put(what, diags.size());
+      int[] seen = unsupportedSeen.get(what);
+      String base = "not supported: " + what + effect;
+      if (seen == null) {
+        unsupportedSeen.put(what, new int[] {diags.size(), 0});
         diags.add(Diagnostic.of(file, line, column,
-            runnable ? Diagnostic.Severity.WARNING : Diagnostic.Severity.ERROR, Diagnostic.Kind.UNSUPPORTED,
-            "not supported: " + what + effect));
+            runnable ? Diagnostic.Severity.WARNING : Diagnostic.Severity.ERROR, Diagnostic.Kind.UNSUPPORTED, base));
       } else {
-        Diagnostic d = diags.get(first);
-        String msg = d.message();
-        int more = msg.endsWith(" more)") ? Integer.parseInt(msg.substring(msg.lastIndexOf(" and ") + 5, msg.lastIndexOf(' '))) + 1 : 1;
-        String base = more > 1 ? msg.substring(0, msg.lastIndexOf(" (and ")) : msg;
-        diags.set(first, Diagnostic.of(d.file(), d.line(), d.column(), d.severity(), d.kind(),
-            base + " (and " + more + " more)"));
+        seen[1]++;
+        Diagnostic d = diags.get(seen[0]);
+        diags.set(seen[0], Diagnostic.of(d.file(), d.line(), d.column(), d.severity(), d.kind(),
+            base + " (and " + seen[1] + " more line" + (seen[1] == 1 ? ")" : "s)")));
       }
     }
+
 
     private static boolean isContinuation(String text) {
       int p = skipSpaces(text, 0);

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import org.robotrun.program.FanucFormat;
 import org.robotrun.program.TpLexer;
+import org.robotrun.program.TpLimits;
 import org.robotrun.program.TpStatementParser;
 import org.robotrun.program.TpSyntaxError;
 import org.robotrun.program.TpToken;
@@ -495,7 +496,22 @@ public final class LsWriter {
     };
   }
 
+  /**
+   * Writes an expression. The reader and the pendant refuse nesting beyond {@link
+   * TpLimits#MAX_NESTING}; a model built otherwise is refused here with a message rather than
+   * overflowing the stack.
+   *
+   * @throws IllegalArgumentException when {@code e} is nested deeper than the limit
+   */
   static void expr(Expr e, StringBuilder sb) {
+    if (TpLimits.nesting(e, TpLimits.MAX_NESTING) > TpLimits.MAX_NESTING) {
+      throw new IllegalArgumentException("expression nested deeper than " + TpLimits.MAX_NESTING
+          + " levels of parentheses and signs: a controller would not read it");
+    }
+    exprUnchecked(e, sb);
+  }
+
+  private static void exprUnchecked(Expr e, StringBuilder sb) {
     switch (e) {
       case Expr.IntConst c -> sb.append(c.value());
       case Expr.RealConst c -> sb.append(FanucFormat.real(c.value()));
@@ -531,7 +547,7 @@ public final class LsWriter {
       }
       case Expr.Group g -> {
         sb.append('(');
-        expr(g.inner(), sb);
+        exprUnchecked(g.inner(), sb);
         sb.append(')');
       }
     }
@@ -540,10 +556,10 @@ public final class LsWriter {
   private static void operand(Expr e, boolean parenthesise, StringBuilder sb) {
     if (parenthesise) {
       sb.append('(');
-      expr(e, sb);
+      exprUnchecked(e, sb);
       sb.append(')');
     } else {
-      expr(e, sb);
+      exprUnchecked(e, sb);
     }
   }
 

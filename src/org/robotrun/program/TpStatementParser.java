@@ -22,11 +22,11 @@ import org.robotrun.program.Instruction.FrameKind;
  */
 public final class TpStatementParser extends TpTokenCursor {
 
-  /** Deepest parenthesis nesting accepted; far beyond what anyone types on a pendant. */
-  static final int MAX_NESTING = 64;
+  /** Deepest nesting of parentheses and prefix operators accepted ({@link TpLimits#MAX_NESTING}). */
+  static final int MAX_NESTING = TpLimits.MAX_NESTING;
 
-  /** Most operators in one statement; keeps trees shallow enough for recursive walkers. */
-  static final int MAX_OPERATORS = 1000;
+  /** Most operators in one statement ({@link TpLimits#MAX_OPERATORS}). */
+  static final int MAX_OPERATORS = TpLimits.MAX_OPERATORS;
 
   private static final String VALUE_EXPECTED =
       "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found ";
@@ -395,7 +395,8 @@ public final class TpStatementParser extends TpTokenCursor {
       case "UTOOL" -> new Instruction.FromFrame(FrameKind.TOOL, index("UTOOL"));
       default -> {
         if (s.text().startsWith("$") || UNSUPPORTED.containsKey(s.text().toUpperCase(Locale.ROOT))) {
-          throw unsupported(s, "PR[i]=" + s.text().toUpperCase(Locale.ROOT) + "...", false);
+          String name = UNSUPPORTED.get(s.text().toUpperCase(Locale.ROOT));
+          throw unsupported(s, "PR[i]=" + (name != null ? name : "system variable"), false);
         }
         throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
       }
@@ -842,14 +843,24 @@ public final class TpStatementParser extends TpTokenCursor {
         return negate(constant(next()));
       }
       countOperator();
-      return new Expr.Unary(Expr.UnaryOp.MINUS, unary());
+      return nestedUnary(Expr.UnaryOp.MINUS);
     }
     if (t.is(Kind.BANG)) {
       next();
       countOperator();
-      return new Expr.Unary(Expr.UnaryOp.NOT, unary());
+      return nestedUnary(Expr.UnaryOp.NOT);
     }
     return operand();
+  }
+
+  /** A prefix operator's operand, counted as one level of nesting (as a parenthesis is). */
+  private Expr nestedUnary(Expr.UnaryOp op) {
+    if (++nesting > MAX_NESTING) {
+      throw error("expression nested too deeply: at most " + MAX_NESTING + " levels of parentheses and signs");
+    }
+    Expr operand = unary();
+    nesting--;
+    return new Expr.Unary(op, operand);
   }
 
   private Expr negate(Expr c) {
@@ -875,7 +886,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case LPAREN -> {
         if (++nesting > MAX_NESTING) {
-          throw error(t, "parentheses nested too deeply: at most " + MAX_NESTING + " levels");
+          throw error(t, "expression nested too deeply: at most " + MAX_NESTING + " levels of parentheses and signs");
         }
         Expr inner = expression();
         expect(Kind.RPAREN, "')' closing the '(' of column " + t.column());
@@ -902,7 +913,10 @@ public final class TpStatementParser extends TpTokenCursor {
           default -> {
             String name = UNSUPPORTED.get(w);
             if (name != null) {
-              throw error(t, "not supported: " + name);
+              throw unsupported(t, name + " in an expression", false);
+            }
+            if (w.startsWith("$")) {
+              throw unsupported(t, "system variable in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
           }

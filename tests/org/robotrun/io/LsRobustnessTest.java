@@ -119,7 +119,7 @@ class LsRobustnessTest {
     LsReadResult r = LsReader.parse("d.ls", "/PROG  D\n/MN\n   1:  R[1]=" + deep + "    ;\n   2:  R[2]=!" + "-".repeat(10_000)
         + "R[1]    ;\n   3:  R[3]=1" + "+1".repeat(10_000) + "    ;\n/POS\n/END\n");
     assertThat(messages(r)).containsExactly(
-        "d.ls:3: parentheses nested too deeply: at most 64 levels",
+        "d.ls:3: expression nested too deeply: at most 64 levels of parentheses and signs",
         "d.ls:4: expression too long: more than 1000 operators in one statement",
         "d.ls:5: expression too long: more than 1000 operators in one statement");
     String ok = "(".repeat(64) + "1" + ")".repeat(64);
