@@ -85,7 +85,8 @@ public final class LsReader {
     return 0;
   }
 
-  private static LsReadResult read(String name, byte[] bytes) {
+  /** Reads a file's bytes (already loaded) as {@link #read(Path)} does; {@code name} names it in messages. */
+  public static LsReadResult read(String name, byte[] bytes) {
     int badLine = firstNonUtf8Line(bytes);
     java.nio.charset.Charset cs = badLine == 0 ? StandardCharsets.UTF_8 : StandardCharsets.ISO_8859_1;
     LsReadResult r = new Parse(name, decode(bytes), bytes, cs).run();
