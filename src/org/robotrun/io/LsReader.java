@@ -590,7 +590,7 @@ public final class LsReader {
               l -> l - 1 >= lineBase && l - 1 < lines.length ? lines[l - 1] : null);
           in = parsed.instruction();
           for (String w : parsed.warnings()) {
-            diags.add(Diagnostic.of(file, line, 1, Diagnostic.Severity.WARNING, Diagnostic.Kind.RANGE, w));
+            diags.add(Diagnostic.warning(file, line, w));
           }
           if (in instanceof Instruction.Move m) {
             for (var o : m.options()) {

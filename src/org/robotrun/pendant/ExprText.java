@@ -111,6 +111,12 @@ public final class ExprText {
     Parser p = new Parser(text);
     Expr e = p.expr(1);
     p.expectEnd();
+    // The controller's entry rules (program.EntryRules): refused here as the pendant does.
+    java.util.Optional<String> refused = org.robotrun.program.EntryRules.refusal(e);
+    if (refused.isPresent()) {
+      String r = refused.get();
+      throw new BadText(Character.toUpperCase(r.charAt(0)) + r.substring(1));
+    }
     return e;
   }
 

@@ -175,6 +175,18 @@ public final class TpStatementParser extends TpTokenCursor {
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
     }
+    Expr checked = switch (in) {
+      case Instruction.AssignRegister a -> a.value();
+      case Instruction.AssignPosElement a -> a.value();
+      case Instruction.If f -> f.condition();
+      case Instruction.IfThen f -> f.condition();
+      case Instruction.WaitCondition w -> w.condition();
+      case Instruction.SetIo s -> s.value();
+      default -> null;
+    };
+    if (checked != null) {
+      EntryRules.refusal(checked).ifPresent(r -> p.warnings.add(r + " (a pendant refuses this entry)"));
+    }
     return new Parsed(in, List.copyOf(p.warnings));
   }
 

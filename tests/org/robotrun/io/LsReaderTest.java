@@ -76,8 +76,8 @@ class LsReaderTest {
     assertThat(in).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.Group(
         new Expr.Binary(BinaryOp.ADD, new Expr.IntConst(2),
             new Expr.Binary(BinaryOp.MUL, new Expr.IntConst(3), new Expr.IntConst(4))))));
-    Instruction logic = only("  IF R[1]=1 OR R[2]>2 AND DI[1]=ON,JMP LBL[1] ;\n   2:  LBL[1]  ;");
-    Expr cond = ((Instruction.If) logic).condition();
+    Instruction logic = only("  IF (R[1]=1 OR R[2]>2 AND DI[1]=ON),JMP LBL[1] ;\n   2:  LBL[1]  ;");
+    Expr cond = ((Expr.Group) ((Instruction.If) logic).condition()).inner();
     assertThat(cond).isInstanceOfSatisfying(Expr.Binary.class, b -> {
       assertThat(b.op()).isEqualTo(BinaryOp.OR);
       assertThat(((Expr.Binary) b.right()).op()).isEqualTo(BinaryOp.AND);

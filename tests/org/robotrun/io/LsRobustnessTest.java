@@ -120,7 +120,7 @@ class LsRobustnessTest {
         + "R[1]    ;\n   3:  R[3]=1" + "+1".repeat(10_000) + "    ;\n/POS\n/END\n");
     assertThat(messages(r)).containsExactly(
         "d.ls:3: expression nested too deeply: at most 64 levels of parentheses and signs",
-        "d.ls:4: expression too long: more than 1000 operators in one statement",
+        "d.ls:4: expression nested too deeply: at most 64 levels of parentheses and signs",
         "d.ls:5: expression too long: more than 1000 operators in one statement");
     String ok = "(".repeat(64) + "1" + ")".repeat(64);
     assertThat(LsReader.parse("d.ls", "/PROG  D\n/MN\n   1:  R[1]=" + ok + "    ;\n/POS\n/END\n").diagnostics()).isEmpty();
