@@ -286,7 +286,7 @@ public final class LsReader {
             }
             if (content > 0) {
               diags.add(Diagnostic.warning(file, headerLine,
-                  "not supported: section " + header + " (its " + content + " lines are ignored)"));
+                  "not supported: section " + header + " (its " + content + " lines are kept, not used)"));
             }
           }
         }

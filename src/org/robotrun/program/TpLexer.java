@@ -105,6 +105,11 @@ public final class TpLexer {
           continue;
         }
       }
+      if (c == '@' && i + 1 < n && (text.charAt(i + 1) == 'P' || text.charAt(i + 1) == 'p')) {
+        // "J @P[3] 100% FINE": the controller marks the point the robot stands at; not part of the statement
+        i++;
+        continue;
+      }
       if (isWordStart(c)) {
         int j = i + 1;
         while (j < n && isWordPart(text.charAt(j))) {

@@ -354,6 +354,14 @@ public final class TpStatementParser extends TpTokenCursor {
       // A macro is listed by its name alone ("OPEN_HAND", "HAND1 OPEN"); RobotRun has no macro table yet.
       return unsupported(t, "macro call " + TpToken.clip(t.text()), false);
     }
+    if (t.is(Kind.WORD) && peek().is(Kind.LBRACKET)) {
+      // WELD_PORT[1]=..., SDO[2]=ON, HOLD[1]: a register or port kind of an application package
+      return unsupported(t, TpToken.clip(w) + "[]", false);
+    }
+    if (t.is(Kind.WORD) && peek().is(Kind.WORD)) {
+      // Arc Start[1], Weave Sine[1], Touch Offset PR[1], Search Start[1]: application instructions
+      return unsupported(t, "instruction " + TpToken.clip(t.text() + " " + peek().text()), false);
+    }
     return error(t, "unknown statement '" + TpToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
@@ -720,6 +728,9 @@ public final class TpStatementParser extends TpTokenCursor {
           return new Motion.Offset();
         }
         case "TOOL_OFFSET" -> {
+          if (!peek().is(Kind.COMMA)) {
+            return rawOption(t, "Tool_Offset with TOOL_OFFSET CONDITION");
+          }
           expect(Kind.COMMA, "',PR[i]' after Tool_Offset");
           expectWordNamed("PR", "PR[i] after Tool_Offset,");
           return new Motion.ToolOffsetPr(item("PR"));

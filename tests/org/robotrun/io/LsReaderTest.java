@@ -396,7 +396,7 @@ class LsReaderTest {
   void sectionsAreCheckedAndExtraSectionsFlagged() {
     assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
         .containsExactly(
-                "s.ls:4: warning: not supported: section /APPL (its 1 lines are ignored)",
+                "s.ls:4: warning: not supported: section /APPL (its 1 lines are kept, not used)",
             "s.ls:10: warning: text after /END is ignored");
     assertThat(messages(LsReader.parse("n.ls", "/PROG  1BAD\n/MN\n/POS\n/END\n")))
         .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', not starting with a digit, at most 36 characters");
