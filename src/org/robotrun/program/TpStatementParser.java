@@ -127,7 +127,12 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("COL_DETECT", "COL DETECT"),
       Map.entry("COL_GUARD_ADJUST", "COL GUARD ADJUST"),
       Map.entry("REMARK", "remark"),
-      Map.entry("FREE", "FREE"));
+      Map.entry("FREE", "FREE"),
+      Map.entry("STRLEN", "string functions"),
+      Map.entry("SUBSTR", "string functions"),
+      Map.entry("FINDSTR", "string functions"),
+      Map.entry("STATION", "station sync"),
+      Map.entry("DIAGNOSTIC_REC", "DIAGNOSTIC"));
 
   /**
    * Kinds the program can run on without (a warning, the line is skipped): settings, monitors
