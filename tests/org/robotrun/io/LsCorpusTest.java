@@ -122,4 +122,16 @@ class LsCorpusTest {
     Instruction.Move vmove = (Instruction.Move) r.program().line(5);
     assertThat(vmove.options()).containsExactly(new Motion.RawOption("VOFFSET,VR[1]", "vision offset VOFFSET"));
   }
+
+  @Test
+  void everyFormInOneFileReadsWithNoSyntaxErrorAndRoundTrips() throws IOException {
+    // tests/resources/forms/ALLFORMS.LS: one line per statement form listed in issue 14 and more
+    Path f = Path.of("tests/resources/forms/ALLFORMS.LS");
+    LsReadResult r = LsReader.read(f);
+    assertThat(r.diagnostics()).noneMatch(d -> d.kind() == Diagnostic.Kind.SYNTAX);
+    assertThat(r.program().lineCount()).isEqualTo(117);
+    assertThat(LsWriter.bytes(r.program())).isEqualTo(Files.readAllBytes(f));
+    String fresh = LsWriter.write(r.program().withoutSource());
+    assertThat(LsReader.parse("ALLFORMS.LS", fresh).program()).as(fresh).isEqualTo(r.program());
+  }
 }
