@@ -114,6 +114,11 @@ public enum AlarmCode {
   SIMU_011("SIMU-011", AlarmSeverity.ABORT, "Motion failed", Source.OWN,
       "The motion planner refused a move for a reason it could not name more precisely.",
       "RESET, then check the target position and the frames it was taught in."),
+  SIMU_012("SIMU-012", AlarmSeverity.ABORT, "Not supported in RobotRun", Source.OWN,
+      "The line is a valid controller instruction that the simulator reads and keeps but cannot run (e.g. a SKIP "
+          + "CONDITION, string functions). A controller would run it.",
+      "Leave the line out of programs you run in RobotRun, or run this part on a real controller; `robotrun check` "
+          + "lists such lines."),
   RUN_001("RUN-001", AlarmSeverity.ABORT, "Time limit", Source.OWN,
       "`robotrun run` stopped the program because it ran longer than --max-sim-seconds of simulated time (a "
           + "headless-run limit; no controller has it).",

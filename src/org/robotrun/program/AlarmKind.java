@@ -19,7 +19,8 @@ public enum AlarmKind {
   WRITE_PROTECTED(AlarmCode.SIMU_004),
   USER_ALARM(AlarmCode.INTP_213),
   ABORTED(AlarmCode.SIMU_005),
-  MOTION(AlarmCode.SIMU_011);
+  MOTION(AlarmCode.SIMU_011),
+  NOT_SUPPORTED(AlarmCode.SIMU_012);
 
   private final AlarmCode entry;
 

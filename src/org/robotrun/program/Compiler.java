@@ -149,7 +149,7 @@ final class Compiler {
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
       case Instruction.Unsupported u -> u.runnable() ? new Ops.Nop()
-          : new Ops.Fail(AlarmKind.STRUCTURE, "not supported in RobotRun: " + u.what());
+          : new Ops.Fail(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: " + u.what());
     };
   }
 
