@@ -418,7 +418,7 @@ public final class NumericIk {
         atLimit = i;
       }
     }
-    String detail = String.format("best error %.3f mm, %.4f rad after %d iterations (%s)",
+    String detail = String.format(java.util.Locale.ROOT, "best error %.3f mm, %.4f rad after %d iterations (%s)",
         posErr, rotErr, iterations, why);
     if (atLimit >= 0) {
       return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
