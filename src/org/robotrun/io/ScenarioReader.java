@@ -54,6 +54,12 @@ public final class ScenarioReader {
   /** Largest position coordinate or size, in mm (the bound every position entry shares). */
   public static final double MAX_LENGTH_MM = PoseLimits.MAX_COORDINATE_MM;
 
+  /**
+   * Most objects in one scenario: every one is a collision body checked each tick, and a cell
+   * for teaching holds tens, not hundred thousands. Loading is linear in the objects either way.
+   */
+  public static final int MAX_OBJECTS = 100_000;
+
   /** Highest register index a scenario may preset. */
   public static final int MAX_REGISTER = 200;
 
@@ -306,6 +312,10 @@ public final class ScenarioReader {
       List<WorldObject> out = new ArrayList<>();
       JArray arr = array(top, "objects", "", false);
       if (arr == null) {
+        return out;
+      }
+      if (arr.items().size() > MAX_OBJECTS) {
+        error(arr.line(), "objects", arr.items().size() + " objects; a scenario may hold at most " + MAX_OBJECTS);
         return out;
       }
       Map<String, ObjectKind> kinds = new LinkedHashMap<>();
