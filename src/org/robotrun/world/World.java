@@ -47,13 +47,16 @@ public final class World {
   private static void checkParents(Map<String, WorldObject> m, WorldObject o, Set<String> cleared) {
     Set<String> seen = new LinkedHashSet<>();
     seen.add(o.name());
-    for (Optional<String> p = o.parent(); p.isPresent() && !cleared.contains(p.get()); ) {
+    for (Optional<String> p = o.parent(); p.isPresent(); ) {
       WorldObject parent = m.get(p.get());
       if (parent == null) {
         throw new IllegalArgumentException(o.name() + ": parent '" + p.get() + "' does not exist");
       }
       if (parent.kind() != ObjectKind.FIXTURE) {
         throw new IllegalArgumentException(o.name() + ": parent '" + p.get() + "' is not a fixture");
+      }
+      if (cleared.contains(parent.name())) {
+        break;  // its chain above was checked already
       }
       if (!seen.add(parent.name())) {
         throw new IllegalArgumentException(o.name() + ": parents form a loop through '" + parent.name() + "'");
