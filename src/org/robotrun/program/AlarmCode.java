@@ -53,7 +53,7 @@ public enum AlarmCode {
       "Follow the CALLs from the program the alarm names and break the loop."),
   INTP_304("INTP-304", AlarmSeverity.ABORT, "Specified value exceeds limit", Source.VERIFIED,
       "A value is outside what the instruction accepts: OVERRIDE outside 1..100, a frame number outside 0..10, CNT "
-          + "outside 0..100, ACC outside 0..150, a speed not above 0.",
+          + "outside 0..100, ACC outside 0..150, a speed not above 0; or arithmetic overflowed what a register holds.",
       "Change the value on the line to one inside the range the message shows."),
   INTP_311("INTP-311", AlarmSeverity.ABORT, "Uninitialized data is used", Source.VERIFIED,
       "The line uses a position P[n] that was never taught (the program's /POS block has no P[n]), or an Offset "
@@ -122,7 +122,11 @@ public enum AlarmCode {
   RUN_001("RUN-001", AlarmSeverity.ABORT, "Time limit", Source.OWN,
       "`robotrun run` stopped the program because it ran longer than --max-sim-seconds of simulated time (a "
           + "headless-run limit; no controller has it).",
-      "Look for a WAIT that never ends or an endless loop; raise --max-sim-seconds if the program is just long.");
+      "Look for a WAIT that never ends or an endless loop; raise --max-sim-seconds if the program is just long."),
+  RUN_002("RUN-002", AlarmSeverity.ABORT, "Wall-clock limit", Source.OWN,
+      "`robotrun run` stopped because the run took longer than --max-wall-seconds of real time (a safety net for "
+          + "graders; no controller has it).",
+      "Look for a program that runs very long; raise --max-wall-seconds if the machine is just slow.");
 
   /** How a code was checked against the controller. */
   public enum Source {
