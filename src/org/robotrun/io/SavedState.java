@@ -17,9 +17,9 @@ import org.robotrun.sim.FrameTable;
  * (joints, frames, objects, camera): the {@code "state"} section of {@code cell.json}
  * (docs/scenario-format.md). Values are the pendant's (mm, degrees).
  *
- * @param overridePct the speed override, 1..100
- * @param activeTool the active UTOOL number, 0..10
- * @param activeUser the active UFRAME number, 0..10
+ * @param overridePct the speed override, 1..100, or -1 when not saved (the controller's default stays)
+ * @param activeTool the active UTOOL number, 0..10, or -1 when not saved (the cell's choice stays)
+ * @param activeUser the active UFRAME number, 0..10, or -1 when not saved
  * @param registers R[i] that are not integer 0, by index
  * @param positionRegisters PR[i] that are not the Cartesian zero, by index
  * @param outputs non-zero outputs and flags, keyed {@code "DO[3]"}, {@code "GO[1]"}, {@code "F[2]"}
@@ -45,6 +45,11 @@ public record SavedState(
     outputs = Collections.unmodifiableSortedMap(new TreeMap<>(outputs));
     comments = Collections.unmodifiableSortedMap(new TreeMap<>(comments));
     Objects.requireNonNull(created, "created");
+  }
+
+  /** A new workspace's state: nothing saved yet but its creation time. */
+  public static SavedState fresh(String created) {
+    return new SavedState(-1, -1, -1, new TreeMap<>(), new TreeMap<>(), new TreeMap<>(), new TreeMap<>(), created);
   }
 
   /** The state of {@code c} now. */
@@ -99,9 +104,15 @@ public record SavedState(
    * Keys were checked when the file was read.
    */
   public void applyTo(Controller c) {
-    c.setOverridePct(overridePct);
-    c.frames().select(FrameKind.TOOL, activeTool);
-    c.frames().select(FrameKind.USER, activeUser);
+    if (overridePct > 0) {
+      c.setOverridePct(overridePct);
+    }
+    if (activeTool >= 0) {
+      c.frames().select(FrameKind.TOOL, activeTool);
+    }
+    if (activeUser >= 0) {
+      c.frames().select(FrameKind.USER, activeUser);
+    }
     registers.forEach((i, v) -> c.registers().set(i, v.value(), v.integer()));
     positionRegisters.forEach(c.registers()::setPosition);
     outputs.forEach((key, v) -> {

@@ -43,9 +43,15 @@ final class StateJson {
     if (!s.created().isEmpty()) {
       g.writeStringField("created", s.created());
     }
-    g.writeNumberField("overridePct", s.overridePct());
-    g.writeNumberField("utool", s.activeTool());
-    g.writeNumberField("uframe", s.activeUser());
+    if (s.overridePct() > 0) {
+      g.writeNumberField("overridePct", s.overridePct());
+    }
+    if (s.activeTool() >= 0) {
+      g.writeNumberField("utool", s.activeTool());
+    }
+    if (s.activeUser() >= 0) {
+      g.writeNumberField("uframe", s.activeUser());
+    }
     if (!s.registers().isEmpty()) {
       g.writeObjectFieldStart("registers");
       for (Map.Entry<Integer, SavedState.Register> e : s.registers().entrySet()) {
@@ -138,9 +144,9 @@ final class StateJson {
             FIELDS.stream().sorted().toList()) + ")");
       }
     }
-    int override = integer(o, "overridePct", 1, 100, 100, counting);
-    int utool = integer(o, "utool", 0, FrameTable.COUNT, 0, counting);
-    int uframe = integer(o, "uframe", 0, FrameTable.COUNT, 0, counting);
+    int override = integer(o, "overridePct", 1, 100, -1, counting);
+    int utool = integer(o, "utool", 0, FrameTable.COUNT, -1, counting);
+    int uframe = integer(o, "uframe", 0, FrameTable.COUNT, -1, counting);
     String created = o.members().get("created") instanceof JString s ? s.value() : "";
     if (o.members().containsKey("created") && !(o.members().get("created") instanceof JString)) {
       counting.add(o.members().get("created").line(), "state.created", "expected a time as text, got "

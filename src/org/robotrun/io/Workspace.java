@@ -211,7 +211,7 @@ public final class Workspace implements AutoCloseable {
     }
     Files.createDirectories(abs.resolve(PROGRAMS));
     String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
-    SavedState fresh = new SavedState(100, 0, 0, new TreeMap<>(), new TreeMap<>(), new TreeMap<>(), new TreeMap<>(), created);
+    SavedState fresh = SavedState.fresh(created);
     AtomicFiles.write(abs.resolve(CELL), ScenarioWriter.toJson(newCell, Optional.of(fresh), abs)
         .getBytes(StandardCharsets.UTF_8));
   }
