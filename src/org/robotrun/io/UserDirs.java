@@ -83,6 +83,20 @@ public final class UserDirs {
     return dataDir.resolve("workspace");
   }
 
+  /**
+   * A new folder for a workspace copied from a scenario named {@code stem}:
+   * {@code <data>/workspaces/<stem>}, or {@code <stem>-2}, {@code -3} ... when taken.
+   */
+  public Path newWorkspaceFor(String stem) {
+    String clean = stem.replaceAll("[^A-Za-z0-9_.-]", "_");
+    Path base = dataDir.resolve("workspaces");
+    Path p = base.resolve(clean);
+    for (int n = 2; Files.exists(p); n++) {
+      p = base.resolve(clean + "-" + n);
+    }
+    return p;
+  }
+
   /** The settings folder (last and recent workspaces). */
   public Path configDir() {
     return configDir;

@@ -409,8 +409,18 @@ public final class Workspace implements AutoCloseable {
 
   // ---- edits made outside ---------------------------------------------------------------------
 
-  /** A program file that changed on disk since this workspace last read or wrote it. */
-  public record ExternalChange(Path file, String programName) {}
+  /**
+   * A program file that changed on disk since this workspace last read or wrote it.
+   *
+   * @param programName the program the file held, "" for a file new to this workspace
+   * @param deleted whether the file is gone (it is written again at the next save)
+   */
+  public record ExternalChange(Path file, String programName, boolean deleted) {}
+
+  /** Whether {@code p} is exactly what was last read from or written to its file (not edited since). */
+  public boolean isSaved(String name, Program p) {
+    return writtenPrograms.get(name) == p;
+  }
 
   /**
    * The program files changed, added or removed on disk by someone else since they were last
@@ -424,8 +434,19 @@ public final class Workspace implements AutoCloseable {
     for (Path f : programFiles(programDir, new ArrayList<>())) {
       Stamp before = stamps.get(f);
       if (before == null || !before.equals(Stamp.of(f))) {
-        out.add(new ExternalChange(f, nameOf.getOrDefault(f, "")));
+        out.add(new ExternalChange(f, nameOf.getOrDefault(f, ""), false));
       }
+    }
+    // Deleted underneath: forget that they were written, so the next save puts them back.
+    for (Map.Entry<String, Path> e : fileOf.entrySet()) {
+      if (!Files.exists(e.getValue()) && writtenPrograms.containsKey(e.getKey())) {
+        writtenPrograms.remove(e.getKey());
+        stamps.remove(e.getValue());
+        out.add(new ExternalChange(e.getValue(), e.getKey(), true));
+      }
+    }
+    if (!cellBlocked && !Files.exists(dir.resolve(CELL))) {
+      writtenCell = null;
     }
     return out;
   }

@@ -56,6 +56,21 @@ public final class OrbitCamera {
     distance = Math.max(50, Math.min(40000, distance * factor));
   }
 
+  /** Distance from the target (mm). */
+  public float distance() {
+    return distance;
+  }
+
+  /** Turn about the cell's z axis (rad). */
+  public float yaw() {
+    return yaw;
+  }
+
+  /** Elevation, positive looking down (rad). */
+  public float pitch() {
+    return pitch;
+  }
+
   public Vector3f eye() {
     float cp = (float) Math.cos(pitch);
     return new Vector3f(

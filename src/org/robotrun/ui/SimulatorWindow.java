@@ -41,6 +41,14 @@ public final class SimulatorWindow implements AutoCloseable {
   private KeyHandler keyHandler = (key, action) -> false;
   private IntPredicate charHandler = codepoint -> false;
   private Runnable focusLost = () -> {};
+  private Runnable focusGained = () -> {};
+  private ShortcutHandler shortcuts = (key, action, mods) -> false;
+
+  /** Sees every key event first, with its modifiers (GLFW_MOD_*); returns whether it used the key. */
+  @FunctionalInterface
+  public interface ShortcutHandler {
+    boolean onKey(int glfwKey, int action, int mods);
+  }
 
   /** Receives keyboard events that no panel text field wants. */
   @FunctionalInterface
@@ -126,6 +134,9 @@ public final class SimulatorWindow implements AutoCloseable {
       }
     });
     glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
+      if (shortcuts.onKey(key, action, mods)) {
+        return;
+      }
       // Releases always go through, so a key held while a text field took focus still stops.
       if (action != GLFW_RELEASE && ImGui.getIO().getWantCaptureKeyboard()) {
         return;
@@ -145,6 +156,8 @@ public final class SimulatorWindow implements AutoCloseable {
     glfwSetWindowFocusCallback(window, (w, focused) -> {
       if (!focused) {
         focusLost.run();
+      } else {
+        focusGained.run();
       }
     });
   }
@@ -193,6 +206,25 @@ public final class SimulatorWindow implements AutoCloseable {
   /** Runs when the window loses the keyboard focus. */
   public void setFocusLostHandler(Runnable handler) {
     focusLost = handler;
+  }
+
+  /** Runs when the window gets the keyboard focus back (files may have changed meanwhile). */
+  public void setFocusGainedHandler(Runnable handler) {
+    focusGained = handler;
+  }
+
+  /** Shortcuts (Ctrl+S ...) that must not reach the pendant. */
+  public void setShortcutHandler(ShortcutHandler handler) {
+    shortcuts = handler;
+  }
+
+  public void setTitle(String title) {
+    glfwSetWindowTitle(window, title);
+  }
+
+  /** Ends {@link #run} after the current frame, as the window's close button does. */
+  public void requestClose() {
+    glfwSetWindowShouldClose(window, true);
   }
 
   public OrbitCamera camera() {

@@ -1,0 +1,168 @@
+package org.robotrun.app;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+import org.robotrun.io.HandIn;
+import org.robotrun.io.HandInException;
+import org.robotrun.io.UserDirs;
+import org.robotrun.program.Program;
+import org.robotrun.render.OrbitCamera;
+import org.robotrun.sim.Controller;
+import org.robotrun.ui.FileMenu;
+
+/** What the window's File menu does, on the current {@link WindowCell}. Window thread only. */
+final class GuiFileActions implements FileMenu.Actions {
+  private final UserDirs dirs;
+  private final Supplier<WindowCell> current;
+  private final Consumer<WindowCell> switchTo;
+  private final Runnable quit;
+  private final Supplier<OrbitCamera> camera;
+  private FileMenu menu;
+
+  GuiFileActions(UserDirs dirs, Supplier<WindowCell> current, Consumer<WindowCell> switchTo, Runnable quit,
+      Supplier<OrbitCamera> camera) {
+    this.dirs = dirs;
+    this.current = current;
+    this.switchTo = switchTo;
+    this.quit = quit;
+    this.camera = camera;
+  }
+
+  void setMenu(FileMenu menu) {
+    this.menu = menu;
+  }
+
+  private Controller controller() {
+    return current.get().session.sim.controllers().get(0);
+  }
+
+  @Override
+  public Path workspaceFolder() {
+    return current.get().session.workspace.folder();
+  }
+
+  @Override
+  public List<Path> recentWorkspaces() {
+    return dirs.recentWorkspaces();
+  }
+
+  @Override
+  public List<String> programNames() {
+    return controller().programNames().stream().sorted().toList();
+  }
+
+  @Override
+  public String openWorkspace(Path folder, boolean mustBeNew) {
+    Path abs = folder.toAbsolutePath().normalize();
+    if (abs.equals(workspaceFolder())) {
+      return "this workspace is already open";
+    }
+    if (mustBeNew && Files.exists(abs) && !WorkspaceFiles.isEmptyFolder(abs)) {
+      return abs + ": not an empty folder; a new workspace needs a new or empty folder";
+    }
+    // Everything is on disk before the window lets go of this workspace.
+    String saved = current.get().session.autosave.saveNow(10_000);
+    if (!saved.isEmpty() && !current.get().session.workspace.readOnly()) {
+      return "this workspace could not be saved, so it stays open: " + saved;
+    }
+    try {
+      WindowCell next = WindowCell.open(abs, dirs, menu, () -> GuiCommand.cameraView(camera.get()));
+      switchTo.accept(next);
+      return "";
+    } catch (UserError e) {
+      return e.getMessage();
+    }
+  }
+
+  @Override
+  public String openScenario(Path file) {
+    try {
+      Path dir = WorkspaceFiles.createFromScenario(file, dirs.newWorkspaceFor(GuiCommand.stem(file)));
+      String m = openWorkspace(dir, false);
+      return m.isEmpty() ? "A new workspace was made from " + file.getFileName() + " in\n" + dir
+          + "\n(the scenario file itself is not changed)." : m;
+    } catch (UserError e) {
+      return e.getMessage();
+    }
+  }
+
+  @Override
+  public String saveCopy(Path folder) {
+    String saved = saveNow();
+    if (!saved.isEmpty()) {
+      return saved;
+    }
+    String m = WorkspaceFiles.saveCopy(workspaceFolder(), folder.toAbsolutePath().normalize());
+    return m.isEmpty() ? "A copy was saved in " + folder + " (you keep working in " + workspaceFolder() + ")." : m;
+  }
+
+  @Override
+  public String importPrograms(List<Path> files) {
+    if (current.get().session.workspace.readOnly()) {
+      return "this workspace is read-only: " + current.get().session.workspace.readOnlyReason();
+    }
+    List<String> problems = new ArrayList<>();
+    List<Program> programs = WorkspaceFiles.readPrograms(files, problems);
+    List<String> done = new ArrayList<>();
+    for (Program p : programs) {
+      boolean replaced = controller().program(p.name()).isPresent();
+      controller().saveProgram(p);
+      done.add(p.name() + (replaced ? " (replaced the one here)" : ""));
+    }
+    String m = done.isEmpty() ? "" : "Imported " + String.join(", ", done) + ".";
+    if (!problems.isEmpty()) {
+      m += (m.isEmpty() ? "" : "\n\n") + "Not imported:\n" + String.join("\n", problems);
+    }
+    return m;
+  }
+
+  @Override
+  public String exportProgram(String name, Path file) {
+    return controller().program(name).map(p -> WorkspaceFiles.export(p, file)).orElse("no program " + name);
+  }
+
+  @Override
+  public String handIn(String student, Path zip, boolean replace) {
+    String saved = saveNow();
+    if (!saved.isEmpty()) {
+      return "cannot hand in: " + saved;
+    }
+    try {
+      HandIn.Manifest m = HandIn.write(workspaceFolder(), zip, student, new Main.Version().getVersion()[0]
+          .replace("robotrun ", ""), replace);
+      return "handed in: " + zip + " (" + m.files().size() + " files, SHA-256 in manifest.json)";
+    } catch (HandInException e) {
+      return e.getMessage();
+    }
+  }
+
+  @Override
+  public String saveNow() {
+    WindowCell c = current.get();
+    if (c.session.workspace.readOnly()) {
+      return "nothing is saved: " + c.session.workspace.readOnlyReason();
+    }
+    return c.session.autosave.saveNow(10_000);
+  }
+
+  @Override
+  public void quit() {
+    quit.run();
+  }
+
+  @Override
+  public void resolveConflict(Path file, boolean takeFile) {
+    WindowCell c = current.get();
+    if (takeFile) {
+      List<String> problems = new ArrayList<>();
+      c.takeFile(file, problems);
+      problems.forEach(menu::tell);
+    } else {
+      c.session.workspace.keepOurs(file);
+    }
+  }
+}
