@@ -8,6 +8,7 @@ import java.util.Map;
  */
 public record WorkspaceSnapshot(String cellJson, Map<String, org.robotrun.program.Program> programs) {
   public WorkspaceSnapshot {
-    programs = Map.copyOf(programs);
+    // Insertion order is kept: programs are written in that order, so edits land in the order made.
+    programs = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(programs));
   }
 }
