@@ -93,6 +93,7 @@ public final class GuiCommand implements Callable<Integer> {
       w.setFocusLostHandler(() -> cell[0].releaseKeys());
       w.setFocusGainedHandler(() -> cell[0].checkExternalEdits(menu));
       double[] last = {0};
+      boolean[] firstFrame = {System.getenv("ROBOTRUN_TIMING") != null};
       w.run(t -> {
             WindowCell c = cell[0];
             // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
@@ -116,12 +117,21 @@ public final class GuiCommand implements Callable<Integer> {
             c.pendantPanel.draw(fw, fh);
             c.cellPanel.draw();
             menu.drawPopups();
+            if (firstFrame[0]) {
+              firstFrame[0] = false;
+              long ms = System.currentTimeMillis() - java.lang.management.ManagementFactory.getRuntimeMXBean().getStartTime();
+              System.err.println("robotrun: first frame " + ms + " ms after the JVM started");
+            }
           });
     } catch (GlUnavailableException e) {
       cell[0].close();
       throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
     } finally {
       dialogs.close();
+    }
+    if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
+      // for the window test: what the pendant showed when the window closed
+      System.out.println(cell[0].pendant.render());
     }
     String problem = cell[0].closeAndReport();
     if (!problem.isEmpty()) {
