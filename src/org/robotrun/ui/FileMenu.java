@@ -63,6 +63,7 @@ public final class FileMenu {
   private final ImString student = new ImString(200);
   private final ImString handInPath = new ImString(1024);
   private boolean askReplace;
+  private String handInError = "";
 
   public FileMenu(Actions actions, FileDialogs dialogs) {
     this.actions = actions;
@@ -283,6 +284,7 @@ public final class FileMenu {
       ImGui.openPopup("Hand in");
       openHandIn = false;
       askReplace = false;
+      handInError = "";
     }
     if (ImGui.beginPopupModal("Hand in", ImGuiWindowFlags.AlwaysAutoResize)) {
       ImGui.text("Writes one .zip of this workspace (cell.json, programs/*.LS, manifest.json) for your instructor.");
@@ -296,6 +298,11 @@ public final class FileMenu {
             instanceof FileDialogs.Answer.Chosen c && !c.paths().isEmpty()) {
           handInPath.set(c.paths().get(0).toString());
         }
+      }
+      if (!handInError.isEmpty()) {
+        ImGui.pushTextWrapPos(640);
+        ImGui.textColored(0.95f, 0.3f, 0.3f, 1f, handInError);
+        ImGui.popTextWrapPos();
       }
       if (askReplace) {
         ImGui.textColored(0.95f, 0.7f, 0.2f, 1f, handInPath.get() + " exists.");
@@ -331,8 +338,11 @@ public final class FileMenu {
     askReplace = false;
     if (m.startsWith("handed in")) {
       ImGui.closeCurrentPopup();
+      handInError = "";
+      tell(m);
+    } else {
+      handInError = m;  // shown in the form, which stays open
     }
-    tell(m);
   }
 
   private static String expandHome(String p) {
