@@ -266,6 +266,9 @@ final class StateJson {
     String[] names = {"x", "y", "z", "w", "p", "r"};
     for (int k = 0; k < 6; k++) {
       LocatedJson f = p.members().get(names[k]);
+      if (f == null && k >= 3) {
+        continue;  // w, p, r default to 0, as in a scenario's poses
+      }
       boolean good = f instanceof JNumber n && (k < 3 ? Math.abs(n.value()) <= PoseLimits.MAX_COORDINATE_MM : PoseLimits.angleOk(n.value()));
       if (!good) {
         errors.add(f == null ? p.line() : f.line(), at + "." + names[k], f == null ? "missing" : (k < 3
