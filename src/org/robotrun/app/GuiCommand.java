@@ -46,8 +46,9 @@ public final class GuiCommand implements Callable<Integer> {
   @Option(names = "--height", defaultValue = "800", description = "Window height (default: ${DEFAULT-VALUE}).")
   int height = 800;
 
-  @Option(names = "--workspace", paramLabel = "DIR",
-      description = "Open the workspace in DIR, creating it when the folder is new or empty. Default: the last workspace.")
+  @Option(names = "--workspace", paramLabel = "DIR|FILE.zip",
+      description = "Open the workspace in DIR, creating it when the folder is new or empty; a hand-in FILE.zip opens read-only. "
+          + "Default: the last workspace.")
   Path workspace;
 
   @Option(names = "--scenario", paramLabel = "FILE.json",

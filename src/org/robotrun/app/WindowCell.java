@@ -31,8 +31,11 @@ final class WindowCell {
   /** Autosave reports arrive on the writer thread; the window shows them. */
   private final Queue<String> reports;
 
-  private WindowCell(WorkspaceSession session, Queue<String> reports) {
+  private final String name;
+
+  private WindowCell(WorkspaceSession session, Queue<String> reports, String name) {
     this.session = session;
+    this.name = name;
     this.reports = reports;
     Controller controller = session.sim.controllers().get(0);
     this.pendant = new Pendant(new SimRobotControl(session.sim, controller), new LsLineParser());
@@ -53,16 +56,19 @@ final class WindowCell {
       System.err.println("robotrun: " + problems);
       menu.tell(problems);
     }
+    boolean handIn = dir.getFileName() != null && dir.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".zip");
     try {
-      dirs.remember(s.workspace.folder());
+      if (!handIn) {  // a hand-in opens from a temporary copy, which is not worth remembering
+        dirs.remember(s.workspace.folder());
+      }
     } catch (IOException e) {
       System.err.println("robotrun: cannot remember the last workspace in " + dirs.configDir() + " (" + e.getMessage() + ")");
     }
-    return new WindowCell(s, reports);
+    return new WindowCell(s, reports, handIn ? dir.getFileName().toString() : s.workspace.name());
   }
 
   String title() {
-    return "RobotRun — " + session.workspace.name() + (session.workspace.readOnly() ? " (read-only)" : "");
+    return "RobotRun — " + name + (session.workspace.readOnly() ? " (read-only)" : "");
   }
 
   void applyCamera(OrbitCamera camera) {
