@@ -73,15 +73,36 @@ public final class GuiCommand implements Callable<Integer> {
     WindowCell[] cell = {null};
     FileDialogs dialogs = new FileDialogs();
     SimulatorWindow[] window = {null};
+    java.util.function.BooleanSupplier[] closeGuard = {() -> true};
     GuiFileActions actions = new GuiFileActions(dirs, () -> cell[0], next -> {
       cell[0].close();
       cell[0] = next;
       window[0].setTitle(next.title());
       next.applyCamera(window[0].camera());
-    }, () -> window[0].requestClose(), () -> window[0].camera());
+    }, () -> {
+      if (closeGuard[0].getAsBoolean()) {
+        window[0].requestClose();
+      }
+    }, () -> window[0].camera());
     FileMenu menu = new FileMenu(actions, dialogs);
+    boolean[] warned = {false};
+    closeGuard[0] = () -> {
+      // Work that cannot be saved keeps the window open once, with the reason; closing again quits.
+      WindowCell c = cell[0];
+      if (warned[0] || c.session.workspace.readOnly()) {
+        return true;
+      }
+      String problem = c.session.autosave.saveNow(3000);
+      if (problem.isEmpty()) {
+        return true;
+      }
+      warned[0] = true;
+      menu.tell("Your last changes are NOT saved: " + problem
+          + "\n\nFix the problem (the window keeps trying), or close again to quit without them.");
+      return false;
+    };
     actions.setMenu(menu);
-    cell[0] = WindowCell.open(dir, dirs, menu, () -> cameraView(window[0].camera()));
+    cell[0] = WindowCell.open(dir, dirs, menu, () -> cameraView(window[0] == null ? null : window[0].camera()));
     try (SimulatorWindow w = new SimulatorWindow(cell[0].title(), width, height)) {
       window[0] = w;
       cell[0].applyCamera(w.camera());
@@ -93,6 +114,7 @@ public final class GuiCommand implements Callable<Integer> {
       w.setCharHandler(cp -> cell[0].keyboard.onChar(cp));
       w.setFocusLostHandler(() -> cell[0].releaseKeys());
       w.setFocusGainedHandler(() -> cell[0].checkExternalEdits(menu));
+      w.setCloseHandler(closeGuard[0]);
       double[] last = {0};
       boolean[] firstFrame = {System.getenv("ROBOTRUN_TIMING") != null};
       w.run(t -> {

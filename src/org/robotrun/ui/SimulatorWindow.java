@@ -42,6 +42,7 @@ public final class SimulatorWindow implements AutoCloseable {
   private IntPredicate charHandler = codepoint -> false;
   private Runnable focusLost = () -> {};
   private Runnable focusGained = () -> {};
+  private java.util.function.BooleanSupplier mayClose = () -> true;
   private ShortcutHandler shortcuts = (key, action, mods) -> false;
 
   /** Sees every key event first, with its modifiers (GLFW_MOD_*); returns whether it used the key. */
@@ -152,6 +153,12 @@ public final class SimulatorWindow implements AutoCloseable {
         charHandler.test(codepoint);
       }
     });
+    // The close button asks first (unsaved work); a refusal keeps the window open.
+    glfwSetWindowCloseCallback(window, w -> {
+      if (!mayClose.getAsBoolean()) {
+        glfwSetWindowShouldClose(w, false);
+      }
+    });
     // Keys held when the window loses the focus never see their release: let go of them now.
     glfwSetWindowFocusCallback(window, (w, focused) -> {
       if (!focused) {
@@ -216,6 +223,11 @@ public final class SimulatorWindow implements AutoCloseable {
   /** Shortcuts (Ctrl+S ...) that must not reach the pendant. */
   public void setShortcutHandler(ShortcutHandler handler) {
     shortcuts = handler;
+  }
+
+  /** Asked when the user closes the window; returning false keeps it open. */
+  public void setCloseHandler(java.util.function.BooleanSupplier handler) {
+    mayClose = handler;
   }
 
   public void setTitle(String title) {
