@@ -335,11 +335,10 @@ public final class Workspace implements AutoCloseable {
         continue;
       }
       Path file = programFile(name);
-      if (blocked.contains(file)) {
-        file = programDir.resolve(name + ".LS");
-        if (blocked.contains(file)) {
-          continue;  // the unreadable file keeps its name; the program stays unsaved until it is renamed or fixed
-        }
+      // An unreadable file keeps its name: a program of that name goes beside it (NAME-2.LS ...),
+      // which the .LS reader loads as NAME with a warning about the file name.
+      for (int n = 2; blocked.contains(file); n++) {
+        file = programDir.resolve(name + "-" + n + ".LS");
       }
       try {
         Files.createDirectories(programDir);

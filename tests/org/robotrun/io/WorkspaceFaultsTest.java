@@ -55,6 +55,13 @@ class WorkspaceFaultsTest {
       ws.save(snapshot(ws, ws.programs().get(0), program("BAD", 2)));
     }
     assertThat(Files.readString(bad)).isEqualTo(badText);
+    // The new BAD went beside it and comes back; the broken file is still reported and kept.
+    try (Workspace ws = Workspace.open(dir, cell())) {
+      assertThat(ws.programs()).extracting(Program::name).containsExactlyInAnyOrder("GOOD", "BAD");
+      assertThat(ws.programFile("BAD").getFileName().toString()).isEqualTo("BAD-2.LS");
+      assertThat(String.join("\n", ws.problems())).contains("BAD.LS:");
+    }
+    assertThat(Files.readString(bad)).isEqualTo(badText);
   }
 
   @Test
