@@ -25,7 +25,8 @@ import org.robotrun.world.Scenario;
  * of a save — 50 times. After every kill the workspace opens without a problem, every file is
  * whole, and what is on disk is a prefix of the edits made: programs P1..Pm with nothing
  * missing in between, each complete, and R[1] in cell.json at most m (the cell is written
- * after the programs of the same save). Two children run at a time to keep the test short.
+ * after the programs of the same save). Every tenth child runs 2.2–2.6 s and must have lost at
+ * most the edits of its last 2 s. Two children run at a time to keep the test short.
  */
 class WorkspaceKillTest {
   private static final int KILLS = 50;
@@ -52,11 +53,24 @@ class WorkspaceKillTest {
   /** One child, killed at a random moment; returns how many edits were on disk afterwards. */
   private static int cycle(Path dir, Random random, int kill) throws Exception {
     String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+    int mustBeSaved = 0;
     Process p = new ProcessBuilder(java, "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-Xshare:auto",
         "-cp", System.getProperty("java.class.path"), WorkspaceEditLoop.class.getName(), dir.toString(),
         "scenarios/empty-cell.json").redirectError(ProcessBuilder.Redirect.DISCARD).start();
     try {
-      if (random.nextInt(5) == 0) {
+      if (kill % 10 == 9) {
+        // A long run: every edit made more than 2 s before the kill must be on disk.
+        BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
+        assertThat(out.readLine()).as("child %d started", kill).startsWith("ready");
+        long start = System.nanoTime();
+        long until = start + 2_200_000_000L + (long) (random.nextDouble() * 400e6);
+        for (String line; System.nanoTime() < until && (line = out.readLine()) != null; ) {
+          // The edit was made no later than it was read here.
+          if (System.nanoTime() < until - 2_000_000_000L) {
+            mustBeSaved = Integer.parseInt(line.strip());
+          }
+        }
+      } else if (random.nextInt(5) == 0) {
         Thread.sleep(random.nextInt(400));  // while the JVM starts or the workspace is being created
       } else {
         BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
@@ -90,6 +104,7 @@ class WorkspaceKillTest {
       }
       int r1 = ws.state().map(s -> s.registers().containsKey(1) ? (int) s.registers().get(1).value() : 0).orElse(0);
       assertThat(r1).as("kill %d: R[1] was saved after its programs", kill).isLessThanOrEqualTo(m);
+      assertThat(m).as("kill %d: at most the last 2 s of edits are lost", kill).isGreaterThanOrEqualTo(mustBeSaved);
       return m;
     }
   }
