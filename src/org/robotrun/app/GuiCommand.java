@@ -1,50 +1,65 @@
 package org.robotrun.app;
 
-import static org.lwjgl.glfw.GLFW.GLFW_MOD_CONTROL;
-import static org.lwjgl.glfw.GLFW.GLFW_MOD_SUPER;
-
-import imgui.ImGui;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
-import java.util.Optional;
+import java.util.List;
 import java.util.concurrent.Callable;
+import org.robotrun.io.RobotDefinitions;
 import org.robotrun.io.UserDirs;
+import org.robotrun.io.StlReader;
 import org.robotrun.math.Angles;
-import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
+import org.robotrun.pendant.Pendant;
+import org.robotrun.program.Interpreter;
+import org.robotrun.program.Program;
 import org.robotrun.render.GlUnavailableException;
-import org.robotrun.render.OrbitCamera;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.ScenarioCell;
+import org.robotrun.sim.Simulation;
+import org.robotrun.ui.CellEditorPanel;
+import org.robotrun.ui.CellPanel;
 import org.robotrun.ui.FileDialogs;
 import org.robotrun.ui.FileMenu;
-import org.robotrun.ui.RobotStatusPanel;
+import org.robotrun.ui.LayoutState;
+import org.robotrun.ui.PendantKeyboard;
+import org.robotrun.ui.PendantPanel;
 import org.robotrun.ui.SimulatorWindow;
+import org.robotrun.ui.WindowSettings;
+import org.robotrun.ui.Workbench;
 import org.robotrun.world.CameraView;
+import org.robotrun.world.CellEditor;
+import org.robotrun.world.Scenario;
+import org.robotrun.world.TriangleMesh;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
-/** {@code robotrun gui} (also what {@code robotrun} alone does): the simulator window on a workspace. */
+/** {@code robotrun gui} (also what {@code robotrun} alone does): the simulator window. */
 @Command(
     name = "gui",
     mixinStandardHelpOptions = true,
     description = {
-      "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant.",
+      "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant side by side.",
       "The window works in a workspace, a folder with cell.json and programs/NAME.LS (docs/workspace.md): with no option "
           + "it opens the last workspace, or creates the default one (Linux ~/.local/share/robotrun/workspace, Windows "
           + "%APPDATA%\\RobotRun\\workspace, macOS ~/Library/Application Support/RobotRun/workspace). Every change is saved "
           + "within 2 s and on close; File menu: New/Open workspace (Ctrl+O), Open scenario, Save now (Ctrl+S), Save a copy, "
           + "Import/Export .LS, Recent, Hand in, Quit (Ctrl+Q).",
-      "Mouse: left drag orbits, right or middle drag pans, wheel zooms; Home resets the view.",
-      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys."
+      "Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object; Home resets the view.",
+      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys. Ctrl+H or ? shows the key map."
     })
 public final class GuiCommand implements Callable<Integer> {
-  @Option(names = "--width", defaultValue = "1280", description = "Window width (default: ${DEFAULT-VALUE}).")
-  int width = 1280;
+  @Option(names = "--width", defaultValue = "0",
+      description = "Window width in screen coordinates (default: fit the screen, at most 1280 times the monitor's scale).")
+  int width;
 
-  @Option(names = "--height", defaultValue = "800", description = "Window height (default: ${DEFAULT-VALUE}).")
-  int height = 800;
+  @Option(names = "--height", defaultValue = "0",
+      description = "Window height (default: fit the screen, at most 800 times the monitor's scale).")
+  int height;
 
   @Option(names = "--workspace", paramLabel = "DIR|FILE.zip",
       description = "Open the workspace in DIR, creating it when the folder is new or empty; a hand-in FILE.zip opens read-only. "
@@ -53,46 +68,222 @@ public final class GuiCommand implements Callable<Integer> {
 
   @Option(names = "--scenario", paramLabel = "FILE.json",
       description = "Start a new workspace copied from this scenario (the scenario file is not changed; the copy goes to "
-          + "the RobotRun data folder, workspaces/NAME).")
+          + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
+
+  /**
+   * Everything one window session holds; tests drive it through {@link #open}. {@code workspace}
+   * is null when the window shows a scenario without a workspace (tests).
+   */
+  public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
+      CellEditor editor, WindowSettings settings, WindowCell workspace) {}
 
   @Override
   public Integer call() {
-    RenderCommand.checkSize("--width", width);
-    RenderCommand.checkSize("--height", height);
+    if (width != 0) {
+      RenderCommand.checkSize("--width", width);
+    }
+    if (height != 0) {
+      RenderCommand.checkSize("--height", height);
+    }
     if (workspace != null && scenario != null) {
       throw new UserError("--workspace and --scenario: give one of them");
     }
-    UserDirs dirs = UserDirs.fromSystem();
-    Path dir;
-    if (scenario != null) {
-      dir = WorkspaceFiles.createFromScenario(scenario, dirs.newWorkspaceFor(stem(scenario)));
-    } else {
-      dir = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
+    boolean log = System.getenv("ROBOTRUN_FRAME_LOG") != null;
+    if (log) {
+      stage("command line parsed");
     }
-    WindowCell[] cell = {null};
+    UserDirs dirs = UserDirs.fromSystem();
+    Path next;
+    if (scenario != null) {
+      next = WorkspaceFiles.createFromScenario(scenario, dirs.newWorkspaceFor(stem(scenario)));
+    } else {
+      next = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
+    }
+    String problem = "";
+    // File ▸ Open workspace ends one window and starts the next on the other folder.
+    while (next != null) {
+      Path[] switchTo = {null};
+      Session s;
+      try {
+        s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forUser());
+      } catch (GlUnavailableException e) {
+        throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
+      }
+      if (log) {
+        stage("cell and window ready");
+      }
+      try (SimulatorWindow w = s.window()) {
+        if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
+          logFrames(w);
+        }
+        run(s);
+      }
+      if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
+        // for the window test: what the pendant showed when the window closed
+        System.out.println(s.pendant().render());
+      }
+      problem = s.workspace().closeAndReport();
+      next = switchTo[0];
+    }
+    if (!problem.isEmpty()) {
+      throw new UserError(problem, Main.EXIT_FAILED);
+    }
+    return Main.EXIT_OK;
+  }
+
+  /** The cell as loaded: built off the main thread while the window opens. */
+  private record Cell(Simulation sim, Scenario scenario, List<Program> programs) {}
+
+  private static Cell loadCell(Path scenario) {
+    if (scenario == null) {
+      return new Cell(DefaultCell.simulation(RobotDefinitions.defaultRobot()), null, List.of());
+    }
+    Scenario sc = ScenarioFiles.load(scenario);
+    try {
+      Simulation sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      return new Cell(sim, sc, RunCommand.loadPrograms(sc.programs()));
+    } catch (IllegalArgumentException e) {
+      throw new UserError(scenario + ": " + e.getMessage());
+    } catch (IOException e) {
+      throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
+    }
+  }
+
+  private static <T> T join(java.util.concurrent.CompletableFuture<T> f) {
+    try {
+      return f.join();
+    } catch (java.util.concurrent.CompletionException e) {
+      if (e.getCause() instanceof RuntimeException r) {
+        throw r;
+      }
+      throw e;
+    }
+  }
+
+  /** Builds the cell of a scenario (no workspace: nothing is saved), the pendant and the window (not yet running). */
+  public static Session open(Path scenario, int width, int height, WindowSettings settings) {
+    return open(scenario, null, null, null, width, height, settings);
+  }
+
+  /**
+   * Opens the workspace in {@code dir} (created when new) in a window that saves it: autosave,
+   * the File menu, outside edits, the close guard. A File-menu switch to another workspace puts
+   * its folder in {@code switchTo[0]} and closes the window.
+   */
+  static Session openWorkspace(Path dir, UserDirs dirs, Path[] switchTo, int width, int height, WindowSettings settings) {
+    return open(null, dir, dirs, switchTo, width, height, settings);
+  }
+
+  private static Session open(Path scenario, Path workspaceDir, UserDirs dirs, Path[] switchTo, int width, int height,
+      WindowSettings settings) {
+    // The cell loads (JSON, robot model, programs) on another thread while GLFW, OpenGL and
+    // ImGui start on this one: the two together are most of the time to the first frame.
+    java.util.List<String> early = new java.util.concurrent.CopyOnWriteArrayList<>();
+    SimulatorWindow[] windowRef = {null};
+    var wsLoading = workspaceDir == null ? null : java.util.concurrent.CompletableFuture.supplyAsync(
+        () -> WindowCell.open(workspaceDir, dirs, early::add,
+            () -> cameraView(windowRef[0] == null ? null : windowRef[0].camera())));
+    var loading = wsLoading != null
+        ? wsLoading.thenApply(c -> new Cell(c.session.sim, c.session.workspace.scenario(), List.of()))
+        : java.util.concurrent.CompletableFuture.supplyAsync(() -> loadCell(scenario));
+    SimulatorWindow w;
+    try {
+      w = new SimulatorWindow("RobotRun", width, height);
+    } catch (GlUnavailableException e) {
+      join(loading);  // a bad scenario is reported as such, even without a display
+      throw e;
+    }
+    windowRef[0] = w;
+    Cell cell;
+    WindowCell ws;
+    try {
+      cell = join(loading);
+      ws = wsLoading == null ? null : join(wsLoading);
+    } catch (RuntimeException e) {
+      w.close();
+      throw e;
+    }
+    Simulation sim = cell.sim();
+    Scenario sc = cell.scenario();
+    List<Program> programs = cell.programs();
+    if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
+      stage("cell built");
+    }
+    Controller controller = sim.controllers().get(0);
+    SimRobotControl control = new SimRobotControl(sim, controller);
+    programs.forEach(control::saveProgram);
+    Pendant pendant = new Pendant(control, new LsLineParser());
+    PendantPanel pendantPanel = new PendantPanel(pendant);
+    CellPanel cellPanel = new CellPanel(sim);
+    RobotModel robot = controller.model();
+    CellEditor editor = sc == null ? null : new CellEditor(sc, GuiCommand::loadStl);
+    // In a workspace the edited cell is saved with the workspace (autosave); "Save" also writes a scenario copy.
+    Path editedCopy = ws != null ? ws.session.workspace.folder().resolve("scenario-edited.json")
+        : scenario == null ? null : scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json");
+    CellEditorPanel editorPanel = editor == null ? null : new CellEditorPanel(editor, editedCopy);
+    w.setTitle(ws != null ? ws.title()
+        : "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()));
+    if (sc != null) {
+      sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
+    }
+    LayoutState layout = settings.load();
+    Workbench bench = new Workbench(w.camera(), w.contentScale(), pendant, pendantPanel, cellPanel, editorPanel,
+        new Workbench.RobotStatus() {
+          @Override
+          public double[] pendantDeg() {
+            return Angles.toDegrees(JointConvention.kinematicToPendant(robot, controller.jointsRad()));
+          }
+
+          @Override
+          public Xyzwpr flangeInWorld() {
+            return Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, controller.jointsRad()));
+          }
+        },
+        sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
+    // Menus of other parts of the window go into the menu bar here, left of View and Help.
+    PendantKeyboard keyboard = new PendantKeyboard(pendant);
+    w.setKeyHandler(keyboard::onKey);
+    w.setCharHandler(cp -> bench.onChar(cp) || keyboard.onChar(cp));
+    w.setShortcutHandler(bench::onShortcut);
+    if (ws != null) {
+      FileMenu menu = fileMenu(ws, dirs, w, switchTo);
+      early.forEach(menu::tell);
+      bench.addMenus(menu::drawMenus);
+      w.setShortcutHandler((key, mods) -> menu.onShortcut(key, mods) || bench.onShortcut(key, mods));
+      w.setFocusGainedHandler(() -> ws.checkExternalEdits(menu));
+    }
+    w.setViewClickHandler(bench::onViewClick);
+    w.setViewPressHandler(bench.viewPress());
+    w.setFocusLostHandler(() -> {
+      keyboard.releaseAll();
+      pendantPanel.releaseLatched();
+    });
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws);
+  }
+
+  /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
+  private static FileMenu fileMenu(WindowCell ws, UserDirs dirs, SimulatorWindow w, Path[] switchTo) {
     FileDialogs dialogs = new FileDialogs();
-    SimulatorWindow[] window = {null};
     java.util.function.BooleanSupplier[] closeGuard = {() -> true};
-    GuiFileActions actions = new GuiFileActions(dirs, () -> cell[0], next -> {
-      cell[0].close();
-      cell[0] = next;
-      window[0].setTitle(next.title());
-      next.applyCamera(window[0].camera());
+    GuiFileActions actions = new GuiFileActions(dirs, () -> ws, dir -> {
+      switchTo[0] = dir;
+      w.requestClose();
     }, () -> {
       if (closeGuard[0].getAsBoolean()) {
-        window[0].requestClose();
+        w.requestClose();
       }
-    }, () -> window[0].camera());
+    });
     FileMenu menu = new FileMenu(actions, dialogs);
+    actions.setMenu(menu);
+    menu.setStatusLine(() -> ws.drawSaveState(menu));
     boolean[] warned = {false};
     closeGuard[0] = () -> {
       // Work that cannot be saved keeps the window open once, with the reason; closing again quits.
-      WindowCell c = cell[0];
-      if (warned[0] || c.session.workspace.readOnly()) {
+      if (warned[0] || ws.session.workspace.readOnly()) {
         return true;
       }
-      String problem = c.session.autosave.saveNow(3000);
+      String problem = ws.session.autosave.saveNow(3000);
       if (problem.isEmpty()) {
         return true;
       }
@@ -101,79 +292,106 @@ public final class GuiCommand implements Callable<Integer> {
           + "\n\nFix the problem (the window keeps trying), or close again to quit without them.");
       return false;
     };
-    actions.setMenu(menu);
-    cell[0] = WindowCell.open(dir, dirs, menu, () -> cameraView(window[0] == null ? null : window[0].camera()));
-    try (SimulatorWindow w = new SimulatorWindow(cell[0].title(), width, height)) {
-      window[0] = w;
-      cell[0].applyCamera(w.camera());
-      // The pendant panel covers the right of the window: centre the cell in what is left.
-      w.camera().setCentreShift(-0.3f);
-      w.setShortcutHandler((key, action, mods) ->
-          menu.onKey(key, action, (mods & (GLFW_MOD_CONTROL | GLFW_MOD_SUPER)) != 0));
-      w.setKeyHandler((key, action) -> cell[0].keyboard.onKey(key, action));
-      w.setCharHandler(cp -> cell[0].keyboard.onChar(cp));
-      w.setFocusLostHandler(() -> cell[0].releaseKeys());
-      w.setFocusGainedHandler(() -> cell[0].checkExternalEdits(menu));
-      w.setCloseHandler(closeGuard[0]);
-      double[] last = {0};
-      boolean[] firstFrame = {System.getenv("ROBOTRUN_TIMING") != null};
-      w.run(t -> {
-            WindowCell c = cell[0];
-            // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
-            c.pendant.advance(Math.min(0.1, t - last[0]));
-            last[0] = t;
-            c.session.autosave.poll(System.nanoTime());
-            return c.session.sim.snapshot().scene();
-          },
-          (fw, fh) -> {
-            WindowCell c = cell[0];
-            if (ImGui.beginMainMenuBar()) {
-              menu.drawMenu();
-              c.drawSaveState(menu);
-              ImGui.endMainMenuBar();
-            }
-            Controller controller = c.session.sim.controllers().get(0);
-            RobotModel robot = controller.model();
-            double[] q = controller.jointsRad();
-            double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
-            RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
-            c.pendantPanel.draw(fw, fh);
-            c.cellPanel.draw();
-            menu.drawPopups();
-            if (firstFrame[0]) {
-              firstFrame[0] = false;
-              long ms = System.currentTimeMillis() - java.lang.management.ManagementFactory.getRuntimeMXBean().getStartTime();
-              System.err.println("robotrun: first frame " + ms + " ms after the JVM started");
-            }
-          });
-    } catch (GlUnavailableException e) {
-      cell[0].close();
-      throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
-    } finally {
-      dialogs.close();
-    }
-    if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
-      // for the window test: what the pendant showed when the window closed
-      System.out.println(cell[0].pendant.render());
-    }
-    String problem = cell[0].closeAndReport();
-    if (!problem.isEmpty()) {
-      throw new UserError(problem, Main.EXIT_FAILED);
-    }
-    return Main.EXIT_OK;
+    w.setCloseHandler(closeGuard[0]);
+    return menu;
   }
 
-  static String stem(Path file) {
-    String n = file.getFileName().toString();
-    int dot = n.lastIndexOf('.');
-    return dot > 0 ? n.substring(0, dot) : n;
-  }
-
-  static Optional<CameraView> cameraView(OrbitCamera camera) {
+  static java.util.Optional<CameraView> cameraView(org.robotrun.render.OrbitCamera camera) {
     if (camera == null) {
-      return Optional.empty();
+      return java.util.Optional.empty();
     }
     var t = camera.target();
-    return Optional.of(new CameraView(new Vec3(t.x, t.y, t.z), camera.distance(), camera.yaw(), camera.pitch()));
+    return java.util.Optional.of(new CameraView(new org.robotrun.math.Vec3(t.x, t.y, t.z), camera.distance(),
+        camera.yaw(), camera.pitch()));
+  }
+
+  /** Runs the window until it is closed, then saves its layout. */
+  public static void run(Session s) {
+    double[] last = {0};
+    long[] appliedRevision = {s.editor() == null ? 0 : s.editor().revision()};
+    double[][] prevQ = {s.controller().jointsRad()};
+    int[] prevLcd = {0};
+    boolean[] dirty = {false};
+    long[] lastSave = {System.nanoTime()};
+    s.bench().setLayoutChangeHandler(() -> dirty[0] = true);
+    s.window().run(t -> {
+          // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
+          s.pendant().advance(Math.min(0.1, t - last[0]));
+          last[0] = t;
+          if (s.workspace() != null) {
+            s.workspace().session.autosave.poll(System.nanoTime());
+          }
+          if (s.editor() != null && s.editor().revision() != appliedRevision[0]) {
+            appliedRevision[0] = s.editor().revision();
+            s.sim().replaceWorld(s.editor().world());
+          }
+          if (dirty[0] && System.nanoTime() - lastSave[0] > 1_000_000_000L) {
+            dirty[0] = false;
+            lastSave[0] = System.nanoTime();
+            warn(s.settings().save(s.bench().layoutState()));
+          }
+          return s.sim().snapshot().scene();
+        },
+        s.bench(),
+        () -> {
+          // busy while the arm moves, a program runs, a jog key is on or the pendant's text changes
+          double[] q = s.controller().jointsRad();
+          boolean moved = !java.util.Arrays.equals(q, prevQ[0]);
+          prevQ[0] = q;
+          int lcd = s.pendant().lcd().hashCode();
+          boolean lcdChanged = lcd != prevLcd[0];
+          prevLcd[0] = lcd;
+          boolean jog = false;
+          for (int a = 1; a <= 6; a++) {
+            jog |= s.controller().jogDirection(a) != 0;
+          }
+          return moved || lcdChanged || jog || s.controller().interpreter().state() == Interpreter.State.RUNNING;
+        });
+    warn(s.settings().save(s.bench().layoutState()));
+  }
+
+  private static void stage(String what) {
+    long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+    System.err.println("robotrun: " + what + " " + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started");
+  }
+
+  /**
+   * Benchmark hook (ROBOTRUN_FRAME_LOG set): the time from JVM start to the first frame on screen,
+   * then the frames drawn in every 5 s, on stderr.
+   */
+  private static void logFrames(SimulatorWindow w) {
+    long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+    w.setFirstFrameHandler(() -> System.err.println("robotrun: first frame "
+        + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started"));
+    long[] since = {System.nanoTime(), 0};
+    w.setAfterFrameHandler(() -> {
+      long now = System.nanoTime();
+      if (now - since[0] >= 5_000_000_000L) {
+        long n = w.frames() - since[1];
+        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s)%n", n, (now - since[0]) / 1e9,
+            n / ((now - since[0]) / 1e9));
+        since[0] = now;
+        since[1] = w.frames();
+      }
+    });
+  }
+
+  private static void warn(String problem) {
+    if (!problem.isEmpty()) {
+      System.err.println("robotrun: " + problem);
+    }
+  }
+
+  private static TriangleMesh loadStl(Path file, double scale) {
+    try {
+      return StlReader.read(file, scale);
+    } catch (IOException | org.robotrun.io.FileFormatException e) {
+      throw new IllegalArgumentException(e.getMessage(), e);
+    }
+  }
+
+  static String stem(Path p) {
+    String f = p.getFileName().toString();
+    return f.toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? f.substring(0, f.length() - 5) : f;
   }
 }

@@ -10,7 +10,6 @@ import org.robotrun.io.HandIn;
 import org.robotrun.io.HandInException;
 import org.robotrun.io.UserDirs;
 import org.robotrun.program.Program;
-import org.robotrun.render.OrbitCamera;
 import org.robotrun.sim.Controller;
 import org.robotrun.ui.FileMenu;
 
@@ -18,18 +17,16 @@ import org.robotrun.ui.FileMenu;
 final class GuiFileActions implements FileMenu.Actions {
   private final UserDirs dirs;
   private final Supplier<WindowCell> current;
-  private final Consumer<WindowCell> switchTo;
+  private final Consumer<Path> switchTo;
   private final Runnable quit;
-  private final Supplier<OrbitCamera> camera;
   private FileMenu menu;
 
-  GuiFileActions(UserDirs dirs, Supplier<WindowCell> current, Consumer<WindowCell> switchTo, Runnable quit,
-      Supplier<OrbitCamera> camera) {
+  /** @param switchTo closes this window and opens one on the given workspace folder */
+  GuiFileActions(UserDirs dirs, Supplier<WindowCell> current, Consumer<Path> switchTo, Runnable quit) {
     this.dirs = dirs;
     this.current = current;
     this.switchTo = switchTo;
     this.quit = quit;
-    this.camera = camera;
   }
 
   void setMenu(FileMenu menu) {
@@ -69,13 +66,12 @@ final class GuiFileActions implements FileMenu.Actions {
     if (!saved.isEmpty() && !current.get().session.workspace.readOnly()) {
       return "this workspace could not be saved, so it stays open: " + saved;
     }
-    try {
-      WindowCell next = WindowCell.open(abs, dirs, menu, () -> GuiCommand.cameraView(camera.get()));
-      switchTo.accept(next);
-      return "";
-    } catch (UserError e) {
-      return e.getMessage();
+    if (!mustBeNew && Files.exists(abs) && !Files.exists(abs.resolve(org.robotrun.io.Workspace.CELL))
+        && !WorkspaceFiles.isEmptyFolder(abs)) {
+      return abs + ": not a workspace (no cell.json); open a workspace folder, or pick a new or empty folder with New workspace";
     }
+    switchTo.accept(abs);
+    return "";
   }
 
   @Override
@@ -83,8 +79,10 @@ final class GuiFileActions implements FileMenu.Actions {
     try {
       Path dir = WorkspaceFiles.createFromScenario(file, dirs.newWorkspaceFor(GuiCommand.stem(file)));
       String m = openWorkspace(dir, false);
-      return m.isEmpty() ? "A new workspace was made from " + file.getFileName() + " in\n" + dir
-          + "\n(the scenario file itself is not changed)." : m;
+      if (m.isEmpty()) {
+        System.err.println("robotrun: a new workspace was made from " + file + " in " + dir + " (the scenario is not changed)");
+      }
+      return m;
     } catch (UserError e) {
       return e.getMessage();
     }

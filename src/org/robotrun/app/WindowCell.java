@@ -11,23 +11,14 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.function.Supplier;
 import org.robotrun.io.UserDirs;
 import org.robotrun.io.Workspace;
-import org.robotrun.pendant.Pendant;
 import org.robotrun.program.Program;
-import org.robotrun.render.OrbitCamera;
 import org.robotrun.sim.Controller;
-import org.robotrun.ui.CellPanel;
 import org.robotrun.ui.FileMenu;
-import org.robotrun.ui.PendantKeyboard;
-import org.robotrun.ui.PendantPanel;
 import org.robotrun.world.CameraView;
 
-/** What the window shows of one workspace: the session, the pendant and the panels. Window thread only. */
+/** The window's side of one open workspace: its session, save state in the menu bar, outside edits. Window thread only. */
 final class WindowCell {
   final WorkspaceSession session;
-  final Pendant pendant;
-  final PendantPanel pendantPanel;
-  final CellPanel cellPanel;
-  final PendantKeyboard keyboard;
   /** Autosave reports arrive on the writer thread; the window shows them. */
   private final Queue<String> reports;
 
@@ -37,15 +28,14 @@ final class WindowCell {
     this.session = session;
     this.name = name;
     this.reports = reports;
-    Controller controller = session.sim.controllers().get(0);
-    this.pendant = new Pendant(new SimRobotControl(session.sim, controller), new LsLineParser());
-    this.pendantPanel = new PendantPanel(pendant);
-    this.cellPanel = new CellPanel(session.sim);
-    this.keyboard = new PendantKeyboard(pendant);
   }
 
-  /** Opens the workspace in {@code dir} (UserError when it cannot be opened at all) and remembers it as the last one. */
-  static WindowCell open(Path dir, UserDirs dirs, FileMenu menu, Supplier<Optional<CameraView>> camera) {
+  /**
+   * Opens the workspace in {@code dir} (UserError when it cannot be opened at all) and remembers
+   * it as the last one; problems at open go to {@code tell} (the File menu, once it exists).
+   */
+  static WindowCell open(Path dir, UserDirs dirs, java.util.function.Consumer<String> tell,
+      Supplier<Optional<CameraView>> camera) {
     Queue<String> reports = new ConcurrentLinkedQueue<>();
     WorkspaceSession s = WorkspaceSession.open(dir, false, camera, m -> {
       System.err.println("robotrun: " + m);
@@ -54,7 +44,7 @@ final class WindowCell {
     String problems = s.problems();
     if (!problems.isEmpty()) {
       System.err.println("robotrun: " + problems);
-      menu.tell(problems);
+      tell.accept(problems);
     }
     boolean handIn = dir.getFileName() != null && dir.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".zip");
     try {
@@ -69,15 +59,6 @@ final class WindowCell {
 
   String title() {
     return "RobotRun — " + name + (session.workspace.readOnly() ? " (read-only)" : "");
-  }
-
-  void applyCamera(OrbitCamera camera) {
-    session.workspace.scenario().camera().ifPresent(v -> ScenarioFiles.applyCamera(v, camera));
-  }
-
-  void releaseKeys() {
-    keyboard.releaseAll();
-    pendantPanel.releaseLatched();
   }
 
   /** In the menu bar: the workspace and whether its last save worked. Shows autosave reports. */

@@ -53,6 +53,7 @@ public final class FileMenu {
   private final Deque<Path> conflicts = new ArrayDeque<>();
   private String status = "";
   private double statusUntil;
+  private Runnable statusLine = () -> {};
   // typed-path fallback
   private String pathPrompt = "";
   private final ImString typedPath = new ImString(1024);
@@ -84,6 +85,11 @@ public final class FileMenu {
     }
   }
 
+  /** Draws more in the menu bar after the File menu (the workspace and its save state). */
+  public void setStatusLine(Runnable line) {
+    statusLine = line;
+  }
+
   /** A short note in the menu bar ("Saved", "saved 10:02:03"). */
   public void setStatus(String text, double untilSec) {
     status = text;
@@ -91,19 +97,19 @@ public final class FileMenu {
   }
 
   /**
-   * Handles Ctrl+O, Ctrl+S and Ctrl+Q; returns whether the key was one of them (then it must
-   * not reach the pendant). Any key with Ctrl held is kept from the pendant.
+   * Handles Ctrl+O, Ctrl+S and Ctrl+Q (Cmd on macOS) when a key is pressed; returns whether the
+   * key was one of them (then it must not reach the pendant).
    */
-  public boolean onKey(int glfwKey, int action, boolean ctrl) {
-    if (!ctrl) {
+  public boolean onShortcut(int glfwKey, int mods) {
+    if ((mods & (GLFW_MOD_CONTROL | GLFW_MOD_SUPER)) == 0) {
       return false;
     }
-    if (action == GLFW_PRESS) {
-      switch (glfwKey) {
-        case GLFW_KEY_O -> openWorkspace(false);
-        case GLFW_KEY_S -> saveNow();
-        case GLFW_KEY_Q -> actions.quit();
-        default -> { }
+    switch (glfwKey) {
+      case GLFW_KEY_O -> openWorkspace(false);
+      case GLFW_KEY_S -> saveNow();
+      case GLFW_KEY_Q -> actions.quit();
+      default -> {
+        return false;
       }
     }
     return true;
@@ -117,6 +123,16 @@ public final class FileMenu {
     } else {
       tell(m);
     }
+  }
+
+  /**
+   * Draws the File menu and, after it, the menu's dialogs; call between {@code beginMainMenuBar}
+   * and {@code endMainMenuBar} (a {@code Workbench.MenuContributor}).
+   */
+  public void drawMenus() {
+    drawMenu();
+    statusLine.run();
+    drawPopups();
   }
 
   /** Draws the File menu; call between {@code beginMainMenuBar} and {@code endMainMenuBar}. */
