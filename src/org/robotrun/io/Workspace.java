@@ -329,6 +329,10 @@ public final class Workspace implements AutoCloseable {
     List<Path> touched = new ArrayList<>();
     IOException first = null;
     Path programDir = dir.resolve(PROGRAMS);
+    // The changed programs, in the order given, written together (one folder sync); a failure
+    // leaves the rest for the next save.
+    List<Map.Entry<Path, byte[]>> batch = new ArrayList<>();
+    List<Map.Entry<String, Program>> batchPrograms = new ArrayList<>();
     for (Map.Entry<String, Program> e : snap.programs().entrySet()) {
       String name = e.getKey();
       if (writtenPrograms.get(name) == e.getValue()) {
@@ -340,16 +344,32 @@ public final class Workspace implements AutoCloseable {
       for (int n = 2; blocked.contains(file); n++) {
         file = programDir.resolve(name + "-" + n + ".LS");
       }
+      batch.add(Map.entry(file, LsWriter.write(e.getValue()).getBytes(StandardCharsets.UTF_8)));
+      batchPrograms.add(e);
+    }
+    if (!batch.isEmpty()) {
       try {
         Files.createDirectories(programDir);
-        AtomicFiles.write(file, LsWriter.write(e.getValue()).getBytes(StandardCharsets.UTF_8));
-        writtenPrograms.put(name, e.getValue());
-        fileOf.put(name, file);
-        stamps.put(file, Stamp.of(file));
-        touched.add(file);
       } catch (IOException ex) {
-        first = first == null ? failure(file, ex) : first;
+        first = failure(programDir, ex);
       }
+    }
+    for (int i = 0; i < batch.size() && first == null; i++) {
+      Path file = batch.get(i).getKey();
+      try {
+        AtomicFiles.writeLeavingFolderSync(file, batch.get(i).getValue());
+      } catch (IOException ex) {
+        first = failure(file, ex);
+        break;
+      }
+      String name = batchPrograms.get(i).getKey();
+      writtenPrograms.put(name, batchPrograms.get(i).getValue());
+      fileOf.put(name, file);
+      stamps.put(file, Stamp.of(file));
+      touched.add(file);
+    }
+    if (!touched.isEmpty()) {
+      AtomicFiles.syncFolder(programDir);  // once for the whole batch, before cell.json names its results
     }
     for (String name : List.copyOf(writtenPrograms.keySet())) {
       if (snap.programs().containsKey(name)) {
