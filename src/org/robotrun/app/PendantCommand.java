@@ -12,6 +12,7 @@ import org.robotrun.io.FileFormatException;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.LsWriter;
+import org.robotrun.io.TerminalText;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
@@ -65,6 +66,11 @@ public final class PendantCommand implements Callable<Integer> {
           + "what the script changes is saved back to it as the window saves it (docs/workspace.md).")
   Path workspace;
 
+  @Option(names = "--max-wall-seconds", paramLabel = "N", defaultValue = "3600",
+      description = "Stop with exit code 1 when the script has run this long in real (wall-clock) time, 1.."
+          + "86400 (default: ${DEFAULT-VALUE}). A safety net for graders; results are otherwise deterministic.")
+  double maxWallSeconds;
+
   @Spec
   CommandSpec spec;
 
@@ -73,14 +79,8 @@ public final class PendantCommand implements Callable<Integer> {
     if (saveDir != null && !Files.isDirectory(saveDir)) {
       throw new UserError("--save: the directory " + saveDir + " does not exist");
     }
-    List<String> lines;
-    try {
-      lines = Files.readAllLines(keys, StandardCharsets.UTF_8);
-    } catch (java.nio.file.NoSuchFileException e) {
-      throw new UserError("--keys: no such file " + keys);
-    } catch (IOException e) {
-      throw new UserError("--keys: cannot read " + keys + " (" + e.getMessage() + ")");
-    }
+    WallClock.checkOption(maxWallSeconds);
+    List<String> lines = InputFiles.lines("--keys", keys, KeyScript.MAX_FILE_BYTES, "key scripts");
     KeyScript script = switch (KeyScript.parse(keys.toString(), lines)) {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new UserError(bad.error().display());
@@ -127,13 +127,14 @@ public final class PendantCommand implements Callable<Integer> {
       control.saveProgram(readProgram(file));
     }
     PrintWriter out = spec.commandLine().getOut();
+    WallClock clock = WallClock.start(maxWallSeconds);
     WorkspaceSession ws = session;
-    script.run(new Pendant(control, new LsLineParser()), text -> {
-      out.print(text);
+    int stoppedAt = script.run(new Pendant(control, new LsLineParser()), text -> {
+      out.print(TerminalText.safe(text));
       if (ws != null) {
         ws.autosave.poll(System.nanoTime());
       }
-    });
+    }, clock::expired);
     out.flush();
     if (session != null) {
       String problem = session.autosave.saveNow(10_000);
@@ -141,6 +142,10 @@ public final class PendantCommand implements Callable<Integer> {
       if (!problem.isEmpty() && !session.workspace.readOnly()) {
         throw new UserError("--workspace: " + problem, Main.EXIT_FAILED);
       }
+    }
+    if (stoppedAt > 0) {
+      throw new UserError(keys + ":" + stoppedAt + ": stopped: the script ran longer than --max-wall-seconds "
+          + WallClock.format(maxWallSeconds) + " s of real time", Main.EXIT_FAILED);
     }
     if (saveDir != null) {
       for (String name : control.programNames()) {
