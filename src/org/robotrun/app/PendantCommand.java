@@ -36,7 +36,8 @@ import picocli.CommandLine.Spec;
       "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key (HOLD DEADMAN, HOLD SHIFT), TP ON|OFF, MODE T1|T2|AUTO, ESTOP [PANEL], RELEASE ESTOP, CYCLE START, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
       "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10%% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
       "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write, 2 bad option, unreadable program or malformed script (file:line)."
+      "With --workspace DIR the workspace is opened (or created) first and everything the script changes is saved back to it when the script ends (and at each SHOW); a second RobotRun on the same workspace opens it read-only. Opening it is a cold start too (T1, 10%%).",
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written, 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   /** The override a cold start sets ($SCR.$COLDOVRD on a controller): 10%. */
@@ -69,6 +70,11 @@ public final class PendantCommand implements Callable<Integer> {
       description = "Scenario JSON to load first (its cell, frames, registers and programs; docs/scenario-format.md); "
           + "the pendant drives its first robot. Default: the default cell.")
   Path scenario;
+
+  @Option(names = "--workspace", paramLabel = "DIR",
+      description = "A workspace folder to open (or create) first: its cell, saved state and programs; "
+          + "what the script changes is saved back to it as the window saves it (docs/workspace.md).")
+  Path workspace;
 
   @Option(names = "--max-wall-seconds", paramLabel = "N", defaultValue = "3600",
       description = "Stop with exit code 1 when the script has run this long in real (wall-clock) time, 1.."
@@ -108,8 +114,19 @@ public final class PendantCommand implements Callable<Integer> {
       }
     }
     List<Path> programFiles = new java.util.ArrayList<>();
+    WorkspaceSession session = null;
+    if (workspace != null && scenario != null) {
+      throw new UserError("--workspace: give it alone (a workspace has its own cell)");
+    }
     Simulation sim;
-    if (scenario != null) {
+    if (workspace != null) {
+      session = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
+          m -> System.err.println("robotrun: " + m));
+      if (!session.problems().isEmpty()) {
+        System.err.println("robotrun: " + session.problems());
+      }
+      sim = session.sim;
+    } else if (scenario != null) {
       Scenario sc = ScenarioFiles.load(scenario);
       try {
         sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
@@ -123,7 +140,7 @@ public final class PendantCommand implements Callable<Integer> {
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     }
-    // the pendant drives the scenario's first robot
+    // the pendant drives the first robot; a script starts like a cold-started controller
     SimRobotControl control = new SimRobotControl(sim, sim.controllers().get(0));
     control.setMode(startMode);
     control.setOverridePct(overridePct);
@@ -134,9 +151,16 @@ public final class PendantCommand implements Callable<Integer> {
     PrintWriter out = spec.commandLine().getOut();
     Pendant pendant = new Pendant(control, new LsLineParser());
     WallClock clock = WallClock.start(maxWallSeconds);
+    WorkspaceSession ws = session;
+    java.util.function.Consumer<String> show = text -> {
+      out.print(TerminalText.safe(text));
+      if (ws != null) {
+        ws.autosave.poll(System.nanoTime());
+      }
+    };
     int[] stopped = {0};
     if (trace == null) {
-      stopped[0] = script.run(pendant, text -> out.print(TerminalText.safe(text)), clock::expired);
+      stopped[0] = script.run(pendant, show, clock::expired);
     } else {
       try {
         org.robotrun.io.AtomicFiles.write(trace, stream -> {
@@ -144,7 +168,7 @@ public final class PendantCommand implements Callable<Integer> {
           org.robotrun.sim.TraceWriter tw = new org.robotrun.sim.TraceWriter(w, sim.controllers());
           tw.write(sim);
           control.setAfterTick(tw::write);
-          stopped[0] = script.run(pendant, text -> out.print(TerminalText.safe(text)), clock::expired);
+          stopped[0] = script.run(pendant, show, clock::expired);
           w.flush();
         });
       } catch (IOException e) {
@@ -153,6 +177,13 @@ public final class PendantCommand implements Callable<Integer> {
     }
     int stoppedAt = stopped[0];
     out.flush();
+    if (session != null) {
+      String problem = session.autosave.saveNow(10_000);
+      session.close();
+      if (!problem.isEmpty() && !session.workspace.readOnly()) {
+        throw new UserError("--workspace: " + problem, Main.EXIT_FAILED);
+      }
+    }
     if (stoppedAt > 0) {
       throw new UserError(keys + ":" + stoppedAt + ": stopped: the script ran longer than --max-wall-seconds "
           + WallClock.format(maxWallSeconds) + " s of real time", Main.EXIT_FAILED);

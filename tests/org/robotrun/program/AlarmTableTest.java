@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
  */
 class AlarmTableTest {
   /** An alarm code as a string literal: a FANUC-style family and number. */
-  private static final Pattern CODE_LITERAL = Pattern.compile("\"([A-Z]{3,4}-\\d{3})\\b");
+  private static final Pattern CODE_LITERAL = Pattern.compile("\"((?:[A-Z]{4}|RUN)-\\d{3})\\b");
   private static final Pattern TABLE_REF = Pattern.compile("AlarmCode\\.([A-Z]+_\\d{3})\\b");
 
   @Test
