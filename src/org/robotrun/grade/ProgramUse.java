@@ -47,7 +47,7 @@ final class ProgramUse {
   static String describe(Check.ProgramUse u) {
     List<String> parts = new ArrayList<>();
     u.requires().forEach(f -> parts.add("uses " + f.words()));
-    u.forbids().forEach(f -> parts.add("no " + f.words()));
+    u.forbids().forEach(f -> parts.add("does not use " + f.words()));
     u.maxMotionLines().ifPresent(n -> parts.add("at most " + n + " motion lines"));
     return parts.isEmpty() ? "nothing to check" : String.join(", ", parts);
   }

@@ -103,8 +103,49 @@ public final class SubmissionLoader {
       }
     }
     Optional<Path> cell = workspace ? Optional.of(dir.resolve("cell.json")) : Optional.empty();
+    if (Files.isRegularFile(dir.resolve("manifest.json"))) {
+      return unpackedHandIn(dir, name, kind, programs, cell);
+    }
     List<String> problems = List.of(workspace ? "a workspace folder, not a hand-in .zip" : "a folder of programs, not a hand-in .zip");
     return new Submission(name, kind, programs, cell, "", problems, Optional.empty(), Optional.empty());
+  }
+
+  /**
+   * A hand-in unpacked by someone else (Gradescope unpacks an uploaded .zip): the manifest is
+   * checked against the files as they are on disk.
+   */
+  private Submission unpackedHandIn(Path dir, String name, Submission.Kind kind, Path programs, Optional<Path> cell)
+      throws IOException {
+    Map<String, String> hashes = new LinkedHashMap<>();
+    List<String> problems = new ArrayList<>();
+    long total = 0;
+    try (java.util.stream.Stream<Path> s = Files.walk(dir, 2)) {
+      for (Iterator<Path> it = s.iterator(); it.hasNext(); ) {
+        Path p = it.next();
+        if (!Files.isRegularFile(p, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+          continue;
+        }
+        String rel = dir.relativize(p).toString().replace('\\', '/');
+        if (rel.equals("manifest.json")) {
+          continue;
+        }
+        if (hashes.size() >= limits.entries()) {
+          return Submission.failed(name, kind, "more than " + limits.entries() + " files", Optional.empty());
+        }
+        long size = Files.size(p);
+        total += size;
+        if (size > limits.entryBytes() || total > limits.totalBytes()) {
+          return Submission.failed(name, kind, "\"" + rel + "\" is too large (" + size + " bytes)", Optional.empty());
+        }
+        hashes.put(rel, sha256(Files.readAllBytes(p)));
+      }
+    }
+    long manifestSize = Files.size(dir.resolve("manifest.json"));
+    if (manifestSize > limits.entryBytes()) {
+      return Submission.failed(name, kind, "manifest.json is too large", Optional.empty());
+    }
+    String student = checkManifest(Files.readAllBytes(dir.resolve("manifest.json")), hashes, problems);
+    return new Submission(name, kind, programs, cell, student, problems, Optional.empty(), Optional.empty());
   }
 
   private Submission zip(Path file, String name) throws IOException {
