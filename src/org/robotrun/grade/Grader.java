@@ -120,7 +120,9 @@ public final class Grader {
       case Check.HandIn h -> ctx.handInProblems().isEmpty()
           ? pass(c, "a valid hand-in: every file matches its SHA-256 in manifest.json")
           : fail(c, String.join("\n", ctx.handInProblems()));
-      case Check.ProgramsCheck p -> ctx.loaded().errors().isEmpty()
+      case Check.ProgramsCheck p -> ctx.loaded().programs().isEmpty() && ctx.loaded().errors().isEmpty()
+          ? fail(c, "no .LS program found in the submission")
+          : ctx.loaded().errors().isEmpty()
           ? pass(c, ctx.loaded().programs().size() + " program(s) read without errors")
           : fail(c, ctx.loaded().errors().size() + " error(s):\n" + String.join("\n", limit(ctx.loaded().errors(), 20)));
       case Check.ProgramUse u -> ProgramUse.evaluate(u, ctx.loaded().programs(), task.program())
@@ -293,6 +295,9 @@ public final class Grader {
   }
 
   static String fmt(double d) {
-    return d == Math.rint(d) && Math.abs(d) < 1e15 ? Long.toString((long) d) : String.format(Locale.ROOT, "%.3g", d);
+    if (d == Math.rint(d) && Math.abs(d) < 1e15) {
+      return Long.toString((long) d);
+    }
+    return new java.math.BigDecimal(d).round(new java.math.MathContext(3)).stripTrailingZeros().toPlainString();
   }
 }

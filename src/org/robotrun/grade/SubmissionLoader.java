@@ -206,7 +206,14 @@ public final class SubmissionLoader {
         }
       }
     } catch (ZipException | EOFException e) {
+      if (String.valueOf(e.getMessage()).contains("bad entry name")) {
+        return Submission.failed(name, Submission.Kind.ZIP, "entry " + (entries + 1)
+            + " of the zip has a file name that is not UTF-8; make the zip again with RobotRun's Hand in", Optional.of(temp));
+      }
       return Submission.failed(name, Submission.Kind.ZIP, "not a readable zip file (" + describe(e) + ")", Optional.of(temp));
+    }
+    if (entries == 0) {
+      return Submission.failed(name, Submission.Kind.ZIP, "not a zip file, or an empty one", Optional.of(temp));
     }
     Files.createDirectories(temp.resolve("programs"));
     List<String> problems = new ArrayList<>();
