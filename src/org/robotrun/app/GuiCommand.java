@@ -18,7 +18,11 @@ import org.robotrun.sim.Controller;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
+import org.robotrun.grade.Grader;
+import org.robotrun.grade.TaskLoad;
+import org.robotrun.grade.TaskReader;
 import org.robotrun.ui.CellPanel;
+import org.robotrun.ui.CheckWorkPanel;
 import org.robotrun.ui.PendantKeyboard;
 import org.robotrun.ui.PendantPanel;
 import org.robotrun.ui.RobotStatusPanel;
@@ -47,6 +51,11 @@ public final class GuiCommand implements Callable<Integer> {
       description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs). Default: the default robot in an empty cell.")
   Path scenario;
 
+  @Option(names = "--task", paramLabel = "TASK.json",
+      description = "A grading task (docs/grading.md): adds a 'Check my work' panel that runs its visible checks on "
+          + "your programs and frames. Opens the task's scenario unless --scenario is given.")
+  Path task;
+
   @Override
   public Integer call() {
     RenderCommand.checkSize("--width", width);
@@ -54,6 +63,16 @@ public final class GuiCommand implements Callable<Integer> {
     Simulation sim;
     List<Program> programs = new ArrayList<>();
     Scenario sc = null;
+    TaskLoad.Loaded taskLoaded = null;
+    if (task != null) {
+      taskLoaded = switch (TaskReader.read(task)) {
+        case TaskLoad.Loaded l -> l;
+        case TaskLoad.Failed f -> throw new UserError(f.message());
+      };
+      if (scenario == null) {
+        scenario = taskLoaded.task().scenario();
+      }
+    }
     if (scenario == null) {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     } else {
@@ -73,6 +92,8 @@ public final class GuiCommand implements Callable<Integer> {
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);
     CellPanel cellPanel = new CellPanel(sim);
+    CheckWorkPanel checkPanel = taskLoaded == null ? null
+        : new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()), controller);
     RobotModel robot = controller.model();
     try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height)) {
       if (sc != null) {
@@ -100,6 +121,9 @@ public final class GuiCommand implements Callable<Integer> {
             RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
             pendantPanel.draw(fw, fh);
             cellPanel.draw();
+            if (checkPanel != null) {
+              checkPanel.draw();
+            }
           });
     } catch (GlUnavailableException e) {
       throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);

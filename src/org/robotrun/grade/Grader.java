@@ -65,7 +65,6 @@ public final class Grader {
    */
   public GradeResult grade(Submission sub, boolean includeHidden) {
     long t0 = System.nanoTime();
-    long deadline = t0 + (long) (task.limits().wallSeconds() * 1e9);
     List<Check> checks = task.checks().stream().filter(c -> includeHidden || !c.meta().hidden()).toList();
     if (sub.fatal().isPresent()) {
       String why = "The submission could not be graded: " + sub.fatal().get();
@@ -75,7 +74,37 @@ public final class Grader {
     Loaded loaded = loadPrograms(sub);
     List<String> handInProblems = new ArrayList<>(sub.handInProblems());
     Scenario cell = overlay(sub, handInProblems);
+    return gradeLoaded(sub.name(), sub.student(), loaded, handInProblems, cell, checks, t0);
+  }
 
+  /**
+   * A student's own check ("Check my work" in the window) on programs and frames held in memory:
+   * the visible checks only, without the hand-in check (a hand-in is checked when it is handed in).
+   *
+   * @param programs the programs as the controller holds them (immutable)
+   * @param toolFrames the student's tool frames UT[n] (flange to TCP), by number
+   * @param userFrames the student's user frames UF[n] (in WORLD), by number
+   * @param registers the student's data registers R[n] to start with
+   */
+  public GradeResult checkMyWork(List<Program> programs, Map<Integer, Transform> toolFrames,
+      Map<Integer, Transform> userFrames, Map<Integer, Double> registers) {
+    long t0 = System.nanoTime();
+    List<Check> checks = task.checks().stream()
+        .filter(c -> !c.meta().hidden() && !(c instanceof Check.HandIn)).toList();
+    TreeMap<Integer, Double> regs = new TreeMap<>(scenario.registers());
+    regs.putAll(registers);
+    TreeMap<Integer, Transform> tool = new TreeMap<>(scenario.toolFrames());
+    tool.putAll(toolFrames);
+    TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
+    user.putAll(userFrames);
+    Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
+        scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision());
+    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of()), List.of(), cell, checks, t0);
+  }
+
+  private GradeResult gradeLoaded(String name, String student, Loaded loaded, List<String> handInProblems, Scenario cell,
+      List<Check> checks, long t0) {
+    long deadline = t0 + (long) (task.limits().wallSeconds() * 1e9);
     // The runs, nominal first; a run that could not happen leaves its reason.
     List<RunOutcome> runs = new ArrayList<>();
     List<String> notRun = new ArrayList<>();
@@ -108,7 +137,7 @@ public final class Grader {
     for (Check c : checks) {
       out.add(evaluate(c, ctx));
     }
-    return new GradeResult(sub.name(), sub.student(), out, runs, seconds(t0));
+    return new GradeResult(name, student, out, runs, seconds(t0));
   }
 
   /** What a grade needs besides the check. */

@@ -147,4 +147,23 @@ class ExampleTaskTest {
     GradeResult b = gradeZip("hardcoded");
     assertThat(a.checks()).extracting(CheckResult::feedback).isEqualTo(b.checks().stream().map(CheckResult::feedback).toList());
   }
+
+  @Test
+  void checkMyWorkRunsTheVisibleChecksOnProgramsInMemory() throws Exception {
+    var program = org.robotrun.io.LsReader.read(SUBMISSIONS.resolve("hardcoded/programs/PICKPLACE.LS")).program();
+    GradeResult r = grader.checkMyWork(List.of(program), java.util.Map.of(), java.util.Map.of(), java.util.Map.of());
+    assertThat(r.checks()).noneMatch(CheckResult::hidden).noneMatch(c -> c.check() instanceof Check.HandIn);
+    assertThat(r.maxScore()).isEqualTo(85);
+    assertThat(HandIns.failed(r)).containsExactly("Parts found where they are");
+    assertThat(r.score()).isEqualTo(80);
+  }
+
+  @Test
+  void checkMyWorkUsesTheStudentsFrames() throws Exception {
+    var program = org.robotrun.io.LsReader.read(SUBMISSIONS.resolve("reference/programs/PICKPLACE.LS")).program();
+    // UFRAME 1 taught 30 mm too high: the parts are picked higher up and let go 30 mm above the tray.
+    var uf1 = org.robotrun.math.Transform.translation(220, -350, -70);
+    GradeResult r = grader.checkMyWork(List.of(program), java.util.Map.of(), java.util.Map.of(1, uf1), java.util.Map.of());
+    assertThat(HandIns.check(r, "part1 on the tray").feedback()).startsWith("part1 was let go in the air at (");
+  }
 }
