@@ -40,10 +40,12 @@ public final class CheckWorkPanel {
   /** Draws the panel (on the GUI thread, which owns the controller). */
   public void draw() {
     ImGui.setNextWindowPos(10, 430, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowSize(460, 0, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowSizeConstraints(300, 0, 520, 700);
     ImGui.setNextWindowBgAlpha(0.9f);
-    if (ImGui.begin("Check my work", ImGuiWindowFlags.NoFocusOnAppearing)) {
-      ImGui.textWrapped(grader.task().title());
+    if (ImGui.begin("Check my work", ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.AlwaysAutoResize)) {
+      // A fixed wrap width: wrapped text in an auto-resizing window would otherwise widen it for ever.
+      ImGui.pushTextWrapPos(ImGui.getCursorPosX() + 480);
+      ImGui.text(grader.task().title());
       boolean busy = running != null && !running.isDone();
       if (busy) {
         ImGui.textDisabled("checking...");
@@ -60,7 +62,7 @@ public final class CheckWorkPanel {
         running = null;
       }
       if (!error.isEmpty()) {
-        ImGui.textWrapped(error);
+        ImGui.text(error);
       }
       if (last != null) {
         ImGui.text(String.format(Locale.ROOT, "%s of %s points", fmt(last.score()), fmt(last.maxScore())));
@@ -68,10 +70,11 @@ public final class CheckWorkPanel {
           ImGui.textColored(c.passed() ? 0.3f : 0.95f, c.passed() ? 0.8f : 0.35f, c.passed() ? 0.4f : 0.3f, 1f,
               (c.passed() ? "PASS " : "FAIL ") + fmt(c.score()) + "/" + fmt(c.maxScore()) + "  " + c.name());
           ImGui.indent();
-          ImGui.textWrapped(c.feedback());
+          ImGui.textDisabled(c.feedback());
           ImGui.unindent();
         }
       }
+      ImGui.popTextWrapPos();
     }
     ImGui.end();
   }
