@@ -72,9 +72,9 @@ public final class Grader {
       return new GradeResult(sub.name(), sub.student(), out, List.of(), seconds(t0));
     }
     Loaded loaded = loadPrograms(sub);
-    List<String> handInProblems = new ArrayList<>(sub.handInProblems());
-    Scenario cell = overlay(sub, handInProblems);
-    return gradeLoaded(sub.name(), sub.student(), loaded, handInProblems, cell, checks, t0);
+    List<String> cellNotes = new ArrayList<>();
+    Scenario cell = overlay(sub, cellNotes);
+    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, checks, t0);
   }
 
   /**
@@ -99,11 +99,16 @@ public final class Grader {
     user.putAll(userFrames);
     Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
         scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision());
-    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of()), List.of(), cell, checks, t0);
+    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of()), List.of(), List.of(), cell,
+        checks, t0);
   }
 
-  private GradeResult gradeLoaded(String name, String student, Loaded loaded, List<String> handInProblems, Scenario cell,
-      List<Check> checks, long t0) {
+  /**
+   * @param cellNotes why the submission's cell.json could not be used (its frames and registers
+   *     then come from the task): shown with the hand-in and frame checks, failing neither by itself
+   */
+  private GradeResult gradeLoaded(String name, String student, Loaded loaded, List<String> handInProblems,
+      List<String> cellNotes, Scenario cell, List<Check> checks, long t0) {
     long deadline = t0 + (long) (task.limits().wallSeconds() * 1e9);
     // The runs, nominal first; a run that could not happen leaves its reason.
     List<RunOutcome> runs = new ArrayList<>();
@@ -132,7 +137,7 @@ public final class Grader {
     } else {
       notRun.add(cannotRun.get());
     }
-    Context ctx = new Context(loaded, handInProblems, runs, notRun, count, cell);
+    Context ctx = new Context(loaded, handInProblems, cellNotes, runs, notRun, count, cell);
     List<CheckResult> out = new ArrayList<>();
     for (Check c : checks) {
       out.add(evaluate(c, ctx));
@@ -141,14 +146,18 @@ public final class Grader {
   }
 
   /** What a grade needs besides the check. */
-  private record Context(Loaded loaded, List<String> handInProblems, List<RunOutcome> runs, List<String> notRun,
-      int variations, Scenario cell) {}
+  private record Context(Loaded loaded, List<String> handInProblems, List<String> cellNotes, List<RunOutcome> runs,
+      List<String> notRun, int variations, Scenario cell) {
+    String notes() {
+      return cellNotes.isEmpty() ? "" : "\nnote: " + String.join("\nnote: ", cellNotes);
+    }
+  }
 
   private CheckResult evaluate(Check c, Context ctx) {
     return switch (c) {
       case Check.HandIn h -> ctx.handInProblems().isEmpty()
-          ? pass(c, "a valid hand-in: every file matches its SHA-256 in manifest.json")
-          : fail(c, String.join("\n", ctx.handInProblems()));
+          ? pass(c, "a valid hand-in: every file matches its SHA-256 in manifest.json" + ctx.notes())
+          : fail(c, String.join("\n", ctx.handInProblems()) + ctx.notes());
       case Check.ProgramsCheck p -> ctx.loaded().programs().isEmpty() && ctx.loaded().errors().isEmpty()
           ? fail(c, "no .LS program found in the submission")
           : ctx.loaded().errors().isEmpty()
@@ -210,6 +219,7 @@ public final class Grader {
     String name = (f.tool() ? "UT[" : "UF[") + f.number() + "]";
     String m = String.format(Locale.ROOT, "%s is %.2f mm and %.2f deg from the true frame (allowed %s mm, %s deg)",
         name, d, a, fmt(f.toleranceMm()), fmt(f.toleranceDeg()));
+    m += ctx.notes();
     return d <= f.toleranceMm() && a <= f.toleranceDeg() ? pass(f, m) : fail(f, m);
   }
 
@@ -286,7 +296,7 @@ public final class Grader {
       case ScenarioLoad.Failed f -> {
         String prefix = sub.cell().get().toString();
         f.errors().stream().limit(10).forEach(e -> problems.add(e.toString().replace(prefix, "cell.json")
-            + " (the task's frames and registers were used)"));
+            + " (so the task's frames and registers were used)"));
         return scenario;
       }
     }

@@ -45,6 +45,17 @@ class CheckTypesTest {
   }
 
   @Test
+  void aCellJsonThatDoesNotLoadIsANoteAndTheTasksFramesAreUsed() throws Exception {
+    String check = "{\"name\": \"uf1\", \"type\": \"frame\", \"points\": 4, \"frame\": \"UF[1]\","
+        + " \"pose\": {\"x\": 220, \"y\": -350, \"z\": -100, \"w\": 0, \"p\": 0, \"r\": 0}}";
+    GradeResult r = grade(check, workspace("\"format\": 1", "\"format\": 1, \"bogus\": 2"));
+    assertThat(r.checks().get(0).passed()).isTrue();
+    assertThat(r.checks().get(0).feedback()).isEqualTo("UF[1] is 0.00 mm and 0.00 deg from the true frame (allowed 1 mm, 1 deg)"
+        + "\nnote: cell.json:2: bogus: unknown field (expected one of: camera, description, format, frames, mainProgram, "
+        + "name, objects, onCollision, programs, registers, robots) (so the task's frames and registers were used)");
+  }
+
+  @Test
   void endStateReadsRegistersAndOutputs() throws Exception {
     GradeResult r = grade("{\"name\": \"end\", \"type\": \"endState\", \"points\": 1,"
         + " \"values\": {\"R[2]\": 3, \"RO[1]\": true, \"DO[2]\": false}}", REFERENCE);
