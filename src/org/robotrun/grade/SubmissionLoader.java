@@ -36,9 +36,9 @@ import org.robotrun.io.AtomicFiles;
  * the number of entries, each entry's uncompressed bytes and the total are counted as they are
  * inflated and the read stops at the first limit passed (a zip bomb costs at most
  * {@link Limits#totalBytes} of inflation). Names must be relative, without {@code ..}, drive
- * letters or backslashes (no "zip slip"), valid UTF-8, and unique. Only the hand-in's own files
- * are written out, through {@link AtomicFiles}, into a fresh private temporary folder; every
- * entry is hashed so the manifest can be verified.
+ * letters or backslashes (no "zip slip"), valid UTF-8, and unique. Only once the whole zip has
+ * passed are the hand-in's own files written out, through {@link AtomicFiles}, into a fresh
+ * private temporary folder; every entry is hashed so the manifest can be verified.
  */
 public final class SubmissionLoader {
   private static final ObjectMapper JSON = new ObjectMapper();
@@ -49,7 +49,7 @@ public final class SubmissionLoader {
    * @param totalBytes most uncompressed bytes of a whole zip
    */
   public record Limits(int entries, long entryBytes, long totalBytes) {
-    public static final Limits DEFAULT = new Limits(500, 4L << 20, 32L << 20);
+    public static final Limits DEFAULT = new Limits(200, 4L << 20, 32L << 20);
   }
 
   private final Limits limits;
@@ -152,6 +152,7 @@ public final class SubmissionLoader {
     Path temp = Files.createTempDirectory("robotrun-grade-",
         PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
     Map<String, String> hashes = new LinkedHashMap<>();
+    Map<String, byte[]> keep = new LinkedHashMap<>();
     byte[] manifest = null;
     int entries = 0;
     long total = 0;
@@ -198,11 +199,8 @@ public final class SubmissionLoader {
           continue;
         }
         hashes.put(entry, sha256(bytes));
-        if (entry.equals("cell.json")) {
-          AtomicFiles.write(temp.resolve("cell.json"), bytes);
-        } else if (entry.startsWith("programs/") && entry.indexOf('/', 9) < 0 && isLs(entry)) {
-          Files.createDirectories(temp.resolve("programs"));
-          AtomicFiles.write(temp.resolve(entry), bytes);
+        if (entry.equals("cell.json") || entry.startsWith("programs/") && entry.indexOf('/', 9) < 0 && isLs(entry)) {
+          keep.put(entry, bytes);
         }
       }
     } catch (ZipException | EOFException e) {
@@ -215,7 +213,11 @@ public final class SubmissionLoader {
     if (entries == 0) {
       return Submission.failed(name, Submission.Kind.ZIP, "not a zip file, or an empty one", Optional.of(temp));
     }
+    // Written only once the whole zip has passed: a hostile zip costs no disk writes.
     Files.createDirectories(temp.resolve("programs"));
+    for (Map.Entry<String, byte[]> e : keep.entrySet()) {
+      AtomicFiles.write(temp.resolve(e.getKey()), e.getValue());
+    }
     List<String> problems = new ArrayList<>();
     String student = "";
     if (manifest == null) {
