@@ -139,6 +139,7 @@ public final class GradeCommand implements Callable<Integer> {
     Files.createDirectories(out);
     List<String> folders = new ArrayList<>();
     Set<String> used = new HashSet<>();
+    used.add("summary.csv");  // the class summary lives beside the folders
     for (GradeResult r : results) {
       folders.add(uniqueFolder(r.submission(), used));
     }

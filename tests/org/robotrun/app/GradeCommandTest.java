@@ -94,7 +94,8 @@ class GradeCommandTest {
 
   @Test
   void folderNamesAreSafeAndUnique() {
-    var used = new java.util.HashSet<String>();
+    var used = new java.util.HashSet<String>(java.util.Set.of("summary.csv"));
+    assertThat(GradeCommand.uniqueFolder("summary.csv", used)).isEqualTo("summary.csv-2");
     assertThat(GradeCommand.uniqueFolder("../../etc.zip", used)).isEqualTo("submission.._.._etc");
     assertThat(GradeCommand.uniqueFolder("Ann Lee.zip", used)).isEqualTo("Ann_Lee");
     assertThat(GradeCommand.uniqueFolder("Ann_Lee.ZIP", used)).isEqualTo("Ann_Lee-2");
