@@ -137,7 +137,7 @@ public final class Grader {
     } else {
       notRun.add(cannotRun.get());
     }
-    Context ctx = new Context(loaded, handInProblems, cellNotes, runs, notRun, count, cell);
+    Context ctx = new Context(loaded, handInProblems, cellNotes, runs, notRun, cell);
     List<CheckResult> out = new ArrayList<>();
     for (Check c : checks) {
       out.add(evaluate(c, ctx));
@@ -147,7 +147,7 @@ public final class Grader {
 
   /** What a grade needs besides the check. */
   private record Context(Loaded loaded, List<String> handInProblems, List<String> cellNotes, List<RunOutcome> runs,
-      List<String> notRun, int variations, Scenario cell) {
+      List<String> notRun, Scenario cell) {
     String notes() {
       return cellNotes.isEmpty() ? "" : "\nnote: " + String.join("\nnote: ", cellNotes);
     }
@@ -191,7 +191,7 @@ public final class Grader {
         return fail(c, "not run: " + String.join("; ", ctx.notRun()));
       }
       RunOutcome run = ctx.runs().get(i);
-      RunChecks.Eval e = RunChecks.evaluate(c, run, scenario);
+      RunChecks.Eval e = RunChecks.evaluate(c, run);
       if (!e.pass()) {
         String where = which.size() > 1 || i > 0 ? "In the " + run.label() + ": " : "";
         return new CheckResult(c, false, 0, where + e.measured(), Optional.of(i), e.focus_C());

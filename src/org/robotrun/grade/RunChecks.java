@@ -15,7 +15,6 @@ import org.robotrun.sim.ControllerAlarm;
 import org.robotrun.sim.MotionAlarms;
 import org.robotrun.sim.Simulation;
 import org.robotrun.world.ObjectKind;
-import org.robotrun.world.Scenario;
 import org.robotrun.world.WorldObject;
 
 /** The checks that look at one run's end state; each says what it measured. */
@@ -32,7 +31,7 @@ final class RunChecks {
     }
   }
 
-  static Eval evaluate(Check c, RunOutcome run, Scenario scenario) {
+  static Eval evaluate(Check c, RunOutcome run) {
     return switch (c) {
       case Check.RunsToEnd r -> runsToEnd(r, run);
       case Check.PartAt p -> partAt(p, run);
