@@ -3,6 +3,7 @@ package org.robotrun.ui;
 import imgui.ImGui;
 import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiWindowFlags;
+import imgui.type.ImBoolean;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -19,17 +20,18 @@ import org.robotrun.sim.Controller;
 import org.robotrun.sim.FrameTable;
 
 /**
- * The "Check my work" panel: runs the task's visible checks on the programs, frames and
- * registers the student has now, in fresh simulations on a background thread (the window's own
- * simulation is not touched), and shows the same feedback the grader gives. Hidden checks stay
- * hidden.
+ * The "Check" menu and the "Check my work" window: runs the task's visible checks on the
+ * programs, frames and registers the student has now, in fresh simulations on a background
+ * thread (the window's own simulation is not touched), and shows the same feedback the grader
+ * gives. Hidden checks stay hidden. Joins the menu bar as a {@link Workbench.MenuContributor}.
  */
-public final class CheckWorkPanel {
+public final class CheckWorkPanel implements Workbench.MenuContributor {
   private final Grader grader;
   private final Controller controller;
   private CompletableFuture<GradeResult> running;
   private GradeResult last;
   private String error = "";
+  private final ImBoolean open = new ImBoolean(false);
 
   /** @param controller the window's first robot: its programs, frames and registers are checked */
   public CheckWorkPanel(Grader grader, Controller controller) {
@@ -37,14 +39,27 @@ public final class CheckWorkPanel {
     this.controller = controller;
   }
 
-  /** Draws the panel (on the GUI thread, which owns the controller). */
-  public void draw() {
-    ImGui.setNextWindowPos(10, 430, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowSizeConstraints(300, 0, 520, 700);
-    ImGui.setNextWindowBgAlpha(0.9f);
-    if (ImGui.begin("Check my work", ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.AlwaysAutoResize)) {
-      // A fixed wrap width: wrapped text in an auto-resizing window would otherwise widen it for ever.
-      ImGui.pushTextWrapPos(ImGui.getCursorPosX() + 480);
+  /** The Check menu, then the results window when open (on the GUI thread, which owns the controller). */
+  @Override
+  public void drawMenus() {
+    if (ImGui.beginMenu("Check")) {
+      if (ImGui.menuItem("Check my work", "", false, running == null)) {
+        open.set(true);
+        start();
+      }
+      ImGui.endMenu();
+    }
+    if (open.get()) {
+      draw();
+    }
+  }
+
+  private void draw() {
+    ImGui.setNextWindowPos(ImGui.getIO().getDisplaySizeX() * 0.25f, 60, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowSize(520, ImGui.getIO().getDisplaySizeY() * 0.7f, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowBgAlpha(0.95f);
+    if (ImGui.begin("Check my work", open, ImGuiWindowFlags.NoCollapse)) {
+      ImGui.pushTextWrapPos(0);
       ImGui.text(grader.task().title());
       boolean busy = running != null && !running.isDone();
       if (busy) {
