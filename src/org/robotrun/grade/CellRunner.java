@@ -88,16 +88,20 @@ final class CellRunner {
   /**
    * Runs {@code program} on the variant's cell.
    *
+   * @param positionRegisters the student's PR[] to start with (taught at the pendant)
+   *
    * @param deadlineNanos {@link System#nanoTime()} after which the run is abandoned
    * @throws WallClockExceeded when the deadline passes
    * @throws IllegalArgumentException when the cell cannot be built or the program not started
    */
-  static RunOutcome run(Variant v, Function<String, RobotModel> models, List<Program> programs, String program,
-      double maxSimSec, long deadlineNanos) {
+  static RunOutcome run(Variant v, Function<String, RobotModel> models, List<Program> programs,
+      Map<Integer, Position> positionRegisters, String program, double maxSimSec, long deadlineNanos) {
     Simulation sim = ScenarioCell.build(v.scenario(), models, Simulation.DEFAULT_TICK_SEC);
     Controller c = sim.controllers().get(0);
     programs.forEach(c::saveProgram);
     c.setOverridePct(v.overridePct());
+    // The student's own PRs first; the task's offset registers (where parts were found) win.
+    positionRegisters.forEach((n, p) -> c.registers().setPosition(n, p));
     v.offsetRegisters().forEach((n, p) -> c.registers().setPosition(n, p));
     Map<String, Optional<String>> startParents = new HashMap<>();
     for (WorldObject o : sim.world().objects()) {

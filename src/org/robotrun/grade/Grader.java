@@ -25,6 +25,7 @@ import org.robotrun.io.ScenarioReader;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.FrameTable;
@@ -74,7 +75,7 @@ public final class Grader {
     Loaded loaded = loadPrograms(sub);
     List<String> cellNotes = new ArrayList<>();
     Scenario cell = overlay(sub, cellNotes);
-    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, checks, t0);
+    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, Map.of(), checks, t0);
   }
 
   /**
@@ -88,6 +89,15 @@ public final class Grader {
    */
   public GradeResult checkMyWork(List<Program> programs, Map<Integer, Transform> toolFrames,
       Map<Integer, Transform> userFrames, Map<Integer, Double> registers) {
+    return checkMyWork(programs, toolFrames, userFrames, registers, Map.of());
+  }
+
+  /**
+   * As {@link #checkMyWork(List, Map, Map, Map)}, with the student's position registers (those the
+   * task writes as offset registers are overwritten by the task, as in grading).
+   */
+  public GradeResult checkMyWork(List<Program> programs, Map<Integer, Transform> toolFrames,
+      Map<Integer, Transform> userFrames, Map<Integer, Double> registers, Map<Integer, Position> positionRegisters) {
     long t0 = System.nanoTime();
     List<Check> checks = task.checks().stream()
         .filter(c -> !c.meta().hidden() && !(c instanceof Check.HandIn)).toList();
@@ -100,7 +110,7 @@ public final class Grader {
     Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
         scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision());
     return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of()), List.of(), List.of(), cell,
-        checks, t0);
+        Map.copyOf(positionRegisters), checks, t0);
   }
 
   /**
@@ -108,7 +118,7 @@ public final class Grader {
    *     then come from the task): shown with the hand-in and frame checks, failing neither by itself
    */
   private GradeResult gradeLoaded(String name, String student, Loaded loaded, List<String> handInProblems,
-      List<String> cellNotes, Scenario cell, List<Check> checks, long t0) {
+      List<String> cellNotes, Scenario cell, Map<Integer, Position> positionRegisters, List<Check> checks, long t0) {
     long deadline = t0 + (long) (task.limits().wallSeconds() * 1e9);
     // The runs, nominal first; a run that could not happen leaves its reason.
     List<RunOutcome> runs = new ArrayList<>();
@@ -121,7 +131,8 @@ public final class Grader {
         CellRunner.Variant v = i == 0 ? CellRunner.nominal(cell, task.variations())
             : CellRunner.variation(cell, task.variations(), i);
         try {
-          runs.add(CellRunner.run(v, modelLoader, loaded.programs(), task.program(), task.limits().simSeconds(), deadline));
+          runs.add(CellRunner.run(v, modelLoader, loaded.programs(), positionRegisters, task.program(),
+              task.limits().simSeconds(), deadline));
         } catch (CellRunner.WallClockExceeded e) {
           notRun.add(v.label() + ": stopped after " + fmt(task.limits().wallSeconds())
               + " s of wall-clock time (the grader's limit per submission)");

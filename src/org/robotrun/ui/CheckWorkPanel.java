@@ -14,6 +14,7 @@ import org.robotrun.grade.GradeResult;
 import org.robotrun.grade.Grader;
 import org.robotrun.math.Transform;
 import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 import org.robotrun.program.Registers;
 import org.robotrun.sim.Controller;
@@ -110,7 +111,11 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
     for (int i = 1; i <= Registers.R_COUNT; i++) {
       registers.put(i, regs.number(i));
     }
-    running = CompletableFuture.supplyAsync(() -> grader.checkMyWork(programs, tool, user, registers));
+    Map<Integer, Position> positions = new HashMap<>();
+    for (int i = 1; i <= Registers.PR_COUNT; i++) {
+      positions.put(i, regs.position(i));
+    }
+    running = CompletableFuture.supplyAsync(() -> grader.checkMyWork(programs, tool, user, registers, positions));
   }
 
   private static String fmt(double d) {

@@ -167,4 +167,18 @@ class ExampleTaskTest {
     assertThat(HandIns.check(r, "part1 on the tray").feedback()).startsWith("part1 rests on the table, not on the tray (it was not moved)");
     assertThat(HandIns.check(r, "Runs to the end").feedback()).startsWith("the program stopped with alarm INTP-213 (PICKPLACE, 31)");
   }
+
+  @Test
+  void checkMyWorkKeepsTheStudentsPositionRegistersButTheTaskWritesItsOffsets() throws Exception {
+    var program = org.robotrun.io.LsReader.read(SUBMISSIONS.resolve("reference/programs/PICKPLACE.LS")).program();
+    var off = new org.robotrun.program.Position.Cartesian(30, 0, 0, 0, 0, 0, org.robotrun.program.Config.DEFAULT);
+    // PR[4] (PLACE OFS, only its x is set by the program) taught 30 mm off in y: every part lands 30 mm off.
+    var placeY = new org.robotrun.program.Position.Cartesian(0, 30, 0, 0, 0, 0, org.robotrun.program.Config.DEFAULT);
+    GradeResult r = grader.checkMyWork(List.of(program), java.util.Map.of(), java.util.Map.of(), java.util.Map.of(),
+        java.util.Map.of(4, placeY, 11, off));
+    assertThat(HandIns.check(r, "part1 on the tray").feedback())
+        .startsWith("part1 is 30.0 mm from its place on the tray (allowed 3 mm)");
+    // PR[11] is the task's: the student's value is overwritten, so the pick is not 30 mm off.
+    assertThat(HandIns.check(r, "Runs to the end").passed()).isTrue();
+  }
 }
