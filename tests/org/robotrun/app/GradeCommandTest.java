@@ -67,7 +67,7 @@ class GradeCommandTest {
     assertThat(csv.get(1)).startsWith("two-parts,,two-parts,85,105,0,5,10,5,5,10,10,0,");
 
     String html = Files.readString(out.resolve("typo/report.html"));
-    assertThat(html).contains("<b>0 of 105</b>").contains("programs/PICKPLACE.LS:37: not supported: motion option &#39;Ofset&#39;");
+    assertThat(html).contains("<b>0 of 105</b>").contains("programs/PICKPLACE.LS:38: expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or &#39;(&#39;), found &#39;OON&#39;");
   }
 
   @Test

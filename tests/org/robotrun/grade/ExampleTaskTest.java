@@ -94,7 +94,7 @@ class ExampleTaskTest {
     GradeResult r = gradeZip("typo");
     assertThat(r.score()).isEqualTo(5);
     assertThat(HandIns.check(r, "Hand-in").passed()).isTrue();
-    assertThat(HandIns.check(r, "Programs read").feedback()).contains("programs/PICKPLACE.LS:37: ").contains("'Ofset'");
+    assertThat(HandIns.check(r, "Programs read").feedback()).contains("programs/PICKPLACE.LS:38: ").contains("found 'OON'");
     assertThat(HandIns.check(r, "Runs to the end").feedback()).startsWith("not run: the programs have errors");
     assertThat(r.runs()).isEmpty();
   }
