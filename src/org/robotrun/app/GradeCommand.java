@@ -23,6 +23,7 @@ import org.robotrun.grade.Task;
 import org.robotrun.grade.TaskLoad;
 import org.robotrun.grade.TaskReader;
 import org.robotrun.io.AtomicFiles;
+import org.robotrun.io.TerminalText;
 import org.robotrun.render.GlUnavailableException;
 import org.robotrun.world.Scenario;
 import picocli.CommandLine.Command;
@@ -120,17 +121,18 @@ public final class GradeCommand implements Callable<Integer> {
     return Main.EXIT_OK;
   }
 
+  /** Submission names, student names and messages come from students' files: escaped for the terminal. */
   private void print(PrintWriter w, GradeResult r) {
-    w.printf(Locale.ROOT, "%s%s: %s of %s points%n", r.submission(), r.student().isEmpty() ? "" : " (" + r.student() + ")",
-        GradeReports.fmt(r.score()), GradeReports.fmt(r.maxScore()));
+    w.print(TerminalText.safe(String.format(Locale.ROOT, "%s%s: %s of %s points%n", r.submission(),
+        r.student().isEmpty() ? "" : " (" + r.student() + ")", GradeReports.fmt(r.score()), GradeReports.fmt(r.maxScore()))));
     if (quiet) {
       return;
     }
     for (CheckResult c : r.checks()) {
       w.printf(Locale.ROOT, "  %s %s/%s %s%s%n", c.passed() ? "PASS" : "FAIL", GradeReports.fmt(c.score()),
-          GradeReports.fmt(c.maxScore()), c.name(), c.hidden() ? " (hidden)" : "");
+          GradeReports.fmt(c.maxScore()), TerminalText.safe(c.name()), c.hidden() ? " (hidden)" : "");
       for (String line : c.feedback().split("\n")) {
-        w.println("       " + line);
+        w.println("       " + TerminalText.safe(line));
       }
     }
   }

@@ -100,4 +100,13 @@ class GradeCommandTest {
     assertThat(GradeCommand.uniqueFolder("Ann Lee.zip", used)).isEqualTo("Ann_Lee");
     assertThat(GradeCommand.uniqueFolder("Ann_Lee.ZIP", used)).isEqualTo("Ann_Lee-2");
   }
+
+  @Test
+  void namesFromSubmissionsCannotDriveTheTerminal(@TempDir Path dir) throws Exception {
+    Path evil = Files.createDirectories(dir.resolve("evil\u001b[2Jname"));
+    Files.copy(Path.of(SUBS + "reference/programs/PICKPLACE.LS"), evil.resolve("PICKPLACE.LS"));
+    Run r = run("grade", "--task", TASK, "-q", evil.toString());
+    assertThat(r.exit()).isZero();
+    assertThat(r.out()).doesNotContain("\u001b").startsWith("evil\\e[2Jname: 100 of 105 points");
+  }
 }
