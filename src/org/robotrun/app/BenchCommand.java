@@ -18,6 +18,7 @@ import picocli.CommandLine.Command;
       BenchSimCommand.class,
       BenchGradeCommand.class,
       BenchCellCommand.class,
+      BenchWorkspaceCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

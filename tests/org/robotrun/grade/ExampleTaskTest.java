@@ -181,4 +181,18 @@ class ExampleTaskTest {
     // PR[11] is the task's: the student's value is overwritten, so the pick is not 30 mm off.
     assertThat(HandIns.check(r, "Runs to the end").passed()).isTrue();
   }
+
+  @Test
+  void aHandInWrittenByTheWorkspaceHandInScoresFullMarks() throws Exception {
+    // The contract between the two sides: io.HandIn writes, the grader reads.
+    Path ws = dir.resolve("ws-ref");
+    Files.createDirectories(ws.resolve("programs"));
+    Files.copy(SUBMISSIONS.resolve("reference/cell.json"), ws.resolve("cell.json"));
+    Files.copy(SUBMISSIONS.resolve("reference/programs/PICKPLACE.LS"), ws.resolve("programs/PICKPLACE.LS"));
+    Path zip = dir.resolve("handin.zip");
+    org.robotrun.io.HandIn.write(ws, zip, "Grace Hopper", "0.1.0-SNAPSHOT", false);
+    GradeResult r = Grading.gradeOne(grader, new SubmissionLoader(), zip, true);
+    assertThat(HandIns.failed(r)).isEmpty();
+    assertThat(r.student()).isEqualTo("Grace Hopper");
+  }
 }
