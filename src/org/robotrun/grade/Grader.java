@@ -15,12 +15,12 @@ import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Function;
+import org.robotrun.io.CellLoad;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.RobotDefinitions;
-import org.robotrun.io.ScenarioLoad;
 import org.robotrun.io.ScenarioReader;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
@@ -74,8 +74,10 @@ public final class Grader {
     }
     Loaded loaded = loadPrograms(sub);
     List<String> cellNotes = new ArrayList<>();
-    Scenario cell = overlay(sub, cellNotes);
-    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, Map.of(), checks, t0);
+    Map<Integer, Position> positionRegisters = new TreeMap<>();
+    Scenario cell = overlay(sub, cellNotes, positionRegisters);
+    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, positionRegisters,
+        checks, t0);
   }
 
   /**
@@ -294,17 +296,26 @@ public final class Grader {
   }
 
   /**
-   * The task's cell with the student's own frames and registers from cell.json laid over it:
+   * The task's cell with the student's own frames and registers from cell.json laid over it (and
+   * the R[] and PR[] of its saved state, into {@code positionRegisters}):
    * the robots, fixtures and parts always come from the task, so nobody passes by moving the tray.
    */
-  private Scenario overlay(Submission sub, List<String> problems) {
+  private Scenario overlay(Submission sub, List<String> problems, Map<Integer, Position> positionRegisters) {
     if (sub.cell().isEmpty()) {
       return scenario;
     }
     Scenario own;
-    switch (ScenarioReader.read(sub.cell().get())) {
-      case ScenarioLoad.Loaded l -> own = l.scenario();
-      case ScenarioLoad.Failed f -> {
+    TreeMap<Integer, Double> stateRegisters = new TreeMap<>();
+    switch (ScenarioReader.readCell(sub.cell().get())) {
+      case CellLoad.Loaded l -> {
+        own = l.scenario();
+        // A workspace's saved controller state (docs/scenario-format.md, "state"): its R[] and PR[].
+        l.state().ifPresent(st -> {
+          st.registers().forEach((n, r) -> stateRegisters.put(n, r.value()));
+          positionRegisters.putAll(st.positionRegisters());
+        });
+      }
+      case CellLoad.Failed f -> {
         String prefix = sub.cell().get().toString();
         f.errors().stream().limit(10).forEach(e -> problems.add(e.toString().replace(prefix, "cell.json")
             + " (so the task's frames and registers were used)"));
@@ -313,6 +324,7 @@ public final class Grader {
     }
     TreeMap<Integer, Double> registers = new TreeMap<>(scenario.registers());
     registers.putAll(own.registers());
+    registers.putAll(stateRegisters);
     TreeMap<Integer, Transform> tool = new TreeMap<>(scenario.toolFrames());
     tool.putAll(own.toolFrames());
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());

@@ -12,10 +12,7 @@ import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
-import java.util.HexFormat;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -26,6 +23,7 @@ import java.util.zip.ZipEntry;
 import java.util.zip.ZipException;
 import java.util.zip.ZipInputStream;
 import org.robotrun.io.AtomicFiles;
+import org.robotrun.io.HandIn;
 
 /**
  * Finds a submission's programs and cell: a hand-in {@code .zip} (CONTRACTS item 2: root
@@ -320,12 +318,9 @@ public final class SubmissionLoader {
     return name.length() > 3 && name.regionMatches(true, name.length() - 3, ".ls", 0, 3);
   }
 
+  /** The hand-in writer's own hash (lowercase hex SHA-256), so both sides agree by construction. */
   private static String sha256(byte[] bytes) {
-    try {
-      return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(bytes));
-    } catch (NoSuchAlgorithmException e) {
-      throw new IllegalStateException("every Java platform has SHA-256", e);
-    }
+    return HandIn.sha256(bytes);
   }
 
   private static String printable(String s) {

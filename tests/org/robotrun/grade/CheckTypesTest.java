@@ -56,6 +56,19 @@ class CheckTypesTest {
   }
 
   @Test
+  void aWorkspacesSavedStateGivesTheRunItsRegistersAndPositionRegisters() throws Exception {
+    Path ws = workspace("\"format\": 1,", "\"format\": 1, \"state\": {\"registers\": {\"2\": 1},"
+        + " \"positionRegisters\": {\"4\": {\"x\": 0, \"y\": 30, \"z\": 0, \"w\": 0, \"p\": 0, \"r\": 0,"
+        + " \"config\": \"N U T, 0, 0, 0\"}}},");
+    GradeResult r = grade("{\"name\": \"count\", \"type\": \"endState\", \"points\": 1, \"values\": {\"R[2]\": 1}},"
+        + "{\"name\": \"p1\", \"type\": \"partAt\", \"points\": 1, \"part\": \"part1\", \"fixture\": \"tray\","
+        + " \"position\": {\"x\": -50, \"y\": 0, \"z\": 10}}", ws);
+    // R[2] = 1 from the state: one part only; PR[4] (place offset, y taught 30 mm) from the state.
+    assertThat(HandIns.check(r, "count").passed()).isTrue();
+    assertThat(HandIns.check(r, "p1").feedback()).startsWith("part1 is 30.0 mm from its place on the tray");
+  }
+
+  @Test
   void endStateReadsRegistersAndOutputs() throws Exception {
     GradeResult r = grade("{\"name\": \"end\", \"type\": \"endState\", \"points\": 1,"
         + " \"values\": {\"R[2]\": 3, \"RO[1]\": true, \"DO[2]\": false}}", REFERENCE);
