@@ -18,11 +18,15 @@ import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.Controller;
+import org.robotrun.grade.Grader;
+import org.robotrun.grade.TaskLoad;
+import org.robotrun.grade.TaskReader;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
 import org.robotrun.ui.CellEditorPanel;
 import org.robotrun.ui.CellPanel;
+import org.robotrun.ui.CheckWorkPanel;
 import org.robotrun.ui.FileDialogs;
 import org.robotrun.ui.FileMenu;
 import org.robotrun.ui.LayoutState;
@@ -72,6 +76,11 @@ public final class GuiCommand implements Callable<Integer> {
           + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
 
+  @Option(names = "--task", paramLabel = "TASK.json",
+      description = "A grading task (docs/grading.md): adds a Check menu whose 'Check my work' runs the task's visible "
+          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario.")
+  Path task;
+
   /**
    * Everything one window session holds; tests drive it through {@link #open}. {@code workspace}
    * is null when the window shows a scenario without a workspace (tests).
@@ -94,6 +103,13 @@ public final class GuiCommand implements Callable<Integer> {
     if (log) {
       stage("command line parsed");
     }
+    TaskLoad.Loaded taskLoaded = task == null ? null : switch (TaskReader.read(task)) {
+      case TaskLoad.Loaded l -> l;
+      case TaskLoad.Failed f -> throw new UserError(f.message());
+    };
+    if (taskLoaded != null && scenario == null && workspace == null) {
+      scenario = taskLoaded.task().scenario();
+    }
     UserDirs dirs = UserDirs.fromSystem();
     Path next;
     if (scenario != null) {
@@ -113,6 +129,9 @@ public final class GuiCommand implements Callable<Integer> {
       }
       if (log) {
         stage("cell and window ready");
+      }
+      if (taskLoaded != null) {
+        s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()), s.controller()));
       }
       try (SimulatorWindow w = s.window()) {
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {

@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
       CheckCommand.class,
       PendantCommand.class,
       RunCommand.class,
+      GradeCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })
