@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.math.Angles;
@@ -47,8 +48,40 @@ public final class GuiCommand implements Callable<Integer> {
       description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs). Default: the default robot in an empty cell.")
   Path scenario;
 
+  @Option(names = "--program", paramLabel = "FILE.LS",
+      description = "Load this TP program into the pendant's program list (repeatable); 'robotrun FILE.LS' does the same, so a file manager can open .LS files in RobotRun.")
+  List<Path> programFiles = new ArrayList<>();
+
+  /** Start-up timing and the packaging's class-data training run: close after this many frames. */
+  @Option(names = "--quit-after-frames", hidden = true, defaultValue = "0")
+  int quitAfterFrames;
+
   @Override
   public Integer call() {
+    Natives.windowProblem(Natives.currentPlatform()).ifPresent(why -> {
+      throw new UserError("cannot open the simulator window: " + why, Main.EXIT_FAILED);
+    });
+    try {
+      return openWindow();
+    } catch (GlUnavailableException e) {
+      if (e.noGl33Context() && SoftwareGl.mayRetry(System.getProperty("os.name", ""), System.getenv())) {
+        System.err.println("robotrun: " + e.getMessage());
+        System.err.println("robotrun: starting again with Mesa's software renderer (llvmpipe): slower, but it works without OpenGL 3.3 from the graphics driver");
+        Optional<Integer> code = SoftwareGl.relaunch();
+        if (code.isPresent()) {
+          return code.get();
+        }
+      }
+      String software = SoftwareGl.active(System.getenv()) ? " (also with Mesa's software renderer)" : "";
+      throw new UserError("cannot open the simulator window: " + e.getMessage() + software, Main.EXIT_FAILED);
+    } catch (LinkageError e) {
+      // A native library that does not load on this machine: one line, no stack trace.
+      throw new UserError("cannot open the simulator window: a native library did not load on "
+          + Natives.currentPlatform() + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+    }
+  }
+
+  private int openWindow() {
     RenderCommand.checkSize("--width", width);
     RenderCommand.checkSize("--height", height);
     Simulation sim;
@@ -69,12 +102,22 @@ public final class GuiCommand implements Callable<Integer> {
     }
     Controller controller = sim.controllers().get(0);
     SimRobotControl control = new SimRobotControl(sim, controller);
+    if (!programFiles.isEmpty()) {
+      try {
+        programs.addAll(RunCommand.loadPrograms(programFiles));
+      } catch (IOException e) {
+        throw new UserError("--program: cannot read a program (" + e.getMessage() + ")");
+      }
+    }
     programs.forEach(control::saveProgram);
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);
     CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
-    try (SimulatorWindow w = new SimulatorWindow("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()), width, height)) {
+    String title = "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName())
+        + (SoftwareGl.active(System.getenv()) ? " (software rendering)" : "");
+    try (SimulatorWindow w = new SimulatorWindow(title, width, height)) {
+      w.setFrameLimit(quitAfterFrames);
       if (sc != null) {
         sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
       }
@@ -101,8 +144,6 @@ public final class GuiCommand implements Callable<Integer> {
             pendantPanel.draw(fw, fh);
             cellPanel.draw();
           });
-    } catch (GlUnavailableException e) {
-      throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
     }
     return Main.EXIT_OK;
   }

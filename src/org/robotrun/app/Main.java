@@ -60,8 +60,13 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     if (first.startsWith("-") && !topLevelOption) {
       return prepend("gui", args);
     }
-    if (args.length == 1 && first.toLowerCase(java.util.Locale.ROOT).endsWith(".json")) {
+    String lower = first.toLowerCase(java.util.Locale.ROOT);
+    if (args.length == 1 && lower.endsWith(".json")) {
       return new String[] {"gui", "--scenario", first};
+    }
+    if (args.length == 1 && lower.endsWith(".ls")) {
+      // What a file manager runs for a .LS file associated with RobotRun.
+      return new String[] {"gui", "--program", first};
     }
     return args;
   }

@@ -41,6 +41,7 @@ public final class SimulatorWindow implements AutoCloseable {
   private KeyHandler keyHandler = (key, action) -> false;
   private IntPredicate charHandler = codepoint -> false;
   private Runnable focusLost = () -> {};
+  private int frameLimit;
 
   /** Receives keyboard events that no panel text field wants. */
   @FunctionalInterface
@@ -78,7 +79,7 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwTerminate();
       freeErrorCallback();
       throw new GlUnavailableException("could not open a window with OpenGL 3.3" + (lastError[0].isEmpty() ? "" : " (" + lastError[0] + ")")
-          + ": update the graphics driver or Mesa");
+          + ": update the graphics driver or Mesa", true);
     }
     open[0] = true;
     glfwMakeContextCurrent(window);
@@ -175,10 +176,18 @@ public final class SimulatorWindow implements AutoCloseable {
         ImGui.render();
         imguiGl3.renderDrawData(ImGui.getDrawData());
         glfwSwapBuffers(window);
+        if (frameLimit > 0 && --frameLimit == 0) {
+          glfwSetWindowShouldClose(window, true);
+        }
       } else {
         glfwWaitEventsTimeout(0.1);
       }
     }
+  }
+
+  /** Closes the window after this many drawn frames (0: when the user closes it); for start-up timing and the packaging's training run. */
+  public void setFrameLimit(int frames) {
+    frameLimit = frames;
   }
 
   public void setKeyHandler(KeyHandler handler) {

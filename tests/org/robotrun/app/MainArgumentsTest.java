@@ -20,6 +20,14 @@ class MainArgumentsTest {
   }
 
   @Test
+  void aLoneTpProgramOpensTheWindowWithItLoaded() {
+    // A file manager opening a .LS file associated with the installed app runs "RobotRun FILE.LS".
+    assertThat(Main.withDefaultCommand(new String[] {"/home/s/PICK.LS"}))
+        .containsExactly("gui", "--program", "/home/s/PICK.LS");
+    assertThat(Main.withDefaultCommand(new String[] {"check", "PICK.LS"})).containsExactly("check", "PICK.LS");
+  }
+
+  @Test
   void subcommandsHelpAndVersionAreLeftAlone() {
     assertThat(Main.withDefaultCommand(new String[] {})).isEmpty();
     assertThat(Main.withDefaultCommand(new String[] {"--help"})).containsExactly("--help");
