@@ -38,6 +38,15 @@ class MainArgumentsTest {
   }
 
   @Test
+  void theFastVersionLineIsWhatPicocliPrints() {
+    java.io.StringWriter out = new java.io.StringWriter();
+    picocli.CommandLine cl = Main.commandLine();
+    cl.setOut(new java.io.PrintWriter(out, true));
+    assertThat(cl.execute("--version")).isZero();
+    assertThat(out.toString().strip()).isEqualTo(Main.versionLine()).startsWith("robotrun ");
+  }
+
+  @Test
   void aBadWindowOptionIsReportedByTheWindowCommand() {
     // Exit 2 with a one-line message, as for any bad option; nothing opens.
     assertThat(Main.execute("--no-such-option")).isEqualTo(Main.EXIT_BAD_INPUT);
