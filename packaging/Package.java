@@ -42,10 +42,10 @@ import javax.imageio.ImageIO;
  * <p>Steps: the modules the jar needs (jdeps); a trimmed runtime with only those (jlink); a jar
  * with this platform's natives only, which are also unpacked next to it so nothing is extracted to
  * a temporary folder at start (lab machines often mount /tmp noexec); the app image (jpackage);
- * an AppCDS archive from a training run of that image; then the platform's packages from the image:
+ * an AppCDS archive (or, with --aot true, a JDK 25 AOT cache) from a training run of that image; then the platform's packages from the image:
  * Linux .deb and .tar.gz, Windows .msi and .zip, macOS .dmg.
  *
- * <p>Arguments: {@code --jar FILE --version V --out DIR [--types LIST|auto] [--cds true|false] [--scenario FILE]}.
+ * <p>Arguments: {@code --jar FILE --version V --out DIR [--types LIST|auto] [--cds true|false] [--aot true|false] [--scenario FILE]}.
  * {@code --types} is a comma list of deb, tar.gz, msi, zip, dmg (default: all of this platform's).
  */
 public final class Package {
@@ -64,6 +64,7 @@ public final class Package {
   Path work;
   Path scenario = Path.of("scenarios/pick-and-place.json");
   boolean cds = true;
+  boolean aot;
   List<String> types;
 
   public static void main(String[] args) throws Exception {
@@ -78,6 +79,7 @@ public final class Package {
           p.types = t.equals("auto") ? null : Arrays.stream(t.split(",")).map(String::trim).filter(s -> !s.isEmpty()).toList();
         }
         case "--cds" -> p.cds = Boolean.parseBoolean(args[++i]);
+        case "--aot" -> p.aot = Boolean.parseBoolean(args[++i]);
         case "--scenario" -> p.scenario = Path.of(args[++i]);
         default -> throw new IllegalArgumentException("unknown argument " + args[i]);
       }
@@ -98,7 +100,7 @@ public final class Package {
 
   void build() throws Exception {
     work = out.resolve("work");
-    deleteTree(work);
+    deleteTree(out);  // no package of an earlier build left beside the new ones
     Files.createDirectories(work);
     log("packaging RobotRun " + version + " for " + os + "-" + arch + ": " + types);
 
@@ -156,20 +158,32 @@ public final class Package {
     return mods;
   }
 
-  Path jlink(List<String> modules) {
+  /**
+   * With --aot true (JDK 25 or newer): an AOT cache (JEP 483/514, AppCDS's successor that also
+   * keeps classes linked and method profiles) instead of a dynamic AppCDS archive. Off by default:
+   * with Temurin 25 every start of the packaged app printed "Failed to link AdapterHandlerEntry"
+   * warnings from the cache's adapter code (the JVM recovers, but students would see them), for a
+   * first-frame gain within this machine's noise. Dynamic AppCDS is mature since JDK 13.
+   */
+  boolean aotCache() {
+    return aot && Runtime.version().feature() >= 25;
+  }
+
+  Path jlink(List<String> modules) throws IOException {
     Path runtime = work.resolve("runtime");
     List<String> args = new ArrayList<>(List.of(
         "--add-modules", String.join(",", modules),
         "--strip-debug", "--no-header-files", "--no-man-pages", "--compress=zip-6",
         "--include-locales=en,de,fr,es,it,pt,nl,pl,cs,sv,fi,da,nb,tr,ru,uk,zh,ja,ko",
-        // The JDK's default class-data archive for the trimmed module set: the base the app's
-        // dynamic archive builds on, and faster start even without it.
-        "--generate-cds-archive",
         "--output", runtime.toString()));
-    if (os.equals("linux") && onPath("objcopy")) {
-      args.add(0, "--strip-native-debug-symbols=exclude-debuginfo-files");
+    if (!aotCache()) {
+      // The JDK's default class-data archive for the trimmed module set: the base a dynamic
+      // AppCDS archive builds on. (JDK 25's AOT cache holds the JDK's classes itself.)
+      args.add(0, "--generate-cds-archive");
     }
     tool("jlink", args.toArray(String[]::new));
+    // Only used with heaps over 32 GB; never for this app.
+    Files.deleteIfExists(runtime.resolve(os.equals("windows") ? "bin/server/classes_nocoops.jsa" : "lib/server/classes_nocoops.jsa"));
     return runtime;
   }
 
@@ -217,6 +231,8 @@ public final class Package {
         zout.closeEntry();
       }
     }
+    // The example cells and programs, for students to open and for the smoke tests.
+    copyTree(Path.of("scenarios"), input.resolve("scenarios"));
     if (kept == 0) {
       throw new IllegalStateException("the jar holds no natives for " + lwjglDir());
     }
@@ -431,15 +447,15 @@ public final class Package {
    */
   void trainCds(Path image) throws Exception {
     Path app = appDir(image);
-    Path archive = app.resolve("robotrun.jsa");
+    Path archive = app.resolve(aotCache() ? "robotrun.aot" : "robotrun.jsa");
     List<String> java = new ArrayList<>();
     java.add(runtimeJava(image).toString());
     for (String opt : javaOptions()) {
       java.add(opt.replace("$APPDIR", app.toString()));
     }
-    java.add("-XX:ArchiveClassesAtExit=" + archive);
-    java.add("-Xlog:cds=off");
-    java.add("-Xlog:cds+dynamic=off");
+    java.add(aotCache() ? "-XX:AOTCacheOutput=" + archive : "-XX:ArchiveClassesAtExit=" + archive);
+    java.add("-Xlog:cds*=off");
+    java.add("-Xlog:aot*=off");
     java.addAll(List.of("-cp", app.resolve("robotrun.jar").toString(), MAIN));
 
     List<String> gui = new ArrayList<>(java);
@@ -468,11 +484,13 @@ public final class Package {
     try (Stream<Path> s = Files.list(app)) {
       for (Path cfg : s.filter(f -> f.toString().endsWith(".cfg")).toList()) {
         String text = Files.readString(cfg);
-        text = text.replace("[JavaOptions]\n", "[JavaOptions]\njava-options=-XX:SharedArchiveFile=$APPDIR/robotrun.jsa\njava-options=-Xlog:cds=off\njava-options=-Xlog:cds+dynamic=off\n");
+        String use = aotCache() ? "-XX:AOTCache=$APPDIR/robotrun.aot" : "-XX:SharedArchiveFile=$APPDIR/robotrun.jsa";
+        // Quiet: a cache that does not fit (say, an edited jar) is skipped, never an error.
+        text = text.replace("[JavaOptions]\n", "[JavaOptions]\njava-options=" + use + "\njava-options=-Xlog:cds*=off\njava-options=-Xlog:aot*=off\n");
         Files.writeString(cfg, text);
       }
     }
-    log("AppCDS archive: " + mb(Files.size(archive)));
+    log((aotCache() ? "AOT cache: " : "AppCDS archive: ") + mb(Files.size(archive)));
   }
 
   // ---- packages ----
@@ -669,6 +687,19 @@ public final class Package {
 
   static String mb(long bytes) {
     return String.format(Locale.ROOT, "%.1f MB", bytes / 1e6);
+  }
+
+  static void copyTree(Path from, Path to) throws IOException {
+    try (Stream<Path> s = Files.walk(from)) {
+      for (Path f : s.toList()) {
+        Path t = to.resolve(from.relativize(f).toString());
+        if (Files.isDirectory(f)) {
+          Files.createDirectories(t);
+        } else {
+          Files.copy(f, t, StandardCopyOption.REPLACE_EXISTING);
+        }
+      }
+    }
   }
 
   static void deleteTree(Path dir) throws IOException {
