@@ -524,6 +524,9 @@ public final class Package {
             "--linux-menu-group", "Education;Science;Engineering;",
             "--linux-app-category", "education",
             "--linux-shortcut",
+            // LWJGL opens libGL at run time, so jpackage cannot see it; Mesa's DRI drivers give
+            // the software renderer the window falls back to.
+            "--linux-package-deps", "libgl1, libgl1-mesa-dri",
             "--resource-dir", res.toString()));
       }
       case "msi" -> a.addAll(List.of("--icon", icon.toString(),

@@ -27,10 +27,14 @@ check_app() {  # LAUNCHER APPDIR
   # Bad input: one line, exit 2, no stack trace.
   set +e; clean "$app" run --scenario "$out/missing.json" 2> "$out/err"; code=$?; set -e
   [ "$code" = 2 ] && ! grep -q 'at org\.' "$out/err" || fail "bad input handling (exit $code)"
-  local gui=(clean "$app" gui --scenario "$appdir/scenarios/pick-and-place.json" --quit-after-frames 3)
-  if [ -n "${DISPLAY:-}" ]; then "${gui[@]}" || fail "window"
-  elif command -v xvfb-run >/dev/null; then xvfb-run -a -s '-screen 0 1366x768x24' env -i PATH=/usr/bin:/bin HOME="$tmp/home" bash -c 'DISPLAY=$DISPLAY XAUTHORITY=$XAUTHORITY "$@"' _ "$app" gui --scenario "$appdir/scenarios/pick-and-place.json" --quit-after-frames 3 || fail "window"
-  else echo "smoke: no display and no xvfb-run: window not tried"; fi
+  if [ -n "${DISPLAY:-}" ]; then clean "$app" gui --scenario "$appdir/scenarios/pick-and-place.json" --quit-after-frames 3 || fail "window"
+  elif command -v xvfb-run >/dev/null; then
+    xvfb-run -a -s '-screen 0 1366x768x24' bash -c 'env -i PATH=/usr/bin:/bin HOME="$0" DISPLAY="$DISPLAY" XAUTHORITY="$XAUTHORITY" "$@"' \
+      "$tmp/home" "$app" gui --scenario "$appdir/scenarios/pick-and-place.json" --quit-after-frames 3 || fail "window"
+  else
+    echo "smoke: no display and no xvfb-run: window not tried"
+  fi
+  echo "smoke: ok: version, check, run, render, bad input, window"
 }
 
 deb=$(ls "$dir"/*.deb | head -1)
