@@ -552,6 +552,19 @@ public final class Package {
    * %...% placeholders as it does in its own default scripts.
    */
   static void debScripts(Path res) throws IOException {
+    // jpackage's template.desktop with the file argument: without %f a double-clicked .LS file
+    // would start RobotRun without it (one file per start: 'RobotRun FILE.LS').
+    Files.writeString(res.resolve(NAME + ".desktop"), """
+        [Desktop Entry]
+        Name=APPLICATION_NAME
+        Comment=APPLICATION_DESCRIPTION
+        Exec=APPLICATION_LAUNCHER %f
+        Icon=APPLICATION_ICON
+        Terminal=false
+        Type=Application
+        Categories=DEPLOY_BUNDLE_CATEGORY
+        DESKTOP_MIMES
+        """);
     // jpackage's own templates (template.postinst / template.prerm of JDK 25) plus one line each.
     Files.writeString(res.resolve("postinst"), """
         #!/bin/sh

@@ -42,7 +42,7 @@ echo "smoke: $(basename "$deb") $(stat -c %s "$deb") bytes"
 dpkg-deb -x "$deb" "$tmp/root"
 dpkg-deb -e "$deb" "$tmp/control"
 grep -q 'ln -sf /opt/robotrun/bin/RobotRun /usr/bin/robotrun' "$tmp/control/postinst" || fail "postinst does not put robotrun on the PATH"
-ls "$tmp"/root/opt/robotrun/lib/*.desktop >/dev/null || fail "no menu entry"
+grep -q '^Exec=/opt/robotrun/bin/RobotRun %f$' "$tmp"/root/opt/robotrun/lib/*.desktop || fail "no menu entry passing the opened file"
 grep -rqi 'robotrun' "$tmp"/root/opt/robotrun/lib/*.xml 2>/dev/null || fail "no .LS file association (shared-mime-info)"
 check_app "$tmp/root/opt/robotrun/bin/RobotRun" "$tmp/root/opt/robotrun/lib/app"
 
