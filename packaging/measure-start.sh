@@ -8,14 +8,24 @@
 # Usage: packaging/measure-start.sh APP_IMAGE_DIR [RUNS]   (APP_IMAGE_DIR holds bin/RobotRun)
 set -euo pipefail
 img="$(cd "$1" && pwd)"; runs="${2:-7}"
-launcher="$img/bin/RobotRun"
-base_archive="$img/lib/runtime/lib/server/classes.jsa"
+variants="$(mktemp -d)"
+trap 'rm -rf "$variants"' EXIT
+# The launcher reads its JVM options from lib/app/RobotRun.cfg only (not JDK_JAVA_OPTIONS): each
+# variant is a hard-linked copy of the image with its own .cfg.
+variant() {  # NAME SED-EXPRESSION
+  cp -al "$img" "$variants/$1"
+  local cfg="$variants/$1/lib/app/RobotRun.cfg"
+  sed "$2" "$img/lib/app/RobotRun.cfg" > "$cfg.new" && rm "$cfg" && mv "$cfg.new" "$cfg"
+}
+variant nocds 's|^java-options=-XX:SharedArchiveFile=.*|java-options=-Xshare:off|'
+variant jdkcds '/^java-options=-XX:SharedArchiveFile=/d'
+variant appcds 'p;d'
 scenario="$(cd "$(dirname "$0")/.." && pwd)/scenarios/pick-and-place.json"
 
 median() { sort -n | awk '{a[NR]=$1} END {m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.3f", m}'; }
-one() {  # "wall cpu" seconds of one run; the environment is cleared so no JDK is on the PATH
-  local opts="$1"; shift
-  env -i PATH=/usr/bin:/bin HOME="$HOME" DISPLAY="${DISPLAY:-}" XAUTHORITY="${XAUTHORITY:-}" JDK_JAVA_OPTIONS="$opts" \
+one() {  # VARIANT ARGS...: "wall cpu" seconds of one run, with no JDK on the PATH
+  local launcher="$variants/$1/bin/RobotRun"; shift
+  env -i PATH=/usr/bin:/bin HOME="$HOME" DISPLAY="${DISPLAY:-}" XAUTHORITY="${XAUTHORITY:-}" \
     /usr/bin/time -f '%e %U %S' -o /dev/stdout "$launcher" "$@" 2>/dev/null | tail -1 | awk '{printf "%.2f %.2f\n", $1, $2 + $3}'
 }
 series() {
@@ -34,7 +44,7 @@ for what in version frame; do
     [ -n "${DISPLAY:-}" ] || { echo "no DISPLAY: skipping first-frame times"; continue; }
     args=(gui --scenario "$scenario" --quit-after-frames 1)
   fi
-  series "$what, no CDS (-Xshare:off)" "-Xshare:off" "${args[@]}"
-  series "$what, JDK default CDS only" "-XX:SharedArchiveFile=$base_archive" "${args[@]}"
-  series "$what, AppCDS (as packaged)" "" "${args[@]}"
+  series "$what, no CDS (-Xshare:off)" nocds "${args[@]}"
+  series "$what, JDK default CDS only" jdkcds "${args[@]}"
+  series "$what, AppCDS (as packaged)" appcds "${args[@]}"
 done
