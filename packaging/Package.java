@@ -408,7 +408,8 @@ public final class Package {
     }
     if (os.equals("macos")) {
       a.addAll(List.of("--mac-package-identifier", "org.robotrun.RobotRun", "--mac-package-name", NAME,
-          "--mac-app-category", "public.app-category.education"));
+          // jpackage prefixes "public.app-category." (LSApplicationCategoryType).
+          "--mac-app-category", "education"));
     }
     tool("jpackage", a.toArray(String[]::new));
     return dest.resolve(os.equals("macos") ? NAME + ".app" : NAME);
@@ -533,8 +534,8 @@ public final class Package {
           // Per-user install: no administrator rights needed (into %LOCALAPPDATA%\Programs).
           "--win-per-user-install", "--win-menu", "--win-menu-group", NAME, "--win-shortcut",
           "--win-shortcut-prompt", "--win-dir-chooser", "--win-upgrade-uuid", WIN_UPGRADE_UUID));
-      case "dmg" -> a.addAll(List.of("--icon", icon.toString(),
-          "--mac-package-identifier", "org.robotrun.RobotRun", "--mac-package-name", NAME));
+      // The bundle identifier and menu-bar name are already in the app image's Info.plist.
+      case "dmg" -> a.addAll(List.of("--icon", icon.toString()));
       default -> throw new IllegalArgumentException(type);
     }
     tool("jpackage", a.toArray(String[]::new));
