@@ -462,7 +462,7 @@ public final class Package {
     java.addAll(List.of("-cp", app.resolve("robotrun.jar").toString(), MAIN));
 
     List<String> gui = new ArrayList<>(java);
-    gui.addAll(List.of("gui", "--scenario", scenario.toAbsolutePath().toString(), "--quit-after-frames", "30"));
+    gui.addAll(List.of("gui", "--scenario", scenario.toAbsolutePath().toString(), "--quit-after-frames", "5"));
     boolean display = os.equals("linux") ? System.getenv("DISPLAY") != null || System.getenv("WAYLAND_DISPLAY") != null : !"1".equals(System.getenv("ROBOTRUN_PACKAGE_HEADLESS_TRAINING"));
     int code = -1;
     if (display) {

@@ -1,15 +1,18 @@
 package org.robotrun.app;
 
 import java.io.IOException;
+import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.StlReader;
 import org.robotrun.math.Angles;
 import org.robotrun.math.Xyzwpr;
 import org.robotrun.pendant.Pendant;
+import org.robotrun.program.Interpreter;
 import org.robotrun.program.Program;
 import org.robotrun.render.GlUnavailableException;
 import org.robotrun.robot.ForwardKinematics;
@@ -19,12 +22,17 @@ import org.robotrun.sim.Controller;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
+import org.robotrun.ui.CellEditorPanel;
 import org.robotrun.ui.CellPanel;
+import org.robotrun.ui.LayoutState;
 import org.robotrun.ui.PendantKeyboard;
 import org.robotrun.ui.PendantPanel;
-import org.robotrun.ui.RobotStatusPanel;
 import org.robotrun.ui.SimulatorWindow;
+import org.robotrun.ui.WindowSettings;
+import org.robotrun.ui.Workbench;
+import org.robotrun.world.CellEditor;
 import org.robotrun.world.Scenario;
+import org.robotrun.world.TriangleMesh;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -33,19 +41,21 @@ import picocli.CommandLine.Option;
     name = "gui",
     mixinStandardHelpOptions = true,
     description = {
-      "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant.",
-      "Mouse: left drag orbits, right or middle drag pans, wheel zooms; Home resets the view.",
-      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys."
+      "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant side by side.",
+      "Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object; Home resets the view.",
+      "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys. Ctrl+H or ? shows the key map."
     })
 public final class GuiCommand implements Callable<Integer> {
-  @Option(names = "--width", defaultValue = "1280", description = "Window width (default: ${DEFAULT-VALUE}).")
-  int width = 1280;
+  @Option(names = "--width", defaultValue = "0",
+      description = "Window width in screen coordinates (default: fit the screen, at most 1280 times the monitor's scale).")
+  int width;
 
-  @Option(names = "--height", defaultValue = "800", description = "Window height (default: ${DEFAULT-VALUE}).")
-  int height = 800;
+  @Option(names = "--height", defaultValue = "0",
+      description = "Window height (default: fit the screen, at most 800 times the monitor's scale).")
+  int height;
 
   @Option(names = "--scenario", paramLabel = "FILE.json",
-      description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs). Default: the default robot in an empty cell.")
+      description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs); its cell can then be edited. Default: the default robot in an empty cell.")
   Path scenario;
 
   @Option(names = "--program", paramLabel = "FILE.LS",
@@ -55,6 +65,10 @@ public final class GuiCommand implements Callable<Integer> {
   /** Start-up timing and the packaging's class-data training run: close after this many frames. */
   @Option(names = "--quit-after-frames", hidden = true, defaultValue = "0")
   int quitAfterFrames;
+
+  /** Everything one window session holds; tests drive it through {@link #open}. */
+  public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
+      CellEditor editor, WindowSettings settings) {}
 
   @Override
   public Integer call() {
@@ -82,69 +96,237 @@ public final class GuiCommand implements Callable<Integer> {
   }
 
   private int openWindow() {
-    RenderCommand.checkSize("--width", width);
-    RenderCommand.checkSize("--height", height);
-    Simulation sim;
-    List<Program> programs = new ArrayList<>();
-    Scenario sc = null;
-    if (scenario == null) {
-      sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
-    } else {
-      sc = ScenarioFiles.load(scenario);
-      try {
-        sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
-        programs.addAll(RunCommand.loadPrograms(sc.programs()));
-      } catch (IllegalArgumentException e) {
-        throw new UserError(scenario + ": " + e.getMessage());
-      } catch (IOException e) {
-        throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
+    if (width != 0) {
+      RenderCommand.checkSize("--width", width);
+    }
+    if (height != 0) {
+      RenderCommand.checkSize("--height", height);
+    }
+    boolean log = System.getenv("ROBOTRUN_FRAME_LOG") != null;
+    if (log) {
+      stage("command line parsed");
+    }
+    Session s = open(scenario, programFiles, width, height, WindowSettings.forUser());
+    if (log) {
+      stage("cell and window ready");
+    }
+    try (SimulatorWindow w = s.window()) {
+      if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
+        logFrames(w);
       }
+      if (quitAfterFrames > 0) {
+        w.setAfterFrameHandler(() -> {
+          if (w.frames() >= quitAfterFrames) {
+            w.close(true);
+          }
+        });
+      }
+      run(s);
+    }
+    return Main.EXIT_OK;
+  }
+
+  /** The cell as loaded: built off the main thread while the window opens. */
+  private record Cell(Simulation sim, Scenario scenario, List<Program> programs) {}
+
+  private static Cell loadCell(Path scenario, List<Path> programFiles) {
+    Cell cell = loadCell(scenario);
+    if (programFiles.isEmpty()) {
+      return cell;
+    }
+    List<Program> programs = new ArrayList<>(cell.programs());
+    try {
+      programs.addAll(RunCommand.loadPrograms(programFiles));
+    } catch (IOException e) {
+      throw new UserError("--program: cannot read a program (" + e.getMessage() + ")");
+    }
+    return new Cell(cell.sim(), cell.scenario(), programs);
+  }
+
+  private static Cell loadCell(Path scenario) {
+    if (scenario == null) {
+      return new Cell(DefaultCell.simulation(RobotDefinitions.defaultRobot()), null, List.of());
+    }
+    Scenario sc = ScenarioFiles.load(scenario);
+    try {
+      Simulation sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      return new Cell(sim, sc, RunCommand.loadPrograms(sc.programs()));
+    } catch (IllegalArgumentException e) {
+      throw new UserError(scenario + ": " + e.getMessage());
+    } catch (IOException e) {
+      throw new UserError(scenario + ": cannot read a program (" + e.getMessage() + ")");
+    }
+  }
+
+  private static Cell join(java.util.concurrent.CompletableFuture<Cell> f) {
+    try {
+      return f.join();
+    } catch (java.util.concurrent.CompletionException e) {
+      if (e.getCause() instanceof RuntimeException r) {
+        throw r;
+      }
+      throw e;
+    }
+  }
+
+  /** Builds the cell, the pendant and the window (not yet running). */
+  public static Session open(Path scenario, int width, int height, WindowSettings settings) {
+    return open(scenario, List.of(), width, height, settings);
+  }
+
+  /** As {@link #open(Path, int, int, WindowSettings)}, with more programs for the pendant (.LS files). */
+  public static Session open(Path scenario, List<Path> programFiles, int width, int height, WindowSettings settings) {
+    // The cell loads (JSON, robot model, programs) on another thread while GLFW, OpenGL and
+    // ImGui start on this one: the two together are most of the time to the first frame.
+    var loading = java.util.concurrent.CompletableFuture.supplyAsync(() -> loadCell(scenario, programFiles));
+    SimulatorWindow w;
+    try {
+      w = new SimulatorWindow("RobotRun", width, height);
+    } catch (GlUnavailableException e) {
+      join(loading);  // a bad scenario is reported as such, even without a display
+      throw e;
+    }
+    Cell cell;
+    try {
+      cell = join(loading);
+    } catch (RuntimeException e) {
+      w.close();
+      throw e;
+    }
+    Simulation sim = cell.sim();
+    Scenario sc = cell.scenario();
+    List<Program> programs = cell.programs();
+    if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
+      stage("cell built");
     }
     Controller controller = sim.controllers().get(0);
     SimRobotControl control = new SimRobotControl(sim, controller);
-    if (!programFiles.isEmpty()) {
-      try {
-        programs.addAll(RunCommand.loadPrograms(programFiles));
-      } catch (IOException e) {
-        throw new UserError("--program: cannot read a program (" + e.getMessage() + ")");
-      }
-    }
     programs.forEach(control::saveProgram);
     Pendant pendant = new Pendant(control, new LsLineParser());
     PendantPanel pendantPanel = new PendantPanel(pendant);
     CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
-    String title = "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName())
-        + (SoftwareGl.active(System.getenv()) ? " (software rendering)" : "");
-    try (SimulatorWindow w = new SimulatorWindow(title, width, height)) {
-      w.setFrameLimit(quitAfterFrames);
-      if (sc != null) {
-        sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
-      }
-      PendantKeyboard keyboard = new PendantKeyboard(pendant);
-      // The pendant panel covers the right of the window: centre the cell in what is left.
-      w.camera().setCentreShift(-0.3f);
-      w.setKeyHandler(keyboard::onKey);
-      w.setCharHandler(keyboard::onChar);
-      w.setFocusLostHandler(() -> {
-        keyboard.releaseAll();
-        pendantPanel.releaseLatched();
-      });
-      double[] last = {0};
-      w.run(t -> {
-            // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
-            pendant.advance(Math.min(0.1, t - last[0]));
-            last[0] = t;
-            return sim.snapshot().scene();
-          },
-          (fw, fh) -> {
-            double[] q = controller.jointsRad();
-            double[] pendantDeg = Angles.toDegrees(JointConvention.kinematicToPendant(robot, q));
-            RobotStatusPanel.draw("Robot", pendantDeg, Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, q)));
-            pendantPanel.draw(fw, fh);
-            cellPanel.draw();
-          });
+    CellEditor editor = sc == null ? null : new CellEditor(sc, GuiCommand::loadStl);
+    CellEditorPanel editorPanel = editor == null ? null
+        : new CellEditorPanel(editor, scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json"));
+    w.setTitle("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName())
+        + (SoftwareGl.active(System.getenv()) ? " (software rendering)" : ""));
+    if (sc != null) {
+      sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
     }
-    return Main.EXIT_OK;
+    LayoutState layout = settings.load();
+    Workbench bench = new Workbench(w.camera(), w.contentScale(), pendant, pendantPanel, cellPanel, editorPanel,
+        new Workbench.RobotStatus() {
+          @Override
+          public double[] pendantDeg() {
+            return Angles.toDegrees(JointConvention.kinematicToPendant(robot, controller.jointsRad()));
+          }
+
+          @Override
+          public Xyzwpr flangeInWorld() {
+            return Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, controller.jointsRad()));
+          }
+        },
+        sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
+    // Menus of other parts of the window go into the menu bar here, left of View and Help:
+    // bench.addMenus(fileMenu::draw) for the workspace's File menu.
+    PendantKeyboard keyboard = new PendantKeyboard(pendant);
+    w.setKeyHandler(keyboard::onKey);
+    w.setCharHandler(cp -> bench.onChar(cp) || keyboard.onChar(cp));
+    w.setShortcutHandler(bench::onShortcut);
+    w.setViewClickHandler(bench::onViewClick);
+    w.setViewPressHandler(bench.viewPress());
+    w.setFocusLostHandler(() -> {
+      keyboard.releaseAll();
+      pendantPanel.releaseLatched();
+    });
+    return new Session(w, bench, sim, controller, pendant, editor, settings);
+  }
+
+  /** Runs the window until it is closed, then saves its layout. */
+  public static void run(Session s) {
+    double[] last = {0};
+    long[] appliedRevision = {s.editor() == null ? 0 : s.editor().revision()};
+    double[][] prevQ = {s.controller().jointsRad()};
+    int[] prevLcd = {0};
+    boolean[] dirty = {false};
+    long[] lastSave = {System.nanoTime()};
+    s.bench().setLayoutChangeHandler(() -> dirty[0] = true);
+    s.window().run(t -> {
+          // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
+          s.pendant().advance(Math.min(0.1, t - last[0]));
+          last[0] = t;
+          if (s.editor() != null && s.editor().revision() != appliedRevision[0]) {
+            appliedRevision[0] = s.editor().revision();
+            s.sim().replaceWorld(s.editor().world());
+          }
+          if (dirty[0] && System.nanoTime() - lastSave[0] > 1_000_000_000L) {
+            dirty[0] = false;
+            lastSave[0] = System.nanoTime();
+            warn(s.settings().save(s.bench().layoutState()));
+          }
+          return s.sim().snapshot().scene();
+        },
+        s.bench(),
+        () -> {
+          // busy while the arm moves, a program runs, a jog key is on or the pendant's text changes
+          double[] q = s.controller().jointsRad();
+          boolean moved = !java.util.Arrays.equals(q, prevQ[0]);
+          prevQ[0] = q;
+          int lcd = s.pendant().lcd().hashCode();
+          boolean lcdChanged = lcd != prevLcd[0];
+          prevLcd[0] = lcd;
+          boolean jog = false;
+          for (int a = 1; a <= 6; a++) {
+            jog |= s.controller().jogDirection(a) != 0;
+          }
+          return moved || lcdChanged || jog || s.controller().interpreter().state() == Interpreter.State.RUNNING;
+        });
+    warn(s.settings().save(s.bench().layoutState()));
+  }
+
+  private static void stage(String what) {
+    long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+    System.err.println("robotrun: " + what + " " + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started");
+  }
+
+  /**
+   * Benchmark hook (ROBOTRUN_FRAME_LOG set): the time from JVM start to the first frame on screen,
+   * then the frames drawn in every 5 s, on stderr.
+   */
+  private static void logFrames(SimulatorWindow w) {
+    long jvmStart = ManagementFactory.getRuntimeMXBean().getStartTime();
+    w.setFirstFrameHandler(() -> System.err.println("robotrun: first frame "
+        + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started"));
+    long[] since = {System.nanoTime(), 0};
+    w.setAfterFrameHandler(() -> {
+      long now = System.nanoTime();
+      if (now - since[0] >= 5_000_000_000L) {
+        long n = w.frames() - since[1];
+        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s)%n", n, (now - since[0]) / 1e9,
+            n / ((now - since[0]) / 1e9));
+        since[0] = now;
+        since[1] = w.frames();
+      }
+    });
+  }
+
+  private static void warn(String problem) {
+    if (!problem.isEmpty()) {
+      System.err.println("robotrun: " + problem);
+    }
+  }
+
+  private static TriangleMesh loadStl(Path file, double scale) {
+    try {
+      return StlReader.read(file, scale);
+    } catch (IOException | org.robotrun.io.FileFormatException e) {
+      throw new IllegalArgumentException(e.getMessage(), e);
+    }
+  }
+
+  private static String stem(Path p) {
+    String f = p.getFileName().toString();
+    return f.toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? f.substring(0, f.length() - 5) : f;
   }
 }

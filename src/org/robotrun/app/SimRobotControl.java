@@ -266,6 +266,11 @@ public final class SimRobotControl implements RobotControl {
     return controller.interpreter().userScreen();
   }
 
+  @Override
+  public String jogStopReason() {
+    return controller.jogMessage();
+  }
+
   /** Steps the simulation in whole ticks; a remainder under one tick carries over to the next call. */
   @Override
   public void advance(double dtSec) {

@@ -81,4 +81,35 @@ public record Obb(
       cz + r20 * sx + r21 * sy + r22 * sz
     };
   }
+
+  /**
+   * Where a ray first meets this box (slab test in the box's frame): the ray parameter t ≥ 0
+   * with {@code p = o + t·d}, or NaN when it misses. A ray starting inside hits at t = 0.
+   *
+   * @param ox ray origin in W (mm)
+   * @param dx ray direction in W (need not be unit length)
+   */
+  public double rayHit(double ox, double oy, double oz, double dx, double dy, double dz) {
+    // origin and direction in the box frame: R_WB transposed
+    double px = ox - cx, py = oy - cy, pz = oz - cz;
+    double[] o = {r00 * px + r10 * py + r20 * pz, r01 * px + r11 * py + r21 * pz, r02 * px + r12 * py + r22 * pz};
+    double[] d = {r00 * dx + r10 * dy + r20 * dz, r01 * dx + r11 * dy + r21 * dz, r02 * dx + r12 * dy + r22 * dz};
+    double[] h = {hx, hy, hz};
+    double tMin = 0, tMax = Double.POSITIVE_INFINITY;
+    for (int a = 0; a < 3; a++) {
+      if (Math.abs(d[a]) < 1e-15) {
+        if (Math.abs(o[a]) > h[a]) {
+          return Double.NaN;
+        }
+        continue;
+      }
+      double t1 = (-h[a] - o[a]) / d[a], t2 = (h[a] - o[a]) / d[a];
+      tMin = Math.max(tMin, Math.min(t1, t2));
+      tMax = Math.min(tMax, Math.max(t1, t2));
+      if (tMin > tMax) {
+        return Double.NaN;
+      }
+    }
+    return tMin;
+  }
 }

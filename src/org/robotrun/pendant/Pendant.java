@@ -206,6 +206,7 @@ public final class Pendant {
       return;
     }
     Result r = control.jogKeyDown(coord, k.jogAxis(), k.jogSign(), latched);
+    seenJogStop = "";
     switch (r) {
       case Result.Ok ok -> {
         jogging = true;
@@ -321,6 +322,13 @@ public final class Pendant {
       message = "MESSAGE: " + control.userMessages().get(messages - 1);
     }
     seenMessages = messages;
+    String jogStop = control.jogStopReason();
+    if (!jogStop.isEmpty() && !jogStop.equals(seenJogStop)) {
+      // the jog stopped itself (limit, reach, singularity): say why, with the axis and value
+      message = "Jog stopped: " + jogStop;
+      jogging = false;
+    }
+    seenJogStop = jogStop;
     ExecutionStatus st = control.status();
     // follow only when execution moved (so a paused program's cursor can be moved by the operator),
     // and once more when it stops (so the cursor ends where it ended)
@@ -342,6 +350,8 @@ public final class Pendant {
 
   private ExecutionStatus lastFollowed;
   private int seenMessages;
+  /** The controller's last jog-stop reason already shown on the prompt line. */
+  private String seenJogStop = "";
 
   private void menu() {
     List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm", "USER");

@@ -256,6 +256,15 @@ public interface RobotControl {
   List<String> userMessages();
 
   /**
+   * Why the last jog stopped by itself, with axis and value ("J1 at its upper limit (170.0 deg)",
+   * the edge of reach, a wrist singularity); "" when it did not. The pendant shows it on the prompt
+   * line so a stop never looks like a broken robot.
+   */
+  default String jogStopReason() {
+    return "";
+  }
+
+  /**
    * One alarm as the pendant shows it: {@code SRVO-062 ...}, {@code INTP-311 (PICK, 4) ...}.
    *
    * @param code FANUC-style code, e.g. {@code MOTN-017}

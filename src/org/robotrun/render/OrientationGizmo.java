@@ -34,12 +34,14 @@ final class OrientationGizmo {
    * @param bar a unit cube centred on the origin
    */
   void draw(ShaderProgram solid, GpuMesh bar, OrbitCamera camera, int width, int height, ScreenRect drawn) {
-    int size = sizePx(width, height);
-    if (size + 2 * MARGIN_PX > Math.min(width, height)) {
+    // in the bottom-left corner of the part of the window the scene is framed in
+    int[] viewR = camera.viewRect(width, height);
+    int size = sizePx(viewR[2], viewR[3]);
+    if (size + 2 * MARGIN_PX > Math.min(viewR[2], viewR[3])) {
       return;
     }
-    int x0 = MARGIN_PX;
-    int y0 = MARGIN_PX;
+    int x0 = viewR[0] + MARGIN_PX;
+    int y0 = viewR[1] + MARGIN_PX;
     Vector3f eye = camera.eye();
     Vector3f target = camera.target();
     // The camera's rotation only: the triad sits at the centre of its own little view.

@@ -73,10 +73,18 @@ public final class SceneRenderer implements AutoCloseable {
     // Alpha 0: background, not a solid (see fxaa.frag); nothing blends with destination alpha.
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // Draw only where the scene is framed: the window's panels cover the rest, and on a
+    // software renderer every pixel of floor under them would cost as much as a visible one.
+    int[] view = camera.viewRect(width, height);
+    boolean partial = view[2] < width || view[3] < height;
+    if (partial) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(view[0], view[1], view[2], view[3]);
+    }
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    viewProj.set(camera.viewProjection(width / (float) Math.max(1, height)));
+    viewProj.set(camera.viewProjection(width, height));
     Vector3f eye = camera.eye();
     float floorZ = (float) scene.floorZ();
 
@@ -113,6 +121,9 @@ public final class SceneRenderer implements AutoCloseable {
       glEnable(GL_CULL_FACE);
       glDepthMask(true);
       glDisable(GL_BLEND);
+    }
+    if (partial) {
+      glDisable(GL_SCISSOR_TEST);
     }
     gizmo.draw(solid, axisBar, camera, width, height, gizmoEdges);
     if (smooth) {

@@ -101,6 +101,20 @@ public final class CellState {
     version++;
   }
 
+  /**
+   * The cell was edited (the cell editor): these fixtures and parts from now on, at their start
+   * poses, nothing held, traces cleared.
+   */
+  void replaceWorld(World edited) {
+    world = edited.reset();
+    for (Optional<EndEffectorState> t : tools) {
+      t.ifPresent(EndEffectorState::reset);
+    }
+    events.clear();
+    events.add(new Event.Reset());
+    version++;
+  }
+
   /** Held part → name of the robot holding it. */
   public Map<String, String> heldBy() {
     Map<String, String> out = new LinkedHashMap<>();

@@ -187,6 +187,15 @@ public final class Simulation {
     cell.reset();
   }
 
+  /**
+   * The cell editor changed the fixtures and parts: they stand at their start poses, nothing is
+   * held, and the collision bodies are rebuilt at the next tick. The robots stay where they are.
+   */
+  public void replaceWorld(World edited) {
+    cell.replaceWorld(edited);
+    collisions = null;
+  }
+
   /** Held part → name of the robot holding it. */
   public java.util.Map<String, String> heldParts() {
     return cell.heldBy();

@@ -1,8 +1,6 @@
 package org.robotrun.ui;
 
 import imgui.ImGui;
-import imgui.flag.ImGuiCond;
-import imgui.flag.ImGuiWindowFlags;
 import imgui.type.ImBoolean;
 import org.robotrun.sim.Simulation;
 
@@ -22,11 +20,9 @@ public final class CellPanel {
     alarms.set(sim.collisionAlarms());
   }
 
-  /** Draws the panel below the robot status panel. */
-  public void draw() {
-    ImGui.setNextWindowPos(10, 300, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowBgAlpha(0.85f);
-    if (ImGui.begin("Cell", ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoFocusOnAppearing)) {
+  /** Draws the panel's contents into the current window (the window's left column). */
+  public void drawContents() {
+    {
       if (ImGui.button("Reset scene")) {
         sim.resetScene();
       }
@@ -44,6 +40,5 @@ public final class CellPanel {
       int n = sim.collisionEvents().size();
       ImGui.textDisabled(n == 0 ? "no collisions" : n + " collision" + (n == 1 ? "" : "s") + " so far");
     }
-    ImGui.end();
   }
 }

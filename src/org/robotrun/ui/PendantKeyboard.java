@@ -59,9 +59,70 @@ public final class PendantKeyboard {
     this.pendant = pendant;
   }
 
+  /** Every pendant key that has a computer key, with that key's name, in pendant-key order. */
+  public static java.util.List<String[]> keyMap() {
+    java.util.List<String[]> out = new java.util.ArrayList<>();
+    for (Key k : Key.values()) {
+      String sc = shortcut(k);
+      if (!sc.isEmpty()) {
+        out.add(new String[] {k.label(), sc});
+      }
+    }
+    return out;
+  }
+
   /** The pendant key a GLFW key stands for, if any. */
   public static Optional<Key> keyFor(int glfwKey) {
     return Optional.ofNullable(KEYS.get(glfwKey));
+  }
+
+  /**
+   * The computer key that works as this pendant key, as a student reads it ("Shift", "Q",
+   * "Insert"), or "" when only the on-screen button has it.
+   */
+  public static String shortcut(Key key) {
+    String best = "";
+    for (var e : KEYS.entrySet()) {
+      if (e.getValue() == key) {
+        String name = keyName(e.getKey());
+        if (best.isEmpty() || name.length() < best.length()) {
+          best = name;
+        }
+      }
+    }
+    return best;
+  }
+
+  private static String keyName(int glfwKey) {
+    if (glfwKey >= GLFW_KEY_A && glfwKey <= GLFW_KEY_Z) {
+      return String.valueOf((char) ('A' + glfwKey - GLFW_KEY_A));
+    }
+    if (glfwKey >= GLFW_KEY_0 && glfwKey <= GLFW_KEY_9) {
+      return String.valueOf((char) ('0' + glfwKey - GLFW_KEY_0));
+    }
+    if (glfwKey >= GLFW_KEY_F1 && glfwKey <= GLFW_KEY_F12) {
+      return "F" + (1 + glfwKey - GLFW_KEY_F1);
+    }
+    return switch (glfwKey) {
+      case GLFW_KEY_LEFT_SHIFT, GLFW_KEY_RIGHT_SHIFT -> "Shift";
+      case GLFW_KEY_UP -> "Up arrow";
+      case GLFW_KEY_DOWN -> "Down arrow";
+      case GLFW_KEY_LEFT -> "Left arrow";
+      case GLFW_KEY_RIGHT -> "Right arrow";
+      case GLFW_KEY_ENTER -> "Enter";
+      case GLFW_KEY_KP_ENTER -> "Keypad Enter";
+      case GLFW_KEY_BACKSPACE -> "Backspace";
+      case GLFW_KEY_ESCAPE -> "Esc";
+      case GLFW_KEY_PERIOD -> ".";
+      case GLFW_KEY_MINUS -> "-";
+      case GLFW_KEY_COMMA -> ",";
+      case GLFW_KEY_PAGE_UP -> "Page Up";
+      case GLFW_KEY_PAGE_DOWN -> "Page Down";
+      case GLFW_KEY_INSERT -> "Insert";
+      case GLFW_KEY_DELETE -> "Delete";
+      case GLFW_KEY_END -> "End";
+      default -> "key " + glfwKey;
+    };
   }
 
   /** Feeds a GLFW key event to the pendant; returns whether it was a pendant key. */

@@ -6,25 +6,40 @@ import imgui.flag.ImGuiCond;
 import imgui.flag.ImGuiInputTextFlags;
 import imgui.flag.ImGuiWindowFlags;
 import imgui.type.ImString;
+import java.util.ArrayList;
 import java.util.EnumSet;
+import java.util.List;
 import java.util.Set;
 import org.robotrun.pendant.Key;
 import org.robotrun.pendant.Lcd;
 import org.robotrun.pendant.Pendant;
 
 /**
- * Draws the teach pendant: its LCD (text from the pendant state machine) and its keys as
- * buttons. It only forwards input: a click is a key press and release; jog keys clicked on
- * screen latch (they stay down until clicked again, the other key of the pair switches
- * direction), SHIFT clicked on screen toggles.
+ * Draws the teach pendant laid out like a FANUC iPendant: the LCD on top, F1..F5 (with PREV and
+ * NEXT) under it, the menu and cursor keys and the numeric keypad in the middle, the jog keys in
+ * two columns (- left, + right) beside the keypad on the right, a SHIFT key on each side. Each key
+ * shows its keyboard shortcut on hover. It only forwards input: a click is a key press and
+ * release; jog keys clicked on screen latch (they stay down until clicked again, the other key of
+ * the pair switches direction); SHIFT clicked on screen goes to the pendant as a press and
+ * release (what that means is the pendant's business).
  */
 public final class PendantPanel {
+  public static final String TITLE = "Teach pendant";
   private static final float LCD_BG_R = 0.80f, LCD_BG_G = 0.86f, LCD_BG_B = 0.78f;
+  /** Keys per row of the key block: side column, four keypad columns, two jog columns. */
+  private static final int COLUMNS = 7;
 
   private final Pendant pendant;
   private final ImString typed = new ImString(128);
   /** Jog keys latched by the mouse. */
   private final Set<Key> latched = EnumSet.noneOf(Key.class);
+  /** Where each key was drawn last frame (display pixels), for the layout tests. */
+  private final List<KeyRect> drawnKeys = new ArrayList<>();
+  private float requestedWidth;
+  private float userWidth;
+
+  /** A key's button as drawn: display pixels, origin top left. */
+  public record KeyRect(Key key, float x, float y, float w, float h) {}
 
   public PendantPanel(Pendant pendant) {
     this.pendant = pendant;
@@ -38,18 +53,60 @@ public final class PendantPanel {
     latched.clear();
   }
 
-  public void draw(int framebufferWidth, int framebufferHeight) {
-    ImGui.setNextWindowPos(framebufferWidth - 560, 10, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowSize(550, Math.min(framebufferHeight - 20, 780), ImGuiCond.FirstUseEver);
-    if (ImGui.begin("Teach pendant", ImGuiWindowFlags.NoCollapse)) {
+  /** The width at which the LCD's 64 columns and every key show (display pixels); needs a frame. */
+  public static float naturalWidth() {
+    var style = ImGui.getStyle();
+    float lcd = ImGui.calcTextSize("M").x * Lcd.WIDTH + 2 * style.getWindowPaddingX() + 2;
+    return lcd + 2 * style.getWindowPaddingX() + style.getScrollbarSize();
+  }
+
+  /** The keys drawn in the last frame with their rectangles. */
+  public List<KeyRect> drawnKeys() {
+    return List.copyOf(drawnKeys);
+  }
+
+  /**
+   * A width the student set by dragging the panel's left edge (display pixels), once, or 0.
+   * The window stores it in its {@link LayoutState}.
+   */
+  public float takeUserWidth() {
+    float w = userWidth;
+    userWidth = 0;
+    return w;
+  }
+
+  /** Draws the pendant filling {@code r}. */
+  public void draw(WindowLayout.Rect r) {
+    drawnKeys.clear();
+    if (!r.visible()) {
+      return;
+    }
+    ImGui.setNextWindowPos(r.x(), r.y(), ImGuiCond.Always);
+    ImGui.setNextWindowSize(r.w(), r.h(), ImGuiCond.Always);
+    requestedWidth = r.w();
+    if (ImGui.begin(TITLE, ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove
+        | ImGuiWindowFlags.NoBringToFrontOnFocus | ImGuiWindowFlags.NoTitleBar)) {
+      if (Math.abs(ImGui.getWindowWidth() - requestedWidth) > 0.5f) {
+        userWidth = ImGui.getWindowWidth();
+      }
+      float keyH = keyHeight(r.h());
       drawLcd();
-      drawFunctionKeys();
-      ImGui.separator();
+      drawFunctionKeys(keyH);
       drawTextEntry();
-      ImGui.separator();
-      drawKeys();
+      drawKeys(keyH);
     }
     ImGui.end();
+  }
+
+  /** Key height so that the LCD, the function keys, the entry and nine key rows fit the height. */
+  private static float keyHeight(float panelHeight) {
+    var style = ImGui.getStyle();
+    float lineH = ImGui.getTextLineHeightWithSpacing();
+    float lcd = lineH * Lcd.HEIGHT + 10 + style.getItemSpacingY();
+    float entry = ImGui.getFrameHeightWithSpacing() + 2;
+    float rows = 10;  // function keys + nine key rows
+    float left = panelHeight - 2 * style.getWindowPaddingY() - lcd - entry - rows * style.getItemSpacingY() - 4;
+    return Math.max(ImGui.getFrameHeight() - 2, Math.min(ImGui.getFrameHeight() * 1.6f, left / rows));
   }
 
   private void drawLcd() {
@@ -60,13 +117,12 @@ public final class PendantPanel {
     ImGui.beginChild("lcd", 0, lineH * Lcd.HEIGHT + 10, true, ImGuiWindowFlags.NoScrollbar);
     for (int i = 0; i < Lcd.HEIGHT; i++) {
       String row = lcd.row(i);
-      boolean highlight = i == 1 && !row.isBlank()  // the alarm line
-          || row.startsWith(">");
       if (i == 1 && !row.isBlank()) {
+        // the alarm line
         ImGui.pushStyleColor(ImGuiCol.Text, 0.75f, 0.05f, 0.05f, 1f);
         ImGui.textUnformatted(row);
         ImGui.popStyleColor();
-      } else if (highlight) {
+      } else if (row.startsWith(">")) {
         ImGui.pushStyleColor(ImGuiCol.Text, 0.0f, 0.15f, 0.55f, 1f);
         ImGui.textUnformatted(row);
         ImGui.popStyleColor();
@@ -78,84 +134,119 @@ public final class PendantPanel {
     ImGui.popStyleColor(2);
   }
 
-  private void drawFunctionKeys() {
-    float w = (ImGui.getContentRegionAvailX() - 4 * ImGui.getStyle().getItemSpacingX()) / 5;
-    Key[] fk = {Key.F1, Key.F2, Key.F3, Key.F4, Key.F5};
-    for (int i = 0; i < fk.length; i++) {
+  private void drawFunctionKeys(float keyH) {
+    Key[] row = {Key.PREV, Key.F1, Key.F2, Key.F3, Key.F4, Key.F5, Key.NEXT};
+    float w = keyWidth();
+    for (int i = 0; i < row.length; i++) {
       if (i > 0) {
         ImGui.sameLine();
       }
-      key(fk[i], w);
+      key(row[i], w, keyH);
     }
+  }
+
+  private static float keyWidth() {
+    return (ImGui.getContentRegionAvailX() - (COLUMNS - 1) * ImGui.getStyle().getItemSpacingX()) / COLUMNS;
   }
 
   private void drawTextEntry() {
-    ImGui.text("Type");
+    ImGui.alignTextToFramePadding();
+    ImGui.textDisabled("Type");
+    if (ImGui.isItemHovered()) {
+      ImGui.setTooltip("Text for an open entry (a program name, a comment); Enter sends it and presses ENTER.\n"
+          + "The keyboard goes back to the pendant after Enter.");
+    }
     ImGui.sameLine();
-    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() - 70);
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() - 60);
     boolean enter = ImGui.inputText("##type", typed, ImGuiInputTextFlags.EnterReturnsTrue);
     ImGui.sameLine();
-    if (ImGui.button("Send") || enter) {
-      String t = typed.get();
-      if (!t.isEmpty()) {
-        pendant.type(t);
-        typed.set("");
-      }
+    if (ImGui.button("Send", ImGui.getContentRegionAvailX(), 0) || enter) {
+      send();
     }
   }
 
-  private void drawKeys() {
-    float bw = 74;
-    Key[][] left = {
-      {Key.PREV, Key.NEXT, Key.ITEM, Key.ENTER},
-      {Key.MENU, Key.SELECT, Key.EDIT, Key.DATA},
-      {Key.FCTN, Key.DISP, Key.POSN, Key.IO},
-      {Key.STATUS, Key.BACKSPACE, Key.UP, Key.DOWN},
-      {Key.LEFT, Key.RIGHT, Key.TOOL1, Key.TOOL2},
-      {Key.D7, Key.D8, Key.D9, Key.MINUS},
-      {Key.D4, Key.D5, Key.D6, Key.COMMA},
-      {Key.D1, Key.D2, Key.D3, Key.DOT},
-      {Key.D0, Key.COORD, Key.STEP, Key.RESET},
-      {Key.HOLD, Key.FWD, Key.BWD, Key.OVERRIDE_DOWN},
+  /** One Enter (or Send) sends the text and confirms the pendant's entry with ENTER. */
+  private void send() {
+    String t = typed.get();
+    if (t.isEmpty()) {
+      return;
+    }
+    pendant.type(t);
+    typed.set("");
+    if (pendant.entryOpen()) {
+      pendant.tap(Key.ENTER);
+    }
+  }
+
+  private void drawKeys(float keyH) {
+    float w = keyWidth();
+    // side column | keypad (4) | jog - | jog +
+    Key[][] rows = {
+      {Key.RESET, Key.SELECT, Key.EDIT, Key.DATA, Key.FCTN, Key.COORD, Key.STEP},
+      {Key.BACKSPACE, Key.MENU, Key.UP, Key.DISP, Key.ITEM, Key.JOG_MINUS_1, Key.JOG_PLUS_1},
+      {Key.ENTER, Key.LEFT, Key.DOWN, Key.RIGHT, Key.POSN, Key.JOG_MINUS_2, Key.JOG_PLUS_2},
+      {Key.SHIFT, Key.D7, Key.D8, Key.D9, Key.IO, Key.JOG_MINUS_3, Key.JOG_PLUS_3},
+      {Key.HOLD, Key.D4, Key.D5, Key.D6, Key.STATUS, Key.JOG_MINUS_4, Key.JOG_PLUS_4},
+      {Key.FWD, Key.D1, Key.D2, Key.D3, Key.TOOL1, Key.JOG_MINUS_5, Key.JOG_PLUS_5},
+      {Key.BWD, Key.D0, Key.DOT, Key.MINUS, Key.TOOL2, Key.JOG_MINUS_6, Key.JOG_PLUS_6},
+      {null, Key.COMMA, null, null, null, Key.OVERRIDE_DOWN, Key.OVERRIDE_UP},
+      {Key.SHIFT, null, null, null, null, Key.SHIFT, null},
     };
-    ImGui.beginGroup();
-    for (Key[] row : left) {
-      for (int i = 0; i < row.length; i++) {
-        if (i > 0) {
+    float spacing = ImGui.getStyle().getItemSpacingX();
+    for (int r = 0; r < rows.length; r++) {
+      Key[] row = rows[r];
+      for (int c = 0; c < COLUMNS; c++) {
+        if (c > 0) {
           ImGui.sameLine();
         }
-        key(row[i], bw);
+        Key k = row[c];
+        if (k == null) {
+          ImGui.dummy(w, keyH);
+        } else if (k == Key.SHIFT) {
+          // the right SHIFT spans both jog columns, under the jog keys, as on an iPendant
+          boolean wide = c == 5;
+          shiftKey(r * COLUMNS + c, wide ? 2 * w + spacing : w, keyH);
+          if (wide) {
+            break;
+          }
+        } else if (k.isJog()) {
+          jogKey(k, w, keyH);
+        } else {
+          key(k, w, keyH);
+        }
       }
     }
-    shiftKey(bw * 2 + ImGui.getStyle().getItemSpacingX());
-    ImGui.sameLine();
-    key(Key.OVERRIDE_UP, bw);
-    ImGui.endGroup();
-
-    ImGui.sameLine(0, 18);
-    ImGui.beginGroup();
-    ImGui.textDisabled("Jog (with SHIFT)");
-    for (int axis = 1; axis <= 6; axis++) {
-      jogKey(Key.jog(axis, -1), bw);
-      ImGui.sameLine();
-      jogKey(Key.jog(axis, +1), bw);
-    }
-    ImGui.endGroup();
   }
 
-  private void key(Key k, float width) {
-    if (ImGui.button(k.label() + "##" + k.name(), width, 0)) {
+  /** The legend on the button: as on the pendant, shortened where a narrow key cannot hold it. */
+  private static String legend(Key k) {
+    return k == Key.BACKSPACE ? "BACK SP" : k.label();
+  }
+
+  private void key(Key k, float w, float h) {
+    if (ImGui.button(legend(k) + "##" + k.name(), w, h)) {
       pendant.tap(k);
     }
+    after(k);
   }
 
-  private void shiftKey(float width) {
+  /** Records the key's rectangle and shows its keyboard shortcut on hover. */
+  private void after(Key k) {
+    drawnKeys.add(new KeyRect(k, ImGui.getItemRectMinX(), ImGui.getItemRectMinY(),
+        ImGui.getItemRectSizeX(), ImGui.getItemRectSizeY()));
+    if (ImGui.isItemHovered()) {
+      String sc = PendantKeyboard.shortcut(k);
+      ImGui.setTooltip(k.label() + (sc.isEmpty() ? "  (no keyboard key: click it)" : "   keyboard: " + sc)
+          + (k.isJog() ? "\nhold SHIFT (deadman) and this key to jog" : ""));
+    }
+  }
+
+  private void shiftKey(int id, float w, float h) {
     boolean on = pendant.shift();
     if (on) {
       ImGui.pushStyleColor(ImGuiCol.Button, 0.85f, 0.55f, 0.1f, 1f);
     }
-    if (ImGui.button((on ? "SHIFT (on)" : "SHIFT") + "##SHIFT", width, 0)) {
-      // A press and release with nothing between toggles the pendant's SHIFT latch.
+    if (ImGui.button("SHIFT##SHIFT" + id, w, h)) {
       pendant.press(Key.SHIFT);
       pendant.release(Key.SHIFT);
       if (!pendant.shift()) {
@@ -165,14 +256,17 @@ public final class PendantPanel {
     if (on) {
       ImGui.popStyleColor();
     }
+    after(Key.SHIFT);
   }
 
-  private void jogKey(Key k, float width) {
+  private void jogKey(Key k, float w, float h) {
     boolean down = latched.contains(k);
     if (down) {
       ImGui.pushStyleColor(ImGuiCol.Button, 0.2f, 0.6f, 0.25f, 1f);
+    } else {
+      ImGui.pushStyleColor(ImGuiCol.Button, 0.22f, 0.32f, 0.45f, 1f);
     }
-    if (ImGui.button(k.label() + "##" + k.name(), width, 0)) {
+    if (ImGui.button(k.label() + "##" + k.name(), w, h)) {
       if (down) {
         pendant.release(k);
         latched.remove(k);
@@ -186,8 +280,7 @@ public final class PendantPanel {
         latched.add(k);
       }
     }
-    if (down) {
-      ImGui.popStyleColor();
-    }
+    ImGui.popStyleColor();
+    after(k);
   }
 }

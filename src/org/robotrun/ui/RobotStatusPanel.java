@@ -1,8 +1,6 @@
 package org.robotrun.ui;
 
 import imgui.ImGui;
-import imgui.flag.ImGuiCond;
-import imgui.flag.ImGuiWindowFlags;
 import org.robotrun.math.Xyzwpr;
 
 /** A small read-only panel: joint values as the pendant shows them and the flange in WORLD. */
@@ -13,10 +11,8 @@ public final class RobotStatusPanel {
    * @param pendantDeg joint values in degrees, pendant convention
    * @param flangeInWorld the flange pose in WORLD (mm, rad)
    */
-  public static void draw(String title, double[] pendantDeg, Xyzwpr flangeInWorld) {
-    ImGui.setNextWindowPos(10, 10, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowBgAlpha(0.85f);
-    if (ImGui.begin(title, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoFocusOnAppearing)) {
+  public static void drawContents(double[] pendantDeg, Xyzwpr flangeInWorld) {
+    {
       ImGui.text("JOINT (deg)");
       for (int i = 0; i < pendantDeg.length; i++) {
         ImGui.text(String.format("  J%d %9.3f", i + 1, shown(pendantDeg[i])));
@@ -28,10 +24,11 @@ public final class RobotStatusPanel {
       ImGui.text(String.format("  Y %9.3f  P %8.3f", shown(p.y()), shown(p.pDeg())));
       ImGui.text(String.format("  Z %9.3f  R %8.3f", shown(p.z()), shown(p.rDeg())));
       ImGui.separator();
+      ImGui.pushTextWrapPos(0);
       ImGui.textDisabled("Mouse: drag orbit, right-drag pan, wheel zoom, Home resets");
+      ImGui.popTextWrapPos();
       ImGui.textDisabled(String.format("%.0f frames/s", ImGui.getIO().getFramerate()));
     }
-    ImGui.end();
   }
 
   /** A value as shown with three decimals: anything that would print as -0.000 shows 0.000. */

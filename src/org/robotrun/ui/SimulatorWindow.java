@@ -5,6 +5,7 @@ import static org.lwjgl.glfw.GLFW.*;
 import imgui.ImGui;
 import imgui.gl3.ImGuiImplGl3;
 import imgui.glfw.ImGuiImplGlfw;
+import java.util.function.BooleanSupplier;
 import java.util.function.IntPredicate;
 import org.lwjgl.glfw.GLFWErrorCallback;
 import org.lwjgl.opengl.GL;
@@ -41,7 +42,36 @@ public final class SimulatorWindow implements AutoCloseable {
   private KeyHandler keyHandler = (key, action) -> false;
   private IntPredicate charHandler = codepoint -> false;
   private Runnable focusLost = () -> {};
-  private int frameLimit;
+  private Runnable firstFrame = () -> {};
+  private Runnable afterFrame = () -> {};
+  private ShortcutHandler shortcuts = (key, mods) -> false;
+  private ViewClick viewClick = (x, y) -> {};
+  private ViewPress viewPress = new ViewPress() {
+    @Override
+    public boolean press(double x, double y) {
+      return false;
+    }
+
+    @Override
+    public boolean drag(double x, double y) {
+      return false;
+    }
+
+    @Override
+    public void release() {}
+  };
+  private final InputEdges mouseEdges = new InputEdges();
+  private final InputEdges keyEdges = new InputEdges();
+  private volatile long lastInputNanos = System.nanoTime();
+  private double pressX;
+  private double pressY;
+  private boolean dragged;
+  private long frames;
+  private float contentScale = 1f;
+  /** After the last input, keep drawing this long (hover highlights, tooltips settle). */
+  private static final long IDLE_AFTER_NANOS = 500_000_000L;
+  /** While idle, draw once every this many seconds anyway. */
+  private static final double IDLE_REDRAW_SEC = 5.0;
 
   /** Receives keyboard events that no panel text field wants. */
   @FunctionalInterface
@@ -50,6 +80,13 @@ public final class SimulatorWindow implements AutoCloseable {
     boolean onKey(int glfwKey, int action);
   }
 
+  /**
+   * Opens the window.
+   *
+   * @param width window width in screen coordinates; 0: fit the screen it opens on (at most
+   *     1280 by 800 times the monitor's content scale, never more than its work area)
+   * @param height window height; 0 as for the width
+   */
   public SimulatorWindow(String title, int width, int height) {
     // One line per GLFW error, never LWJGL's stack-trace print; the last one goes into the
     // message when the window cannot open.
@@ -74,7 +111,8 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     }
     glfwWindowHint(GLFW_SAMPLES, AntiAliasing.DEFAULT.samples());
-    window = glfwCreateWindow(width, height, title, 0, 0);
+    int[] size = defaultSize(width, height);
+    window = glfwCreateWindow(size[0], size[1], title, 0, 0);
     if (window == 0) {
       glfwTerminate();
       freeErrorCallback();
@@ -91,28 +129,81 @@ public final class SimulatorWindow implements AutoCloseable {
     installInput();
     // ImGui chains to the callbacks installed above.
     ImGui.createContext();
+    // ImGui never writes files itself: every file goes through AtomicFiles (see WindowSettings)
     ImGui.getIO().setIniFilename(null);
     ImGui.styleColorsDark();
+    float[] sx = new float[1], sy = new float[1];
+    glfwGetWindowContentScale(window, sx, sy);
+    contentScale = Math.max(1f, Math.min(4f, Math.max(sx[0], sy[0])));
+    if (contentScale > 1.01f) {
+      // HiDPI: a font rasterised at the monitor's scale (sharp, not stretched) and sizes to match
+      var cfg = new imgui.ImFontConfig();
+      cfg.setSizePixels(13f * contentScale);
+      ImGui.getIO().getFonts().addFontDefault(cfg);
+      cfg.destroy();
+      ImGui.getStyle().scaleAllSizes(contentScale);
+    }
     imguiGlfw.init(window, true);
     imguiGl3.init("#version 330 core");
   }
 
+  /** The window size to open with: what was asked for, or what fits the primary monitor. */
+  private static int[] defaultSize(int width, int height) {
+    if (width > 0 && height > 0) {
+      return new int[] {width, height};
+    }
+    int w = 1280, h = 800;
+    long monitor = glfwGetPrimaryMonitor();
+    if (monitor != 0) {
+      int[] x = new int[1], y = new int[1], ww = new int[1], wh = new int[1];
+      glfwGetMonitorWorkarea(monitor, x, y, ww, wh);
+      float[] sx = new float[1], sy = new float[1];
+      glfwGetMonitorContentScale(monitor, sx, sy);
+      float s = Math.max(1f, sx[0]);
+      if (ww[0] > 0 && wh[0] > 0) {
+        // leave room for the title bar and the task bar the work area may not count
+        w = Math.min(Math.round(1280 * s), ww[0]);
+        h = Math.min(Math.round(800 * s), wh[0] - Math.round(40 * s));
+      }
+    }
+    return new int[] {width > 0 ? width : Math.max(640, w), height > 0 ? height : Math.max(480, h)};
+  }
+
   private void installInput() {
     glfwSetMouseButtonCallback(window, (w, button, action, mods) -> {
+      lastInputNanos = System.nanoTime();
       boolean down = action == GLFW_PRESS;
+      mouseEdges.record(button, down);
       if (down && ImGui.getIO().getWantCaptureMouse()) {
         return;
       }
       if (button == GLFW_MOUSE_BUTTON_LEFT) {
-        orbiting = down;
+        if (down) {
+          pressX = lastX;
+          pressY = lastY;
+          dragged = false;
+        } else if (orbiting && !dragged) {
+          viewClick.click(lastX, lastY);
+        }
+        orbiting = down && !viewPress.press(lastX, lastY);
+        if (!down) {
+          viewPress.release();
+        }
       } else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
         panning = down;
       }
     });
     glfwSetCursorPosCallback(window, (w, x, y) -> {
+      lastInputNanos = System.nanoTime();
       double dx = x - lastX, dy = y - lastY;
       lastX = x;
       lastY = y;
+      if (Math.abs(x - pressX) + Math.abs(y - pressY) > 4) {
+        dragged = true;
+      }
+      if (viewPress.drag(x, y)) {
+        return;
+      }
       int[] ww = new int[1], wh = new int[1];
       glfwGetWindowSize(window, ww, wh);
       if (orbiting) {
@@ -122,13 +213,25 @@ public final class SimulatorWindow implements AutoCloseable {
       }
     });
     glfwSetScrollCallback(window, (w, sx, sy) -> {
+      lastInputNanos = System.nanoTime();
       if (!ImGui.getIO().getWantCaptureMouse()) {
         camera.zoom((float) Math.pow(0.88, sy));
       }
     });
     glfwSetKeyCallback(window, (w, key, scancode, action, mods) -> {
-      // Releases always go through, so a key held while a text field took focus still stops.
-      if (action != GLFW_RELEASE && ImGui.getIO().getWantCaptureKeyboard()) {
+      lastInputNanos = System.nanoTime();
+      if (action != GLFW_REPEAT) {
+        keyEdges.record(key, action == GLFW_PRESS);
+      }
+      // Only an open text field keeps the keyboard (not a panel that merely has the focus);
+      // function keys still reach the pendant then. Releases always go through, so a key held
+      // while a text field took focus still stops.
+      boolean typing = ImGui.getIO().getWantTextInput();
+      if (action == GLFW_PRESS && !typing && shortcuts.onShortcut(key, mods)) {
+        return;
+      }
+      boolean functionKey = key >= GLFW_KEY_F1 && key <= GLFW_KEY_F12;
+      if (action != GLFW_RELEASE && typing && !functionKey) {
         return;
       }
       if (key == GLFW_KEY_HOME && action == GLFW_PRESS) {
@@ -138,12 +241,16 @@ public final class SimulatorWindow implements AutoCloseable {
       keyHandler.onKey(key, action);
     });
     glfwSetCharCallback(window, (w, codepoint) -> {
-      if (!ImGui.getIO().getWantCaptureKeyboard()) {
+      lastInputNanos = System.nanoTime();
+      if (!ImGui.getIO().getWantTextInput()) {
         charHandler.test(codepoint);
       }
     });
+    glfwSetWindowSizeCallback(window, (w, ww, wh) -> lastInputNanos = System.nanoTime());
+    glfwSetWindowRefreshCallback(window, w -> lastInputNanos = System.nanoTime());
     // Keys held when the window loses the focus never see their release: let go of them now.
     glfwSetWindowFocusCallback(window, (w, focused) -> {
+      lastInputNanos = System.nanoTime();
       if (!focused) {
         focusLost.run();
       }
@@ -158,36 +265,132 @@ public final class SimulatorWindow implements AutoCloseable {
 
   /** Runs the event and render loop until the window is closed. */
   public void run(SceneSource scene) {
-    run(scene, (w, h) -> {});
+    run(scene, (w, h) -> {}, () -> true);
   }
 
-  /** Runs the event and render loop, with panels over the scene, until the window is closed. */
-  public void run(SceneSource scene, Panels panels) {
+  /**
+   * Runs the event and render loop, with panels over the scene, until the window is closed.
+   * Quiet when idle: while {@code busy} says nothing moves and no input came for half a second,
+   * the loop sleeps in {@code glfwWaitEventsTimeout} and draws every 5 s; any input
+   * wakes it at once.
+   *
+   * @param busy whether something on screen changes by itself (the arm moves, a program runs)
+   */
+  public void run(SceneSource scene, Panels panels, BooleanSupplier busy) {
     long start = System.nanoTime();
     int[] fw = new int[1], fh = new int[1];
+    boolean moreEdges = false;
     while (!glfwWindowShouldClose(window)) {
-      glfwPollEvents();
+      boolean recentInput = System.nanoTime() - lastInputNanos < IDLE_AFTER_NANOS;
+      if (moreEdges || recentInput || busy.getAsBoolean()) {
+        glfwPollEvents();
+      } else {
+        glfwWaitEventsTimeout(IDLE_REDRAW_SEC);
+      }
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
-        renderer.render(scene.snapshot((System.nanoTime() - start) / 1e9), camera, fw[0], fh[0]);
+        SceneSnapshot snap = scene.snapshot((System.nanoTime() - start) / 1e9);
         imguiGlfw.newFrame();
+        // one queued edge per button and key per frame: a tap within one frame is not lost
+        moreEdges = mouseEdges.apply((b, down) -> {
+          if (b < 5) {
+            ImGui.getIO().setMouseDown(b, down);
+          }
+        });
+        moreEdges |= keyEdges.apply((k, down) -> {
+          if (k >= 0 && k < 512) {
+            ImGui.getIO().setKeysDown(k, down);
+          }
+        });
         ImGui.newFrame();
+        // panels first: they decide the free part of the window the scene is framed in
         panels.draw(fw[0], fh[0]);
         ImGui.render();
+        renderer.render(snap, camera, fw[0], fh[0]);
         imguiGl3.renderDrawData(ImGui.getDrawData());
         glfwSwapBuffers(window);
-        if (frameLimit > 0 && --frameLimit == 0) {
-          glfwSetWindowShouldClose(window, true);
+        frames++;
+        if (frames == 1) {
+          firstFrame.run();
         }
+        afterFrame.run();
       } else {
         glfwWaitEventsTimeout(0.1);
       }
     }
   }
 
-  /** Closes the window after this many drawn frames (0: when the user closes it); for start-up timing and the packaging's training run. */
-  public void setFrameLimit(int frames) {
-    frameLimit = frames;
+  /** Runs after every frame is on screen (layout probes, tests). */
+  public void setAfterFrameHandler(Runnable handler) {
+    afterFrame = handler;
+  }
+
+  /** Asks the loop to end after this frame. */
+  public void close(boolean unused) {
+    glfwSetWindowShouldClose(window, true);
+  }
+
+  public void setTitle(String title) {
+    glfwSetWindowTitle(window, title);
+  }
+
+  /** Frames drawn so far. */
+  public long frames() {
+    return frames;
+  }
+
+  /** Runs once, right after the first frame is on screen (start-up timing). */
+  public void setFirstFrameHandler(Runnable handler) {
+    firstFrame = handler;
+  }
+
+  /** The monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one). */
+  public float contentScale() {
+    return contentScale;
+  }
+
+  /** The GLFW window handle (for the layout probe and tests). */
+  public long handle() {
+    return window;
+  }
+
+  /** Keyboard shortcuts of the window (Ctrl+H, Ctrl+Z ...), asked before the pendant. */
+  @FunctionalInterface
+  public interface ShortcutHandler {
+    /** Returns whether the key press was a shortcut and is used up. */
+    boolean onShortcut(int glfwKey, int mods);
+  }
+
+  public void setShortcutHandler(ShortcutHandler handler) {
+    shortcuts = handler;
+  }
+
+  /** A left click (press and release without dragging) on the 3D view, in window coordinates. */
+  @FunctionalInterface
+  public interface ViewClick {
+    void click(double x, double y);
+  }
+
+  public void setViewClickHandler(ViewClick handler) {
+    viewClick = handler;
+  }
+
+  /**
+   * A left-button drag that starts on something in the 3D view (an axis handle) instead of
+   * orbiting the camera.
+   */
+  public interface ViewPress {
+    /** The button went down at (x, y); returns whether this handler takes the drag. */
+    boolean press(double x, double y);
+
+    /** The mouse moved while the button is down; returns whether the drag is this handler's. */
+    boolean drag(double x, double y);
+
+    void release();
+  }
+
+  public void setViewPressHandler(ViewPress handler) {
+    viewPress = handler;
   }
 
   public void setKeyHandler(KeyHandler handler) {

@@ -61,6 +61,38 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void aWorldJogToTheEdgeOfReachSaysWhyItStopped() {
+    keys("""
+        COORD
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 120
+        RELEASE +X/J1
+        RELEASE SHIFT
+        """);
+    assertThat(p.lcd().promptLine()).contains("Jog stopped").containsAnyOf("edge of reach", "singularity", "limit");
+  }
+
+  @Test
+  void aJogThatRunsIntoAJointLimitSaysSoOnThePromptLineWithAxisAndValue() {
+    keys("""
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 400
+        """);
+    assertThat(p.lcd().promptLine()).contains("Jog stopped").contains("J1").contains("upper limit").contains("deg");
+    keys("""
+        RELEASE +X/J1
+        HOLD +X/J1
+        WAIT 1
+        RELEASE +X/J1
+        RELEASE SHIFT
+        """);
+    // pressing into the limit again says it again rather than leaving the line blank
+    assertThat(p.lcd().promptLine()).contains("upper limit");
+  }
+
+  @Test
   void aBwdNoticeLeavesThePromptLineWithTheNextCommandButAnAlarmStaysUntilReset() {
     keys("""
         SELECT

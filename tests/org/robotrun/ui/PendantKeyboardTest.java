@@ -81,4 +81,13 @@ class PendantKeyboardTest {
     assertThat(control.currentJoints().j1Deg()).isEqualTo(j1);
     assertThat(pendant.shift()).isFalse();
   }
+
+  @Test
+  void everyKeyOnTheKeyboardShowsItsShortcutAndTheKeyMapListsThem() {
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.SHIFT)).isEqualTo("Shift");
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.JOG_PLUS_1)).isEqualTo("Q");
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.SELECT)).isEqualTo("Insert");
+    assertThat(PendantKeyboard.shortcut(org.robotrun.pendant.Key.MENU)).as("only on screen").isEmpty();
+    assertThat(PendantKeyboard.keyMap()).extracting(r -> r[0] + "=" + r[1]).contains("F1=F1", "ENTER=Enter", "-X/J1=A");
+  }
 }

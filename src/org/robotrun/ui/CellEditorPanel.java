@@ -1,0 +1,393 @@
+package org.robotrun.ui;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiInputTextFlags;
+import imgui.type.ImString;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.Function;
+import org.robotrun.io.ScenarioWriter;
+import org.robotrun.world.CellEditor;
+import org.robotrun.world.CellEditor.NumberField;
+import org.robotrun.world.CellEditor.Result;
+import org.robotrun.world.ObjectKind;
+import org.robotrun.world.Shape;
+import org.robotrun.world.WorldObject;
+
+/**
+ * The cell editor's panel (the paper's section 3.6 and its Figure 10): the scenarios of the
+ * workspace (one active), add a box, cylinder or STL mesh, and the selected object's name, kind,
+ * parent, colour, pose and size in text fields. A field is applied on Enter or when it loses the
+ * keyboard; a refused value shows one message naming the field and its range, and the field shows
+ * the old value again. Undo and redo (Ctrl+Z, Ctrl+Y) go back and forth through cell edits.
+ */
+public final class CellEditorPanel {
+  /** Picks an STL file (a file dialog once the window has one); empty when cancelled. */
+  @FunctionalInterface
+  public interface StlPicker {
+    Optional<Path> pick();
+  }
+
+  private final CellEditor editor;
+  private final Map<String, ImString> fields = new HashMap<>();
+  private final Map<String, float[]> buttons = new HashMap<>();
+  private final ImString stlPath = new ImString(512);
+  private final ImString stlScale = new ImString("1", 32);
+  private final ImString newScenario = new ImString(64);
+  private final ImString savePath = new ImString(512);
+  private StlPicker stlPicker;
+  private String selected = "";
+  private String message = "";
+  private boolean messageIsError;
+  private long shownRevision = -1;
+
+  public CellEditorPanel(CellEditor editor, Path saveTo) {
+    this.editor = editor;
+    savePath.set(saveTo == null ? "" : saveTo.toString());
+  }
+
+  /** A file dialog for STL files (the workspace engineer's lwjgl-nfd); without one a path field is shown. */
+  public void setStlPicker(StlPicker picker) {
+    stlPicker = picker;
+  }
+
+  public CellEditor editor() {
+    return editor;
+  }
+
+  public String selected() {
+    return selected;
+  }
+
+  /** Selects an object (a click in the 3D view); "" selects nothing. */
+  public void select(String name) {
+    selected = name == null ? "" : name;
+  }
+
+  /** The last edit's message for a status line, "" when none. */
+  public String message() {
+    return message;
+  }
+
+  public boolean messageIsError() {
+    return messageIsError;
+  }
+
+  /** Applies an edit's result: remembers the message, forgets field texts so they show the model. */
+  public void report(Result r) {
+    switch (r) {
+      case Result.Done d -> {
+        message = d.message();
+        messageIsError = false;
+      }
+      case Result.Refused no -> {
+        message = no.message();
+        messageIsError = true;
+      }
+    }
+    fields.clear();
+  }
+
+  public void undo() {
+    report(editor.undo());
+    keepSelection();
+  }
+
+  public void redo() {
+    report(editor.redo());
+    keepSelection();
+  }
+
+  private void keepSelection() {
+    if (editor.world().find(selected).isEmpty()) {
+      selected = "";
+    }
+  }
+
+  /** Draws the panel into the current window. */
+  public void drawContents() {
+    if (editor.revision() != shownRevision) {
+      shownRevision = editor.revision();
+      fields.clear();
+      keepSelection();
+    }
+    drawScenarios();
+    ImGui.separator();
+    if (ImGui.button("Add box")) {
+      addAndSelect(editor.addBox());
+    }
+    remember("Add box");
+    ImGui.sameLine();
+    if (ImGui.button("Add cylinder")) {
+      addAndSelect(editor.addCylinder());
+    }
+    drawStl();
+    ImGui.separator();
+    drawObjectList();
+    if (!selected.isEmpty()) {
+      drawSelected(editor.world().find(selected).orElseThrow());
+    }
+    ImGui.separator();
+    if (ImGui.button("Undo") ) {
+      undo();
+    }
+    ImGui.sameLine();
+    if (ImGui.button("Redo")) {
+      redo();
+    }
+    ImGui.sameLine();
+    ImGui.textDisabled("Ctrl+Z / Ctrl+Y");
+    drawSave();
+    if (!message.isEmpty()) {
+      if (messageIsError) {
+        ImGui.pushStyleColor(imgui.flag.ImGuiCol.Text, 1f, 0.45f, 0.35f, 1f);
+      }
+      ImGui.textWrapped(message);
+      if (messageIsError) {
+        ImGui.popStyleColor();
+      }
+    }
+  }
+
+  private void addAndSelect(Result r) {
+    report(r);
+    if (r instanceof Result.Done) {
+      List<WorldObject> all = editor.world().objects();
+      selected = all.get(all.size() - 1).name();
+    }
+  }
+
+  private void drawScenarios() {
+    var scenarios = editor.scenarios();
+    ImGui.textDisabled("Scenario");
+    ImGui.setNextItemWidth(-1);
+    if (ImGui.beginCombo("##scenario", editor.active().name().isBlank() ? "(unnamed)" : editor.active().name())) {
+      for (int i = 0; i < scenarios.size(); i++) {
+        if (ImGui.selectable(scenarios.get(i).name() + "##sc" + i, i == editor.activeIndex())) {
+          report(editor.activate(i));
+        }
+      }
+      ImGui.endCombo();
+    }
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.55f);
+    boolean enter = ImGui.inputTextWithHint("##newsc", "new scenario name", newScenario, ImGuiInputTextFlags.EnterReturnsTrue);
+    ImGui.sameLine();
+    if (ImGui.button("New") || enter) {
+      report(editor.addScenario(newScenario.get()));
+      newScenario.set("");
+    }
+    ImGui.sameLine();
+    if (ImGui.button("Delete##scenario")) {
+      report(editor.deleteActiveScenario());
+    }
+  }
+
+  private void drawStl() {
+    if (stlPicker != null) {
+      ImGui.sameLine();
+      if (ImGui.button("Add STL ...")) {
+        stlPicker.pick().ifPresent(p -> addAndSelect(editor.addMesh(p, scale())));
+      }
+      return;
+    }
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.5f);
+    ImGui.inputTextWithHint("##stl", "path/to/part.stl", stlPath);
+    ImGui.sameLine();
+    ImGui.setNextItemWidth(ImGui.getFontSize() * 3);
+    ImGui.inputText("##stlscale", stlScale);
+    if (ImGui.isItemHovered()) {
+      ImGui.setTooltip("scale: mm per file unit (1000 for a file in metres)");
+    }
+    ImGui.sameLine();
+    if (ImGui.button("Add STL")) {
+      String p = stlPath.get().trim();
+      if (p.isEmpty()) {
+        report(new Result.Refused("STL file: type the path of a .stl file first"));
+      } else {
+        addAndSelect(editor.addMesh(Path.of(p), scale()));
+      }
+    }
+  }
+
+  private double scale() {
+    try {
+      return Double.parseDouble(stlScale.get().trim());
+    } catch (NumberFormatException e) {
+      return Double.NaN;
+    }
+  }
+
+  private void drawObjectList() {
+    ImGui.textDisabled("Objects (click one here or in the 3D view)");
+    float h = Math.min(6, Math.max(1, editor.world().objects().size())) * ImGui.getTextLineHeightWithSpacing() + 6;
+    if (ImGui.beginListBox("##objects", -1, h)) {
+      for (WorldObject o : editor.world().objects()) {
+        String label = o.name() + "  (" + o.kind().name().toLowerCase() + o.startParent().map(p -> " on " + p).orElse("") + ")";
+        if (ImGui.selectable(label + "##obj" + o.name(), o.name().equals(selected))) {
+          selected = o.name();
+        }
+      }
+      ImGui.endListBox();
+    }
+  }
+
+  private void drawSelected(WorldObject o) {
+    String name = o.name();
+    field("name", name, name, t -> {
+      Result r = editor.rename(name, t);
+      if (r instanceof Result.Done && editor.world().find(t.trim()).isPresent()) {
+        selected = t.trim();
+      }
+      return r;
+    });
+    ImGui.alignTextToFramePadding();
+    ImGui.text("kind");
+    ImGui.sameLine();
+    if (ImGui.radioButton("part", o.kind() == ObjectKind.PART) && o.kind() != ObjectKind.PART) {
+      report(editor.setKind(name, ObjectKind.PART));
+    }
+    ImGui.sameLine();
+    if (ImGui.radioButton("fixture", o.kind() == ObjectKind.FIXTURE) && o.kind() != ObjectKind.FIXTURE) {
+      report(editor.setKind(name, ObjectKind.FIXTURE));
+    }
+    ImGui.alignTextToFramePadding();
+    ImGui.text("parent");
+    ImGui.sameLine();
+    ImGui.setNextItemWidth(-1);
+    if (ImGui.beginCombo("##parent", o.startParent().orElse("(the cell)"))) {
+      if (ImGui.selectable("(the cell)", o.startParent().isEmpty())) {
+        report(editor.setParent(name, Optional.empty()));
+      }
+      for (WorldObject f : editor.world().objects()) {
+        if (f.kind() == ObjectKind.FIXTURE && !f.name().equals(name)
+            && ImGui.selectable(f.name() + "##par", o.startParent().filter(f.name()::equals).isPresent())) {
+          report(editor.setParent(name, Optional.of(f.name())));
+        }
+      }
+      ImGui.endCombo();
+    }
+    field("colour", name, o.colour().hex(), t -> editor.setColour(name, t));
+    ImGui.textDisabled("pose on its parent (mm, deg)");
+    numbers(name, NumberField.X, NumberField.Y, NumberField.Z);
+    numbers(name, NumberField.W, NumberField.P, NumberField.R);
+    ImGui.textDisabled("size");
+    switch (o.shape()) {
+      case Shape.Box b -> numbers(name, NumberField.LENGTH, NumberField.WIDTH, NumberField.HEIGHT);
+      case Shape.Cylinder c -> numbers(name, NumberField.RADIUS, NumberField.HEIGHT);
+      case Shape.Mesh m -> {
+        numbers(name, NumberField.SCALE);
+        ImGui.textDisabled(m.file().getFileName().toString());
+      }
+    }
+    if (ImGui.button("Duplicate")) {
+      addAndSelect(editor.duplicate(name));
+    }
+    ImGui.sameLine();
+    if (ImGui.button("Delete")) {
+      Result r = editor.delete(name);
+      report(r);
+      if (r instanceof Result.Done) {
+        selected = "";
+      }
+    }
+  }
+
+  private void numbers(String object, NumberField... fs) {
+    float spacing = ImGui.getStyle().getItemSpacingX();
+    float labels = 0;
+    for (NumberField f : fs) {
+      labels += ImGui.calcTextSize(shortLabel(f)).x + spacing;
+    }
+    float w = (ImGui.getContentRegionAvailX() - labels - (fs.length - 1) * spacing) / fs.length;
+    for (int i = 0; i < fs.length; i++) {
+      if (i > 0) {
+        ImGui.sameLine();
+      }
+      NumberField f = fs[i];
+      ImGui.alignTextToFramePadding();
+      ImGui.textDisabled(shortLabel(f));
+      ImGui.sameLine();
+      double v = editor.number(object, f);
+      String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "");
+      ImGui.setNextItemWidth(w);
+      textInput(f.label(), object + "/" + f.name(), shown, t -> editor.setNumber(object, f, t), f.label() + " (" + f.unit() + ")");
+    }
+  }
+
+  private static String shortLabel(NumberField f) {
+    return switch (f) {
+      case LENGTH -> "L";
+      case WIDTH -> "W";
+      case HEIGHT -> "H";
+      case RADIUS -> "r";
+      case SCALE -> "scale";
+      default -> f.label();
+    };
+  }
+
+  private void field(String label, String object, String value, Function<String, Result> apply) {
+    ImGui.alignTextToFramePadding();
+    ImGui.text(label);
+    ImGui.sameLine(ImGui.getFontSize() * 4);
+    ImGui.setNextItemWidth(-1);
+    textInput(label, object + "/" + label, value, apply, label);
+  }
+
+  /**
+   * A text field whose text is applied on Enter or when it loses the keyboard; Enter also gives
+   * the keyboard back to the pendant (ImGui deactivates a single-line field on Enter).
+   */
+  private void textInput(String label, String key, String value, Function<String, Result> apply, String hint) {
+    ImString buf = fields.computeIfAbsent(key, k -> new ImString(value, 64));
+    boolean enter = ImGui.inputTextWithHint("##" + key, label, buf, ImGuiInputTextFlags.EnterReturnsTrue | ImGuiInputTextFlags.AutoSelectAll);
+    if (ImGui.isItemHovered()) {
+      ImGui.setTooltip(hint);
+    }
+    if (!ImGui.isItemActive() && !enter && !buf.get().equals(value) && !ImGui.isItemDeactivatedAfterEdit()) {
+      buf.set(value);  // the model changed (undo, another field): show it
+    }
+    if (enter || ImGui.isItemDeactivatedAfterEdit()) {
+      if (!buf.get().equals(value)) {
+        report(apply.apply(buf.get()));
+      }
+    }
+  }
+
+  private void remember(String button) {
+    buttons.put(button, new float[] {ImGui.getItemRectMinX(), ImGui.getItemRectMinY(), ImGui.getItemRectSizeX(), ImGui.getItemRectSizeY()});
+  }
+
+  /** Where a button ("Add box", "Save") was drawn last frame: x, y, w, h in display pixels (tests). */
+  public Optional<float[]> buttonRect(String button) {
+    return Optional.ofNullable(buttons.get(button));
+  }
+
+  /** Saves the active scenario as a scenario file (until the workspace saves the cell with it). */
+  private void drawSave() {
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.65f);
+    ImGui.inputTextWithHint("##save", "save as FILE.json", savePath);
+    ImGui.sameLine();
+    if (ImGui.button("Save")) {
+      report(save(Path.of(savePath.get().trim())));
+    }
+    remember("Save");
+  }
+
+  /** Writes the active scenario to {@code file} (scenario format 1, through AtomicFiles). */
+  public Result save(Path file) {
+    String f = file.getFileName() == null ? "" : file.getFileName().toString();
+    if (!f.toLowerCase(java.util.Locale.ROOT).endsWith(".json")) {
+      return new Result.Refused("save as: expected a file name ending in .json, got '" + f + "'");
+    }
+    try {
+      ScenarioWriter.write(editor.active(), file.toAbsolutePath());
+      return new Result.Done("saved " + file);
+    } catch (IOException e) {
+      return new Result.Refused("save as " + file + ": " + e.getMessage());
+    }
+  }
+}

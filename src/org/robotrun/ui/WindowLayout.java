@@ -1,0 +1,74 @@
+package org.robotrun.ui;
+
+/**
+ * Where the window's parts go, computed fresh every frame from the window size, so shrinking
+ * and growing the window never leaves panels piled over the scene. Side by side, never on top of
+ * each other: the main menu bar across the top, the left column (task, robot, cell, editor), the
+ * 3D view in the middle, the teach pendant on the right at its natural width. When the window is
+ * too narrow for all three, the pendant keeps its width, the left column goes first and the 3D view
+ * keeps at least {@link #MIN_VIEW_FRACTION} of the width.
+ *
+ * <p>All sizes in ImGui display pixels (y down, origin top left).
+ */
+public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) {
+  /** The 3D view never gets less than this part of the window's width. */
+  public static final float MIN_VIEW_FRACTION = 0.35f;
+  /** The left column's default width (unscaled pixels). */
+  public static final float SIDEBAR_WIDTH = 270;
+  /** Below this window width (unscaled) the left column starts hidden. */
+  public static final float SIDEBAR_MIN_WINDOW = 1200;
+
+  /** A rectangle in display pixels; width or height 0 means hidden. */
+  public record Rect(float x, float y, float w, float h) {
+    public boolean visible() {
+      return w > 0 && h > 0;
+    }
+
+    public float right() {
+      return x + w;
+    }
+
+    public float bottom() {
+      return y + h;
+    }
+
+    public boolean contains(float px, float py) {
+      return px >= x && px < x + w && py >= y && py < y + h;
+    }
+
+    public boolean overlaps(Rect o) {
+      return visible() && o.visible() && x < o.right() && o.x < right() && y < o.bottom() && o.y < bottom();
+    }
+  }
+
+  /**
+   * @param width window width (display pixels)
+   * @param height window height (display pixels)
+   * @param menuBarHeight height of the main menu bar
+   * @param scale the monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one)
+   * @param pendantNaturalWidth the pendant's width when all its keys show (display pixels)
+   */
+  public static WindowLayout compute(float width, float height, float menuBarHeight, float scale,
+      float pendantNaturalWidth, LayoutState state) {
+    float top = menuBarHeight;
+    float h = Math.max(0, height - top);
+    float pw = 0;
+    if (state.pendantVisible) {
+      pw = state.pendantWidth > 0 ? state.pendantWidth * scale : pendantNaturalWidth;
+      pw = Math.max(pendantNaturalWidth * 0.6f, pw);
+      pw = Math.min(pw, width * (1 - MIN_VIEW_FRACTION));
+    }
+    boolean side = state.sidebarVisible != null ? state.sidebarVisible : width >= SIDEBAR_MIN_WINDOW * scale;
+    float sw = 0;
+    if (side) {
+      sw = (state.sidebarWidth > 0 ? state.sidebarWidth : SIDEBAR_WIDTH) * scale;
+      sw = Math.max(0, Math.min(sw, width - pw - width * MIN_VIEW_FRACTION));
+    }
+    float vw = Math.max(0, width - pw - sw);
+    return new WindowLayout(
+        new Rect(0, 0, width, top),
+        new Rect(0, top, sw, sw > 0 ? h : 0),
+        new Rect(sw, top, vw, h),
+        new Rect(width - pw, top, pw, pw > 0 ? h : 0));
+  }
+}

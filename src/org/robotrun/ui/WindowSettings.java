@@ -1,0 +1,84 @@
+package org.robotrun.ui;
+
+import java.io.IOException;
+import java.io.StringReader;
+import java.io.StringWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Properties;
+import org.robotrun.io.AtomicFiles;
+
+/**
+ * Where the window keeps its layout between runs until a workspace keeps it: {@code layout.properties}
+ * in the user's settings folder, never the current directory. {@code ROBOTRUN_CONFIG_DIR} overrides
+ * the folder (tests, portable installs); otherwise {@code $XDG_CONFIG_HOME/robotrun} or
+ * {@code ~/.config/robotrun} on Linux, {@code %APPDATA%\RobotRun} on Windows,
+ * {@code ~/Library/Application Support/RobotRun} on macOS. Written through {@link AtomicFiles}.
+ */
+public final class WindowSettings {
+  private final Optional<Path> dir;
+
+  public WindowSettings(Optional<Path> dir) {
+    this.dir = dir;
+  }
+
+  /** The settings folder of this user on this system, if one can be named. */
+  public static WindowSettings forUser() {
+    String override = System.getenv("ROBOTRUN_CONFIG_DIR");
+    if (override != null && !override.isBlank()) {
+      return new WindowSettings(Optional.of(Path.of(override)));
+    }
+    String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
+    String home = System.getProperty("user.home", "");
+    Path d = null;
+    if (os.contains("win")) {
+      String appData = System.getenv("APPDATA");
+      d = appData != null ? Path.of(appData, "RobotRun") : null;
+    } else if (os.contains("mac")) {
+      d = home.isEmpty() ? null : Path.of(home, "Library", "Application Support", "RobotRun");
+    } else {
+      String xdg = System.getenv("XDG_CONFIG_HOME");
+      d = xdg != null && !xdg.isBlank() ? Path.of(xdg, "robotrun") : home.isEmpty() ? null : Path.of(home, ".config", "robotrun");
+    }
+    return new WindowSettings(Optional.ofNullable(d));
+  }
+
+  public Optional<Path> file() {
+    return dir.map(d -> d.resolve("layout.properties"));
+  }
+
+  /** The saved layout, or the default one when there is none or it cannot be read. */
+  public LayoutState load() {
+    Optional<Path> f = file();
+    if (f.isEmpty() || !Files.isRegularFile(f.get())) {
+      return new LayoutState();
+    }
+    try {
+      Properties p = new Properties();
+      p.load(new StringReader(Files.readString(f.get(), StandardCharsets.UTF_8)));
+      return LayoutState.fromProperties(p);
+    } catch (IOException | IllegalArgumentException e) {
+      return new LayoutState();
+    }
+  }
+
+  /** Saves the layout; returns a one-line problem, or "" when it was saved (or there is nowhere to). */
+  public String save(LayoutState state) {
+    Optional<Path> f = file();
+    if (f.isEmpty()) {
+      return "";
+    }
+    try {
+      Files.createDirectories(f.get().getParent());
+      StringWriter w = new StringWriter();
+      state.toProperties().store(w, "RobotRun window layout");
+      AtomicFiles.write(f.get(), w.toString().getBytes(StandardCharsets.UTF_8));
+      return "";
+    } catch (IOException e) {
+      return "could not save the window layout to " + f.get() + ": " + e.getMessage();
+    }
+  }
+}

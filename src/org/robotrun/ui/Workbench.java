@@ -1,0 +1,383 @@
+package org.robotrun.ui;
+
+import static org.lwjgl.glfw.GLFW.*;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiTreeNodeFlags;
+import imgui.flag.ImGuiWindowFlags;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.function.Supplier;
+import org.joml.Matrix4f;
+import org.joml.Vector3f;
+import org.joml.Vector4f;
+import org.robotrun.collision.Obb;
+import org.robotrun.math.Xyzwpr;
+import org.robotrun.pendant.Pendant;
+import org.robotrun.render.OrbitCamera;
+import org.robotrun.sim.DrawItem;
+import org.robotrun.sim.SceneSnapshot;
+import org.robotrun.world.CellEditor;
+
+/**
+ * The window as a student's lab bench: the main menu bar (menus from {@link MenuContributor}s,
+ * then View and Help), the left column (task, robot, cell, cell editor), the 3D view and the teach
+ * pendant side by side ({@link WindowLayout}), the help windows, picking and moving objects in the
+ * 3D view, and the window's keyboard shortcuts. The camera frames the scene in the free middle part.
+ */
+public final class Workbench implements SimulatorWindow.Panels {
+  /** Draws menus into the main menu bar (e.g. the workspace's File menu), left of View and Help. */
+  @FunctionalInterface
+  public interface MenuContributor {
+    void drawMenus();
+  }
+
+  /** Robot status for the left column. */
+  public interface RobotStatus {
+    double[] pendantDeg();
+
+    Xyzwpr flangeInWorld();
+  }
+
+  private final OrbitCamera camera;
+  private final Pendant pendant;
+  private final PendantPanel pendantPanel;
+  private final CellPanel cellPanel;
+  private final CellEditorPanel editorPanel;
+  private final RobotStatus robot;
+  private final String task;
+  private final Supplier<SceneSnapshot> scene;
+  private final float scale;
+  private final HelpWindows help = new HelpWindows();
+  private final List<MenuContributor> menus = new ArrayList<>();
+  private final AxisHandles handles = new AxisHandles();
+  private LayoutState state;
+  private WindowLayout layout;
+  private int framebufferW;
+  private int framebufferH;
+  private boolean framed;
+  private Runnable onLayoutChange = () -> {};
+
+  /**
+   * @param editorPanel the cell editor, or null when the cell cannot be edited
+   * @param task the scenario's description (the exercise)
+   */
+  public Workbench(OrbitCamera camera, float scale, Pendant pendant, PendantPanel pendantPanel, CellPanel cellPanel,
+      CellEditorPanel editorPanel, RobotStatus robot, String task, Supplier<SceneSnapshot> scene, LayoutState state) {
+    this.camera = camera;
+    this.scale = scale;
+    this.pendant = pendant;
+    this.pendantPanel = pendantPanel;
+    this.cellPanel = cellPanel;
+    this.editorPanel = editorPanel;
+    this.robot = robot;
+    this.task = task == null ? "" : task;
+    this.scene = scene;
+    this.state = state;
+    help.showWelcome(!state.welcomeSeen);
+  }
+
+  /** Adds menus drawn in the main menu bar before View and Help (the File menu goes first). */
+  public void addMenus(MenuContributor contributor) {
+    menus.add(contributor);
+  }
+
+  public LayoutState layoutState() {
+    return state;
+  }
+
+  /** Switches to another layout (a workspace opened with its own). */
+  public void setLayoutState(LayoutState s) {
+    state = s;
+  }
+
+  /** Runs when the student changes the layout (to save it). */
+  public void setLayoutChangeHandler(Runnable r) {
+    onLayoutChange = r;
+  }
+
+  /** The layout of the last frame (display pixels); null before the first frame. */
+  public WindowLayout layout() {
+    return layout;
+  }
+
+  public HelpWindows help() {
+    return help;
+  }
+
+  public PendantPanel pendantPanel() {
+    return pendantPanel;
+  }
+
+  public CellEditorPanel editorPanel() {
+    return editorPanel;
+  }
+
+  // ---- input ---------------------------------------------------------------------------------
+
+  /** The window's shortcuts: Ctrl+H key map, Ctrl+Z / Ctrl+Y (Ctrl+Shift+Z) undo / redo of cell edits. */
+  public boolean onShortcut(int key, int mods) {
+    boolean ctrl = (mods & (GLFW_MOD_CONTROL | GLFW_MOD_SUPER)) != 0;
+    if (!ctrl) {
+      return false;
+    }
+    if (key == GLFW_KEY_H) {
+      help.toggleKeyMap();
+      return true;
+    }
+    if (editorPanel != null && key == GLFW_KEY_Z) {
+      if ((mods & GLFW_MOD_SHIFT) != 0) {
+        editorPanel.redo();
+      } else {
+        editorPanel.undo();
+      }
+      return true;
+    }
+    if (editorPanel != null && key == GLFW_KEY_Y) {
+      editorPanel.redo();
+      return true;
+    }
+    return false;
+  }
+
+  /** '?' toggles the key map when no pendant entry takes text. */
+  public boolean onChar(int codepoint) {
+    if (codepoint == '?' && !pendant.entryOpen()) {
+      help.toggleKeyMap();
+      return true;
+    }
+    return false;
+  }
+
+  /** A click in the 3D view (window coordinates): selects the object under it (a ray against its box). */
+  public void onViewClick(double x, double y) {
+    if (editorPanel == null || layout == null || !layout.view().contains((float) x, (float) y)) {
+      return;
+    }
+    float[] ray = ray(x, y);
+    String best = "";
+    double bestT = Double.POSITIVE_INFINITY;
+    var world = editorPanel.editor().world();
+    for (var o : world.objects()) {
+      Obb b = world.collisionBox(o.name());
+      double t = b.rayHit(ray[0], ray[1], ray[2], ray[3], ray[4], ray[5]);
+      if (!Double.isNaN(t) && t < bestT) {
+        bestT = t;
+        best = o.name();
+      }
+    }
+    editorPanel.select(best);
+    if (!best.isEmpty()) {
+      state.editorOpen = true;
+      showSidebar();
+    }
+  }
+
+  /** The axis handles of the selected object take a drag that starts on them. */
+  public SimulatorWindow.ViewPress viewPress() {
+    return new SimulatorWindow.ViewPress() {
+      @Override
+      public boolean press(double x, double y) {
+        return editorPanel != null && handles.press(x, y);
+      }
+
+      @Override
+      public boolean drag(double x, double y) {
+        return handles.drag(x, y);
+      }
+
+      @Override
+      public void release() {
+        handles.release().ifPresent(m -> editorPanel.report(editorPanel.editor().nudge(m.object(), m.axis(), m.mm())));
+      }
+    };
+  }
+
+  /** Ray through a window point: origin and direction in the cell frame (mm). */
+  private float[] ray(double x, double y) {
+    float fbx = framebufferW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
+    float fby = framebufferH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
+    float nx = (float) (2 * x * fbx / framebufferW - 1), ny = (float) (1 - 2 * y * fby / framebufferH);
+    Matrix4f inv = camera.viewProjection(framebufferW, framebufferH).invert();
+    Vector4f near = new Vector4f(nx, ny, -1, 1).mul(inv);
+    Vector4f far = new Vector4f(nx, ny, 1, 1).mul(inv);
+    near.div(near.w);
+    far.div(far.w);
+    return new float[] {near.x, near.y, near.z, far.x - near.x, far.y - near.y, far.z - near.z};
+  }
+
+  private void showSidebar() {
+    if (layout != null && !layout.sidebar().visible()) {
+      state.sidebarVisible = true;
+    }
+  }
+
+  // ---- drawing ---------------------------------------------------------------------------------
+
+  @Override
+  public void draw(int framebufferWidth, int framebufferHeight) {
+    framebufferW = framebufferWidth;
+    framebufferH = framebufferHeight;
+    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    float menuH = drawMenuBar();
+    layout = WindowLayout.compute(dw, dh, menuH, scale, PendantPanel.naturalWidth(), state);
+    frameScene(dw, dh);
+    drawSidebar(layout.sidebar());
+    pendantPanel.draw(layout.pendant());
+    float w = pendantPanel.takeUserWidth();
+    if (w > 0) {
+      state.pendantWidth = w / scale;
+      onLayoutChange.run();
+    }
+    if (editorPanel != null) {
+      handles.draw(camera, framebufferW, framebufferH, dw, dh, editorPanel.editor(), editorPanel.selected(), layout.view());
+    }
+    drawPromptStrip();
+    help.draw(layout.view(), task);
+    if (!help.welcomeOpen() && !state.welcomeSeen) {
+      state.welcomeSeen = true;
+      onLayoutChange.run();
+    }
+  }
+
+  /** Frames the scene in the free middle part; at the first frame, backs off until it all fits. */
+  private void frameScene(float dw, float dh) {
+    WindowLayout.Rect v = layout.view();
+    float sx = framebufferW / Math.max(1f, dw), sy = framebufferH / Math.max(1f, dh);
+    int x = Math.round(v.x() * sx), w = Math.round(v.w() * sx);
+    int h = Math.round(v.h() * sy), y = framebufferH - Math.round(v.bottom() * sy);
+    camera.setViewRect(x, y, w, h);
+    if (!framed && w > 0 && h > 0) {
+      framed = true;
+      List<Vector3f> pts = new ArrayList<>();
+      for (DrawItem it : scene.get().items()) {
+        SceneBounds.addCorners(it, pts);
+      }
+      float before = camera.distance();
+      camera.fitDistance(pts, w / (float) h, 0.08f);
+      if (camera.distance() < before) {
+        // keep the scenario's own (wider) view when everything already fits
+        camera.set(camera.target().x, camera.target().y, camera.target().z, before, camera.yaw(), camera.pitch());
+      }
+    }
+  }
+
+  /** Draws the main menu bar; returns its height. */
+  private float drawMenuBar() {
+    float h = 0;
+    if (ImGui.beginMainMenuBar()) {
+      h = ImGui.getWindowHeight();
+      for (MenuContributor m : menus) {
+        m.drawMenus();
+      }
+      if (ImGui.beginMenu("View")) {
+        boolean sidebar = layout != null && layout.sidebar().visible();
+        if (ImGui.menuItem("Side panel (task, robot, cell, editor)", "", sidebar)) {
+          state.sidebarVisible = !sidebar;
+          onLayoutChange.run();
+        }
+        if (ImGui.menuItem("Teach pendant", "", state.pendantVisible)) {
+          state.pendantVisible = !state.pendantVisible;
+          onLayoutChange.run();
+        }
+        ImGui.separator();
+        if (ImGui.menuItem("Task", "", state.taskOpen)) {
+          state.taskOpen = !state.taskOpen;
+          showSidebar();
+        }
+        if (ImGui.menuItem("Robot", "", state.robotOpen)) {
+          state.robotOpen = !state.robotOpen;
+          showSidebar();
+        }
+        if (ImGui.menuItem("Cell", "", state.cellOpen)) {
+          state.cellOpen = !state.cellOpen;
+          showSidebar();
+        }
+        if (editorPanel != null && ImGui.menuItem("Cell editor", "", state.editorOpen)) {
+          state.editorOpen = !state.editorOpen;
+          showSidebar();
+        }
+        ImGui.separator();
+        if (ImGui.menuItem("Reset view", "Home")) {
+          camera.reset();
+          framed = false;
+        }
+        if (ImGui.menuItem("Reset layout")) {
+          state.reset();
+          onLayoutChange.run();
+        }
+        ImGui.endMenu();
+      }
+      if (ImGui.beginMenu("Help")) {
+        help.menuItems();
+        ImGui.endMenu();
+      }
+      ImGui.endMainMenuBar();
+    }
+    return h;
+  }
+
+  private void drawSidebar(WindowLayout.Rect r) {
+    if (!r.visible()) {
+      return;
+    }
+    ImGui.setNextWindowPos(r.x(), r.y(), ImGuiCond.Always);
+    ImGui.setNextWindowSize(r.w(), r.h(), ImGuiCond.Always);
+    if (ImGui.begin("##sidebar", ImGuiWindowFlags.NoTitleBar | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse
+        | ImGuiWindowFlags.NoBringToFrontOnFocus)) {
+      if (Math.abs(ImGui.getWindowWidth() - r.w()) > 0.5f) {
+        state.sidebarWidth = ImGui.getWindowWidth() / scale;
+        onLayoutChange.run();
+      }
+      state.taskOpen = section("Task", state.taskOpen);
+      if (state.taskOpen) {
+        ImGui.textWrapped(task.isBlank() ? "No task: this cell is free play. Help > First steps shows how to start." : task);
+      }
+      state.robotOpen = section("Robot", state.robotOpen);
+      if (state.robotOpen) {
+        RobotStatusPanel.drawContents(robot.pendantDeg(), robot.flangeInWorld());
+      }
+      state.cellOpen = section("Cell", state.cellOpen);
+      if (state.cellOpen) {
+        cellPanel.drawContents();
+      }
+      if (editorPanel != null) {
+        state.editorOpen = section("Cell editor", state.editorOpen);
+        if (state.editorOpen) {
+          editorPanel.drawContents();
+        }
+      } else {
+        ImGui.textDisabled("Open a scenario to edit its cell:\n  robotrun --scenario FILE.json");
+      }
+    }
+    ImGui.end();
+  }
+
+  private static boolean section(String title, boolean open) {
+    ImGui.setNextItemOpen(open, ImGuiCond.Always);
+    return ImGui.collapsingHeader(title, ImGuiTreeNodeFlags.None);
+  }
+
+  /** The cell editor's last message along the bottom of the 3D view, where the student looks. */
+  private void drawPromptStrip() {
+    if (editorPanel == null || editorPanel.message().isEmpty() || !editorPanel.messageIsError()) {
+      return;
+    }
+    WindowLayout.Rect v = layout.view();
+    ImGui.setNextWindowPos(v.x() + 8, v.bottom() - 8, ImGuiCond.Always, 0f, 1f);
+    ImGui.setNextWindowBgAlpha(0.85f);
+    ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), 200);
+    if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
+        | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav | ImGuiWindowFlags.NoInputs)) {
+      ImGui.textColored(1f, 0.55f, 0.45f, 1f, editorPanel.message());
+    }
+    ImGui.end();
+  }
+
+  /** Joint-value summary for idle detection. */
+  static boolean same(double[] a, double[] b) {
+    return Arrays.equals(a, b);
+  }
+}
