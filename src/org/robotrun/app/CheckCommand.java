@@ -37,7 +37,9 @@ import picocli.CommandLine.Spec;
       "CALL targets are checked against all the programs given (files and directories), so check a program together "
           + "with the programs it calls (a lone PICK3.LS reports its CALL BEEP as unknown).",
       "A file whose name (without .LS, any case) is not its /PROG name gets a warning: a controller loads a program "
-          + "by its /PROG name."
+          + "by its /PROG name.",
+      "--format json prints one JSON object instead: {\"diagnostics\":[{\"file\",\"line\",\"column\",\"severity\" "
+          + "(error|warning),\"kind\" (syntax|unsupported|reference|range|style),\"message\"}...],\"errors\":N,\"warnings\":N}."
     },
     exitCodeListHeading = "%nExit codes:%n",
     exitCodeList = {
@@ -58,6 +60,13 @@ public final class CheckCommand implements Callable<Integer> {
 
   @Option(names = {"-q", "--quiet"}, description = "Print errors only, not warnings.")
   boolean quiet;
+
+  /** Output formats. */
+  enum Format { text, json }
+
+  @Option(names = "--format", paramLabel = "text|json", defaultValue = "text",
+      description = "Output format: text (file:line: message, the default) or json (for tools and graders).")
+  Format format;
 
   @Override
   public Integer call() {
@@ -89,13 +98,19 @@ public final class CheckCommand implements Callable<Integer> {
     }
 
     boolean errors = false;
+    List<Diagnostic> shown = new ArrayList<>();
     for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known))) {
       for (Diagnostic d : r.diagnostics()) {
         errors |= d.isError();
         if (d.isError() || !quiet) {
-          out.println(d);
+          shown.add(d);
         }
       }
+    }
+    if (format == Format.json) {
+      out.println(DiagnosticsJson.write(shown));
+    } else {
+      shown.forEach(out::println);
     }
     out.flush();
     err.flush();

@@ -135,7 +135,7 @@ public final class PendantCommand implements Callable<Integer> {
       throw new UserError("--program: cannot read " + file + " (" + e.getMessage() + ")");
     }
     if (r.hasErrors() || r.program() == null) {
-      String first = r.diagnostics().stream().filter(Diagnostic::isError).findFirst().map(Diagnostic::toString)
+      String first = r.diagnostics().stream().filter(Diagnostic::blocksLoading).findFirst().map(Diagnostic::toString)
           .orElse(file + ": not a program");
       throw new UserError("--program: " + first);
     }

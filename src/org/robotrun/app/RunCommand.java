@@ -158,8 +158,10 @@ public final class RunCommand implements Callable<Integer> {
   }
 
   /**
-   * Reads every .LS file named or found in the named directories; any error is bad input, and so
-   * is a program name defined by two files (which one would run is not the user's choice).
+   * Reads every .LS file named or found in the named directories. A syntax error is bad input (a
+   * controller refuses such a file too), and so is a program name defined by two files (which
+   * one would run is not the user's choice). Other errors (a missing CALL target or label, an
+   * unsupported statement) load, as on the controller: the line alarms when it runs.
    */
   static List<Program> loadPrograms(List<Path> paths) throws IOException {
     List<Path> files = new ArrayList<>();
@@ -190,7 +192,7 @@ public final class RunCommand implements Callable<Integer> {
         continue;  // the same file named twice (a file and its directory, say)
       }
       LsReadResult r = LsReader.read(f);
-      r.diagnostics().stream().filter(Diagnostic::isError).map(Diagnostic::toString).forEach(errors::add);
+      r.diagnostics().stream().filter(Diagnostic::blocksLoading).map(Diagnostic::toString).forEach(errors::add);
       if (!r.hasErrors()) {
         Path first = definedIn.putIfAbsent(r.program().name(), f);
         if (first != null) {

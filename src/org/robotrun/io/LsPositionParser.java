@@ -5,7 +5,13 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import org.robotrun.io.LsToken.Kind;
+import org.robotrun.program.FanucFormat;
+import org.robotrun.program.TpLexer;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpToken;
+import org.robotrun.program.TpTokenCursor;
+import org.robotrun.program.TpToken.Kind;
 import org.robotrun.math.PoseLimits;
 import org.robotrun.program.Config;
 import org.robotrun.program.LocalPosition;
@@ -17,13 +23,23 @@ import org.robotrun.program.Position;
  * closing {@code };} so the following blocks are still read; a block that is never closed is
  * reported on its first line.
  */
-final class LsPositionParser extends LsTokenCursor {
+final class LsPositionParser extends TpTokenCursor {
 
   private static final String[] CARTESIAN = {"X", "Y", "Z", "W", "P", "R"};
   private static final String[] JOINT = {"J1", "J2", "J3", "J4", "J5", "J6"};
 
   private final String file;
   private final List<Diagnostic> diagnostics;
+
+  private final java.util.Set<String> warned = new java.util.HashSet<>();
+  private java.util.Set<Integer> otherGroupsOnly = new java.util.HashSet<>();
+
+  private void warnOnce(TpToken at, String message) {
+    if (warned.add(message)) {
+      diagnostics.add(Diagnostic.of(file, at.line(), at.column(), Diagnostic.Severity.WARNING,
+          Diagnostic.Kind.UNSUPPORTED, message));
+    }
+  }
 
   private LsPositionParser(String file, List<Diagnostic> diagnostics) {
     this.file = file;
@@ -39,13 +55,20 @@ final class LsPositionParser extends LsTokenCursor {
    * @return P[n] by number in file order; bad blocks are left out (and reported)
    */
   static Map<Integer, LocalPosition> parse(String file, List<String> lines, int firstLine, List<Diagnostic> diagnostics) {
+    return parse(file, lines, firstLine, diagnostics, new java.util.HashSet<>());
+  }
+
+  /** As {@link #parse(String, List, int, List)}; adds to {@code otherGroupsOnly} the P[n] that hold no group-1 data. */
+  static Map<Integer, LocalPosition> parse(String file, List<String> lines, int firstLine, List<Diagnostic> diagnostics,
+      java.util.Set<Integer> otherGroupsOnly) {
     LsPositionParser p = new LsPositionParser(file, diagnostics);
+    p.otherGroupsOnly = otherGroupsOnly;
     for (int i = 0; i < lines.size(); i++) {
-      List<LsToken> t = LsLexer.tokenize(lines.get(i), firstLine + i, 1, false);
+      List<TpToken> t = TpLexer.tokenize(lines.get(i), firstLine + i, 1, false);
       p.tokens.addAll(t.subList(0, t.size() - 1));
     }
     int endLine = firstLine + Math.max(0, lines.size() - 1);
-    p.tokens.add(new LsToken(Kind.EOL, "", endLine, 1));
+    p.tokens.add(new TpToken(Kind.EOL, "", endLine, 1));
     return p.blocks();
   }
 
@@ -53,9 +76,12 @@ final class LsPositionParser extends LsTokenCursor {
     Map<Integer, LocalPosition> out = new LinkedHashMap<>();
     Map<Integer, Integer> firstLineOf = new HashMap<>();
     while (!peek().is(Kind.EOL)) {
-      LsToken start = peek();
+      TpToken start = peek();
       try {
         LocalPosition lp = block();
+        if (lp == null) {
+          continue;
+        }
         Integer earlier = firstLineOf.putIfAbsent(lp.number(), start.line());
         if (earlier != null) {
           diagnostics.add(Diagnostic.error(file, start.line(),
@@ -63,7 +89,7 @@ final class LsPositionParser extends LsTokenCursor {
         } else {
           out.put(lp.number(), lp);
         }
-      } catch (LsSyntaxError e) {
+      } catch (TpSyntaxError e) {
         diagnostics.add(Diagnostic.error(file, e.line(), e.getMessage()));
         skipPastBlock(start);
       }
@@ -72,12 +98,12 @@ final class LsPositionParser extends LsTokenCursor {
   }
 
   /** After an error: skip to just after the next {@code };}, or to the next {@code P[} block start. */
-  private void skipPastBlock(LsToken start) {
+  private void skipPastBlock(TpToken start) {
     if (peek() == start && !peek().is(Kind.EOL)) {
       next();
     }
     while (!peek().is(Kind.EOL)) {
-      LsToken t = peek();
+      TpToken t = peek();
       if (t.is(Kind.RBRACE) && peek(1).is(Kind.SEMICOLON)) {
         next();
         next();
@@ -91,13 +117,13 @@ final class LsPositionParser extends LsTokenCursor {
   }
 
   private LocalPosition block() {
-    LsToken start = peek();
+    TpToken start = peek();
     if (!start.isWord("P") || !peek(1).is(Kind.LBRACKET)) {
       throw error(start, "expected a position block 'P[n:\"comment\"]{', found " + start.describe());
     }
     next();
     next();
-    LsToken num = expect(Kind.NUMBER, "the position number in P[n]");
+    TpToken num = expect(Kind.NUMBER, "the position number in P[n]");
     int number = parseInt(num);
     if (number < 1) {
       throw error(num, "P[" + number + "]: position numbers start at 1");
@@ -119,7 +145,7 @@ final class LsPositionParser extends LsTokenCursor {
     Config config = null;
     boolean sawGroup = false;
     while (true) {
-      LsToken t = peek();
+      TpToken t = peek();
       if (t.is(Kind.EOL)) {
         throw error(start, where + " is not closed: expected '};' before the end of the /POS section");
       }
@@ -143,7 +169,13 @@ final class LsPositionParser extends LsTokenCursor {
       if (key.startsWith("GP")) {
         expect(Kind.COLON, "':' after " + t.text());
         if (!key.equals("GP1")) {
-          throw error(t, "not supported: motion group " + key + " in " + where + " (RobotRun moves one group, GP1)");
+          // Another motion group (a positioner, a second arm): kept in the file, not moved.
+          warnOnce(t, "not supported: motion group " + key + " (RobotRun moves group 1; the others are kept, not moved)");
+          while (!peek().is(Kind.EOL) && !peek().is(Kind.RBRACE)
+              && !(peek().is(Kind.WORD) && peek().text().toUpperCase(Locale.ROOT).startsWith("GP") && peek(1).is(Kind.COLON))) {
+            next();
+          }
+          continue;
         }
         if (sawGroup) {
           throw error(t, where + ": GP1 appears twice");
@@ -166,17 +198,27 @@ final class LsPositionParser extends LsTokenCursor {
         }
         case "CONFIG" -> {
           expect(Kind.COLON, "':' after CONFIG");
-          LsToken s = expect(Kind.STRING, "a quoted configuration like 'N U T, 0, 0, 0' after CONFIG :");
+          TpToken s = expect(Kind.STRING, "a quoted configuration like 'N U T, 0, 0, 0' after CONFIG :");
           config = config(s, where);
         }
         default -> {
           if (key.matches("E\\d+")) {
-            throw error(t, "not supported: extended axis " + key + " in " + where);
+            // An extended axis (a rail, a turntable): read and kept in the file, not moved.
+            warnOnce(t, "not supported: extended axes (E1...) (kept, not moved)");
+            expect(Kind.EQ, "'=' after " + key);
+            if (peek().is(Kind.MINUS)) {
+              next();
+            }
+            expect(Kind.NUMBER, "a number after " + key + " =");
+            if (peek().isWord("mm") || peek().isWord("deg")) {
+              next();
+            }
+            continue;
           }
           boolean cart = indexOf(CARTESIAN, key) >= 0;
           boolean joint = indexOf(JOINT, key) >= 0;
           if (!cart && !joint) {
-            throw error(t, where + ": unknown field '" + LsToken.clip(t.text())
+            throw error(t, where + ": unknown field '" + TpToken.clip(t.text())
                 + "': expected UF, UT, CONFIG, X, Y, Z, W, P, R or J1..J6");
           }
           expect(Kind.EQ, "'=' after " + key);
@@ -184,10 +226,11 @@ final class LsPositionParser extends LsTokenCursor {
           if (negative) {
             next();
           }
-          LsToken n = expect(Kind.NUMBER, "a number after " + key + " =");
-          double v = Double.parseDouble(n.text());
+          TpToken n = expect(Kind.NUMBER, "a number after " + key + " =");
+          // Held to 0.001 as a controller holds and prints it, so the model writes back as read.
+          double v = Double.parseDouble(FanucFormat.positionValue(Double.parseDouble(n.text())).strip());
           String unit = (key.equals("X") || key.equals("Y") || key.equals("Z")) ? "mm" : "deg";
-          LsToken u = peek();
+          TpToken u = peek();
           if (!u.isWord(unit)) {
             throw error(u, where + ": expected '" + unit + "' after the value of " + key + ", found " + u.describe());
           }
@@ -195,7 +238,7 @@ final class LsPositionParser extends LsTokenCursor {
           boolean inRange = unit.equals("mm") ? PoseLimits.coordinateOk(v) : PoseLimits.angleOk(v);
           if (!inRange) {
             long max = (long) (unit.equals("mm") ? PoseLimits.MAX_COORDINATE_MM : PoseLimits.MAX_ANGLE_DEG);
-            throw error(n, where + ": " + key + " = " + (negative ? "-" : "") + LsToken.clip(n.text()) + " " + unit
+            throw error(n, where + ": " + key + " = " + (negative ? "-" : "") + TpToken.clip(n.text()) + " " + unit
                 + " is out of range: expected -" + max + ".." + max + " " + unit);
           }
           // -0.000 is read as 0 (the writer prints zero unsigned), so a round trip keeps the model.
@@ -205,13 +248,17 @@ final class LsPositionParser extends LsTokenCursor {
         }
       }
     }
+    if (!sawGroup && uf == null && ut == null && values.isEmpty()) {
+      otherGroupsOnly.add(number);
+      return null; // only other groups' data: kept in the file, nothing for group 1
+    }
     if (uf == null || ut == null) {
       throw error(start, where + ": expected 'UF : n, UT : n' (the frames the position was taught in)");
     }
     return new LocalPosition(number, comment, uf, ut, position(values, config, where, start));
   }
 
-  private Position position(Map<String, Double> v, Config config, String where, LsToken start) {
+  private Position position(Map<String, Double> v, Config config, String where, TpToken start) {
     boolean anyCart = false;
     boolean anyJoint = false;
     for (String k : v.keySet()) {
@@ -247,10 +294,10 @@ final class LsPositionParser extends LsTokenCursor {
   }
 
   /** {@code 'N U T, 0, 0, 0'}: flip F|N, elbow U|D, arm T|B, then up to three turn numbers. */
-  private Config config(LsToken s, String where) {
+  private Config config(TpToken s, String where) {
     String[] parts = s.text().split(",", -1);
     String[] letters = parts[0].trim().toUpperCase(Locale.ROOT).split("\\s+");
-    String expected = where + ": CONFIG '" + LsToken.clip(s.text())
+    String expected = where + ": CONFIG '" + TpToken.clip(s.text())
         + "': expected 'F|N U|D T|B, t1, t2, t3' like 'N U T, 0, 0, 0'";
     if (letters.length != 3 || parts.length > 4) {
       throw error(s, expected);
@@ -297,14 +344,14 @@ final class LsPositionParser extends LsTokenCursor {
     return -1;
   }
 
-  private int parseInt(LsToken t) {
+  private int parseInt(TpToken t) {
     if (t.text().indexOf('.') >= 0) {
       throw error(t, "expected an integer, found " + t.describe());
     }
     try {
       return Integer.parseInt(t.text());
     } catch (NumberFormatException e) {
-      throw error(t, "number " + LsToken.clip(t.text()) + " is too large");
+      throw error(t, "number " + TpToken.clip(t.text()) + " is too large");
     }
   }
 }

@@ -32,8 +32,18 @@ public record LsReadResult(String file, Program program, List<Diagnostic> diagno
     sourceLines = List.copyOf(sourceLines);
   }
 
-  /** True when at least one diagnostic is an error (not just a warning). */
+  /**
+   * True when the program cannot load: at least one syntax error (a controller refuses such a
+   * file too). A missing CALL target or label, an index out of range or an unsupported
+   * statement is an error {@code check} reports, but the program loads and that line alarms
+   * when it runs, as on the controller.
+   */
   public boolean hasErrors() {
+    return diagnostics.stream().anyMatch(Diagnostic::blocksLoading);
+  }
+
+  /** True when at least one diagnostic is an error of any kind (what {@code check} fails on). */
+  public boolean hasAnyError() {
     return diagnostics.stream().anyMatch(Diagnostic::isError);
   }
 

@@ -13,9 +13,15 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Set;
+import org.robotrun.program.TpLexer;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpToken;
+import org.robotrun.program.TpTokenCursor;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Program;
+import org.robotrun.program.ProgramSource;
 
 /**
  * Reads FANUC ASCII {@code .LS} programs (TP-LANGUAGE.md): {@code /PROG}, {@code /ATTR},
@@ -79,15 +85,17 @@ public final class LsReader {
     return 0;
   }
 
-  private static LsReadResult read(String name, byte[] bytes) {
+  /** Reads a file's bytes (already loaded) as {@link #read(Path)} does; {@code name} names it in messages. */
+  public static LsReadResult read(String name, byte[] bytes) {
     int badLine = firstNonUtf8Line(bytes);
-    LsReadResult r = parse(name, decode(bytes));
+    java.nio.charset.Charset cs = badLine == 0 ? StandardCharsets.UTF_8 : StandardCharsets.ISO_8859_1;
+    LsReadResult r = new Parse(name, decode(bytes), bytes, cs).run();
     if (badLine == 0) {
       return r;
     }
     List<Diagnostic> all = new ArrayList<>(r.diagnostics());
     all.add(Diagnostic.warning(name, badLine,
-        "not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly"));
+        "not UTF-8: read as Latin-1 (ISO-8859-1), as controllers write it; written back in Latin-1"));
     return new LsReadResult(r.file(), r.program(), all, r.sourceLines());
   }
 
@@ -98,7 +106,7 @@ public final class LsReader {
 
   /** Parses text; CALL targets are not checked. */
   public static LsReadResult parse(String fileName, String text) {
-    return new Parse(fileName, text).run();
+    return new Parse(fileName, text, text.getBytes(StandardCharsets.UTF_8), StandardCharsets.UTF_8).run();
   }
 
   /** Parses text and checks CALL targets against {@code knownPrograms}. */
@@ -165,10 +173,22 @@ public final class LsReader {
     private int lineCountLine;
     private final List<Instruction> instructions = new ArrayList<>();
     private final List<Integer> sourceLines = new ArrayList<>();
+    private final Map<String, int[]> unsupportedSeen = new java.util.HashMap<>();
+    private final Set<Integer> otherGroupsOnly = new java.util.HashSet<>();
     private Map<Integer, LocalPosition> positions = Map.of();
 
-    Parse(String file, String text) {
+    private final String text;
+    private final byte[] bytes;
+    private final java.nio.charset.Charset charset;
+    private final List<Integer> statementStart = new ArrayList<>();
+    private final List<String> sectionOrder = new ArrayList<>();
+    private final Map<String, Integer> sectionIndex = new java.util.HashMap<>();
+
+    Parse(String file, String text, byte[] bytes, java.nio.charset.Charset charset) {
       this.file = file;
+      this.text = text;
+      this.bytes = bytes;
+      this.charset = charset;
       // Some Windows editors put a UTF-8 byte-order mark before '/PROG'; it is not text.
       this.lines = splitLines(text.startsWith("\uFEFF") ? text.substring(1) : text);
       this.name = defaultName(file);
@@ -208,6 +228,8 @@ public final class LsReader {
           end++;
         }
         int headerLine = i + 1;
+        sectionOrder.add(header);
+        sectionIndex.putIfAbsent(header, i);
         switch (header) {
           case "/PROG" -> {
             if (sawProg) {
@@ -245,7 +267,7 @@ public final class LsReader {
             for (int k = start; k < end; k++) {
               body.add(lines[k]);
             }
-            positions = LsPositionParser.parse(file, body, start + 1, diags);
+            positions = LsPositionParser.parse(file, body, start + 1, diags, otherGroupsOnly);
           }
           case "/END" -> {
             sawEnd = true;
@@ -264,7 +286,7 @@ public final class LsReader {
             }
             if (content > 0) {
               diags.add(Diagnostic.warning(file, headerLine,
-                  "not supported: section " + header + " (its " + content + " lines are ignored)"));
+                  "not supported: section " + header + " (its " + content + " lines are kept, not used)"));
             }
           }
         }
@@ -298,8 +320,77 @@ public final class LsReader {
       }
       attrs.put(LsAttributes.LINE_COUNT, Integer.toString(instructions.size()));
       Program program = new Program(name, attrs, comment, instructions, positions);
-      diags.addAll(LsProgramChecks.check(file, program, sourceLines));
-      return new LsReadResult(file, program, diags, sourceLines);
+      for (Diagnostic d : LsProgramChecks.check(file, program, sourceLines)) {
+        // A point of another motion group only (GP2 and no GP1) is there; it was reported once.
+        boolean otherGroup = otherGroupsOnly.stream().anyMatch(n -> d.message().startsWith("P[" + n + "] is used but /POS has no"));
+        if (!otherGroup) {
+          diags.add(d);
+        }
+      }
+      return new LsReadResult(file, withSource(program), diags, sourceLines);
+    }
+
+    /**
+     * The program with the text it was read from, when the file has the usual shape (/PROG,
+     * /ATTR, optionally /APPL, /MN, /POS, /END in that order, each once); else the program alone,
+     * and the writer lays the whole file out afresh.
+     */
+    private Program withSource(Program program) {
+      List<String> order = sectionOrder;
+      List<String> usual = new ArrayList<>(List.of("/PROG"));
+      if (order.contains("/ATTR")) {
+        usual.add("/ATTR");
+      }
+      if (order.contains("/APPL")) {
+        usual.add("/APPL");
+      }
+      usual.add("/MN");
+      if (order.contains("/POS")) {
+        usual.add("/POS");
+      }
+      usual.add("/END");
+      if (!order.equals(usual) || bytes == null) {
+        return program;
+      }
+      List<String> raw = rawLines(text);
+      if (raw.size() != lines.length) {
+        return program;
+      }
+      int mn = sectionIndex.get("/MN");
+      int tailStart = sectionIndex.getOrDefault("/POS", sectionIndex.get("/END"));
+      int firstStatement = statementStart.isEmpty() ? tailStart : statementStart.get(0);
+      List<String> header = raw.subList(0, firstStatement);
+      List<String> appl = order.contains("/APPL") ? raw.subList(sectionIndex.get("/APPL"), mn) : List.of();
+      List<List<String>> statements = new ArrayList<>();
+      for (int j = 0; j < statementStart.size(); j++) {
+        int from = statementStart.get(j);
+        int to = j + 1 < statementStart.size() ? statementStart.get(j + 1) : tailStart;
+        if (to < from) {
+          return program;
+        }
+        statements.add(raw.subList(from, to));
+      }
+      String lineEnd = text.contains("\r\n") ? "\r\n" : "\n";
+      ProgramSource src = new ProgramSource(bytes, charset, lineEnd, program, header, appl, statements,
+          raw.subList(tailStart, raw.size()));
+      return new Program(program.name(), program.attributes(), program.comment(), program.lines(),
+          program.positions(), java.util.Optional.of(src));
+    }
+
+    /** The text's lines split as {@link #splitLines} splits them, each keeping its line end. */
+    private static List<String> rawLines(String text) {
+      List<String> out = new ArrayList<>();
+      int s = 0;
+      for (int i = 0; i < text.length(); i++) {
+        if (text.charAt(i) == '\n') {
+          out.add(text.substring(s, i + 1));
+          s = i + 1;
+        }
+      }
+      if (s < text.length()) {
+        out.add(text.substring(s));
+      }
+      return out;
     }
 
     // ---- /PROG --------------------------------------------------------------------------
@@ -312,14 +403,21 @@ public final class LsReader {
       }
       if (!Program.isValidName(words[0])) {
         diags.add(Diagnostic.error(file, line, "'" + clip(words[0])
-            + "' is not a program name: expected letters, digits and '_', starting with a letter, at most "
+            + "' is not a program name: expected letters, digits and '_', not starting with a digit, at most "
             + Program.MAX_NAME_LENGTH + " characters"));
       } else {
         name = words[0].toUpperCase(Locale.ROOT);
       }
       if (words.length > 1) {
-        diags.add(Diagnostic.warning(file, line,
-            "not supported: program sub-type '" + clip(words[1]) + "' (read as a normal program)"));
+        String sub = words[1];
+        attributes.put(Program.SUBTYPE_KEY, sub);
+        if (sub.equalsIgnoreCase("Cond")) {
+          diags.add(Diagnostic.warning(file, line,
+              "not supported: condition program (Cond sub-type, for MONITOR/WHEN): it is kept but not monitored"));
+        } else if (!sub.equalsIgnoreCase("Macro") && !sub.equalsIgnoreCase("Job") && !sub.equalsIgnoreCase("Process")) {
+          diags.add(Diagnostic.warning(file, line,
+              "not supported: program sub-type '" + clip(sub) + "' (read as a normal program)"));
+        }
       }
     }
 
@@ -468,41 +566,64 @@ public final class LsReader {
               "line number " + clip(text.substring(digitsStart, p)) + " out of order: expected " + expected));
         }
         Body body = body(text, p + 1, line);
-        List<LsToken> tokens = body.tokens;
+        List<TpToken> tokens = body.tokens;
         boolean terminated = body.terminated;
-        if (!terminated && k < end && isContinuation(lines[k])) {
-          // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement.
+        StringBuilder raw = new StringBuilder(body.text);
+        int firstLine = k - 1;
+        while (!terminated && k < end && isContinuation(lines[k])) {
+          // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement;
+          // other statements a controller lists over several lines continue the same way.
           String cont = lines[k];
           int colon = cont.indexOf(':');
           Body second = body(cont, colon + 1, k + 1);
           k++;
-          List<LsToken> joined = new ArrayList<>(tokens.subList(0, tokens.size() - 1));
+          List<TpToken> joined = new ArrayList<>(tokens.subList(0, tokens.size() - 1));
           joined.addAll(second.tokens);
           tokens = joined;
           terminated = second.terminated;
+          raw.append('\n').append(cont, 0, cont.length() - (second.terminated ? cont.length() - cont.lastIndexOf(';') : 0));
         }
         Instruction in;
+        final int lineBase = firstLine;
         try {
-          LsStatementParser.Parsed parsed = LsStatementParser.parse(tokens);
+          TpStatementParser.Parsed parsed = TpStatementParser.parse(tokens,
+              l -> l - 1 >= lineBase && l - 1 < lines.length ? lines[l - 1] : null);
           in = parsed.instruction();
           for (String w : parsed.warnings()) {
             diags.add(Diagnostic.warning(file, line, w));
           }
+          if (in instanceof Instruction.Move m) {
+            for (var o : m.options()) {
+              if (o instanceof org.robotrun.program.Motion.RawOption r) {
+                notSupported(line, 1, r.what(), true, " (the motion runs without it)");
+              }
+            }
+          }
           if (!terminated) {
             diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
           }
-        } catch (LsSyntaxError e) {
-          diags.add(Diagnostic.error(file, e.line(), e.getMessage()));
-          // Keep the numbering of the following lines: the bad line stays as commented-out text.
-          String raw = text.substring(p + 1).strip();
-          in = new Instruction.CommentedOut(raw.endsWith(";") ? raw.substring(0, raw.length() - 1).stripTrailing() : raw);
+        } catch (TpSyntaxError e) {
+          String rawText = stripSemicolon(raw.toString().strip());
+          if (e.unsupported().isPresent()) {
+            String what = e.unsupported().get();
+            in = new Instruction.Unsupported(rawText, what, e.runnable());
+            notSupported(e.line(), e.column(), what, e.runnable(),
+                e.runnable() ? " (the line is skipped when it runs)" : " (the line alarms when it runs)");
+          } else {
+            diags.add(Diagnostic.of(file, e.line(), e.column(), Diagnostic.Severity.ERROR, Diagnostic.Kind.SYNTAX,
+                e.getMessage()));
+            // Keep the numbering of the following lines: the bad line stays as commented-out text.
+            String one = rawText.replace('\n', ' ');
+            in = new Instruction.CommentedOut(one.startsWith("//") ? one.substring(2).stripTrailing() : one);
+          }
         }
         instructions.add(in);
         sourceLines.add(line);
+        statementStart.add(line - 1);
       }
     }
 
-    private record Body(List<LsToken> tokens, boolean terminated) {}
+    private record Body(List<TpToken> tokens, boolean terminated, String text) {}
 
     /** Tokens of a statement starting at {@code from}, without its final {@code ;}. */
     private static Body body(String text, int from, int line) {
@@ -514,8 +635,30 @@ public final class LsReader {
       if (terminated) {
         endIdx--;
       }
-      return new Body(LsLexer.tokenize(text.substring(from, endIdx), line, from + 1, true), terminated);
+      String body = text.substring(from, endIdx);
+      return new Body(TpLexer.tokenize(body, line, from + 1, true), terminated, body);
     }
+
+    private static String stripSemicolon(String s) {
+      return s.endsWith(";") ? s.substring(0, s.length() - 1).stripTrailing() : s;
+    }
+
+    /** Reports a kind RobotRun does not run once per file: the first line, and how many lines have it. */
+    private void notSupported(int line, int column, String what, boolean runnable, String effect) {
+      int[] seen = unsupportedSeen.get(what);
+      String base = "not supported: " + what + effect;
+      if (seen == null) {
+        unsupportedSeen.put(what, new int[] {diags.size(), 0});
+        diags.add(Diagnostic.of(file, line, column,
+            runnable ? Diagnostic.Severity.WARNING : Diagnostic.Severity.ERROR, Diagnostic.Kind.UNSUPPORTED, base));
+      } else {
+        seen[1]++;
+        Diagnostic d = diags.get(seen[0]);
+        diags.set(seen[0], Diagnostic.of(d.file(), d.line(), d.column(), d.severity(), d.kind(),
+            base + " (and " + seen[1] + " more line" + (seen[1] == 1 ? ")" : "s)")));
+      }
+    }
+
 
     private static boolean isContinuation(String text) {
       int p = skipSpaces(text, 0);

@@ -6,6 +6,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.robotrun.program.FanucFormat;
+import org.robotrun.program.TpLexer;
+import org.robotrun.program.TpLimits;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpToken;
+import org.robotrun.program.TpTokenCursor;
 import org.robotrun.program.Config;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
@@ -16,6 +23,7 @@ import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
+import org.robotrun.program.ProgramSource;
 
 /**
  * Writes a program as a FANUC ASCII {@code .LS} file a controller accepts: the five sections,
@@ -30,10 +38,125 @@ import org.robotrun.program.Program;
 public final class LsWriter {
   private LsWriter() {}
 
-  /** The file text (LF line ends). */
+  /**
+   * The file's bytes. A program read from a file and not edited since is written back byte for
+   * byte; an edited one keeps the text of every part it did not change (lines, /ATTR, /APPL,
+   * /POS, line ends, encoding), and new or changed parts are laid out as a controller writes them.
+   */
+  public static byte[] bytes(Program program) {
+    if (program.source().isEmpty()) {
+      return write(program).getBytes(StandardCharsets.UTF_8);
+    }
+    ProgramSource src = program.source().get();
+    if (program.equals(src.asRead())) {
+      return src.bytes();
+    }
+    return keepingSource(program, src).getBytes(src.charset());
+  }
+
+  /** The text of an edited program read from a file: untouched parts as read. */
+  private static String keepingSource(Program program, ProgramSource src) {
+    Program was = src.asRead();
+    String eol = src.lineEnd();
+    StringBuilder sb = new StringBuilder(src.bytes().length + 256);
+    boolean sameHead = program.name().equals(was.name()) && program.comment().equals(was.comment())
+        && withoutLineCount(program.attributes()).equals(withoutLineCount(was.attributes()));
+    if (sameHead) {
+      for (String h : src.header()) {
+        sb.append(lineCountFixed(h, program.lineCount()));
+      }
+    } else {
+      StringBuilder head = new StringBuilder();
+      head.append("/PROG  ").append(program.name());
+      String sub = program.attributes().get(Program.SUBTYPE_KEY);
+      if (sub != null) {
+        head.append('\t').append(sub);
+      }
+      head.append('\n');
+      attributes(program, head);
+      sb.append(head.toString().replace("\n", eol));
+      src.appl().forEach(sb::append);
+      sb.append("/MN").append(eol);
+    }
+    // Unchanged statements keep their text; identical statements are matched in order.
+    Map<Instruction, java.util.ArrayDeque<List<String>>> pool = new java.util.HashMap<>();
+    for (int i = 0; i < was.lineCount(); i++) {
+      pool.computeIfAbsent(was.line(i + 1), k -> new java.util.ArrayDeque<>()).add(src.statements().get(i));
+    }
+    List<Instruction> lines = program.lines();
+    for (int i = 0; i < lines.size(); i++) {
+      java.util.ArrayDeque<List<String>> q = pool.get(lines.get(i));
+      List<String> raw = q == null ? null : q.poll();
+      if (raw == null || raw.isEmpty()) {
+        StringBuilder one = new StringBuilder();
+        line(i + 1, lines.get(i), one);
+        sb.append(one.toString().replace("\n", eol));
+      } else {
+        sb.append(renumbered(raw.get(0), i + 1));
+        for (int k = 1; k < raw.size(); k++) {
+          sb.append(raw.get(k));
+        }
+      }
+    }
+    if (program.positions().equals(was.positions())) {
+      src.tail().forEach(sb::append);
+    } else {
+      StringBuilder pos = new StringBuilder("/POS\n");
+      for (LocalPosition p : program.positions().values()) {
+        position(p, pos);
+      }
+      pos.append("/END\n");
+      sb.append(pos.toString().replace("\n", eol));
+    }
+    return sb.toString();
+  }
+
+  private static Map<String, String> withoutLineCount(Map<String, String> attrs) {
+    Map<String, String> m = new java.util.LinkedHashMap<>(attrs);
+    m.remove(LsAttributes.LINE_COUNT);
+    return m;
+  }
+
+  /** A /ATTR LINE_COUNT line with the real count; any other line as it is. */
+  private static String lineCountFixed(String line, int count) {
+    String t = line.stripLeading();
+    if (!t.regionMatches(true, 0, LsAttributes.LINE_COUNT, 0, LsAttributes.LINE_COUNT.length())) {
+      return line;
+    }
+    int eq = line.indexOf('=');
+    int semi = line.indexOf(';', eq + 1);
+    if (eq < 0 || semi < 0) {
+      return line;
+    }
+    int v = eq + 1;
+    while (v < semi && line.charAt(v) == ' ') {
+      v++;
+    }
+    return line.substring(0, v) + count + line.substring(semi);
+  }
+
+  /** A statement's first line with line number {@code n} in the controller's {@code "%4d:"} form. */
+  private static String renumbered(String first, int n) {
+    int colon = first.indexOf(':');
+    if (colon < 0) {
+      return first;
+    }
+    String digits = first.substring(0, colon).strip();
+    if (digits.equals(Integer.toString(n))) {
+      return first;
+    }
+    return String.format(java.util.Locale.ROOT, "%4d", n) + first.substring(colon);
+  }
+
+  /** The file text of a program laid out afresh (LF line ends), as a controller writes a new program. */
   public static String write(Program program) {
     StringBuilder sb = new StringBuilder(64 + program.lineCount() * 40);
-    sb.append("/PROG  ").append(program.name()).append('\n');
+    sb.append("/PROG  ").append(program.name());
+    String sub = program.attributes().get(Program.SUBTYPE_KEY);
+    if (sub != null) {
+      sb.append('\t').append(sub);
+    }
+    sb.append('\n');
     attributes(program, sb);
     sb.append("/MN\n");
     List<Instruction> lines = program.lines();
@@ -50,7 +173,7 @@ public final class LsWriter {
 
   /** Writes the file through {@link AtomicFiles}, so a crash never leaves half a program. */
   public static void write(Program program, Path file) throws IOException {
-    AtomicFiles.write(file, write(program).getBytes(StandardCharsets.UTF_8));
+    AtomicFiles.write(file, bytes(program));
   }
 
   // ---- /ATTR --------------------------------------------------------------------------------
@@ -69,7 +192,8 @@ public final class LsWriter {
       }
     }
     for (Map.Entry<String, String> e : attrs.entrySet()) {
-      if (!LsAttributes.DEFAULTS.containsKey(e.getKey()) && !e.getKey().equals(LsAttributes.COMMENT)) {
+      if (!LsAttributes.DEFAULTS.containsKey(e.getKey()) && !e.getKey().equals(LsAttributes.COMMENT)
+          && !e.getKey().equals(Program.SUBTYPE_KEY)) {
         attribute(e.getKey(), e.getValue(), sb);
       }
     }
@@ -129,7 +253,7 @@ public final class LsWriter {
       case Motion.SpeedConst c -> sb.append(FanucFormat.plain(c.value()));
       case Motion.SpeedRegister r -> item("R", r.register(), sb);
     }
-    sb.append(LsStatementParser.unitText(m.speed().unit())).append(' ');
+    sb.append(TpStatementParser.unitText(m.speed().unit())).append(' ');
     switch (m.termination()) {
       case Motion.Fine f -> sb.append("FINE");
       case Motion.Cnt c -> sb.append("CNT").append(c.value());
@@ -157,6 +281,7 @@ public final class LsWriter {
         }
         case Motion.Wjnt x -> sb.append("Wjnt");
         case Motion.Inc x -> sb.append("INC");
+        case Motion.RawOption x -> sb.append(x.text());
       }
     }
     sb.append("    ;\n");
@@ -325,6 +450,7 @@ public final class LsWriter {
       case Instruction.Blank b -> {
         // nothing: "   5:   ;"
       }
+      case Instruction.Unsupported u -> sb.append(u.text());
     }
   }
 
@@ -370,7 +496,22 @@ public final class LsWriter {
     };
   }
 
+  /**
+   * Writes an expression. The reader and the pendant refuse nesting beyond {@link
+   * TpLimits#MAX_NESTING}; a model built otherwise is refused here with a message rather than
+   * overflowing the stack.
+   *
+   * @throws IllegalArgumentException when {@code e} is nested deeper than the limit
+   */
   static void expr(Expr e, StringBuilder sb) {
+    if (TpLimits.nesting(e, TpLimits.MAX_NESTING) > TpLimits.MAX_NESTING) {
+      throw new IllegalArgumentException("expression nested deeper than " + TpLimits.MAX_NESTING
+          + " levels of parentheses and signs: a controller would not read it");
+    }
+    exprUnchecked(e, sb);
+  }
+
+  private static void exprUnchecked(Expr e, StringBuilder sb) {
     switch (e) {
       case Expr.IntConst c -> sb.append(c.value());
       case Expr.RealConst c -> sb.append(FanucFormat.real(c.value()));
@@ -406,7 +547,7 @@ public final class LsWriter {
       }
       case Expr.Group g -> {
         sb.append('(');
-        expr(g.inner(), sb);
+        exprUnchecked(g.inner(), sb);
         sb.append(')');
       }
     }
@@ -415,10 +556,10 @@ public final class LsWriter {
   private static void operand(Expr e, boolean parenthesise, StringBuilder sb) {
     if (parenthesise) {
       sb.append('(');
-      expr(e, sb);
+      exprUnchecked(e, sb);
       sb.append(')');
     } else {
-      expr(e, sb);
+      exprUnchecked(e, sb);
     }
   }
 

@@ -111,6 +111,12 @@ public final class ExprText {
     Parser p = new Parser(text);
     Expr e = p.expr(1);
     p.expectEnd();
+    // The controller's entry rules (program.EntryRules): refused here as the pendant does.
+    java.util.Optional<String> refused = org.robotrun.program.EntryRules.refusal(e);
+    if (refused.isPresent()) {
+      String r = refused.get();
+      throw new BadText(Character.toUpperCase(r.charAt(0)) + r.substring(1));
+    }
     return e;
   }
 
@@ -164,6 +170,22 @@ public final class ExprText {
   private static final class Parser {
     private final String s;
     private int pos;
+    // The same limits as the .LS reader and writer (program.TpLimits): what is typed here reads back.
+    private int nesting;
+    private int operators;
+
+    private void deeper() throws BadText {
+      if (++nesting > org.robotrun.program.TpLimits.MAX_NESTING) {
+        throw new BadText("Expression nested too deeply: at most " + org.robotrun.program.TpLimits.MAX_NESTING
+            + " levels of parentheses and signs");
+      }
+    }
+
+    private void countOperator() throws BadText {
+      if (++operators > org.robotrun.program.TpLimits.MAX_OPERATORS) {
+        throw new BadText("Expression too long: at most " + org.robotrun.program.TpLimits.MAX_OPERATORS + " operators");
+      }
+    }
 
     Parser(String s) {
       this.s = Objects.requireNonNull(s, "s");
@@ -233,6 +255,7 @@ public final class ExprText {
           return left;
         }
         pos += op.symbol().length();
+        countOperator();
         Expr right = expr(op.precedence() + 1);
         left = new Expr.Binary(op, left, right);
       }
@@ -266,10 +289,18 @@ public final class ExprText {
             default -> new Expr.Unary(Expr.UnaryOp.MINUS, n);
           };
         }
-        return new Expr.Unary(Expr.UnaryOp.MINUS, unary());
+        countOperator();
+        deeper();
+        Expr operand = unary();
+        nesting--;
+        return new Expr.Unary(Expr.UnaryOp.MINUS, operand);
       }
       if (accept("!")) {
-        return new Expr.Unary(Expr.UnaryOp.NOT, unary());
+        countOperator();
+        deeper();
+        Expr operand = unary();
+        nesting--;
+        return new Expr.Unary(Expr.UnaryOp.NOT, operand);
       }
       return primary();
     }
@@ -282,8 +313,10 @@ public final class ExprText {
       char c = s.charAt(pos);
       if (c == '(') {
         pos++;
+        deeper();
         Expr inner = expr(1);
         expect(")");
+        nesting--;
         return new Expr.Group(inner);
       }
       if (c == '\'') {

@@ -573,6 +573,11 @@ public final class Pendant {
       message = dup.get();
       return false;
     }
+    Optional<String> refused = lineParser.refusal(before.get(), after);
+    if (refused.isPresent()) {
+      message = refused.get();
+      return false;
+    }
     Deque<Program> stack = undo.computeIfAbsent(name, n -> new ArrayDeque<>());
     stack.push(before.get());
     while (stack.size() > UNDO_DEPTH) {

@@ -85,7 +85,7 @@ final class PositionScreen implements Screen {
         p.editProgram(l.program(), pr -> {
           Map<Integer, LocalPosition> m = new LinkedHashMap<>(pr.positions());
           m.put(l.number(), new LocalPosition(l.number(), comment, uf[0], uf[1], pos));
-          return new Program(pr.name(), pr.attributes(), pr.comment(), pr.lines(), m);
+          return pr.withBody(pr.lines(), m);
         });
       }
       case Target.Register r -> {

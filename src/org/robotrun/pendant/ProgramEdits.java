@@ -36,7 +36,7 @@ final class ProgramEdits {
   record Replaced(Program program, int replaced, int refused) {}
 
   static Program with(Program prog, List<Instruction> lines, Map<Integer, LocalPosition> positions) {
-    return new Program(prog.name(), prog.attributes(), prog.comment(), lines, positions);
+    return prog.withBody(lines, positions);
   }
 
   static Program replaceLine(Program prog, int n, Instruction in) {

@@ -216,6 +216,8 @@ public final class TpLine {
         }
       }
       case Instruction.Blank b -> { }
+      // Kept as written; the pendant shows it and can delete or comment it out, not edit it.
+      case Instruction.Unsupported u -> f.add(Field.fixed(u.text()));
     }
     return f;
   }
@@ -276,6 +278,7 @@ public final class TpLine {
       case Motion.Offset x -> null;
       case Motion.Wjnt x -> null;
       case Motion.Inc x -> null;
+      case Motion.RawOption x -> null;
     };
     String initial = switch (o) {
       case Motion.OffsetPr p -> ExprText.index(p.register().index());
@@ -285,6 +288,7 @@ public final class TpLine {
       case Motion.Offset x -> "";
       case Motion.Wjnt x -> "";
       case Motion.Inc x -> "";
+      case Motion.RawOption x -> "";
     };
     return new Field(text, Field.Edit.both(List.of("(remove option)"), k -> withoutOption(m, at), initial, entry));
   }
@@ -299,6 +303,7 @@ public final class TpLine {
       case Motion.Skip s -> "Skip," + ExprText.label(s.label());
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";
+      case Motion.RawOption x -> x.text();
     };
   }
 

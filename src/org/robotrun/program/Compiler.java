@@ -106,6 +106,7 @@ final class Compiler {
       case Instruction.WaitCondition w -> "WAIT";
       case Instruction.SetIo s -> "I/O output";
       case Instruction.Pulse p -> "PULSE";
+      case Instruction.Unsupported u -> u.what();
       case Instruction.UserAlarm u -> "UALM";
     };
   }
@@ -146,6 +147,9 @@ final class Compiler {
       case Instruction.Message msg -> new Ops.MessageOp(msg.text());
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
+      // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
+      case Instruction.Unsupported u -> u.runnable() ? new Ops.Nop()
+          : new Ops.Fail(AlarmKind.STRUCTURE, "not supported in RobotRun: " + u.what());
     };
   }
 

@@ -336,4 +336,22 @@ public sealed interface Instruction {
 
   /** A blank line. */
   record Blank() implements Instruction {}
+
+  /**
+   * A statement the controller has and RobotRun does not run yet ({@code SKIP CONDITION},
+   * {@code RUN}, {@code VISION RUN_FIND}, {@code COL DETECT ON} ...): kept as written so it is
+   * written back unchanged, and reported once per kind as {@code not supported: what}.
+   *
+   * @param text the statement as written, without line number and closing {@code ;}
+   * @param what the kind, as the message names it ({@code "SKIP CONDITION"})
+   * @param runnable true when the program can still run without it (the line is skipped and
+   *     {@code check} warns); false when running past it would be wrong (the line alarms and
+   *     {@code check} reports an error)
+   */
+  record Unsupported(String text, String what, boolean runnable) implements Instruction {
+    public Unsupported {
+      Objects.requireNonNull(text, "text");
+      Objects.requireNonNull(what, "what");
+    }
+  }
 }

@@ -829,6 +829,9 @@ public final class Interpreter {
         }
         case Motion.Wjnt x -> wjnt = true;
         case Motion.Inc x -> inc = true;
+        case Motion.RawOption x -> {
+          // Not run yet: check reported it; the motion runs without it.
+        }
       }
     }
     return new MotionRequest(mv.type(), target, via, speed, mv.speed().unit(), fine, cnt, offset, toolOffset, acc, wjnt,

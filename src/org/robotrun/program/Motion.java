@@ -127,6 +127,21 @@ public final class Motion {
   /** {@code INC}: the target is an increment from the current position. */
   public record Inc() implements Option {}
 
+  /**
+   * A motion option the controller has and RobotRun does not run yet ({@code TB .50sec,CALL X},
+   * {@code VOFFSET,VR[1]}, {@code PTH}, {@code RTCP}): the rest of the line from the option on,
+   * kept as written. The motion itself runs without it; {@code check} says so.
+   *
+   * @param text the option text as written, e.g. {@code "TB   .50sec,CALL OPEN"}
+   * @param what the kind, as the message names it ({@code "TIME BEFORE (TB)"})
+   */
+  public record RawOption(String text, String what) implements Option {
+    public RawOption {
+      Objects.requireNonNull(text, "text");
+      Objects.requireNonNull(what, "what");
+    }
+  }
+
   /** Options list helper: an unmodifiable copy. */
   static List<Option> copyOptions(List<Option> options) {
     return List.copyOf(Objects.requireNonNull(options, "options"));

@@ -18,15 +18,25 @@ import java.util.Optional;
  * @param comment the COMMENT attribute without its quotes ("" when absent)
  * @param lines the /MN lines; line n is {@code lines.get(n - 1)}
  * @param positions the /POS block: P[n] by number, in the order read
+ * @param source the text the program was read from, when it was read from a file: the writer
+ *     keeps what was not edited as it was. Not part of the program's value: two programs with
+ *     the same name, attributes, comment, lines and positions are equal whatever text they came from.
  */
 public record Program(String name, Map<String, String> attributes, String comment, List<Instruction> lines,
-    Map<Integer, LocalPosition> positions) {
+    Map<Integer, LocalPosition> positions, Optional<ProgramSource> source) {
 
   /** Longest program name FANUC accepts. */
   public static final int MAX_NAME_LENGTH = 36;
 
+  /** A program not read from a file. */
+  public Program(String name, Map<String, String> attributes, String comment, List<Instruction> lines,
+      Map<Integer, LocalPosition> positions) {
+    this(name, attributes, comment, lines, positions, Optional.empty());
+  }
+
   public Program {
     Objects.requireNonNull(name, "name");
+    Objects.requireNonNull(source, "source");
     Objects.requireNonNull(comment, "comment");
     attributes = Collections.unmodifiableMap(new LinkedHashMap<>(attributes));
     lines = List.copyOf(lines);
@@ -52,9 +62,19 @@ public record Program(String name, Map<String, String> attributes, String commen
     return new Program(name, Map.of(), "", lines, byNumber);
   }
 
-  /** Whether {@code name} is a valid program name (letters, digits, '_'; a letter first; ≤ 36). */
+  /**
+   * The /ATTR key under which the program's sub-type ({@code Macro}, {@code Cond}, {@code Job},
+   * {@code Process}) is kept: it is written on the /PROG line, not in /ATTR.
+   */
+  public static final String SUBTYPE_KEY = "/PROG SUBTYPE";
+
+  /**
+   * Whether {@code name} is a valid program name: letters, digits and '_', not starting with a
+   * digit, at most 36 characters. Controllers write names that start with '_' (background logic
+   * and system programs such as {@code _BGT_BTN_ABORT}).
+   */
   public static boolean isValidName(String name) {
-    if (name.isEmpty() || name.length() > MAX_NAME_LENGTH || !isAsciiLetter(name.charAt(0))) {
+    if (name.isEmpty() || name.length() > MAX_NAME_LENGTH || !(isAsciiLetter(name.charAt(0)) || name.charAt(0) == '_')) {
       return false;
     }
     for (int i = 1; i < name.length(); i++) {
@@ -68,6 +88,34 @@ public record Program(String name, Map<String, String> attributes, String commen
 
   private static boolean isAsciiLetter(char c) {
     return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+  }
+
+  /** This program with other lines and positions, keeping the source text it was read from. */
+  public Program withBody(List<Instruction> newLines, Map<Integer, LocalPosition> newPositions) {
+    return new Program(name, attributes, comment, newLines, newPositions, source);
+  }
+
+  /** This program without its source text (as if never read from a file). */
+  public Program withoutSource() {
+    return source.isEmpty() ? this : new Program(name, attributes, comment, lines, positions);
+  }
+
+  /** Equality of the program's value: name, attributes, comment, lines and positions (not the source text). */
+  @Override
+  public boolean equals(Object o) {
+    return o instanceof Program p && name.equals(p.name) && attributes.equals(p.attributes)
+        && comment.equals(p.comment) && lines.equals(p.lines) && positions.equals(p.positions);
+  }
+
+  @Override
+  public int hashCode() {
+    return Objects.hash(name, attributes, comment, lines, positions);
+  }
+
+  @Override
+  public String toString() {
+    return "Program[name=" + name + ", attributes=" + attributes + ", comment=" + comment + ", lines=" + lines
+        + ", positions=" + positions + "]";
   }
 
   /** Number of /MN lines. */

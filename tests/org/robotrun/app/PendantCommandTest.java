@@ -58,7 +58,7 @@ class PendantCommandTest {
     Run r = run("pendant", "--keys", "docs/examples/pendant-tour.keys", "--save", dir.toString());
     assertThat(r.exitCode()).isEqualTo(0);
     org.robotrun.io.LsReadResult back = org.robotrun.io.LsReader.read(dir.resolve("PICK1.LS"));
-    assertThat(back.hasErrors()).as(back.diagnostics().toString()).isFalse();
+    assertThat(back.hasAnyError()).as(back.diagnostics().toString()).isFalse();
     assertThat(back.program().lineCount()).isEqualTo(6);
     assertThat(back.program().positions()).containsKeys(1, 2, 3);
     assertThat(Files.readString(dir.resolve("PICK1.LS"))).contains("L P[2] 200mm/sec CNT50");
@@ -123,7 +123,7 @@ class PendantCommandTest {
     assertThat(bad.exitCode()).isEqualTo(2);
     assertThat(bad.err()).contains("--controller: expected sim or stand-in, got 'real'");
     Path broken = dir.resolve("BROKEN.LS");
-    Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  FROB ;\n/END\n");
+    Files.writeString(broken, "/PROG  BROKEN\n/MN\n   1:  R[1]= ;\n/END\n");
     Run b = run("pendant", "--program", broken.toString(), "--keys", keys.toString());
     assertThat(b.exitCode()).isEqualTo(2);
     assertThat(b.err()).contains("--program: ").contains("BROKEN.LS:");

@@ -44,7 +44,7 @@ class PendantEditPausedProgramTest {
     }
     ls.addAll(List.of("/POS", "/END"));
     LsReadResult r = LsReader.parse(name + ".LS", String.join("\n", ls) + "\n");
-    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    assertThat(r.hasAnyError()).as(r.diagnostics().toString()).isFalse();
     control.saveProgram(r.program());
   }
 
@@ -63,7 +63,7 @@ class PendantEditPausedProgramTest {
     String text = String.join("\n", "/PROG  MOVE", "/ATTR", "/MN", "   1:  J P[1] 100% FINE ;",
         "   2:  " + line2 + " ;", "/POS", jointPos(1, 0), jointPos(2, 60), jointPos(3, -30), "/END") + "\n";
     LsReadResult r = LsReader.parse("MOVE.LS", text);
-    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    assertThat(r.hasAnyError()).as(r.diagnostics().toString()).isFalse();
     control.saveProgram(r.program());
     assertThat(control.run("MOVE", 1, true)).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Ok.class);
     for (int i = 0; i < 400 && control.status().line() < 2; i++) {

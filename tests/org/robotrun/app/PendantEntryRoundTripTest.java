@@ -57,7 +57,7 @@ class PendantEntryRoundTripTest {
     Program prog = Program.of("N", List.of(new Instruction.End()),
         List.of(new LocalPosition(1, "", 0, 1, pos.withElement(j, v))));
     LsReadResult r = LsReader.parse("N.LS", LsWriter.write(prog));
-    return !r.hasErrors();
+    return !r.hasAnyError();
   }
 
   @Test

@@ -38,7 +38,7 @@ class LsProgramSetTest {
     List<LsReadResult> rs = LsProgramSet.crossCheck(
         List.of(program("a/SUB.LS", "SUB", "END"), program("b/SUB.LS", "sub", "END")), Set.of());
     assertThat(messages(rs)).containsExactly("b/SUB.LS:1: program SUB is also defined in a/SUB.LS");
-    assertThat(rs.get(1).hasErrors()).isTrue();
-    assertThat(rs.get(0).hasErrors()).isFalse();
+    assertThat(rs.get(1).hasAnyError()).isTrue();
+    assertThat(rs.get(0).hasAnyError()).isFalse();
   }
 }

@@ -36,7 +36,9 @@ class LsRandomProgramsTest {
       Program p = program("RND" + round);
       String written = LsWriter.write(p);
       LsReadResult r = LsReader.parse("rnd.ls", written);
-      assertThat(r.diagnostics()).as("%s", written).isEmpty();
+      // Random expressions may break the controller's entry rules (a warning, issue 13); nothing else is reported.
+      assertThat(r.diagnostics()).as("%s", written)
+          .allMatch(d -> d.message().startsWith("the controller does not mix"));
       assertThat(r.program().lineCount()).isEqualTo(p.lineCount());
       assertThat(r.program().positions()).isEqualTo(p.positions());
       String again = LsWriter.write(r.program());

@@ -76,8 +76,8 @@ class LsReaderTest {
     assertThat(in).isEqualTo(new Instruction.AssignRegister(Item.of(1), new Expr.Group(
         new Expr.Binary(BinaryOp.ADD, new Expr.IntConst(2),
             new Expr.Binary(BinaryOp.MUL, new Expr.IntConst(3), new Expr.IntConst(4))))));
-    Instruction logic = only("  IF R[1]=1 OR R[2]>2 AND DI[1]=ON,JMP LBL[1] ;\n   2:  LBL[1]  ;");
-    Expr cond = ((Instruction.If) logic).condition();
+    Instruction logic = only("  IF (R[1]=1 OR R[2]>2 AND DI[1]=ON),JMP LBL[1] ;\n   2:  LBL[1]  ;");
+    Expr cond = ((Expr.Group) ((Instruction.If) logic).condition()).inner();
     assertThat(cond).isInstanceOfSatisfying(Expr.Binary.class, b -> {
       assertThat(b.op()).isEqualTo(BinaryOp.OR);
       assertThat(((Expr.Binary) b.right()).op()).isEqualTo(BinaryOp.AND);
@@ -100,7 +100,7 @@ class LsReaderTest {
         "t.ls:4: warning: DI[0]: index out of range (expected 1..64); running this line raises an alarm",
         "t.ls:4: warning: R[300]: index out of range (expected 1..200); running this line raises an alarm",
         "t.ls:5: warning: PR[101]: index out of range (expected 1..100); running this line raises an alarm");
-    assertThat(r.hasErrors()).isFalse();
+    assertThat(r.hasAnyError()).isFalse();
   }
 
   @Test
@@ -170,12 +170,11 @@ class LsReaderTest {
         "t.ls:7: speed unit mm/sec does not fit a J motion: expected %, sec or msec",
         "t.ls:8: speed unit % does not fit a L motion: expected mm/sec, cm/min, inch/min, deg/sec, sec or msec",
         "t.ls:9: expected TO or DOWNTO in FOR, found 'UNTIL'",
-        "t.ls:10: not supported: SKIP CONDITION",
+        "t.ls:10: not supported: SKIP CONDITION (the line alarms when it runs)",
         "t.ls:12: expected '(sec)' after the wait time, found end of line",
         "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO or F)",
-        "t.ls:14: '_HIDDEN' is not a program name: expected letters, digits and '_', starting with a letter",
         "t.ls:15: expected ';' at the end of the line",
-        "t.ls:16: not supported: motion option 'Frobnicate' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)",
+        "t.ls:16: warning: not supported: motion option FROBNICATE (the motion runs without it)",
         "t.ls:17: CNT120: expected 0..100",
         "t.ls:18: speed 300%: expected 1..100%",
         "t.ls:19: speed 0mm/sec: expected a speed greater than 0",
@@ -189,17 +188,18 @@ class LsReaderTest {
   @Test
   void unsupportedStatementsAreNamedNotDropped() {
     for (String[] c : new String[][] {
-        {"RUN SUB1", "not supported: RUN (multitasking)"},
-        {"$WAITTMOUT=100", "not supported: system variable assignment ($WAITTMOUT)"},
-        {"SR[1]=R[1]", "not supported: string registers SR[]"},
-        {"AO[1]=5", "not supported: analog output AO[]"},
-        {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION"},
-        {"L P[1] max_speed FINE", "not supported: max_speed"},
-        {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "not supported: motion option TB (TIME BEFORE/AFTER, distance before)"},
+        {"RUN SUB1", "not supported: RUN (multitasking) (the line alarms when it runs)"},
+        {"$WAITTMOUT=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"SR[1]=R[1]", "not supported: string registers SR[] (the line alarms when it runs)"},
+        {"AO[1]=5", "not supported: analog output AO[] (the line alarms when it runs)"},
+        {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION (the line alarms when it runs)"},
+        {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
+        {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
-        {"FROBNICATE", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
+        {"FROBNICATE", "not supported: macro call FROBNICATE (the line alarms when it runs)"},
+        {"FROBNICATE=3", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);
     }
@@ -216,10 +216,10 @@ class LsReaderTest {
         "   4:L PR[1] 500mm/sec CNT50 VOFFSET,VR[1]    ;",
         ""));
     assertThat(messages(r)).containsExactly(
-        "t.ls:4: not supported: arc welding speed WELD_SPEED",
-        "t.ls:6: not supported: arc welding (as a motion option)",
-        "t.ls:7: not supported: motion options on the via point of a C motion (found 'Tool_Offset')",
-        "t.ls:9: not supported: vision offset VOFFSET (as a motion option)");
+        "t.ls:4: not supported: arc welding speed WELD_SPEED (the line alarms when it runs)",
+        "t.ls:5: warning: not supported: arc welding (as a motion option) (the motion runs without it)",
+        "t.ls:7: not supported: motion options on the via point of a C motion (the line alarms when it runs)",
+        "t.ls:9: warning: not supported: vision offset VOFFSET (the motion runs without it)");
   }
 
   @Test
@@ -318,7 +318,7 @@ class LsReaderTest {
     assertThat(messages(r)).containsExactly(
         "p.ls:8: P[1]: CONFIG 'N U X, 0, 0, 0': expected 'F|N U|D T|B, t1, t2, t3' like 'N U T, 0, 0, 0'",
         "p.ls:16: P[2]: expected 'deg' after the value of J6, found 'mm'",
-        "p.ls:19: not supported: motion group GP2 in P[3] (RobotRun moves one group, GP1)",
+        "p.ls:19: warning: not supported: motion group GP2 (RobotRun moves group 1; the others are kept, not moved)",
         "p.ls:21: P[4]: R is missing: expected all of X, Y, Z, W, P, R",
         "p.ls:33: P[6] is not closed: expected '};' before the end of the /POS section");
     assertThat(r.program().positions().keySet()).containsExactly(5);
@@ -370,7 +370,7 @@ class LsReaderTest {
     LsReadResult r = LsReader.parse("a.ls", "/PROG  A\n/ATTR\nZETA\t= 1;\nOWNER\t= ME;\nLINE_COUNT\t= 9;\n"
         + "COMMENT\t= \"hi\";\n/MN\n   1:  END ;\n/POS\n/END\n");
     assertThat(messages(r)).containsExactly("a.ls:5: warning: LINE_COUNT = 9 but /MN has 1 lines; using 1");
-    assertThat(r.hasErrors()).isFalse();
+    assertThat(r.hasAnyError()).isFalse();
     assertThat(List.copyOf(r.program().attributes().keySet())).startsWith("ZETA", "OWNER", "LINE_COUNT", "PROG_SIZE");
     assertThat(r.program().attributes()).containsEntry("OWNER", "ME").containsEntry("LINE_COUNT", "1")
         .containsEntry("PROTECT", "READ_WRITE");
@@ -396,10 +396,9 @@ class LsReaderTest {
   void sectionsAreCheckedAndExtraSectionsFlagged() {
     assertThat(messages(LsReader.parse("s.ls", "/PROG  S  Macro\n/ATTR\n/APPL\n/APPL\nFOO : 1;\n/MN\n   1:  END ;\n/POS\n/END\nextra\n")))
         .containsExactly(
-            "s.ls:1: warning: not supported: program sub-type 'Macro' (read as a normal program)",
-            "s.ls:4: warning: not supported: section /APPL (its 1 lines are ignored)",
+                "s.ls:4: warning: not supported: section /APPL (its 1 lines are kept, not used)",
             "s.ls:10: warning: text after /END is ignored");
     assertThat(messages(LsReader.parse("n.ls", "/PROG  1BAD\n/MN\n/POS\n/END\n")))
-        .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', starting with a letter, at most 36 characters");
+        .containsExactly("n.ls:1: '1BAD' is not a program name: expected letters, digits and '_', not starting with a digit, at most 36 characters");
   }
 }

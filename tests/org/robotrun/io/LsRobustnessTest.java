@@ -119,8 +119,8 @@ class LsRobustnessTest {
     LsReadResult r = LsReader.parse("d.ls", "/PROG  D\n/MN\n   1:  R[1]=" + deep + "    ;\n   2:  R[2]=!" + "-".repeat(10_000)
         + "R[1]    ;\n   3:  R[3]=1" + "+1".repeat(10_000) + "    ;\n/POS\n/END\n");
     assertThat(messages(r)).containsExactly(
-        "d.ls:3: parentheses nested too deeply: at most 64 levels",
-        "d.ls:4: expression too long: more than 1000 operators in one statement",
+        "d.ls:3: expression nested too deeply: at most 64 levels of parentheses and signs",
+        "d.ls:4: expression nested too deeply: at most 64 levels of parentheses and signs",
         "d.ls:5: expression too long: more than 1000 operators in one statement");
     String ok = "(".repeat(64) + "1" + ")".repeat(64);
     assertThat(LsReader.parse("d.ls", "/PROG  D\n/MN\n   1:  R[1]=" + ok + "    ;\n/POS\n/END\n").diagnostics()).isEmpty();
@@ -153,8 +153,10 @@ class LsRobustnessTest {
     Files.write(f, all);
     LsReadResult r = LsReader.read(f);
     assertThat(messages(r)).containsExactly(
-        f + ":3: warning: not UTF-8: read as Latin-1 (ISO-8859-1), so characters beyond ASCII may show wrongly");
+        f + ":3: warning: not UTF-8: read as Latin-1 (ISO-8859-1), as controllers write it; written back in Latin-1");
     assertThat(r.program().line(1)).isEqualTo(new org.robotrun.program.Instruction.Comment(" caf\u00e9"));
+    // Written back as read: the Latin-1 byte is not turned into UTF-8.
+    assertThat(LsWriter.bytes(r.program())).isEqualTo(all);
   }
 
   @Test

@@ -14,7 +14,7 @@ import org.robotrun.program.Item;
 class ExprTextTest {
 
   @ParameterizedTest
-  @ValueSource(strings = {"R[2]+1", "(R[1]>2 AND DI[1]=ON)", "R[R[2:PTR]]*2.5", "PR[10,3:STACK]-R[1] DIV 3",
+  @ValueSource(strings = {"R[2]+1", "(R[1]>2 AND DI[1]=ON)", "R[R[2:PTR]]*2.5", "(PR[10,3:STACK]-R[1] DIV 3)",
       "!F[3] OR (TIMER[1]>=1.5)", "-R[4] MOD 7", "AR[1]<>'PART_A'", "(GI[2]<=RO[1])", "-3", "R[1:COUNT]"})
   void formatOfParseGivesTheTextBack(String text) throws Exception {
     assertThat(ExprText.format(ExprText.parse(text))).isEqualTo(text);
@@ -22,7 +22,8 @@ class ExprTextTest {
 
   @Test
   void precedenceInsideAnExpression() throws Exception {
-    Expr e = ExprText.parse("R[1]+R[2]*3>4 AND DO[1]=ON");
+    // Mixed logic: in parentheses + and * mix with the usual precedence (issue 13's entry rule).
+    Expr e = ((Expr.Group) ExprText.parse("(R[1]+R[2]*3>4 AND DO[1]=ON)")).inner();
     Expr.Binary and = (Expr.Binary) e;
     assertThat(and.op()).isEqualTo(Expr.BinaryOp.AND);
     Expr.Binary gt = (Expr.Binary) and.left();
@@ -32,6 +33,20 @@ class ExprTextTest {
     assertThat(plus.right()).isEqualTo(new Expr.Binary(Expr.BinaryOp.MUL, new Expr.Register(Item.of(2)),
         new Expr.IntConst(3)));
     assertThat(((Expr.Binary) and.right()).left()).isEqualTo(new Expr.Io(IoKind.DO, Item.of(1)));
+  }
+
+  @Test
+  void theControllersEntryRulesAreEnforcedOutsideParentheses() throws Exception {
+    assertThatThrownBy(() -> ExprText.parse("R[1]+R[2]*3")).hasMessageStartingWith(
+        "The controller does not mix + or - with *, /, DIV or MOD on a line without parentheses");
+    assertThatThrownBy(() -> ExprText.parse("DI[1]=ON AND DI[2]=ON OR DI[3]=ON")).hasMessageStartingWith(
+        "The controller does not mix AND with OR");
+    assertThat(ExprText.parse("R[1]+R[2]-3")).isInstanceOf(Expr.Binary.class);
+    assertThat(ExprText.parse("R[1]*R[2] DIV 3 MOD 2")).isInstanceOf(Expr.Binary.class);
+    assertThat(ExprText.parse("(R[1]+R[2]*3)")).isInstanceOf(Expr.Group.class);
+    assertThatThrownBy(() -> ExprText.parse("(".repeat(3000) + "1" + ")".repeat(3000)))
+        .hasMessageContaining("nested too deeply: at most 64");
+    assertThatThrownBy(() -> ExprText.parse("-".repeat(3000) + "1")).hasMessageContaining("nested too deeply");
   }
 
   @Test

@@ -28,7 +28,7 @@ final class CellRig {
     for (Path p : sc.programs()) {
       try {
         LsReadResult r = LsReader.read(p);
-        if (r.hasErrors()) {
+        if (r.hasAnyError()) {
           throw new AssertionError(p + ": " + r.diagnostics());
         }
         sim.controllers().get(0).saveProgram(r.program());
@@ -62,7 +62,7 @@ final class CellRig {
     }
     sb.append("/END\n");
     LsReadResult r = LsReader.parse("TEST.LS", sb.toString());
-    if (r.hasErrors()) {
+    if (r.hasAnyError()) {
       throw new AssertionError(r.diagnostics());
     }
     return r.program();

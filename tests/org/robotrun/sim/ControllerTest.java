@@ -285,7 +285,7 @@ class ControllerTest {
     }
     sb.append("/END\n");
     LsReadResult r = LsReader.parse(name + ".LS", sb.toString());
-    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    assertThat(r.hasAnyError()).as(r.diagnostics().toString()).isFalse();
     return r.program();
   }
 

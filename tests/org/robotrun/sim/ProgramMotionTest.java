@@ -58,7 +58,7 @@ class ProgramMotionTest {
     }
     sb.append(POS);
     LsReadResult r = LsReader.parse("FORMS.LS", sb.toString());
-    assertThat(r.hasErrors()).as(r.diagnostics().toString()).isFalse();
+    assertThat(r.hasAnyError()).as(r.diagnostics().toString()).isFalse();
     return r.program();
   }
 

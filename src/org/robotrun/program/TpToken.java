@@ -1,15 +1,15 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 /**
  * A token of a TP statement or position block, with its place in the file.
  *
  * @param kind what it is
- * @param text the characters as written (for {@link LsToken.Kind#ITEM_COMMENT}, {@link
- *     LsToken.Kind#RAW} and {@link LsToken.Kind#STRING}: the content without delimiters)
+ * @param text the characters as written (for {@link TpToken.Kind#ITEM_COMMENT}, {@link
+ *     TpToken.Kind#RAW} and {@link TpToken.Kind#STRING}: the content without delimiters)
  * @param line 1-based line number
  * @param column 1-based column of its first character
  */
-public record LsToken(Kind kind, String text, int line, int column) {
+public record TpToken(Kind kind, String text, int line, int column) {
 
   /** Token kinds. Words (J, CNT50, MOD, mm) are all {@link #WORD}; the parser gives them meaning. */
   public enum Kind {
@@ -70,7 +70,7 @@ public record LsToken(Kind kind, String text, int line, int column) {
   }
 
   /** Messages quote at most 40 characters of a token, however long the line. */
-  static String clip(String s) {
+  public static String clip(String s) {
     return s.length() <= 40 ? s : s.substring(0, 40) + "...";
   }
 

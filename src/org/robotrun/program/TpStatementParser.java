@@ -1,4 +1,4 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -6,22 +6,13 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
-import org.robotrun.io.LsToken.Kind;
-import org.robotrun.program.Expr;
-import org.robotrun.program.Index;
-import org.robotrun.program.Instruction;
+import org.robotrun.program.TpToken.Kind;
 import org.robotrun.program.Instruction.FrameKind;
-import org.robotrun.program.IoKind;
-import org.robotrun.program.Item;
-import org.robotrun.program.LabelRef;
-import org.robotrun.program.Motion;
-import org.robotrun.program.Program;
-import org.robotrun.program.Registers;
 
 /**
  * Recursive-descent parser for one /MN statement (TP-LANGUAGE.md, "Statements"). It sees the
  * tokens of a single statement (a circular motion's continuation line appended), so a bad
- * statement is reported with {@link LsSyntaxError} and the reader continues with the next line.
+ * statement is reported with {@link TpSyntaxError} and the reader continues with the next line.
  *
  * <p>Expressions use the precedence of {@link Expr.BinaryOp} everywhere, so FANUC's short form
  * {@code R[1]=R[2]+1} and a parenthesised expression are parsed alike. Parentheses may nest at
@@ -29,13 +20,13 @@ import org.robotrun.program.Registers;
  * operators: beyond that the statement is rejected with a diagnostic instead of risking a stack
  * overflow here or in whoever walks the tree later.
  */
-final class LsStatementParser extends LsTokenCursor {
+public final class TpStatementParser extends TpTokenCursor {
 
-  /** Deepest parenthesis nesting accepted; far beyond what anyone types on a pendant. */
-  static final int MAX_NESTING = 64;
+  /** Deepest nesting of parentheses and prefix operators accepted ({@link TpLimits#MAX_NESTING}). */
+  static final int MAX_NESTING = TpLimits.MAX_NESTING;
 
-  /** Most operators in one statement; keeps trees shallow enough for recursive walkers. */
-  static final int MAX_OPERATORS = 1000;
+  /** Most operators in one statement ({@link TpLimits#MAX_OPERATORS}). */
+  static final int MAX_OPERATORS = TpLimits.MAX_OPERATORS;
 
   private static final String VALUE_EXPECTED =
       "expected a value (number, R[i], PR[i,j], DI[i], F[i], TIMER[i], AR[i], ON, OFF or '('), found ";
@@ -83,13 +74,83 @@ final class LsStatementParser extends LsTokenCursor {
       Map.entry("VOFFSET", "vision offset VOFFSET"),
       Map.entry("VISION", "iRVision"),
       Map.entry("COORD", "coordinated motion COORD"),
-      Map.entry("RTCP", "remote TCP (RTCP)"));
+      Map.entry("RTCP", "remote TCP (RTCP)"),
+      Map.entry("ERROR_PROG", "ERROR_PROG"),
+      Map.entry("RESUME_PROG", "RESUME_PROG"),
+      Map.entry("CLEAR_RESUME_PROG", "CLEAR_RESUME_PROG"),
+      Map.entry("RETURN_PATH_DSBL", "RETURN_PATH_DSBL"),
+      Map.entry("WHEN", "WHEN (condition program)"),
+      Map.entry("MONITOR_END", "MONITOR END"),
+      Map.entry("PL", "palletizing register PL[]"),
+      Map.entry("PAL", "palletizing"),
+      Map.entry("PALLETIZING_B", "PALLETIZING-B"),
+      Map.entry("PALLETIZING_END", "PALLETIZING-END"),
+      Map.entry("ARC_START", "arc welding"),
+      Map.entry("ARC_END", "arc welding"),
+      Map.entry("TRACK_END", "seam tracking"),
+      Map.entry("SEMAPHORE", "SEMAPHORE"),
+      Map.entry("POST_SEMAPHORE", "SEMAPHORE"),
+      Map.entry("WAIT_SEMAPHORE", "SEMAPHORE"),
+      Map.entry("SOFTFLOAT", "SOFTFLOAT"),
+      Map.entry("SOFT_FLOAT", "SOFTFLOAT"),
+      Map.entry("CNV", "conveyor tracking"),
+      Map.entry("LINE_TRACK", "line tracking"),
+      Map.entry("AIR", "AIR"),
+      Map.entry("STICK", "STICK"),
+      Map.entry("TOUCH", "touch sensing"),
+      Map.entry("SEARCH", "touch sensing SEARCH"),
+      Map.entry("GRIPPER", "gripper instruction"),
+      Map.entry("HAND", "HAND"),
+      Map.entry("PATH", "PATH"),
+      Map.entry("USER_ALARM", "user alarm"),
+      Map.entry("GROUP_OUTPUT", "group output"),
+      Map.entry("PTOOL", "PTOOL"),
+      Map.entry("CONST_PATH", "constant path"),
+      Map.entry("FORCE", "force control"),
+      Map.entry("FORCE_CTRL", "force control"),
+      Map.entry("TORQ_LIMIT", "TORQ_LIMIT"),
+      Map.entry("TORQ_LIMIT_END", "TORQ_LIMIT"),
+      Map.entry("CD_PAIR", "coordinated motion"),
+      Map.entry("ORG", "ORG"),
+      Map.entry("SET", "SET instruction"),
+      Map.entry("JOINT", "JOINT"),
+      Map.entry("GET_OFFSET", "vision GET_OFFSET"),
+      Map.entry("GET_PASSFAIL", "vision GET_PASSFAIL"),
+      Map.entry("GET_NFOUND", "vision GET_NFOUND"),
+      Map.entry("SET_REFERENCE", "vision SET_REFERENCE"),
+      Map.entry("CAMERA_CALIB", "vision CAMERA_CALIB"),
+      Map.entry("PRINT", "PRINT"),
+      Map.entry("DEFAULT", "DEFAULT"),
+      Map.entry("MACRO", "macro"),
+      Map.entry("MROT", "MROT"),
+      Map.entry("BREAK", "BREAK"),
+      Map.entry("COL_DETECT", "COL DETECT"),
+      Map.entry("COL_GUARD_ADJUST", "COL GUARD ADJUST"),
+      Map.entry("REMARK", "remark"),
+      Map.entry("FREE", "FREE"),
+      Map.entry("STRLEN", "string functions"),
+      Map.entry("SUBSTR", "string functions"),
+      Map.entry("FINDSTR", "string functions"),
+      Map.entry("STATION", "station sync"),
+      Map.entry("DIAGNOSTIC_REC", "DIAGNOSTIC"));
+
+  /**
+   * Kinds the program can run on without (a warning, the line is skipped): settings, monitors
+   * and diagnostics that change no position, flow or output a one-arm course relies on. Every
+   * other unsupported kind is an error: the line alarms when it runs.
+   */
+  private static final java.util.Set<String> RUNNABLE = java.util.Set.of(
+      "COL DETECT", "COL GUARD ADJUST", "JOINT_MAX_SPEED", "LINEAR_MAX_SPEED", "max_speed", "TIMER_OVERFLOW",
+      "DIAGNOSTIC", "LOCK PREG", "UNLOCK PREG", "TC_ONLINE", "PTH", "remark", "system variable assignment",
+      "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "PRINT", "BREAK", "MROT",
+      "constant path", "TORQ_LIMIT");
 
   private int nesting;
   private int operators;
+  private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
 
-  private LsStatementParser(List<LsToken> tokens) {
+  private TpStatementParser(List<TpToken> tokens) {
     super(tokens);
   }
 
@@ -98,16 +159,38 @@ final class LsStatementParser extends LsTokenCursor {
    *
    * @param tokens the statement's tokens, ending in one {@link Kind#EOL} (the terminating
    *     {@code ;} already removed by the reader)
-   * @throws LsSyntaxError naming the line and what was expected
+   * @throws TpSyntaxError naming the line and what was expected
    */
-  static Parsed parse(List<LsToken> tokens) {
-    LsStatementParser p = new LsStatementParser(tokens);
+  public static Parsed parse(List<TpToken> tokens) {
+    return parse(tokens, l -> null);
+  }
+
+  /**
+   * Parses one statement as {@link #parse(List)} does; {@code lineText} gives the text of a
+   * line by number (columns of the tokens index into it), so options RobotRun does not run
+   * are kept exactly as written. It may answer null; then they are rebuilt from the tokens.
+   */
+  public static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
+    TpStatementParser p = new TpStatementParser(tokens);
+    p.lineText = lineText;
     Instruction in = p.statement();
     if (p.peek().is(Kind.SEMICOLON)) {
       throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
     }
     if (!p.peek().is(Kind.EOL)) {
       throw p.error("expected the end of the statement, found " + p.peek().describe());
+    }
+    Expr checked = switch (in) {
+      case Instruction.AssignRegister a -> a.value();
+      case Instruction.AssignPosElement a -> a.value();
+      case Instruction.If f -> f.condition();
+      case Instruction.IfThen f -> f.condition();
+      case Instruction.WaitCondition w -> w.condition();
+      case Instruction.SetIo s -> s.value();
+      default -> null;
+    };
+    if (checked != null) {
+      EntryRules.refusal(checked).ifPresent(r -> p.warnings.add(r + " (a pendant refuses this entry)"));
     }
     return new Parsed(in, List.copyOf(p.warnings));
   }
@@ -116,12 +199,12 @@ final class LsStatementParser extends LsTokenCursor {
    * A statement and the warnings about it (a register number outside the controller's table:
    * legal text, but running the line raises an alarm).
    */
-  record Parsed(Instruction instruction, List<String> warnings) {}
+  public record Parsed(Instruction instruction, List<String> warnings) {}
 
   // ---- statements -------------------------------------------------------------------------
 
   private Instruction statement() {
-    LsToken t = peek();
+    TpToken t = peek();
     switch (t.kind()) {
       case EOL -> {
         return new Instruction.Blank();
@@ -137,6 +220,12 @@ final class LsStatementParser extends LsTokenCursor {
         next();
         return new Instruction.CommentedOut(next().text().stripTrailing());
       }
+      case MINUS -> {
+        if (t.text().equals("--")) {
+          throw unsupported(t, "remark (--eg:)", true);
+        }
+        throw error("expected a statement, found '-'");
+      }
       case EQ -> {
         next();
         Expr value = expression();
@@ -150,13 +239,17 @@ final class LsStatementParser extends LsTokenCursor {
     }
   }
 
-  private Instruction wordStatement(LsToken t) {
+  private Instruction wordStatement(TpToken t) {
     String w = t.text().toUpperCase(Locale.ROOT);
     if (isMotionType(w) && (peek(1).isWord("P") || peek(1).isWord("PR"))) {
       return motion();
     }
+    if (isMotionType(w) && peek(1).is(Kind.WORD) && peek(2).is(Kind.LBRACKET)) {
+      // J PAL_1[A_1] 100% CNT100, L VR[1]...: a target RobotRun has no positions for
+      throw unsupported(peek(1), "motion to " + targetKind(peek(1).text()), false);
+    }
     if (w.startsWith("$")) {
-      throw error("not supported: system variable assignment (" + LsToken.clip(t.text()) + ")");
+      throw unsupported(t, "system variable assignment", true);
     }
     next();
     return switch (w) {
@@ -172,7 +265,7 @@ final class LsStatementParser extends LsTokenCursor {
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
-        LsToken a = expectWord("START, STOP or RESET");
+        TpToken a = expectWord("START, STOP or RESET");
         yield switch (a.text().toUpperCase(Locale.ROOT)) {
           case "START" -> new Instruction.TimerSet(timer, Instruction.TimerAction.START);
           case "STOP" -> new Instruction.TimerSet(timer, Instruction.TimerAction.STOP);
@@ -248,14 +341,47 @@ final class LsStatementParser extends LsTokenCursor {
     };
   }
 
-  private LsSyntaxError unknownStatement(LsToken t) {
+  private static String targetKind(String word) {
+    String w = word.toUpperCase(Locale.ROOT);
+    return w.startsWith("PAL_") ? "a palletizing point (PAL_n)" : w + "[]";
+  }
+
+  private TpSyntaxError unknownStatement(TpToken t) {
     String w = t.text().toUpperCase(Locale.ROOT);
     String name = UNSUPPORTED.get(w);
     if (name != null) {
-      return error(t, "not supported: " + name);
+      return unsupported(t, name, RUNNABLE.contains(name));
     }
-    return error(t, "unknown statement '" + LsToken.clip(t.text())
+    if (w.startsWith("PALLETIZING") || w.startsWith("PAL_")) {
+      return unsupported(t, "palletizing", false);
+    }
+    if (t.is(Kind.WORD) && onlyWordsFollow()) {
+      // A macro is listed by its name alone ("OPEN_HAND", "HAND1 OPEN"); RobotRun has no macro table yet.
+      return unsupported(t, "macro call " + TpToken.clip(t.text()), false);
+    }
+    if (t.is(Kind.WORD) && peek().is(Kind.LBRACKET)) {
+      // WELD_PORT[1]=..., SDO[2]=ON, HOLD[1]: a register or port kind of an application package
+      return unsupported(t, TpToken.clip(w) + "[]", false);
+    }
+    if (t.is(Kind.WORD) && peek().is(Kind.WORD)) {
+      // Arc Start[1], Weave Sine[1], Touch Offset PR[1], Search Start[1]: application instructions
+      return unsupported(t, "instruction " + TpToken.clip(t.text() + " " + peek().text()), false);
+    }
+    return error(t, "unknown statement '" + TpToken.clip(t.text())
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
+  }
+
+  /** True when the rest of the statement (after the current token) is words and numbers only. */
+  private boolean onlyWordsFollow() {
+    for (int k = 0; ; k++) {
+      TpToken x = peek(k);
+      if (x.is(Kind.EOL)) {
+        return true;
+      }
+      if (!x.is(Kind.WORD) && !x.is(Kind.NUMBER)) {
+        return false;
+      }
+    }
   }
 
   private Instruction positionRegisterAssignment() {
@@ -273,7 +399,7 @@ final class LsStatementParser extends LsTokenCursor {
     }
     Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
     expect(Kind.EQ, "'=' after PR[...]");
-    LsToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
+    TpToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
     Instruction.PosSource src = switch (s.text().toUpperCase(Locale.ROOT)) {
       case "PR" -> {
         Item from = item("PR");
@@ -292,8 +418,18 @@ final class LsStatementParser extends LsTokenCursor {
       case "JPOS" -> new Instruction.CurrentJpos();
       case "UFRAME" -> new Instruction.FromFrame(FrameKind.USER, index("UFRAME"));
       case "UTOOL" -> new Instruction.FromFrame(FrameKind.TOOL, index("UTOOL"));
-      default -> throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
+      default -> {
+        if (s.text().startsWith("$") || UNSUPPORTED.containsKey(s.text().toUpperCase(Locale.ROOT))) {
+          String name = UNSUPPORTED.get(s.text().toUpperCase(Locale.ROOT));
+          throw unsupported(s, "PR[i]=" + (name != null ? name : "system variable"), false);
+        }
+        throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
+      }
     };
+    if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+      // PR[1]=LPOS-PR[2], PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: position arithmetic beyond PR+PR
+      throw unsupported(peek(), "position arithmetic with LPOS, JPOS, P[] or more than two terms", false);
+    }
     return new Instruction.AssignPosReg(reg, src);
   }
 
@@ -322,9 +458,9 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Instruction call() {
-    LsToken name = expectWord("a program name after CALL");
+    TpToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
-      throw error(name, "'" + LsToken.clip(name.text())
+      throw error(name, "'" + TpToken.clip(name.text())
           + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
     List<Expr> args = new ArrayList<>();
@@ -341,7 +477,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Instruction.Branch branch() {
-    LsToken w = expectWord("JMP LBL[n] or CALL NAME");
+    TpToken w = expectWord("JMP LBL[n] or CALL NAME");
     if (w.isWord("JMP")) {
       return (Instruction.Jump) jump();
     }
@@ -358,6 +494,10 @@ final class LsStatementParser extends LsTokenCursor {
       return new Instruction.IfThen(cond);
     }
     expect(Kind.COMMA, "',' then JMP or CALL (or THEN) after the IF condition");
+    if (!peek().isWord("JMP") && !peek().isWord("CALL") && !peek().is(Kind.EOL)) {
+      // IF (DI[49]),DO[73]=PULSE,0.5sec ; IF R[1]=1,R[2]=5 : an action instead of a branch
+      throw unsupported(peek(), "IF with an action (assignment, output or pulse)", false);
+    }
     return new Instruction.If(cond, branch());
   }
 
@@ -366,7 +506,7 @@ final class LsStatementParser extends LsTokenCursor {
     Item counter = item("R");
     expect(Kind.EQ, "'=' after FOR R[...]");
     Expr start = forBound();
-    LsToken dir = expectWord("TO or DOWNTO");
+    TpToken dir = expectWord("TO or DOWNTO");
     boolean down;
     if (dir.isWord("TO")) {
       down = false;
@@ -445,7 +585,7 @@ final class LsStatementParser extends LsTokenCursor {
     if (type == Motion.Type.C) {
       if (!(peek().isWord("P") || peek().isWord("PR"))) {
         if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
-          throw error("not supported: motion options on the via point of a C motion (found " + peek().describe() + ")");
+          throw unsupported(peek(), "motion options on the via point of a C motion", false);
         }
         throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found "
             + peek().describe());
@@ -462,7 +602,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.Target motionTarget() {
-    LsToken w = next();
+    TpToken w = next();
     if (w.isWord("P")) {
       Item p = item("P");
       return new Motion.Local(directNumber(p, "P"), p.comment());
@@ -472,14 +612,14 @@ final class LsStatementParser extends LsTokenCursor {
 
   private Motion.Speed speed(Motion.Type type) {
     Motion.SpeedValue value;
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.NUMBER)) {
       value = new Motion.SpeedConst(number("speed"));
     } else if (t.isWord("R")) {
       next();
       value = new Motion.SpeedRegister(item("R"));
     } else if (t.is(Kind.WORD) && UNSUPPORTED.containsKey(t.text().toUpperCase(Locale.ROOT))) {
-      throw error(t, "not supported: " + UNSUPPORTED.get(t.text().toUpperCase(Locale.ROOT)));
+      throw unsupported(t, UNSUPPORTED.get(t.text().toUpperCase(Locale.ROOT)), false);
     } else {
       throw error("expected a speed (30%, 400mm/sec, 2sec, R[i]%...), found " + t.describe());
     }
@@ -502,7 +642,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.SpeedUnit speedUnit() {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.PERCENT)) {
       next();
       return Motion.SpeedUnit.PERCENT;
@@ -527,7 +667,7 @@ final class LsStatementParser extends LsTokenCursor {
       throw error(t, "expected a speed unit (%, mm/sec, cm/min, inch/min, deg/sec, sec, msec), found " + t.describe());
     }
     next();
-    LsToken per = expectWord("sec or min after '/'");
+    TpToken per = expectWord("sec or min after '/'");
     String full = u + "/" + per.text().toLowerCase(Locale.ROOT);
     return switch (full) {
       case "mm/sec" -> Motion.SpeedUnit.MM_PER_SEC;
@@ -539,7 +679,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   /** How a unit is written in TP; the writer uses the same table. */
-  static String unitText(Motion.SpeedUnit unit) {
+  public static String unitText(Motion.SpeedUnit unit) {
     return switch (unit) {
       case PERCENT -> "%";
       case SEC -> "sec";
@@ -552,7 +692,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.Termination termination() {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.isWord("FINE")) {
       next();
       return new Motion.Fine();
@@ -580,7 +720,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Motion.Option motionOption() {
-    LsToken t = next();
+    TpToken t = next();
     if (t.is(Kind.WORD)) {
       String w = t.text().toUpperCase(Locale.ROOT);
       switch (w) {
@@ -593,6 +733,9 @@ final class LsStatementParser extends LsTokenCursor {
           return new Motion.Offset();
         }
         case "TOOL_OFFSET" -> {
+          if (!peek().is(Kind.COMMA)) {
+            return rawOption(t, "Tool_Offset with TOOL_OFFSET CONDITION");
+          }
           expect(Kind.COMMA, "',PR[i]' after Tool_Offset");
           expectWordNamed("PR", "PR[i] after Tool_Offset,");
           return new Motion.ToolOffsetPr(item("PR"));
@@ -600,7 +743,12 @@ final class LsStatementParser extends LsTokenCursor {
         case "SKIP" -> {
           expect(Kind.COMMA, "',LBL[n]' after Skip");
           expectWordNamed("LBL", "LBL[n] after Skip,");
-          return new Motion.Skip(labelRef());
+          LabelRef l = labelRef();
+          if (peek().is(Kind.COMMA)) {
+            // Skip,LBL[1],PR[2]=LPOS: high-speed skip storing the position
+            return rawOption(t, "high-speed skip Skip,LBL[],PR[]=LPOS");
+          }
+          return new Motion.Skip(l);
         }
         case "WJNT" -> {
           return new Motion.Wjnt();
@@ -616,18 +764,59 @@ final class LsStatementParser extends LsTokenCursor {
             }
             return new Motion.Acc(acc);
           }
-          if (UNSUPPORTED.containsKey(w)) {
-            throw error(t, "not supported: " + UNSUPPORTED.get(w) + " (as a motion option)");
-          }
-          if (w.equals("TIME") || w.equals("TB") || w.equals("TA") || w.equals("DB")) {
-            throw error(t, "not supported: motion option " + LsToken.clip(t.text()) + " (TIME BEFORE/AFTER, distance before)");
-          }
-          throw error(t, "not supported: motion option '" + LsToken.clip(t.text())
-              + "' (RobotRun has Offset, Offset,PR[i], Tool_Offset,PR[i], ACCn, Skip,LBL[n], Wjnt, INC)");
+          return rawOption(t, optionKind(w));
         }
       }
     }
     throw error(t, "expected a motion option or the end of the statement, found " + t.describe());
+  }
+
+  private static String optionKind(String w) {
+    return switch (w) {
+      case "TB", "TA", "TIME" -> "TIME BEFORE/AFTER (TB/TA)";
+      case "DB", "DISTANCE" -> "DISTANCE BEFORE (DB)";
+      case "VOFFSET" -> "vision offset VOFFSET";
+      case "PTH" -> "PTH";
+      case "RTCP" -> "remote TCP (RTCP)";
+      case "COORD" -> "coordinated motion COORD";
+      case "MROT" -> "MROT";
+      case "BREAK" -> "BREAK";
+      case "CR" -> "corner region CR";
+      case "PSPD" -> "process speed PSPD";
+      default -> {
+        String name = UNSUPPORTED.get(w);
+        yield name != null ? name + " (as a motion option)" : "motion option " + TpToken.clip(w);
+      }
+    };
+  }
+
+  /**
+   * The rest of the statement from {@code from} (already consumed) to its end, kept as
+   * written: a motion option RobotRun does not run yet. Options after it go with it.
+   */
+  private Motion.RawOption rawOption(TpToken from, String what) {
+    TpToken last = from;
+    while (!peek().is(Kind.EOL)) {
+      last = next();
+    }
+    TpToken eol = peek();
+    String text = lineText.apply(from.line());
+    String raw;
+    if (text != null && eol.line() == from.line() && eol.column() - 1 <= text.length() && from.column() >= 1) {
+      raw = text.substring(from.column() - 1, eol.column() - 1).strip();
+    } else {
+      StringBuilder sb = new StringBuilder();
+      for (int k = tokens.indexOf(from); k >= 0 && k <= tokens.indexOf(last); k++) {
+        TpToken x = tokens.get(k);
+        if (k > 0 && sb.length() > 0 && tokens.get(k - 1).line() == x.line()
+            && tokens.get(k - 1).column() + tokens.get(k - 1).text().length() < x.column()) {
+          sb.append(' ');
+        }
+        sb.append(x.is(Kind.STRING) ? "'" + x.text() + "'" : x.text());
+      }
+      raw = sb.toString();
+    }
+    return new Motion.RawOption(raw, what);
   }
 
   // ---- expressions ------------------------------------------------------------------------
@@ -651,7 +840,7 @@ final class LsStatementParser extends LsTokenCursor {
     }
   }
 
-  private static Expr.BinaryOp binaryOp(LsToken t) {
+  private static Expr.BinaryOp binaryOp(TpToken t) {
     return switch (t.kind()) {
       case STAR -> Expr.BinaryOp.MUL;
       case SLASH -> Expr.BinaryOp.DIVIDE;
@@ -675,21 +864,31 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private Expr unary() {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.MINUS)) {
       next();
       if (peek().is(Kind.NUMBER)) {
         return negate(constant(next()));
       }
       countOperator();
-      return new Expr.Unary(Expr.UnaryOp.MINUS, unary());
+      return nestedUnary(Expr.UnaryOp.MINUS);
     }
     if (t.is(Kind.BANG)) {
       next();
       countOperator();
-      return new Expr.Unary(Expr.UnaryOp.NOT, unary());
+      return nestedUnary(Expr.UnaryOp.NOT);
     }
     return operand();
+  }
+
+  /** A prefix operator's operand, counted as one level of nesting (as a parenthesis is). */
+  private Expr nestedUnary(Expr.UnaryOp op) {
+    if (++nesting > MAX_NESTING) {
+      throw error("expression nested too deeply: at most " + MAX_NESTING + " levels of parentheses and signs");
+    }
+    Expr operand = unary();
+    nesting--;
+    return new Expr.Unary(op, operand);
   }
 
   private Expr negate(Expr c) {
@@ -708,14 +907,14 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** A single value: constant, register, I/O, parenthesised expression. */
   private Expr operand() {
-    LsToken t = next();
+    TpToken t = next();
     switch (t.kind()) {
       case NUMBER -> {
         return constant(t);
       }
       case LPAREN -> {
         if (++nesting > MAX_NESTING) {
-          throw error(t, "parentheses nested too deeply: at most " + MAX_NESTING + " levels");
+          throw error(t, "expression nested too deeply: at most " + MAX_NESTING + " levels of parentheses and signs");
         }
         Expr inner = expression();
         expect(Kind.RPAREN, "')' closing the '(' of column " + t.column());
@@ -742,7 +941,10 @@ final class LsStatementParser extends LsTokenCursor {
           default -> {
             String name = UNSUPPORTED.get(w);
             if (name != null) {
-              throw error(t, "not supported: " + name);
+              throw unsupported(t, name + " in an expression", false);
+            }
+            if (w.startsWith("$")) {
+              throw unsupported(t, "system variable in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
           }
@@ -766,7 +968,7 @@ final class LsStatementParser extends LsTokenCursor {
     return new Expr.PosElement(new Item(idx, itemCommentAndClose("PR[i,j]")), element);
   }
 
-  private Expr constant(LsToken t) {
+  private Expr constant(TpToken t) {
     String s = t.text();
     if (s.indexOf('.') >= 0) {
       return new Expr.RealConst(finite(t));
@@ -774,7 +976,7 @@ final class LsStatementParser extends LsTokenCursor {
     try {
       return new Expr.IntConst(Integer.parseInt(s));
     } catch (NumberFormatException e) {
-      throw error(t, "integer " + LsToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
+      throw error(t, "integer " + TpToken.clip(s) + " is too large: expected at most " + Integer.MAX_VALUE);
     }
   }
 
@@ -811,7 +1013,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** The number inside brackets: a non-negative integer or {@code R[i]} (indirect). */
   private Index indexValue(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.NUMBER)) {
       int n = intConst("index of " + what + "[...]");
       checkRange(what, n);
@@ -826,7 +1028,10 @@ final class LsStatementParser extends LsTokenCursor {
       return new Index.Indirect(reg, comment);
     }
     if (t.isWord("AR")) {
-      throw error(t, "not supported: an index through AR[] (use R[i])");
+      throw unsupported(t, "an index through AR[]", false);
+    }
+    if (t.is(Kind.WORD) && t.text().regionMatches(true, 0, "GP", 0, 2)) {
+      throw unsupported(t, "a group in " + what + "[GPn:...] (multi-group)", false);
     }
     throw error("expected an index (a number or R[i]) inside " + what + "[...], found " + t.describe());
   }
@@ -861,7 +1066,7 @@ final class LsStatementParser extends LsTokenCursor {
 
   /** {@code n} or {@code R[i]} as in {@code UFRAME_NUM=n|R[i]}. */
   private Index numberOrRegister(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (t.is(Kind.NUMBER)) {
       return new Index.Direct(intConst(what + " value"));
     }
@@ -889,7 +1094,7 @@ final class LsStatementParser extends LsTokenCursor {
   // ---- tokens -----------------------------------------------------------------------------
 
   private int intConst(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (!t.is(Kind.NUMBER) || t.text().indexOf('.') >= 0) {
       throw error("expected an integer (" + what + "), found " + t.describe());
     }
@@ -898,7 +1103,7 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   private double number(String what) {
-    LsToken t = peek();
+    TpToken t = peek();
     if (!t.is(Kind.NUMBER)) {
       throw error("expected a number (" + what + "), found " + t.describe());
     }
@@ -907,19 +1112,19 @@ final class LsStatementParser extends LsTokenCursor {
   }
 
   /** A number token's value; one with hundreds of digits would be infinite, and is refused. */
-  private double finite(LsToken t) {
+  private double finite(TpToken t) {
     double v = Double.parseDouble(t.text());
     if (Double.isInfinite(v)) {
-      throw error(t, "number " + LsToken.clip(t.text()) + " is too large");
+      throw error(t, "number " + TpToken.clip(t.text()) + " is too large");
     }
     return v;
   }
 
-  private int parseIntOrFail(LsToken t, String digits) {
+  private int parseIntOrFail(TpToken t, String digits) {
     try {
       return Integer.parseInt(digits);
     } catch (NumberFormatException e) {
-      throw error(t, "number " + LsToken.clip(digits) + " is too large");
+      throw error(t, "number " + TpToken.clip(digits) + " is too large");
     }
   }
 

@@ -1,19 +1,19 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.robotrun.io.LsToken.Kind;
+import org.robotrun.program.TpToken.Kind;
 
-class LsLexerTest {
+class TpLexerTest {
 
   private static List<Kind> kinds(String text) {
-    return LsLexer.tokenize(text, 7, 1, true).stream().map(LsToken::kind).toList();
+    return TpLexer.tokenize(text, 7, 1, true).stream().map(TpToken::kind).toList();
   }
 
   private static List<String> texts(String text) {
-    return LsLexer.tokenize(text, 7, 1, true).stream().map(LsToken::text).toList();
+    return TpLexer.tokenize(text, 7, 1, true).stream().map(TpToken::text).toList();
   }
 
   @Test
@@ -26,7 +26,7 @@ class LsLexerTest {
 
   @Test
   void itemCommentIsFreeTextUpToTheClosingBracket() {
-    List<LsToken> t = LsLexer.tokenize("LBL[99:NO GRIP: really]", 3, 8, true);
+    List<TpToken> t = TpLexer.tokenize("LBL[99:NO GRIP: really]", 3, 8, true);
     assertThat(t.get(4).kind()).isEqualTo(Kind.ITEM_COMMENT);
     assertThat(t.get(4).text()).isEqualTo("NO GRIP: really");
     assertThat(t.get(5).kind()).isEqualTo(Kind.RBRACKET);
@@ -52,8 +52,8 @@ class LsLexerTest {
 
   @Test
   void messageTextIsRaw() {
-    List<LsToken> t = LsLexer.tokenize("MESSAGE[Gripper did not close: R1]", 1, 1, true);
-    assertThat(t).extracting(LsToken::kind)
+    List<TpToken> t = TpLexer.tokenize("MESSAGE[Gripper did not close: R1]", 1, 1, true);
+    assertThat(t).extracting(TpToken::kind)
         .containsExactly(Kind.WORD, Kind.LBRACKET, Kind.RAW, Kind.RBRACKET, Kind.EOL);
     assertThat(t.get(2).text()).isEqualTo("Gripper did not close: R1");
   }
@@ -67,7 +67,7 @@ class LsLexerTest {
 
   @Test
   void columnsAreOneBasedAndOffsetByTheLineStart() {
-    List<LsToken> t = LsLexer.tokenize("UFRAME_NUM=1", 2, 8, true);
+    List<TpToken> t = TpLexer.tokenize("UFRAME_NUM=1", 2, 8, true);
     assertThat(t.get(0).column()).isEqualTo(8);
     assertThat(t.get(1).column()).isEqualTo(18);
     assertThat(t.get(2).line()).isEqualTo(2);

@@ -1,4 +1,4 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import java.math.BigDecimal;
 import java.util.Locale;
@@ -15,20 +15,16 @@ public final class FanucFormat {
 
   /**
    * A position-block value: three decimals right-aligned in ten characters, {@code "   350.000"},
-   * {@code "   -90.000"}. Negative zero prints as zero (a controller never shows "-0.000").
+   * {@code "   -90.000"}, always, as a controller writes them: a taught value such as
+   * -1.2246e-14 mm prints {@code "     0.000"}. Anything that rounds to zero prints unsigned (a
+   * controller never shows "-0.000"). A position is therefore saved to 0.001 mm / 0.001 deg.
    */
   public static String positionValue(double v) {
     String s = String.format(Locale.ROOT, "%10.3f", v);
-    if (s.equals("    -0.000") && v == 0) {
+    if (s.strip().equals("-0.000")) {
       return "     0.000";
     }
-    // A value taught elsewhere may carry more digits than a controller prints; keep them all
-    // (still right-aligned) so that writing never changes a position.
-    if (Double.parseDouble(s) == v) {
-      return s;
-    }
-    String e = exact(v, 3);
-    return e.length() < 10 ? pad(e, 10) : " " + e;
+    return s;
   }
 
   /**

@@ -1,38 +1,38 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.robotrun.io.LsToken.Kind;
+import org.robotrun.program.TpToken.Kind;
 
 /**
  * A position in a token list ending with {@link Kind#EOL}, with the look-ahead and "expected X,
  * found Y" helpers both .LS parsers use. Reading past the end keeps returning the final EOL, so
  * a parser never runs off its input.
  */
-abstract class LsTokenCursor {
-  protected final List<LsToken> tokens;
+public abstract class TpTokenCursor {
+  protected final List<TpToken> tokens;
   private int pos;
 
   /** @param tokens the tokens; must end with an {@link Kind#EOL} token */
-  protected LsTokenCursor(List<LsToken> tokens) {
+  protected TpTokenCursor(List<TpToken> tokens) {
     this.tokens = tokens;
   }
 
   /** An empty cursor whose tokens are added later (the last one added must be an EOL). */
-  protected LsTokenCursor() {
+  protected TpTokenCursor() {
     this(new ArrayList<>());
   }
 
-  protected final LsToken peek() {
+  protected final TpToken peek() {
     return tokens.get(pos);
   }
 
-  protected final LsToken peek(int ahead) {
+  protected final TpToken peek(int ahead) {
     return tokens.get(Math.min(pos + ahead, tokens.size() - 1));
   }
 
-  protected final LsToken next() {
-    LsToken t = tokens.get(pos);
+  protected final TpToken next() {
+    TpToken t = tokens.get(pos);
     if (pos < tokens.size() - 1) {
       pos++;
     }
@@ -47,14 +47,14 @@ abstract class LsTokenCursor {
     return false;
   }
 
-  protected final LsToken expect(Kind k, String what) {
+  protected final TpToken expect(Kind k, String what) {
     if (!peek().is(k)) {
       throw error("expected " + what + ", found " + peek().describe());
     }
     return next();
   }
 
-  protected final LsToken expectWord(String what) {
+  protected final TpToken expectWord(String what) {
     return expect(Kind.WORD, what);
   }
 
@@ -66,11 +66,16 @@ abstract class LsTokenCursor {
   }
 
   /** An error on the line of the next token. */
-  protected final LsSyntaxError error(String message) {
-    return new LsSyntaxError(peek().line(), message);
+  protected final TpSyntaxError error(String message) {
+    return TpSyntaxError.at(peek().line(), peek().column(), message);
   }
 
-  protected static LsSyntaxError error(LsToken at, String message) {
-    return new LsSyntaxError(at.line(), message);
+  protected static TpSyntaxError error(TpToken at, String message) {
+    return TpSyntaxError.at(at.line(), at.column(), message);
+  }
+
+  /** A form the controller has and RobotRun does not run, at {@code at}. */
+  protected static TpSyntaxError unsupported(TpToken at, String what, boolean runnable) {
+    return TpSyntaxError.unsupported(at.line(), at.column(), what, runnable);
   }
 }

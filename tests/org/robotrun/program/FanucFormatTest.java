@@ -1,4 +1,4 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -15,9 +15,16 @@ class FanucFormatTest {
   }
 
   @Test
-  void valuesWithMoreDigitsThanTheFormatKeepThemAll() {
-    assertThat(FanucFormat.positionValue(1234.5678)).isEqualTo(" 1234.5678");
-    assertThat(FanucFormat.positionValue(424.654999)).isEqualTo(" 424.654999");
+  void positionValuesAreRoundedToThreeDecimalsAsAControllerWritesThem() {
+    // Issue 14: a controller writes "Y = 0.000 mm", never -0.000000000000012246.
+    assertThat(FanucFormat.positionValue(1234.5678)).isEqualTo("  1234.568");
+    assertThat(FanucFormat.positionValue(424.654999)).isEqualTo("   424.655");
+    assertThat(FanucFormat.positionValue(-1.2246467991473532e-14)).isEqualTo("     0.000");
+    assertThat(FanucFormat.positionValue(-0.0004)).isEqualTo("     0.000");
+  }
+
+  @Test
+  void otherValuesWithMoreDigitsThanTheFormatKeepThemAll() {
     assertThat(FanucFormat.waitSeconds(1.234)).isEqualTo(" 1.234");
     assertThat(FanucFormat.real(-0.0)).isEqualTo("-0.0");
   }

@@ -1,8 +1,8 @@
-package org.robotrun.io;
+package org.robotrun.program;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.robotrun.io.LsToken.Kind;
+import org.robotrun.program.TpToken.Kind;
 
 /**
  * Splits one line of a .LS file into tokens. It works a line at a time because the format is
@@ -15,8 +15,44 @@ import org.robotrun.io.LsToken.Kind;
  * commented-out line. Everything else is words, numbers, strings and punctuation; a character
  * TP does not use becomes a {@link Kind#BAD_CHAR} token for the parser to report.
  */
-public final class LsLexer {
-  private LsLexer() {}
+public final class TpLexer {
+  private TpLexer() {}
+
+  /**
+   * Keywords of German controller listings and their English form: a German listing reads as
+   * the same program as its English one. The table holds the words seen in German .LS files
+   * (WARTE, AUFRUF, SPRUNG, MARKE, KONFIG ...); an unedited file is written back as read, and an
+   * edited line is written in English, which every controller reads.
+   */
+  private static final java.util.Map<String, String> GERMAN = java.util.Map.ofEntries(
+      java.util.Map.entry("WARTE", "WAIT"),
+      java.util.Map.entry("AUFRUF", "CALL"),
+      java.util.Map.entry("SPRUNG", "JMP"),
+      java.util.Map.entry("MARKE", "LBL"),
+      java.util.Map.entry("WENN", "IF"),
+      java.util.Map.entry("DANN", "THEN"),
+      java.util.Map.entry("SONST", "ELSE"),
+      java.util.Map.entry("ENDE", "END"),
+      java.util.Map.entry("ABBRUCH", "ABORT"),
+      java.util.Map.entry("FEIN", "FINE"),
+      java.util.Map.entry("KONFIG", "CONFIG"),
+      java.util.Map.entry("MELDUNG", "MESSAGE"),
+      java.util.Map.entry("AUSWAHL", "SELECT"),
+      java.util.Map.entry("UND", "AND"),
+      java.util.Map.entry("ODER", "OR"),
+      java.util.Map.entry("EIN", "ON"),
+      java.util.Map.entry("AUS", "OFF"),
+      java.util.Map.entry("SEK", "sec"));
+
+  /** The English keyword for a German one, else {@code word} itself (never after CALL: that is a name). */
+  static String english(String word, List<TpToken> before) {
+    String en = GERMAN.get(word.toUpperCase(java.util.Locale.ROOT));
+    if (en == null || (!before.isEmpty() && (before.get(before.size() - 1).isWord("CALL")
+        || before.get(before.size() - 1).isWord("RUN")))) {
+      return word;
+    }
+    return en;
+  }
 
   /** Shared one-character token texts, so punctuation does not allocate a string per token. */
   private static final String[] ONE_CHAR = new String[128];
@@ -36,8 +72,8 @@ public final class LsLexer {
    * @param statement true for a /MN statement body, where a leading {@code !} or {@code //}
    *     makes the rest of the line free text
    */
-  public static List<LsToken> tokenize(String text, int line, int firstColumn, boolean statement) {
-    List<LsToken> out = new ArrayList<>(24);
+  public static List<TpToken> tokenize(String text, int line, int firstColumn, boolean statement) {
+    List<TpToken> out = new ArrayList<>(24);
     int n = text.length();
     int i = 0;
     int bracketDepth = 0;
@@ -50,24 +86,36 @@ public final class LsLexer {
       }
       if (statement && out.isEmpty()) {
         if (c == '!') {
-          out.add(new LsToken(Kind.BANG, "!", line, col));
-          out.add(new LsToken(Kind.RAW, text.substring(i + 1), line, col + 1));
+          out.add(new TpToken(Kind.BANG, "!", line, col));
+          out.add(new TpToken(Kind.RAW, text.substring(i + 1), line, col + 1));
+          i = n;
+          continue;
+        }
+        if (c == '-' && i + 1 < n && text.charAt(i + 1) == '-') {
+          // "--eg:text": a remark line (some controller versions write them)
+          out.add(new TpToken(Kind.MINUS, "--", line, col));
+          out.add(new TpToken(Kind.RAW, text.substring(i + 2), line, col + 2));
           i = n;
           continue;
         }
         if (c == '/' && i + 1 < n && text.charAt(i + 1) == '/') {
-          out.add(new LsToken(Kind.SLASH, "//", line, col));
-          out.add(new LsToken(Kind.RAW, text.substring(i + 2), line, col + 2));
+          out.add(new TpToken(Kind.SLASH, "//", line, col));
+          out.add(new TpToken(Kind.RAW, text.substring(i + 2), line, col + 2));
           i = n;
           continue;
         }
+      }
+      if (c == '@' && i + 1 < n && (text.charAt(i + 1) == 'P' || text.charAt(i + 1) == 'p')) {
+        // "J @P[3] 100% FINE": the controller marks the point the robot stands at; not part of the statement
+        i++;
+        continue;
       }
       if (isWordStart(c)) {
         int j = i + 1;
         while (j < n && isWordPart(text.charAt(j))) {
           j++;
         }
-        out.add(new LsToken(Kind.WORD, text.substring(i, j), line, col));
+        out.add(new TpToken(Kind.WORD, english(text.substring(i, j), out), line, col));
         i = j;
         continue;
       }
@@ -82,7 +130,7 @@ public final class LsLexer {
             j++;
           }
         }
-        out.add(new LsToken(Kind.NUMBER, text.substring(i, j), line, col));
+        out.add(new TpToken(Kind.NUMBER, text.substring(i, j), line, col));
         i = j;
         continue;
       }
@@ -91,21 +139,21 @@ public final class LsLexer {
           int end = text.indexOf(c, i + 1);
           if (end < 0) {
             // Unclosed: the parser sees a string running to the end and a BAD_CHAR for the quote.
-            out.add(new LsToken(Kind.BAD_CHAR, String.valueOf(c), line, col));
+            out.add(new TpToken(Kind.BAD_CHAR, String.valueOf(c), line, col));
             i++;
           } else {
-            out.add(new LsToken(Kind.STRING, text.substring(i + 1, end), line, col));
+            out.add(new TpToken(Kind.STRING, text.substring(i + 1, end), line, col));
             i = end + 1;
           }
         }
         case '[' -> {
           boolean message = !out.isEmpty() && out.get(out.size() - 1).isWord("MESSAGE");
-          out.add(new LsToken(Kind.LBRACKET, ONE_CHAR['['], line, col));
+          out.add(new TpToken(Kind.LBRACKET, ONE_CHAR['['], line, col));
           i++;
           if (message) {
             int end = text.indexOf(']', i);
             int stop = end < 0 ? n : end;
-            out.add(new LsToken(Kind.RAW, text.substring(i, stop), line, firstColumn + i));
+            out.add(new TpToken(Kind.RAW, text.substring(i, stop), line, firstColumn + i));
             i = stop;
           } else {
             bracketDepth++;
@@ -113,48 +161,48 @@ public final class LsLexer {
         }
         case ']' -> {
           bracketDepth = Math.max(0, bracketDepth - 1);
-          out.add(new LsToken(Kind.RBRACKET, ONE_CHAR[']'], line, col));
+          out.add(new TpToken(Kind.RBRACKET, ONE_CHAR[']'], line, col));
           i++;
         }
         case ':' -> {
-          out.add(new LsToken(Kind.COLON, ONE_CHAR[':'], line, col));
+          out.add(new TpToken(Kind.COLON, ONE_CHAR[':'], line, col));
           i++;
           if (bracketDepth > 0) {
             int end = text.indexOf(']', i);
             int stop = end < 0 ? n : end;
-            out.add(new LsToken(Kind.ITEM_COMMENT, text.substring(i, stop), line, firstColumn + i));
+            out.add(new TpToken(Kind.ITEM_COMMENT, text.substring(i, stop), line, firstColumn + i));
             i = stop;
           }
         }
         case '<' -> {
           if (i + 1 < n && text.charAt(i + 1) == '>') {
-            out.add(new LsToken(Kind.NE, "<>", line, col));
+            out.add(new TpToken(Kind.NE, "<>", line, col));
             i += 2;
           } else if (i + 1 < n && text.charAt(i + 1) == '=') {
-            out.add(new LsToken(Kind.LE, "<=", line, col));
+            out.add(new TpToken(Kind.LE, "<=", line, col));
             i += 2;
           } else {
-            out.add(new LsToken(Kind.LT, "<", line, col));
+            out.add(new TpToken(Kind.LT, "<", line, col));
             i++;
           }
         }
         case '>' -> {
           if (i + 1 < n && text.charAt(i + 1) == '=') {
-            out.add(new LsToken(Kind.GE, ">=", line, col));
+            out.add(new TpToken(Kind.GE, ">=", line, col));
             i += 2;
           } else {
-            out.add(new LsToken(Kind.GT, ">", line, col));
+            out.add(new TpToken(Kind.GT, ">", line, col));
             i++;
           }
         }
         default -> {
           Kind k = single(c);
-          out.add(new LsToken(k, c < ONE_CHAR.length ? ONE_CHAR[c] : String.valueOf(c), line, col));
+          out.add(new TpToken(k, c < ONE_CHAR.length ? ONE_CHAR[c] : String.valueOf(c), line, col));
           i++;
         }
       }
     }
-    out.add(new LsToken(Kind.EOL, "", line, firstColumn + n));
+    out.add(new TpToken(Kind.EOL, "", line, firstColumn + n));
     return out;
   }
 

@@ -1,0 +1,65 @@
+package org.robotrun.program;
+
+import java.util.EnumSet;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The controller's entry rules for expressions (issue 13; docs/tp-language.md, "Entry rules"):
+ * on a line without parentheses, {@code +}/{@code -} are not mixed with {@code *}, {@code /},
+ * {@code DIV}, {@code MOD}, and {@code AND} is not mixed with {@code OR}. An expression in
+ * parentheses is a mixed-logic expression, where any mix is allowed with the usual precedence.
+ * The pendant refuses such an entry with this reason; {@code check} warns about it in a file.
+ */
+public final class EntryRules {
+  private EntryRules() {}
+
+  private static final Set<Expr.BinaryOp> ADDITIVE = EnumSet.of(Expr.BinaryOp.ADD, Expr.BinaryOp.SUB);
+  private static final Set<Expr.BinaryOp> MULTIPLICATIVE =
+      EnumSet.of(Expr.BinaryOp.MUL, Expr.BinaryOp.DIVIDE, Expr.BinaryOp.DIV, Expr.BinaryOp.MOD);
+
+  /** Why a controller would refuse {@code e} as typed, or empty when it takes it. */
+  public static Optional<String> refusal(Expr e) {
+    if (hasGroup(e, 0)) {
+      return Optional.empty(); // mixed logic: parentheses allow any mix
+    }
+    Set<Expr.BinaryOp> ops = EnumSet.noneOf(Expr.BinaryOp.class);
+    collect(e, ops, 0);
+    if (ops.stream().anyMatch(ADDITIVE::contains) && ops.stream().anyMatch(MULTIPLICATIVE::contains)) {
+      return Optional.of("the controller does not mix + or - with *, /, DIV or MOD on a line without parentheses: "
+          + "put the expression in parentheses (mixed logic)");
+    }
+    if (ops.contains(Expr.BinaryOp.AND) && ops.contains(Expr.BinaryOp.OR)) {
+      return Optional.of("the controller does not mix AND with OR on a line without parentheses: "
+          + "put the condition in parentheses (mixed logic)");
+    }
+    return Optional.empty();
+  }
+
+  private static boolean hasGroup(Expr e, int depth) {
+    if (depth > TpLimits.MAX_OPERATORS) {
+      return false;
+    }
+    return switch (e) {
+      case Expr.Group g -> true;
+      case Expr.Unary u -> hasGroup(u.operand(), depth + 1);
+      case Expr.Binary b -> hasGroup(b.left(), depth + 1) || hasGroup(b.right(), depth + 1);
+      default -> false;
+    };
+  }
+
+  private static void collect(Expr e, Set<Expr.BinaryOp> ops, int depth) {
+    if (depth > TpLimits.MAX_OPERATORS) {
+      return;
+    }
+    switch (e) {
+      case Expr.Unary u -> collect(u.operand(), ops, depth + 1);
+      case Expr.Binary b -> {
+        ops.add(b.op());
+        collect(b.left(), ops, depth + 1);
+        collect(b.right(), ops, depth + 1);
+      }
+      default -> { }
+    }
+  }
+}

@@ -1,0 +1,137 @@
+package org.robotrun.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.robotrun.program.Instruction;
+import org.robotrun.program.Motion;
+import org.robotrun.program.Program;
+
+/**
+ * The corpus of controller-style listings under tests/resources/corpus (written for this
+ * project as controllers list programs: CRLF and LF, Latin-1, German keywords, macros,
+ * background logic, multi-group positions, vision, palletizing, monitors): every file reads
+ * with no syntax error, comes back byte for byte, matches its golden model (NAME.model), and
+ * its model written afresh in the controller's layout reads back as the same model.
+ */
+class LsCorpusTest {
+  private static final Path CORPUS = Path.of("tests/resources/corpus");
+
+  private static List<Path> files() throws IOException {
+    try (Stream<Path> s = Files.list(CORPUS)) {
+      return s.filter(p -> p.toString().endsWith(".LS")).sorted().toList();
+    }
+  }
+
+  /** The model as one line per /MN line and per position: what the golden files hold. */
+  static String modelText(Program p) {
+    List<String> out = new ArrayList<>();
+    out.add("name " + p.name());
+    out.add("comment " + p.comment());
+    p.attributes().forEach((k, v) -> out.add("attr " + k + " = " + v));
+    for (int i = 1; i <= p.lineCount(); i++) {
+      out.add(i + " " + p.line(i));
+    }
+    p.positions().values().forEach(lp -> out.add("pos " + lp));
+    return out.stream().collect(Collectors.joining("\n", "", "\n"));
+  }
+
+  @Test
+  void everyCorpusFileReadsWithNoSyntaxErrorAndComesBackByteForByte() throws IOException {
+    List<Path> files = files();
+    assertThat(files).hasSizeGreaterThanOrEqualTo(9);
+    for (Path f : files) {
+      LsReadResult r = LsReader.read(f);
+      assertThat(r.diagnostics()).as("%s", f).noneMatch(d -> d.kind() == Diagnostic.Kind.SYNTAX);
+      assertThat(r.hasErrors()).as("%s loads", f).isFalse();
+      assertThat(LsWriter.bytes(r.program())).as("%s round trip", f).isEqualTo(Files.readAllBytes(f));
+    }
+  }
+
+  @Test
+  void everyCorpusFileMatchesItsGoldenModel() throws IOException {
+    for (Path f : files()) {
+      Path golden = f.resolveSibling(f.getFileName().toString().replace(".LS", ".model"));
+      String actual = modelText(LsReader.read(f).program());
+      if (Boolean.getBoolean("robotrun.updateGolden")) {
+        Files.writeString(golden, actual, StandardCharsets.UTF_8);
+      }
+      assertThat(actual).as("%s (rerun with -Drobotrun.updateGolden=true after a deliberate change)", f)
+          .isEqualTo(Files.readString(golden, StandardCharsets.UTF_8));
+    }
+  }
+
+  @Test
+  void theModelWrittenInTheControllersLayoutReadsBackAsTheSameModel() throws IOException {
+    for (Path f : files()) {
+      Program p = LsReader.read(f).program();
+      String fresh = LsWriter.write(p.withoutSource());
+      LsReadResult again = LsReader.parse(f.getFileName().toString(), fresh);
+      assertThat(again.program()).as("%s written as:%n%s", f, fresh).isEqualTo(p);
+    }
+  }
+
+  @Test
+  void anEditedLineIsTheOnlyLineThatChanges() throws IOException {
+    Path f = CORPUS.resolve("PNP_MAIN.LS");
+    Program p = LsReader.read(f).program();
+    List<Instruction> lines = new ArrayList<>(p.lines());
+    lines.set(9, new Instruction.AssignRegister(new org.robotrun.program.Item(new org.robotrun.program.Index.Direct(1), "COUNT"),
+        new org.robotrun.program.Expr.IntConst(5)));
+    String before = Files.readString(f, StandardCharsets.ISO_8859_1);
+    String after = new String(LsWriter.bytes(p.withBody(lines, p.positions())), StandardCharsets.ISO_8859_1);
+    List<String> b = before.lines().toList();
+    List<String> a = after.lines().toList();
+    assertThat(a).hasSameSizeAs(b);
+    List<Integer> changed = new ArrayList<>();
+    for (int i = 0; i < b.size(); i++) {
+      if (!a.get(i).equals(b.get(i))) {
+        changed.add(i);
+      }
+    }
+    assertThat(changed).hasSize(1);
+    assertThat(a.get(changed.get(0))).isEqualTo("  10:  R[1:COUNT]=5    ;");
+    assertThat(after).contains("\r\n").doesNotContain("\n\n");
+  }
+
+  @Test
+  void theGermanListingReadsAsTheSameProgramAsItsEnglishListing() throws IOException {
+    Path f = CORPUS.resolve("HAUPT.LS");
+    String german = Files.readString(f, StandardCharsets.ISO_8859_1);
+    String english = german.replace("MARKE[", "LBL[").replace("FEIN", "FINE").replace("WARTE", "WAIT")
+        .replace("=EIN", "=ON").replace("AUFRUF", "CALL").replace("WENN", "IF").replace("SPRUNG", "JMP")
+        .replace("ENDE", "END").replace("KONFIG", "CONFIG");
+    assertThat(english).isNotEqualTo(german);
+    assertThat(LsReader.parse("HAUPT.LS", english).program()).isEqualTo(LsReader.read(f).program());
+  }
+
+  @Test
+  void unsupportedFormsAreKeptAndReportedOncePerKind() throws IOException {
+    LsReadResult r = LsReader.read(CORPUS.resolve("VIS_PICK.LS"));
+    assertThat(r.program().lines()).filteredOn(in -> in instanceof Instruction.Unsupported).hasSize(9);
+    assertThat(r.diagnostics()).filteredOn(d -> d.message().startsWith("not supported: iRVision")).hasSize(1)
+        .allMatch(d -> d.message().endsWith("(and 2 more lines)"));
+    Instruction.Move vmove = (Instruction.Move) r.program().line(5);
+    assertThat(vmove.options()).containsExactly(new Motion.RawOption("VOFFSET,VR[1]", "vision offset VOFFSET"));
+  }
+
+  @Test
+  void everyFormInOneFileReadsWithNoSyntaxErrorAndRoundTrips() throws IOException {
+    // tests/resources/forms/ALLFORMS.LS: one line per statement form listed in issue 14 and more
+    Path f = Path.of("tests/resources/forms/ALLFORMS.LS");
+    LsReadResult r = LsReader.read(f);
+    assertThat(r.diagnostics()).noneMatch(d -> d.kind() == Diagnostic.Kind.SYNTAX);
+    assertThat(r.program().lineCount()).isEqualTo(117);
+    assertThat(LsWriter.bytes(r.program())).isEqualTo(Files.readAllBytes(f));
+    String fresh = LsWriter.write(r.program().withoutSource());
+    assertThat(LsReader.parse("ALLFORMS.LS", fresh).program()).as(fresh).isEqualTo(r.program());
+  }
+}
