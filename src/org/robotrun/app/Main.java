@@ -1,6 +1,7 @@
 package org.robotrun.app;
 
 import java.io.PrintWriter;
+import org.robotrun.io.TerminalText;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -99,7 +100,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
   /** Bad command-line input: one line naming the problem, then where to get help. Exit 2. */
   private static int onParameterException(CommandLine.ParameterException e, String[] args) {
     PrintWriter err = e.getCommandLine().getErr();
-    err.println("robotrun: " + e.getMessage());
+    err.println(TerminalText.safe("robotrun: " + e.getMessage()));
     err.println("Try '" + e.getCommandLine().getCommandSpec().qualifiedName() + " --help' for more information.");
     err.flush();
     return EXIT_BAD_INPUT;
@@ -109,12 +110,12 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
   private static int onExecutionException(Exception e, CommandLine cl, CommandLine.ParseResult pr) {
     PrintWriter err = cl.getErr();
     if (e instanceof UserError ue) {
-      err.println("robotrun: " + ue.getMessage());
+      err.println(TerminalText.safe("robotrun: " + ue.getMessage()));
       err.flush();
       return ue.exitCode();
     }
     String msg = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-    err.println("robotrun: internal error: " + msg);
+    err.println(TerminalText.safe("robotrun: internal error: " + msg));
     if (System.getenv("ROBOTRUN_DEBUG") != null) {
       e.printStackTrace(err);
     } else {

@@ -12,6 +12,7 @@ import org.robotrun.io.FileFormatException;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.LsWriter;
+import org.robotrun.io.TerminalText;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
@@ -59,6 +60,11 @@ public final class PendantCommand implements Callable<Integer> {
           + "the pendant drives its first robot. Default: the default cell.")
   Path scenario;
 
+  @Option(names = "--max-wall-seconds", paramLabel = "N", defaultValue = "3600",
+      description = "Stop with exit code 1 when the script has run this long in real (wall-clock) time, 1.."
+          + "86400 (default: ${DEFAULT-VALUE}). A safety net for graders; results are otherwise deterministic.")
+  double maxWallSeconds;
+
   @Spec
   CommandSpec spec;
 
@@ -67,14 +73,8 @@ public final class PendantCommand implements Callable<Integer> {
     if (saveDir != null && !Files.isDirectory(saveDir)) {
       throw new UserError("--save: the directory " + saveDir + " does not exist");
     }
-    List<String> lines;
-    try {
-      lines = Files.readAllLines(keys, StandardCharsets.UTF_8);
-    } catch (java.nio.file.NoSuchFileException e) {
-      throw new UserError("--keys: no such file " + keys);
-    } catch (IOException e) {
-      throw new UserError("--keys: cannot read " + keys + " (" + e.getMessage() + ")");
-    }
+    WallClock.checkOption(maxWallSeconds);
+    List<String> lines = InputFiles.lines("--keys", keys, KeyScript.MAX_FILE_BYTES, "key scripts");
     KeyScript script = switch (KeyScript.parse(keys.toString(), lines)) {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new UserError(bad.error().display());
@@ -110,8 +110,14 @@ public final class PendantCommand implements Callable<Integer> {
       control.saveProgram(readProgram(file));
     }
     PrintWriter out = spec.commandLine().getOut();
-    script.run(new Pendant(control, new LsLineParser()), text -> out.print(text));
+    WallClock clock = WallClock.start(maxWallSeconds);
+    int stoppedAt = script.run(new Pendant(control, new LsLineParser()), text -> out.print(TerminalText.safe(text)),
+        clock::expired);
     out.flush();
+    if (stoppedAt > 0) {
+      throw new UserError(keys + ":" + stoppedAt + ": stopped: the script ran longer than --max-wall-seconds "
+          + WallClock.format(maxWallSeconds) + " s of real time", Main.EXIT_FAILED);
+    }
     if (saveDir != null) {
       for (String name : control.programNames()) {
         Path file = saveDir.resolve(name + ".LS");

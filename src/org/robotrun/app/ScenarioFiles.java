@@ -25,7 +25,7 @@ final class ScenarioFiles {
 
   /** Reads the scenario or throws one error listing every problem found (file:line: path: what). */
   static Scenario load(Path file) {
-    if (!Files.isRegularFile(file)) {
+    if (!Files.exists(file)) {
       throw new UserError("--scenario: no such file " + file);
     }
     return switch (ScenarioReader.read(file)) {

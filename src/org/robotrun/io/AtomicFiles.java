@@ -51,7 +51,7 @@ public final class AtomicFiles {
     Path abs = target.toAbsolutePath();
     Path dir = abs.getParent();
     if (dir == null) throw new IOException(abs + ": not a file path");
-    if (Files.isDirectory(abs)) throw new IOException(abs + ": is a folder");
+    refuseSpecial(abs);
     Path tmp = createUniqueTemp(dir, abs.getFileName().toString());
     try {
       try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE);
@@ -83,9 +83,30 @@ public final class AtomicFiles {
     Path abs = target.toAbsolutePath();
     Path dir = abs.getParent();
     if (dir == null || !Files.isDirectory(dir)) throw new IOException(abs + ": the folder does not exist");
-    if (Files.isDirectory(abs)) throw new IOException(abs + ": is a folder");
-    Path probe = createUniqueTemp(dir, abs.getFileName().toString());
+    refuseSpecial(abs);
+    if (Files.exists(abs) && !Files.isWritable(abs)) throw new IOException(abs + ": the file is read-only");
+    Path probe;
+    try {
+      probe = createUniqueTemp(dir, abs.getFileName().toString());
+    } catch (IOException e) {
+      String why = e instanceof java.nio.file.AccessDeniedException ? "permission denied"
+          : e instanceof java.nio.file.NoSuchFileException ? "the folder cannot hold new files"
+          : e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+      throw new IOException(abs + ": cannot create a file in " + dir + " (" + why + ")");
+    }
     Files.deleteIfExists(probe);
+  }
+
+  /**
+   * Refuses a target that exists and is not a regular file: a folder, or a device or pipe
+   * ({@code /dev/full}, a FIFO) that a rename would replace with a plain file.
+   */
+  private static void refuseSpecial(Path abs) throws IOException {
+    if (Files.isDirectory(abs)) throw new IOException(abs + ": is a folder");
+    if (Files.exists(abs) && !Files.isRegularFile(abs)) {
+      String kind = BoundedFiles.kind(abs, Files.readAttributes(abs, java.nio.file.attribute.BasicFileAttributes.class));
+      throw new IOException(abs + ": is " + kind + ", not a regular file");
+    }
   }
 
   /** Creates an empty, unique temporary file beside the target, with umask permissions. */
