@@ -463,20 +463,25 @@ public final class Package {
 
     List<String> gui = new ArrayList<>(java);
     gui.addAll(List.of("gui", "--scenario", scenario.toAbsolutePath().toString(), "--quit-after-frames", "5"));
+    // The window opens a workspace in the user's data folder: give the training run its own.
+    Path home = Files.createDirectories(work.resolve("training-home"));
+    Map<String, String> env = Map.of("HOME", home.toString(), "XDG_DATA_HOME", home.resolve("data").toString(),
+        "XDG_CONFIG_HOME", home.resolve("config").toString(), "APPDATA", home.resolve("AppData").toString(),
+        "LOCALAPPDATA", home.resolve("LocalAppData").toString());
     boolean display = os.equals("linux") ? System.getenv("DISPLAY") != null || System.getenv("WAYLAND_DISPLAY") != null : !"1".equals(System.getenv("ROBOTRUN_PACKAGE_HEADLESS_TRAINING"));
     int code = -1;
     if (display) {
-      code = run(gui, 120);
+      code = run(gui, 120, env);
     } else if (os.equals("linux") && onPath("xvfb-run")) {
       List<String> x = new ArrayList<>(List.of("xvfb-run", "-a", "-s", "-screen 0 1366x768x24"));
       x.addAll(gui);
-      code = run(x, 120);
+      code = run(x, 120, env);
     }
     if (code != 0) {
       log("CDS training: no window here (exit " + code + "), training on a headless run of " + scenario);
       List<String> headless = new ArrayList<>(java);
       headless.addAll(List.of("run", "--scenario", scenario.toAbsolutePath().toString()));
-      code = run(headless, 300);
+      code = run(headless, 300, env);
     }
     if (code != 0 || !Files.exists(archive)) {
       log("CDS training failed (exit " + code + "): packaging without an AppCDS archive");
@@ -666,8 +671,14 @@ public final class Package {
   }
 
   static int run(List<String> cmd, int timeoutSec) throws Exception {
+    return run(cmd, timeoutSec, Map.of());
+  }
+
+  static int run(List<String> cmd, int timeoutSec, Map<String, String> env) throws Exception {
     log("$ " + String.join(" ", cmd));
-    Process p = new ProcessBuilder(cmd).inheritIO().start();
+    ProcessBuilder pb = new ProcessBuilder(cmd).inheritIO();
+    pb.environment().putAll(env);
+    Process p = pb.start();
     if (!p.waitFor(timeoutSec, TimeUnit.SECONDS)) {
       p.destroyForcibly();
       return -2;

@@ -25,7 +25,7 @@ scenario="$(cd "$(dirname "$0")/.." && pwd)/scenarios/pick-and-place.json"
 median() { sort -n | awk '{a[NR]=$1} END {m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.3f", m}'; }
 one() {  # VARIANT ARGS...: "wall cpu" seconds of one run, with no JDK on the PATH
   local launcher="$variants/$1/bin/RobotRun"; shift
-  env -i PATH=/usr/bin:/bin HOME="$HOME" DISPLAY="${DISPLAY:-}" XAUTHORITY="${XAUTHORITY:-}" \
+  env -i PATH=/usr/bin:/bin HOME="$variants/home" DISPLAY="${DISPLAY:-}" XAUTHORITY="${XAUTHORITY:-}" \
     /usr/bin/time -f '%e %U %S' -o /dev/stdout "$launcher" "$@" 2>/dev/null | tail -1 | awk '{printf "%.2f %.2f\n", $1, $2 + $3}'
 }
 series() {

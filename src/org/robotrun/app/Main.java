@@ -12,8 +12,9 @@ import picocli.CommandLine.Command;
     versionProvider = Main.Version.class,
     description = {
       "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate and program robots.",
-      "With no subcommand it opens the simulator window; 'robotrun --scenario FILE.json'",
-      "(or just 'robotrun FILE.json') opens it on a scenario's cell, as 'robotrun gui' does.",
+      "With no subcommand it opens the simulator window on the last workspace (or a new default one);",
+      "'robotrun --workspace DIR' opens a workspace anywhere, and 'robotrun --scenario FILE.json' (or just",
+      "'robotrun FILE.json') starts a new workspace copied from a scenario, as 'robotrun gui' does.",
       ""
     },
     subcommands = {

@@ -47,6 +47,7 @@ import picocli.CommandLine.Option;
       "Run a TP program with no window, as fast as the machine allows, in 4 ms simulation ticks.",
       "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
           + "before --programs; --program defaults to its main program); the program runs on the first robot.",
+      "With --workspace DIR|FILE.zip they come from a workspace or a hand-in (docs/workspace.md), as the window would run them.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
           + "reports it closed 0.1 s later.",
@@ -60,8 +61,13 @@ public final class RunCommand implements Callable<Integer> {
       description = "Scenario JSON (robots, world, frames, registers, programs; docs/scenario-format.md). Default: the default cell.")
   Path scenario;
 
+  @Option(names = "--workspace", paramLabel = "DIR|FILE.zip",
+      description = "A workspace folder or a hand-in zip: its cell, saved state (registers, frames, outputs) and programs, "
+          + "run as the window would; --program defaults to its main program. The workspace is not changed.")
+  Path workspace;
+
   @Option(names = "--program", paramLabel = "NAME",
-      description = "The program to run (its /PROG name). Default: the scenario's main program.")
+      description = "The program to run (its /PROG name). Default: the scenario's or workspace's main program.")
   String program;
 
   @Option(names = "--programs", arity = "1..*", paramLabel = "DIR|FILE.ls",
@@ -109,7 +115,29 @@ public final class RunCommand implements Callable<Integer> {
     }
     Simulation sim;
     List<Path> programFiles = new ArrayList<>();
-    if (scenario != null) {
+    List<Program> fromWorkspace = new ArrayList<>();
+    WorkspaceSession session = null;
+    if (workspace != null) {
+      if (scenario != null) {
+        throw new UserError("--workspace and --scenario: give one of them (a workspace has its own cell)");
+      }
+      session = WorkspaceSession.open(workspace, true, java.util.Optional::empty, m -> {});
+      if (session.workspace.cellBlocked()) {
+        String why = session.problems();
+        session.close();
+        throw new UserError(why);
+      }
+      if (!session.workspace.problems().isEmpty()) {
+        System.err.println("robotrun: warning: " + session.problems());
+      }
+      sim = session.sim;
+      fromWorkspace.addAll(session.workspace.programs());
+      if (program == null) {
+        String ws = workspace.toString();
+        program = session.workspace.scenario().mainProgram().orElseThrow(() -> new UserError(
+            "--program: name the program to run (the workspace " + ws + " names no main program)"));
+      }
+    } else if (scenario != null) {
       Scenario sc = switch (ScenarioReader.read(scenario)) {
         case ScenarioLoad.Loaded l -> l.scenario();
         case ScenarioLoad.Failed f -> throw new UserError(f.message());
@@ -131,7 +159,8 @@ public final class RunCommand implements Callable<Integer> {
       }
     }
     programFiles.addAll(programs);
-    List<Program> loaded = loadPrograms(programFiles);
+    List<Program> loaded = new ArrayList<>(fromWorkspace);
+    loaded.addAll(loadPrograms(programFiles));
     // Program names are upper case on the controller; accept 'pick3' for PICK3.
     String wanted = program;
     program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
@@ -168,6 +197,9 @@ public final class RunCommand implements Callable<Integer> {
       case ALARM -> "alarm " + r.alarm().orElseThrow().display();
     };
     System.out.println(TerminalText.safe(summary));
+    if (session != null) {
+      session.close();
+    }
     return r.status() == HeadlessRun.Status.FINISHED ? Main.EXIT_OK : Main.EXIT_FAILED;
   }
 

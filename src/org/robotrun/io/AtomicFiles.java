@@ -48,6 +48,25 @@ public final class AtomicFiles {
    * buffered by the caller's choice; it is flushed and forced to disk here.
    */
   public static void write(Path target, Content content) throws IOException {
+    write(target, content, true);
+  }
+
+  /**
+   * Replaces {@code target} as {@link #write(Path, byte[])} does (temporary file, forced, renamed)
+   * but leaves the folder sync to the caller, who saves many files of one folder together and
+   * then calls {@link #syncFolder} once. Each file is whole after a crash either way; the folder
+   * sync makes the renames themselves durable.
+   */
+  public static void writeLeavingFolderSync(Path target, byte[] bytes) throws IOException {
+    write(target, out -> out.write(bytes), false);
+  }
+
+  /** Forces a folder's entries to disk (after {@link #writeLeavingFolderSync}); a no-op where unsupported. */
+  public static void syncFolder(Path dir) {
+    forceFolder(dir.toAbsolutePath());
+  }
+
+  private static void write(Path target, Content content, boolean syncFolder) throws IOException {
     Path abs = target.toAbsolutePath();
     Path dir = abs.getParent();
     if (dir == null) throw new IOException(abs + ": not a file path");
@@ -67,7 +86,9 @@ public final class AtomicFiles {
         // Some file systems (network shares) cannot rename atomically; a plain replace is the best left.
         Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
       }
-      forceFolder(dir);
+      if (syncFolder) {
+        forceFolder(dir);
+      }
     } finally {
       Files.deleteIfExists(tmp);
     }

@@ -68,7 +68,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision");
+      "onCollision", "state");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo");
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
@@ -81,8 +81,28 @@ public final class ScenarioReader {
 
   private ScenarioReader() {}
 
-  /** Loads a scenario file. Never throws for bad content: errors come back in the result. */
+  /**
+   * Loads a scenario file. Never throws for bad content: errors come back in the result. A
+   * {@code "state"} section (a workspace's saved controller state) is checked but not applied:
+   * open the folder as a workspace for that.
+   */
   public static ScenarioLoad read(Path file) {
+    return switch (readCell(file, false)) {
+      case CellLoad.Loaded l -> new ScenarioLoad.Loaded(l.scenario());
+      case CellLoad.Failed f -> new ScenarioLoad.Failed(f.errors());
+    };
+  }
+
+  /**
+   * Loads a workspace's {@code cell.json}: a scenario plus its {@code "state"} section. The
+   * programs live in the workspace's {@code programs/} folder, so {@code mainProgram} need not be
+   * listed in {@code "programs"}.
+   */
+  public static CellLoad readCell(Path file) {
+    return readCell(file, true);
+  }
+
+  private static CellLoad readCell(Path file, boolean workspace) {
     String name = file.toString();
     String text;
     try {
@@ -93,11 +113,11 @@ public final class ScenarioReader {
       return fail(name, e.line(), e.reason());
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
-    return new Session(name, dir).read(text);
+    return new Session(name, dir, workspace).read(text);
   }
 
-  private static ScenarioLoad fail(String file, int line, String message) {
-    return new ScenarioLoad.Failed(List.of(new ScenarioError(file, line, "", message)));
+  private static CellLoad fail(String file, int line, String message) {
+    return new CellLoad.Failed(List.of(new ScenarioError(file, line, "", message)));
   }
 
   /** One load: the file, its folder and the errors found so far. */
@@ -109,25 +129,28 @@ public final class ScenarioReader {
     /** Where each name was first defined, for duplicate messages. */
     private final Map<String, String> definedAt = new HashMap<>();
 
-    Session(String file, Path dir) {
+    private final boolean workspace;
+
+    Session(String file, Path dir, boolean workspace) {
       this.file = file;
       this.dir = dir;
+      this.workspace = workspace;
     }
 
-    ScenarioLoad read(String text) {
+    CellLoad read(String text) {
       List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
       LocatedJson root;
       try {
         root = LocatedJson.parse(text, duplicates);
       } catch (LocatedJson.SyntaxError e) {
-        return new ScenarioLoad.Failed(List.of(new ScenarioError(file, e.line, "", e.getMessage())));
+        return new CellLoad.Failed(List.of(new ScenarioError(file, e.line, "", e.getMessage())));
       }
       for (LocatedJson.DuplicateKey d : duplicates) {
         errors.add(new ScenarioError(file, d.line(), d.key(), "field given twice"));
       }
       JObject top = object(root, "", TOP);
       if (top == null) {
-        return new ScenarioLoad.Failed(errors);
+        return new CellLoad.Failed(errors);
       }
       checkFormat(top);
       String title = string(top, "name", "", false).orElse("");
@@ -143,16 +166,23 @@ public final class ScenarioReader {
       Optional<CameraView> camera = camera(top);
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
+      SavedState state = null;
+      LocatedJson stateJson = top.members().get("state");
+      if (stateJson instanceof JObject so) {
+        state = StateJson.read(so, this::error);
+      } else if (stateJson != null) {
+        error(stateJson.line(), "state", "expected an object, got " + stateJson.describe());
+      }
       if (!errors.isEmpty()) {
         errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
-        return new ScenarioLoad.Failed(errors);
+        return new CellLoad.Failed(errors);
       }
       try {
-        return new ScenarioLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision));
+        return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision), Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
-        return new ScenarioLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
+        return new CellLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
       }
     }
 
@@ -527,7 +557,7 @@ public final class ScenarioReader {
           }
         }
       }
-      if (!listed) {
+      if (!listed && !workspace) {
         error(line, "mainProgram", "'" + main.get() + "' is not one of the programs listed in \"programs\"");
         return Optional.empty();
       }
