@@ -10,6 +10,7 @@ set -euo pipefail
 img="$(cd "$1" && pwd)"; runs="${2:-7}"
 variants="$(mktemp -d)"
 trap 'rm -rf "$variants"' EXIT
+mkdir -p "$variants/home"
 # The launcher reads its JVM options from lib/app/RobotRun.cfg only (not JDK_JAVA_OPTIONS): each
 # variant is a hard-linked copy of the image with its own .cfg.
 variant() {  # NAME SED-EXPRESSION
