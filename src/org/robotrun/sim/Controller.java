@@ -412,6 +412,17 @@ public final class Controller implements MotionPort {
    * (keyboard) or latched (on-screen click).
    */
   public CommandResult jogKeyDown(int axis, int sign, JogState.Press press) {
+    CommandResult refused = jogRefusal();
+    if (refused != null) {
+      return refused;
+    }
+    jogMessage = "";
+    jogKeys.keyDown(axis - 1, sign, press);
+    return CommandResult.ok();
+  }
+
+  /** Why a jog may not start now (alarm, DEADMAN, a program moving, AUTO, E-stop), or null when it may. */
+  private CommandResult jogRefusal() {
     if (!activeAlarms.isEmpty()) {
       return CommandResult.refused("alarm active: RESET first");
     }
@@ -427,9 +438,7 @@ public final class Controller implements MotionPort {
     if (estopped()) {
       return CommandResult.refused("E-stop pressed: release it and RESET");
     }
-    jogMessage = "";
-    jogKeys.keyDown(axis - 1, sign, press);
-    return CommandResult.ok();
+    return null;
   }
 
   /** The frame USER and JGFRM jog along: the active user frame or the active jog frame. */
@@ -452,20 +461,9 @@ public final class Controller implements MotionPort {
    * {@value #VFINE_STEP_MM} mm / {@value #VFINE_STEP_DEG} deg (the R-30iB's approximate sizes).
    */
   public CommandResult jogIncrement(int axis, int sign, boolean veryFine) {
-    if (!activeAlarms.isEmpty()) {
-      return CommandResult.refused("alarm active: RESET first");
-    }
-    if (!deadman) {
-      return CommandResult.refused("hold the DEADMAN to jog");
-    }
-    if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
-      return CommandResult.refused("cannot jog while the robot moves under a program");
-    }
-    if (mode == OperatingMode.AUTO) {
-      return CommandResult.refused("AUTO mode: the pendant cannot jog (turn the mode switch to T1)");
-    }
-    if (estopped()) {
-      return CommandResult.refused("E-stop pressed: release it and RESET");
+    CommandResult refused = jogRefusal();
+    if (refused != null) {
+      return refused;
     }
     jogger.stop(jogKeys);
     double mm = veryFine ? VFINE_STEP_MM : FINE_STEP_MM;
