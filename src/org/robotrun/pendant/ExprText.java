@@ -149,8 +149,9 @@ public final class ExprText {
       case "R" -> org.robotrun.program.Registers.R_COUNT;
       case "PR" -> org.robotrun.program.Registers.PR_COUNT;
       case "TIMER" -> org.robotrun.program.Registers.TIMER_COUNT;
-      case "F" -> org.robotrun.program.Registers.FLAG_COUNT;
-      case "DI", "DO", "RI", "RO", "GI", "GO" -> org.robotrun.program.Registers.IO_COUNT;
+      case "F" -> org.robotrun.program.IoRanges.MAX_SIZE;
+      // The controller's I/O sizes are configured per cell; beyond them the line alarms when it runs.
+      case "DI", "DO", "RI", "RO", "GI", "GO" -> org.robotrun.program.IoRanges.MAX_SIZE;
       default -> Integer.MAX_VALUE;
     };
   }

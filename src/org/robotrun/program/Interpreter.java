@@ -119,7 +119,10 @@ public final class Interpreter {
     for (int i = 0; i < frames.length; i++) {
       frames[i] = new Frame();
     }
-    this.pulseLeftSec = new double[IoKind.values().length][Registers.IO_COUNT + 1];
+    this.pulseLeftSec = new double[IoKind.values().length][];
+    for (IoKind k : IoKind.values()) {
+      pulseLeftSec[k.ordinal()] = new double[registers.ioSize(k) + 1];
+    }
   }
 
   // ================================================================ pendant-facing API

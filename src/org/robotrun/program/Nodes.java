@@ -195,7 +195,7 @@ final class Nodes {
 
     @Override
     double eval(Interpreter m) {
-      int i = check(io.name(), idx.resolve(m), io.size());
+      int i = check(io.name(), idx.resolve(m), m.regs.ioSize(io));
       int v = m.regs.io[io.ordinal()][i];
       if (io.group()) {
         m.kind = INT;

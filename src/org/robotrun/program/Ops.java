@@ -379,7 +379,7 @@ final class Ops {
 
     @Override
     int exec(Interpreter m) {
-      int i = Nodes.check(io.name(), idx.resolve(m), io.size());
+      int i = Nodes.check(io.name(), idx.resolve(m), m.regs.ioSize(io));
       if (!io.writable()) {
         throw new AlarmSignal(AlarmKind.WRITE_PROTECTED, io.name() + "[" + i + "] is an input");
       }
@@ -415,7 +415,7 @@ final class Ops {
 
     @Override
     int exec(Interpreter m) {
-      int i = Nodes.check(io.name(), idx.resolve(m), io.size());
+      int i = Nodes.check(io.name(), idx.resolve(m), m.regs.ioSize(io));
       if (!io.writable() || io.group()) {
         throw new AlarmSignal(io.writable() ? AlarmKind.TYPE_MISMATCH : AlarmKind.WRITE_PROTECTED,
             io.name() + "[" + i + "] cannot be pulsed");

@@ -149,6 +149,8 @@ public final class TpStatementParser extends TpTokenCursor {
   private int operators;
   private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
+  /** The I/O sizes a direct index is checked against (a warning beyond them). */
+  private final IoRanges ioRanges = IoRanges.DEFAULT;
 
   private TpStatementParser(List<TpToken> tokens) {
     super(tokens);
@@ -1041,8 +1043,7 @@ public final class TpStatementParser extends TpTokenCursor {
     int size = switch (table) {
       case "R" -> Registers.R_COUNT;
       case "PR" -> Registers.PR_COUNT;
-      case "F" -> Registers.FLAG_COUNT;
-      case "DI", "DO", "RI", "RO", "GI", "GO" -> Registers.IO_COUNT;
+      case "F", "DI", "DO", "RI", "RO", "GI", "GO" -> ioRanges.size(IoKind.valueOf(table));
       case "TIMER" -> Registers.TIMER_COUNT;
       default -> 0;
     };

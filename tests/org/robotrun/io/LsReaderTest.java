@@ -97,7 +97,7 @@ class LsReaderTest {
     assertThat(messages(r)).containsExactly(
         "t.ls:4: warning: R[201]: index out of range (expected 1..200); running this line raises an alarm",
         "t.ls:4: warning: TIMER[11]: index out of range (expected 1..10); running this line raises an alarm",
-        "t.ls:4: warning: DI[0]: index out of range (expected 1..64); running this line raises an alarm",
+        "t.ls:4: warning: DI[0]: index out of range (expected 1..512); running this line raises an alarm",
         "t.ls:4: warning: R[300]: index out of range (expected 1..200); running this line raises an alarm",
         "t.ls:5: warning: PR[101]: index out of range (expected 1..100); running this line raises an alarm");
     assertThat(r.hasAnyError()).isFalse();
