@@ -5,6 +5,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.function.Supplier;
+import org.robotrun.program.SystemVariables;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
 import org.robotrun.program.Instruction;
@@ -127,6 +128,9 @@ final class InstMenu {
       new Category("Miscellaneous", List.of(
           Template.of("! comment", new Instruction.Comment("")),
           Template.of("MESSAGE[...]", new Instruction.Message("")),
+          Template.of("$WAITTMOUT=... (parameter name)", new Instruction.SetSysVar(SystemVariables.WAITTMOUT, new Expr.IntConst(3000))),
+          Template.of("$MCR.$GENOVERRIDE=... (parameter name)",
+              new Instruction.SetSysVar(SystemVariables.GENOVERRIDE, new Expr.IntConst(100))),
           Template.of("TIMER[ ]=START", new Instruction.TimerSet(Item.of(1), Instruction.TimerAction.START)),
           Template.of("TIMER[ ]=STOP", new Instruction.TimerSet(Item.of(1), Instruction.TimerAction.STOP)),
           Template.of("TIMER[ ]=RESET", new Instruction.TimerSet(Item.of(1), Instruction.TimerAction.RESET)),

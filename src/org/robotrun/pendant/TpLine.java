@@ -38,6 +38,11 @@ public final class TpLine {
         f.add(Field.fixed("="));
         f.add(exprField(a.value(), e -> new Instruction.AssignRegister(a.register(), e)));
       }
+      case Instruction.SetSysVar s -> {
+        f.add(Field.fixed(s.name()));
+        f.add(Field.fixed("="));
+        f.add(exprField(s.value(), e -> new Instruction.SetSysVar(s.name(), e)));
+      }
       case Instruction.AssignPosReg a -> {
         f.add(itemField("PR", a.register(), i -> new Instruction.AssignPosReg(i, a.source())));
         f.add(Field.fixed("="));
@@ -508,6 +513,7 @@ public final class TpLine {
       case Expr.Io x -> false;
       case Expr.Timer x -> false;
       case Expr.Arg x -> false;
+      case Expr.SysVar x -> false;
     };
   }
 

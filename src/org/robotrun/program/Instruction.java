@@ -313,6 +313,14 @@ public sealed interface Instruction {
     }
   }
 
+  /** {@code $WAITTMOUT=500}: sets a system variable RobotRun runs ({@link SystemVariables}). */
+  record SetSysVar(String name, Expr value) implements Instruction {
+    public SetSysVar {
+      Objects.requireNonNull(name, "name");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
   /** {@code MESSAGE[text]}: shown on the user screen. */
   record Message(String text) implements Instruction {
     public Message {

@@ -64,6 +64,8 @@ public final class Interpreter {
   final Registers regs;
   final MotionPort port;
   final InterpreterSettings settings;
+  /** $WAITTMOUT in seconds: starts at the setting, a program may change it (global, as on the controller). */
+  double waitTimeoutSec;
 
   private final Map<String, CompiledProgram> compiled = new HashMap<>();
   private final Frame[] frames;
@@ -115,6 +117,7 @@ public final class Interpreter {
     this.regs = Objects.requireNonNull(registers, "registers");
     this.port = Objects.requireNonNull(port, "port");
     this.settings = Objects.requireNonNull(settings, "settings");
+    this.waitTimeoutSec = settings.waitTimeoutSec();
     this.frames = new Frame[settings.maxCallDepth()];
     for (int i = 0; i < frames.length; i++) {
       frames[i] = new Frame();
@@ -502,7 +505,7 @@ public final class Interpreter {
         case W_CONDITION -> {
           waitElapsedSec += dtSec;
           if (!waitOp.condition.bool(this, "WAIT")) {
-            if (waitOp.timeout == null || waitElapsedSec < settings.waitTimeoutSec() - TIME_EPS_SEC) {
+            if (waitOp.timeout == null || waitElapsedSec < waitTimeoutSec - TIME_EPS_SEC) {
               return Outcome.WAITING_ON_CONDITION;
             }
             cur.pc = waitOp.timeout.line(this);

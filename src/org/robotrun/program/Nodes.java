@@ -206,6 +206,25 @@ final class Nodes {
     }
   }
 
+  /** A system variable's value: $WAITTMOUT in 1/100 s, $MCR.$GENOVERRIDE in percent (integers). */
+  static final class SysVarRead extends Node {
+    final String name;
+
+    SysVarRead(String name) {
+      this.name = name;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      m.kind = INT;
+      return switch (name) {
+        case SystemVariables.WAITTMOUT -> Math.round(m.waitTimeoutSec * 100);
+        case SystemVariables.GENOVERRIDE -> m.port.overridePct();
+        default -> throw new IllegalStateException("no system variable " + name);
+      };
+    }
+  }
+
   static final class TimerRead extends Node {
     final Idx idx;
 

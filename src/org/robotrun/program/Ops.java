@@ -461,6 +461,38 @@ final class Ops {
     }
   }
 
+  /** {@code $WAITTMOUT=…}, {@code $MCR.$GENOVERRIDE=…} (SystemVariables). */
+  static final class SetSysVarOp extends Op {
+    final String name;
+    final Node value;
+
+    SetSysVarOp(String name, Node value) {
+      this.name = name;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int v = value.integer(m, name);
+      switch (name) {
+        case SystemVariables.WAITTMOUT -> {
+          if (v < 0 || v > SystemVariables.MAX_WAITTMOUT) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, name + "=" + v + ": expected 0.." + SystemVariables.MAX_WAITTMOUT);
+          }
+          m.waitTimeoutSec = v / 100.0;
+        }
+        case SystemVariables.GENOVERRIDE -> {
+          if (v < 1 || v > 100) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, name + "=" + v + ": expected 1..100");
+          }
+          m.port.setOverridePct(v);
+        }
+        default -> throw new IllegalStateException("no system variable " + name);
+      }
+      return NEXT;
+    }
+  }
+
   static final class OverrideOp extends Op {
     final Node percent;
 

@@ -189,6 +189,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.IfThen f -> f.condition();
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
+      case Instruction.SetSysVar s -> s.value();
       default -> null;
     };
     if (checked != null) {
@@ -251,6 +252,12 @@ public final class TpStatementParser extends TpTokenCursor {
       throw unsupported(peek(1), "motion to " + targetKind(peek(1).text()), false);
     }
     if (w.startsWith("$")) {
+      Optional<String> known = SystemVariables.supported(w);
+      if (known.isPresent() && peek(1).is(Kind.EQ)) {
+        next();
+        next();
+        return new Instruction.SetSysVar(known.get(), expression());
+      }
       throw unsupported(t, "system variable assignment", true);
     }
     next();
@@ -946,6 +953,10 @@ public final class TpStatementParser extends TpTokenCursor {
               throw unsupported(t, name + " in an expression", false);
             }
             if (w.startsWith("$")) {
+              Optional<String> known = SystemVariables.supported(w);
+              if (known.isPresent() && !peek().is(Kind.LBRACKET)) {
+                yield new Expr.SysVar(known.get());
+              }
               throw unsupported(t, "system variable in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());

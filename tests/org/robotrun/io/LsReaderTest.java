@@ -186,10 +186,21 @@ class LsReaderTest {
   }
 
   @Test
+  void systemVariablesRobotRunRunsAreReadIntoTheModel() {
+    LsReadResult r = mn("   1:  $WAITTMOUT=500 ;\n   2:  R[1]=$mcr.$genoverride+$WAITTMOUT    ;\n");
+    assertThat(r.diagnostics()).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.SetSysVar("$WAITTMOUT", new Expr.IntConst(500)));
+    assertThat(r.program().line(2)).isEqualTo(new Instruction.AssignRegister(org.robotrun.program.Item.of(1),
+        new Expr.Binary(Expr.BinaryOp.ADD, new Expr.SysVar("$MCR.$GENOVERRIDE"), new Expr.SysVar("$WAITTMOUT"))));
+  }
+
+  @Test
   void unsupportedStatementsAreNamedNotDropped() {
     for (String[] c : new String[][] {
         {"RUN SUB1", "not supported: RUN (multitasking) (the line alarms when it runs)"},
-        {"$WAITTMOUT=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
         {"SR[1]=R[1]", "not supported: string registers SR[] (the line alarms when it runs)"},
         {"AO[1]=5", "not supported: analog output AO[] (the line alarms when it runs)"},
         {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION (the line alarms when it runs)"},
