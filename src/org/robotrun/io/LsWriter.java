@@ -435,6 +435,14 @@ public final class LsWriter {
       case Instruction.Comment c -> sb.append('!').append(c.text().stripTrailing());
       case Instruction.CommentedOut c -> sb.append("//").append(c.text().stripTrailing());
       case Instruction.Message m -> sb.append("MESSAGE[").append(m.text()).append(']');
+      case Instruction.SkipCondition s -> {
+        sb.append("SKIP CONDITION ");
+        expr(s.condition(), sb);
+      }
+      case Instruction.OffsetCondition o -> {
+        sb.append("OFFSET CONDITION ");
+        item("PR", o.register(), sb);
+      }
       case Instruction.SetSysVar s -> {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);

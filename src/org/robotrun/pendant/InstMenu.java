@@ -128,16 +128,19 @@ final class InstMenu {
       new Category("Miscellaneous", List.of(
           Template.of("! comment", new Instruction.Comment("")),
           Template.of("MESSAGE[...]", new Instruction.Message("")),
-          Template.of("$WAITTMOUT=... (parameter name)", new Instruction.SetSysVar(SystemVariables.WAITTMOUT, new Expr.IntConst(3000))),
-          Template.of("$MCR.$GENOVERRIDE=... (parameter name)",
-              new Instruction.SetSysVar(SystemVariables.GENOVERRIDE, new Expr.IntConst(100))),
           Template.of("TIMER[ ]=START", new Instruction.TimerSet(Item.of(1), Instruction.TimerAction.START)),
           Template.of("TIMER[ ]=STOP", new Instruction.TimerSet(Item.of(1), Instruction.TimerAction.STOP)),
           Template.of("TIMER[ ]=RESET", new Instruction.TimerSet(Item.of(1), Instruction.TimerAction.RESET)),
           Template.of("UALM[ ]", new Instruction.UserAlarm(Index.of(1))),
           Template.of("OVERRIDE=...%", new Instruction.SetOverride(new Expr.IntConst(100))),
           Template.of("(blank line)", new Instruction.Blank()),
-          Template.of("//commented-out line", new Instruction.CommentedOut("")))));
+          Template.of("//commented-out line", new Instruction.CommentedOut("")),
+          Template.of("$WAITTMOUT=... (parameter name)", new Instruction.SetSysVar(SystemVariables.WAITTMOUT, new Expr.IntConst(3000))),
+          Template.of("$MCR.$GENOVERRIDE=... (parameter name)",
+              new Instruction.SetSysVar(SystemVariables.GENOVERRIDE, new Expr.IntConst(100))),
+          Template.of("SKIP CONDITION ...", new Instruction.SkipCondition(
+              new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)))),
+          Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

@@ -38,6 +38,14 @@ public final class TpLine {
         f.add(Field.fixed("="));
         f.add(exprField(a.value(), e -> new Instruction.AssignRegister(a.register(), e)));
       }
+      case Instruction.SkipCondition s -> {
+        f.add(Field.fixed("SKIP CONDITION"));
+        f.add(exprField(s.condition(), Instruction.SkipCondition::new));
+      }
+      case Instruction.OffsetCondition o -> {
+        f.add(Field.fixed("OFFSET CONDITION"));
+        f.add(itemField("PR", o.register(), Instruction.OffsetCondition::new));
+      }
       case Instruction.SetSysVar s -> {
         f.add(Field.fixed(s.name()));
         f.add(Field.fixed("="));

@@ -80,6 +80,8 @@ final class Compiler {
       case Instruction.Label l -> "";
       case Instruction.Message msg -> "";
       case Instruction.SetSysVar s -> "";
+      case Instruction.SkipCondition s -> "";
+      case Instruction.OffsetCondition o -> "";
       case Instruction.Payload p -> "";
       case Instruction.AssignRegister a -> "";
       case Instruction.AssignPosReg a -> "";
@@ -147,6 +149,8 @@ final class Compiler {
       case Instruction.Blank b -> new Ops.Nop();
       case Instruction.Message msg -> new Ops.MessageOp(msg.text());
       case Instruction.SetSysVar s -> new Ops.SetSysVarOp(s.name(), expr(s.value()));
+      case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
+      case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register());
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.

@@ -321,6 +321,27 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code SKIP CONDITION cond}: the condition the following motions with {@code Skip,LBL[n]}
+   * watch. It stays set until the next SKIP CONDITION or the program ends.
+   */
+  record SkipCondition(Expr condition) implements Instruction {
+    public SkipCondition {
+      Objects.requireNonNull(condition, "condition");
+    }
+  }
+
+  /**
+   * {@code OFFSET CONDITION PR[i]}: the offset a motion with a plain {@code Offset} option applies
+   * (PR[i] is read when the motion starts). It stays set until the next OFFSET CONDITION or the
+   * program ends.
+   */
+  record OffsetCondition(Item register) implements Instruction {
+    public OffsetCondition {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
   /** {@code MESSAGE[text]}: shown on the user screen. */
   record Message(String text) implements Instruction {
     public Message {

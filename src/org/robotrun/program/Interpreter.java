@@ -66,6 +66,10 @@ public final class Interpreter {
   final InterpreterSettings settings;
   /** $WAITTMOUT in seconds: starts at the setting, a program may change it (global, as on the controller). */
   double waitTimeoutSec;
+  /** The last SKIP CONDITION of this run, or null. */
+  Nodes.Node skipCondition;
+  /** The PR of the last OFFSET CONDITION of this run, or null. */
+  Item offsetCondition;
 
   private final Map<String, CompiledProgram> compiled = new HashMap<>();
   private final Frame[] frames;
@@ -476,6 +480,14 @@ public final class Interpreter {
         case W_MOTION -> {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
+              if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
+                // The skip condition turned true: the arm stops and the program goes on with the
+                // next line, without the jump (FANUC Skip,LBL[] semantics).
+                port.cancel(motionHandle);
+                waitKind = W_NONE;
+                motionSkip = null;
+                break;
+              }
               return Outcome.WAITING_FOR_MOTION;
             }
             case FAILED -> {
@@ -571,6 +583,8 @@ public final class Interpreter {
       return;
     }
     push(cp, Math.min(cursorLine - 1, cp.ops.length));
+    skipCondition = null;
+    offsetCondition = null;
     finishedProgram = null;
     state = State.RUNNING;
   }
@@ -820,8 +834,12 @@ public final class Interpreter {
     boolean inc = false;
     for (Motion.Option o : mv.options()) {
       switch (o) {
-        case Motion.Offset x -> throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION,
-            "Offset needs an OFFSET CONDITION, which RobotRun does not support: write Offset,PR[i]");
+        case Motion.Offset x -> {
+          if (offsetCondition == null) {
+            throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "Offset needs an OFFSET CONDITION PR[i] before it (or write Offset,PR[i])");
+          }
+          offset = Optional.of(positionRegister(offsetCondition));
+        }
         case Motion.OffsetPr x -> offset = Optional.of(positionRegister(x.register()));
         case Motion.ToolOffsetPr x -> toolOffset = Optional.of(positionRegister(x.register()));
         case Motion.Acc x -> {

@@ -493,6 +493,36 @@ final class Ops {
     }
   }
 
+  /** SKIP CONDITION: remembered for the following motions with Skip,LBL[]. */
+  static final class SkipConditionOp extends Op {
+    final Node condition;
+
+    SkipConditionOp(Node condition) {
+      this.condition = condition;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      m.skipCondition = condition;
+      return NEXT;
+    }
+  }
+
+  /** OFFSET CONDITION PR[i]: remembered for the following motions with a plain Offset. */
+  static final class OffsetConditionOp extends Op {
+    final Item register;
+
+    OffsetConditionOp(Item register) {
+      this.register = register;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      m.offsetCondition = register;
+      return NEXT;
+    }
+  }
+
   static final class OverrideOp extends Op {
     final Node percent;
 

@@ -190,6 +190,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
       case Instruction.SetSysVar s -> s.value();
+      case Instruction.SkipCondition s -> s.condition();
       default -> null;
     };
     if (checked != null) {
@@ -302,6 +303,26 @@ public final class TpStatementParser extends TpTokenCursor {
           throw error("label numbers start at 1, found LBL[" + d.value() + "]");
         }
         yield new Instruction.Label(d.value(), l.comment());
+      }
+      case "SKIP" -> {
+        if (!peek().isWord("CONDITION")) {
+          throw unknownStatement(t);
+        }
+        next();
+        yield new Instruction.SkipCondition(expression());
+      }
+      case "OFFSET" -> {
+        if (!peek().isWord("CONDITION") || !peek(1).isWord("PR")) {
+          throw unknownStatement(t);
+        }
+        next();
+        next();
+        Item pr = item("PR");
+        if (!peek().is(Kind.EOL)) {
+          // OFFSET CONDITION PR[1],UFRAME[2]: an offset in another frame
+          throw unsupported(t, "OFFSET CONDITION with a frame", false);
+        }
+        yield new Instruction.OffsetCondition(pr);
       }
       case "JMP" -> jump();
       case "CALL" -> call();
