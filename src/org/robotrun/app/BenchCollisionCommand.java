@@ -74,6 +74,8 @@ public final class BenchCollisionCommand implements Runnable {
       pairs = ObbPairsCsv.read(pairsFile);
     } catch (FileFormatException e) {
       throw new UserError(e.getMessage());
+    } catch (org.robotrun.io.UnreadableFileException e) {
+      throw new UserError(pairsFile + ": " + e.getMessage());
     } catch (IOException e) {
       throw new UserError(pairsFile + ": cannot read: " + e.getMessage());
     }
@@ -133,10 +135,12 @@ public final class BenchCollisionCommand implements Runnable {
   }
 
   private void writeResults(boolean[] overlap) {
-    try (BufferedWriter w = Files.newBufferedWriter(outFile, StandardCharsets.UTF_8)) {
-      for (boolean o : overlap) {
-        w.write(o ? "1\n" : "0\n");
-      }
+    StringBuilder sb = new StringBuilder(2 * overlap.length);
+    for (boolean o : overlap) {
+      sb.append(o ? "1\n" : "0\n");
+    }
+    try {
+      org.robotrun.io.AtomicFiles.write(outFile, sb.toString().getBytes(StandardCharsets.UTF_8));
     } catch (IOException e) {
       throw new UserError(outFile + ": cannot write: " + e.getMessage());
     }

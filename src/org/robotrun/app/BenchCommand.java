@@ -17,6 +17,7 @@ import picocli.CommandLine.Command;
       BenchScenarioCommand.class,
       BenchSimCommand.class,
       BenchCellCommand.class,
+      BenchWorkspaceCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

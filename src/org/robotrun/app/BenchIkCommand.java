@@ -211,6 +211,8 @@ public final class BenchIkCommand implements Callable<Integer> {
       return rows;
     } catch (NoSuchFileException e) {
       throw new UserError(file + ": no such file");
+    } catch (org.robotrun.io.UnreadableFileException e) {
+      throw new UserError(file + ": " + e.getMessage());
     } catch (IOException e) {
       throw new UserError(file + ": cannot read: " + e.getMessage());
     } catch (FileFormatException e) {
@@ -231,7 +233,7 @@ public final class BenchIkCommand implements Callable<Integer> {
       sb.append('\n');
     }
     try {
-      Files.writeString(out, sb);
+      org.robotrun.io.AtomicFiles.write(out, sb.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8));
     } catch (IOException e) {
       throw new UserError(out + ": cannot write: " + e.getMessage());
     }

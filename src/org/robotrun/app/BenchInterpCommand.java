@@ -39,7 +39,7 @@ public final class BenchInterpCommand implements Runnable {
     long lines = runFor(w, seconds);
     double elapsedSec = (System.nanoTime() - start) / 1e9;
     PrintWriter out = spec.commandLine().getOut();
-    out.printf("instructions_per_sec=%.0f lines=%d seconds=%.3f loops_per_run=%d checksum=%.0f%n",
+    out.printf(java.util.Locale.ROOT, "instructions_per_sec=%.0f lines=%d seconds=%.3f loops_per_run=%d checksum=%.0f%n",
         lines / elapsedSec, lines, elapsedSec, loops, w.checksum());
     out.flush();
   }

@@ -97,7 +97,7 @@ public final class BenchParseCommand implements Callable<Integer> {
     try {
       files = CheckCommand.programsIn(corpus);
       for (java.nio.file.Path f : files) {
-        contents.add(java.nio.file.Files.readAllBytes(f));
+        contents.add(org.robotrun.io.BoundedFiles.read(f, org.robotrun.io.LsReader.MAX_FILE_BYTES, ".LS programs"));
       }
     } catch (java.io.IOException e) {
       throw new UserError("--corpus: cannot read " + corpus + " (" + e.getMessage() + ")");

@@ -73,7 +73,7 @@ public final class BenchRenderCommand implements Callable<Integer> {
       long[] sorted = Arrays.copyOf(frameNs, frames);
       Arrays.sort(sorted);
       PrintWriter o = spec.commandLine().getOut();
-      o.printf("fps=%.1f frames=%d seconds=%.2f width=%d height=%d antialias=%s median_frame_ms=%.2f cpu_ms_per_frame=%.2f%n",
+      o.printf(java.util.Locale.ROOT, "fps=%.1f frames=%d seconds=%.2f width=%d height=%d antialias=%s median_frame_ms=%.2f cpu_ms_per_frame=%.2f%n",
           frames / elapsed, frames, elapsed, width, height, antialias.name().toLowerCase(java.util.Locale.ROOT), sorted[frames / 2] / 1e6, cpuMsPerFrame);
       o.flush();
     } catch (GlUnavailableException e) {

@@ -17,6 +17,7 @@ import org.robotrun.io.Diagnostic;
 import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
+import org.robotrun.io.TerminalText;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -79,19 +80,19 @@ public final class CheckCommand implements Callable<Integer> {
       try {
         programs = Files.isDirectory(given) ? programsIn(given) : List.of(given);
       } catch (IOException e) {
-        err.println(given + ": cannot read: " + reason(e));
+        err.println(TerminalText.safe(given + ": cannot read: " + reason(e)));
         unreadable = true;
         continue;
       }
       if (programs.isEmpty()) {
-        err.println(given + ": no .LS files in this directory");
+        err.println(TerminalText.safe(given + ": no .LS files in this directory"));
         unreadable = true;
       }
       for (Path f : programs) {
         try {
           results.add(LsReader.readCheckingFileName(f));
         } catch (IOException e) {
-          err.println(f + ": cannot read: " + reason(e));
+          err.println(TerminalText.safe(f + ": cannot read: " + reason(e)));
           unreadable = true;
         }
       }
@@ -110,7 +111,7 @@ public final class CheckCommand implements Callable<Integer> {
     if (format == Format.json) {
       out.println(DiagnosticsJson.write(shown));
     } else {
-      shown.forEach(out::println);
+      shown.forEach(d -> out.println(TerminalText.safe(d.toString())));
     }
     out.flush();
     err.flush();

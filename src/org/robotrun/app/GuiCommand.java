@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.UserDirs;
 import org.robotrun.io.StlReader;
 import org.robotrun.math.Angles;
 import org.robotrun.math.Xyzwpr;
@@ -22,12 +23,15 @@ import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
 import org.robotrun.ui.CellEditorPanel;
 import org.robotrun.ui.CellPanel;
+import org.robotrun.ui.FileDialogs;
+import org.robotrun.ui.FileMenu;
 import org.robotrun.ui.LayoutState;
 import org.robotrun.ui.PendantKeyboard;
 import org.robotrun.ui.PendantPanel;
 import org.robotrun.ui.SimulatorWindow;
 import org.robotrun.ui.WindowSettings;
 import org.robotrun.ui.Workbench;
+import org.robotrun.world.CameraView;
 import org.robotrun.world.CellEditor;
 import org.robotrun.world.Scenario;
 import org.robotrun.world.TriangleMesh;
@@ -40,6 +44,11 @@ import picocli.CommandLine.Option;
     mixinStandardHelpOptions = true,
     description = {
       "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant side by side.",
+      "The window works in a workspace, a folder with cell.json and programs/NAME.LS (docs/workspace.md): with no option "
+          + "it opens the last workspace, or creates the default one (Linux ~/.local/share/robotrun/workspace, Windows "
+          + "%APPDATA%\\RobotRun\\workspace, macOS ~/Library/Application Support/RobotRun/workspace). Every change is saved "
+          + "within 2 s and on close; File menu: New/Open workspace (Ctrl+O), Open scenario, Save now (Ctrl+S), Save a copy, "
+          + "Import/Export .LS, Recent, Hand in, Quit (Ctrl+Q).",
       "Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object; Home resets the view.",
       "Pendant keys are buttons on the pendant panel and keys on the keyboard (docs/user-guide.md): Shift is the deadman, Q..Y jog +J1..+J6 (+X..+ZR), A..H jog -J1..-J6, arrows move the cursor, F1-F5 the function keys. Ctrl+H or ? shows the key map."
     })
@@ -52,13 +61,22 @@ public final class GuiCommand implements Callable<Integer> {
       description = "Window height (default: fit the screen, at most 800 times the monitor's scale).")
   int height;
 
+  @Option(names = "--workspace", paramLabel = "DIR|FILE.zip",
+      description = "Open the workspace in DIR, creating it when the folder is new or empty; a hand-in FILE.zip opens read-only. "
+          + "Default: the last workspace.")
+  Path workspace;
+
   @Option(names = "--scenario", paramLabel = "FILE.json",
-      description = "Open this scenario's cell (robots, fixtures, parts, frames, registers and programs); its cell can then be edited. Default: the default robot in an empty cell.")
+      description = "Start a new workspace copied from this scenario (the scenario file is not changed; the copy goes to "
+          + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
 
-  /** Everything one window session holds; tests drive it through {@link #open}. */
+  /**
+   * Everything one window session holds; tests drive it through {@link #open}. {@code workspace}
+   * is null when the window shows a scenario without a workspace (tests).
+   */
   public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
-      CellEditor editor, WindowSettings settings) {}
+      CellEditor editor, WindowSettings settings, WindowCell workspace) {}
 
   @Override
   public Integer call() {
@@ -68,12 +86,30 @@ public final class GuiCommand implements Callable<Integer> {
     if (height != 0) {
       RenderCommand.checkSize("--height", height);
     }
+    if (workspace != null && scenario != null) {
+      throw new UserError("--workspace and --scenario: give one of them");
+    }
     boolean log = System.getenv("ROBOTRUN_FRAME_LOG") != null;
     if (log) {
       stage("command line parsed");
     }
-    try {
-      Session s = open(scenario, width, height, WindowSettings.forUser());
+    UserDirs dirs = UserDirs.fromSystem();
+    Path next;
+    if (scenario != null) {
+      next = WorkspaceFiles.createFromScenario(scenario, dirs.newWorkspaceFor(stem(scenario)));
+    } else {
+      next = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
+    }
+    String problem = "";
+    // File ▸ Open workspace ends one window and starts the next on the other folder.
+    while (next != null) {
+      Path[] switchTo = {null};
+      Session s;
+      try {
+        s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forUser());
+      } catch (GlUnavailableException e) {
+        throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
+      }
       if (log) {
         stage("cell and window ready");
       }
@@ -83,8 +119,15 @@ public final class GuiCommand implements Callable<Integer> {
         }
         run(s);
       }
-    } catch (GlUnavailableException e) {
-      throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
+      if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
+        // for the window test: what the pendant showed when the window closed
+        System.out.println(s.pendant().render());
+      }
+      problem = s.workspace().closeAndReport();
+      next = switchTo[0];
+    }
+    if (!problem.isEmpty()) {
+      throw new UserError(problem, Main.EXIT_FAILED);
     }
     return Main.EXIT_OK;
   }
@@ -107,7 +150,7 @@ public final class GuiCommand implements Callable<Integer> {
     }
   }
 
-  private static Cell join(java.util.concurrent.CompletableFuture<Cell> f) {
+  private static <T> T join(java.util.concurrent.CompletableFuture<T> f) {
     try {
       return f.join();
     } catch (java.util.concurrent.CompletionException e) {
@@ -118,11 +161,32 @@ public final class GuiCommand implements Callable<Integer> {
     }
   }
 
-  /** Builds the cell, the pendant and the window (not yet running). */
+  /** Builds the cell of a scenario (no workspace: nothing is saved), the pendant and the window (not yet running). */
   public static Session open(Path scenario, int width, int height, WindowSettings settings) {
+    return open(scenario, null, null, null, width, height, settings);
+  }
+
+  /**
+   * Opens the workspace in {@code dir} (created when new) in a window that saves it: autosave,
+   * the File menu, outside edits, the close guard. A File-menu switch to another workspace puts
+   * its folder in {@code switchTo[0]} and closes the window.
+   */
+  static Session openWorkspace(Path dir, UserDirs dirs, Path[] switchTo, int width, int height, WindowSettings settings) {
+    return open(null, dir, dirs, switchTo, width, height, settings);
+  }
+
+  private static Session open(Path scenario, Path workspaceDir, UserDirs dirs, Path[] switchTo, int width, int height,
+      WindowSettings settings) {
     // The cell loads (JSON, robot model, programs) on another thread while GLFW, OpenGL and
     // ImGui start on this one: the two together are most of the time to the first frame.
-    var loading = java.util.concurrent.CompletableFuture.supplyAsync(() -> loadCell(scenario));
+    java.util.List<String> early = new java.util.concurrent.CopyOnWriteArrayList<>();
+    SimulatorWindow[] windowRef = {null};
+    var wsLoading = workspaceDir == null ? null : java.util.concurrent.CompletableFuture.supplyAsync(
+        () -> WindowCell.open(workspaceDir, dirs, early::add,
+            () -> cameraView(windowRef[0] == null ? null : windowRef[0].camera())));
+    var loading = wsLoading != null
+        ? wsLoading.thenApply(c -> new Cell(c.session.sim, c.session.workspace.scenario(), List.of()))
+        : java.util.concurrent.CompletableFuture.supplyAsync(() -> loadCell(scenario));
     SimulatorWindow w;
     try {
       w = new SimulatorWindow("RobotRun", width, height);
@@ -130,9 +194,12 @@ public final class GuiCommand implements Callable<Integer> {
       join(loading);  // a bad scenario is reported as such, even without a display
       throw e;
     }
+    windowRef[0] = w;
     Cell cell;
+    WindowCell ws;
     try {
       cell = join(loading);
+      ws = wsLoading == null ? null : join(wsLoading);
     } catch (RuntimeException e) {
       w.close();
       throw e;
@@ -151,9 +218,12 @@ public final class GuiCommand implements Callable<Integer> {
     CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
     CellEditor editor = sc == null ? null : new CellEditor(sc, GuiCommand::loadStl);
-    CellEditorPanel editorPanel = editor == null ? null
-        : new CellEditorPanel(editor, scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json"));
-    w.setTitle("RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()));
+    // In a workspace the edited cell is saved with the workspace (autosave); "Save" also writes a scenario copy.
+    Path editedCopy = ws != null ? ws.session.workspace.folder().resolve("scenario-edited.json")
+        : scenario == null ? null : scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json");
+    CellEditorPanel editorPanel = editor == null ? null : new CellEditorPanel(editor, editedCopy);
+    w.setTitle(ws != null ? ws.title()
+        : "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()));
     if (sc != null) {
       sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
     }
@@ -171,19 +241,68 @@ public final class GuiCommand implements Callable<Integer> {
           }
         },
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
-    // Menus of other parts of the window go into the menu bar here, left of View and Help:
-    // bench.addMenus(fileMenu::draw) for the workspace's File menu.
+    // Menus of other parts of the window go into the menu bar here, left of View and Help.
     PendantKeyboard keyboard = new PendantKeyboard(pendant);
     w.setKeyHandler(keyboard::onKey);
     w.setCharHandler(cp -> bench.onChar(cp) || keyboard.onChar(cp));
     w.setShortcutHandler(bench::onShortcut);
+    if (ws != null) {
+      FileMenu menu = fileMenu(ws, dirs, w, switchTo);
+      early.forEach(menu::tell);
+      bench.addMenus(menu::drawMenus);
+      w.setShortcutHandler((key, mods) -> menu.onShortcut(key, mods) || bench.onShortcut(key, mods));
+      w.setFocusGainedHandler(() -> ws.checkExternalEdits(menu));
+    }
     w.setViewClickHandler(bench::onViewClick);
     w.setViewPressHandler(bench.viewPress());
     w.setFocusLostHandler(() -> {
       keyboard.releaseAll();
       pendantPanel.releaseLatched();
     });
-    return new Session(w, bench, sim, controller, pendant, editor, settings);
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws);
+  }
+
+  /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
+  private static FileMenu fileMenu(WindowCell ws, UserDirs dirs, SimulatorWindow w, Path[] switchTo) {
+    FileDialogs dialogs = new FileDialogs();
+    java.util.function.BooleanSupplier[] closeGuard = {() -> true};
+    GuiFileActions actions = new GuiFileActions(dirs, () -> ws, dir -> {
+      switchTo[0] = dir;
+      w.requestClose();
+    }, () -> {
+      if (closeGuard[0].getAsBoolean()) {
+        w.requestClose();
+      }
+    });
+    FileMenu menu = new FileMenu(actions, dialogs);
+    actions.setMenu(menu);
+    menu.setStatusLine(() -> ws.drawSaveState(menu));
+    boolean[] warned = {false};
+    closeGuard[0] = () -> {
+      // Work that cannot be saved keeps the window open once, with the reason; closing again quits.
+      if (warned[0] || ws.session.workspace.readOnly()) {
+        return true;
+      }
+      String problem = ws.session.autosave.saveNow(3000);
+      if (problem.isEmpty()) {
+        return true;
+      }
+      warned[0] = true;
+      menu.tell("Your last changes are NOT saved: " + problem
+          + "\n\nFix the problem (the window keeps trying), or close again to quit without them.");
+      return false;
+    };
+    w.setCloseHandler(closeGuard[0]);
+    return menu;
+  }
+
+  static java.util.Optional<CameraView> cameraView(org.robotrun.render.OrbitCamera camera) {
+    if (camera == null) {
+      return java.util.Optional.empty();
+    }
+    var t = camera.target();
+    return java.util.Optional.of(new CameraView(new org.robotrun.math.Vec3(t.x, t.y, t.z), camera.distance(),
+        camera.yaw(), camera.pitch()));
   }
 
   /** Runs the window until it is closed, then saves its layout. */
@@ -199,6 +318,9 @@ public final class GuiCommand implements Callable<Integer> {
           // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
           s.pendant().advance(Math.min(0.1, t - last[0]));
           last[0] = t;
+          if (s.workspace() != null) {
+            s.workspace().session.autosave.poll(System.nanoTime());
+          }
           if (s.editor() != null && s.editor().revision() != appliedRevision[0]) {
             appliedRevision[0] = s.editor().revision();
             s.sim().replaceWorld(s.editor().world());
@@ -268,7 +390,7 @@ public final class GuiCommand implements Callable<Integer> {
     }
   }
 
-  private static String stem(Path p) {
+  static String stem(Path p) {
     String f = p.getFileName().toString();
     return f.toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? f.substring(0, f.length() - 5) : f;
   }

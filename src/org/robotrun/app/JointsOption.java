@@ -35,7 +35,7 @@ final class JointsOption {
     if (bad >= 0) {
       var j = model.joint(bad);
       String coupled = bad == 2 && model.coupledJ3() ? " (J3 is coupled: J3 + J2 must lie in the range)" : "";
-      throw new UserError(String.format("--joints: J%d is outside its limits %.0f..%.0f deg%s",
+      throw new UserError(String.format(java.util.Locale.ROOT, "--joints: J%d is outside its limits %.0f..%.0f deg%s",
           bad + 1, Math.toDegrees(j.lowerRad()), Math.toDegrees(j.upperRad()), coupled));
     }
     return q;

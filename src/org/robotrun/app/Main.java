@@ -1,6 +1,7 @@
 package org.robotrun.app;
 
 import java.io.PrintWriter;
+import org.robotrun.io.TerminalText;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -11,8 +12,9 @@ import picocli.CommandLine.Command;
     versionProvider = Main.Version.class,
     description = {
       "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate and program robots.",
-      "With no subcommand it opens the simulator window; 'robotrun --scenario FILE.json'",
-      "(or just 'robotrun FILE.json') opens it on a scenario's cell, as 'robotrun gui' does.",
+      "With no subcommand it opens the simulator window on the last workspace (or a new default one);",
+      "'robotrun --workspace DIR' opens a workspace anywhere, and 'robotrun --scenario FILE.json' (or just",
+      "'robotrun FILE.json') starts a new workspace copied from a scenario, as 'robotrun gui' does.",
       ""
     },
     subcommands = {
@@ -83,7 +85,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
   /** Bad command-line input: one line naming the problem, then where to get help. Exit 2. */
   private static int onParameterException(CommandLine.ParameterException e, String[] args) {
     PrintWriter err = e.getCommandLine().getErr();
-    err.println("robotrun: " + e.getMessage());
+    err.println(TerminalText.safe("robotrun: " + e.getMessage()));
     err.println("Try '" + e.getCommandLine().getCommandSpec().qualifiedName() + " --help' for more information.");
     err.flush();
     return EXIT_BAD_INPUT;
@@ -93,12 +95,12 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
   private static int onExecutionException(Exception e, CommandLine cl, CommandLine.ParseResult pr) {
     PrintWriter err = cl.getErr();
     if (e instanceof UserError ue) {
-      err.println("robotrun: " + ue.getMessage());
+      err.println(TerminalText.safe("robotrun: " + ue.getMessage()));
       err.flush();
       return ue.exitCode();
     }
     String msg = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
-    err.println("robotrun: internal error: " + msg);
+    err.println(TerminalText.safe("robotrun: internal error: " + msg));
     if (System.getenv("ROBOTRUN_DEBUG") != null) {
       e.printStackTrace(err);
     } else {

@@ -12,6 +12,7 @@ import org.robotrun.io.FileFormatException;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.LsWriter;
+import org.robotrun.io.TerminalText;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
@@ -36,7 +37,8 @@ import picocli.CommandLine.Spec;
       "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
       "By default the pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
       "--controller stand-in uses the stand-in controller instead: the same program interpreter on a toy gantry arm, no robot kinematics, no scenario.",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save could not write, 2 bad option, unreadable program or malformed script (file:line)."
+      "With --workspace DIR the workspace is opened (or created) first and everything the script changes is saved back to it when the script ends (and at each SHOW); a second RobotRun on the same workspace opens it read-only.",
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written, 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   @Option(names = "--keys", required = true, paramLabel = "FILE.keys", description = "The key script to run.")
@@ -59,6 +61,16 @@ public final class PendantCommand implements Callable<Integer> {
           + "the pendant drives its first robot. Default: the default cell.")
   Path scenario;
 
+  @Option(names = "--workspace", paramLabel = "DIR",
+      description = "A workspace folder to open (or create) first: its cell, saved state and programs; "
+          + "what the script changes is saved back to it as the window saves it (docs/workspace.md).")
+  Path workspace;
+
+  @Option(names = "--max-wall-seconds", paramLabel = "N", defaultValue = "3600",
+      description = "Stop with exit code 1 when the script has run this long in real (wall-clock) time, 1.."
+          + "86400 (default: ${DEFAULT-VALUE}). A safety net for graders; results are otherwise deterministic.")
+  double maxWallSeconds;
+
   @Spec
   CommandSpec spec;
 
@@ -67,23 +79,28 @@ public final class PendantCommand implements Callable<Integer> {
     if (saveDir != null && !Files.isDirectory(saveDir)) {
       throw new UserError("--save: the directory " + saveDir + " does not exist");
     }
-    List<String> lines;
-    try {
-      lines = Files.readAllLines(keys, StandardCharsets.UTF_8);
-    } catch (java.nio.file.NoSuchFileException e) {
-      throw new UserError("--keys: no such file " + keys);
-    } catch (IOException e) {
-      throw new UserError("--keys: cannot read " + keys + " (" + e.getMessage() + ")");
-    }
+    WallClock.checkOption(maxWallSeconds);
+    List<String> lines = InputFiles.lines("--keys", keys, KeyScript.MAX_FILE_BYTES, "key scripts");
     KeyScript script = switch (KeyScript.parse(keys.toString(), lines)) {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new UserError(bad.error().display());
     };
     List<Path> programFiles = new java.util.ArrayList<>();
+    WorkspaceSession session = null;
+    if (workspace != null && (scenario != null || !controller.equals("sim"))) {
+      throw new UserError("--workspace: give it alone (a workspace has its own cell; it needs --controller sim)");
+    }
     RobotControl control = switch (controller) {
       case "sim" -> {
         Simulation sim;
-        if (scenario != null) {
+        if (workspace != null) {
+          session = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
+              m -> System.err.println("robotrun: " + m));
+          if (!session.problems().isEmpty()) {
+            System.err.println("robotrun: " + session.problems());
+          }
+          sim = session.sim;
+        } else if (scenario != null) {
           Scenario sc = ScenarioFiles.load(scenario);
           try {
             sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
@@ -110,8 +127,26 @@ public final class PendantCommand implements Callable<Integer> {
       control.saveProgram(readProgram(file));
     }
     PrintWriter out = spec.commandLine().getOut();
-    script.run(new Pendant(control, new LsLineParser()), text -> out.print(text));
+    WallClock clock = WallClock.start(maxWallSeconds);
+    WorkspaceSession ws = session;
+    int stoppedAt = script.run(new Pendant(control, new LsLineParser()), text -> {
+      out.print(TerminalText.safe(text));
+      if (ws != null) {
+        ws.autosave.poll(System.nanoTime());
+      }
+    }, clock::expired);
     out.flush();
+    if (session != null) {
+      String problem = session.autosave.saveNow(10_000);
+      session.close();
+      if (!problem.isEmpty() && !session.workspace.readOnly()) {
+        throw new UserError("--workspace: " + problem, Main.EXIT_FAILED);
+      }
+    }
+    if (stoppedAt > 0) {
+      throw new UserError(keys + ":" + stoppedAt + ": stopped: the script ran longer than --max-wall-seconds "
+          + WallClock.format(maxWallSeconds) + " s of real time", Main.EXIT_FAILED);
+    }
     if (saveDir != null) {
       for (String name : control.programNames()) {
         Path file = saveDir.resolve(name + ".LS");

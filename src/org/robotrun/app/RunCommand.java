@@ -2,6 +2,7 @@ package org.robotrun.app;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
+import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -16,7 +17,10 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
+import org.robotrun.io.AtomicFiles;
+import org.robotrun.io.BoundedFiles;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.io.UnreadableFileException;
 import org.robotrun.io.FileFormatException;
 import org.robotrun.io.ScenarioLoad;
 import org.robotrun.io.ScenarioReader;
@@ -24,6 +28,7 @@ import org.robotrun.world.Scenario;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
+import org.robotrun.io.TerminalText;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.program.Program;
 import org.robotrun.sim.Controller;
@@ -42,6 +47,7 @@ import picocli.CommandLine.Option;
       "Run a TP program with no window, as fast as the machine allows, in 4 ms simulation ticks.",
       "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
           + "before --programs; --program defaults to its main program); the program runs on the first robot.",
+      "With --workspace DIR|FILE.zip they come from a workspace or a hand-in (docs/workspace.md), as the window would run them.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
           + "reports it closed 0.1 s later.",
@@ -55,8 +61,13 @@ public final class RunCommand implements Callable<Integer> {
       description = "Scenario JSON (robots, world, frames, registers, programs; docs/scenario-format.md). Default: the default cell.")
   Path scenario;
 
+  @Option(names = "--workspace", paramLabel = "DIR|FILE.zip",
+      description = "A workspace folder or a hand-in zip: its cell, saved state (registers, frames, outputs) and programs, "
+          + "run as the window would; --program defaults to its main program. The workspace is not changed.")
+  Path workspace;
+
   @Option(names = "--program", paramLabel = "NAME",
-      description = "The program to run (its /PROG name). Default: the scenario's main program.")
+      description = "The program to run (its /PROG name). Default: the scenario's or workspace's main program.")
   String program;
 
   @Option(names = "--programs", arity = "1..*", paramLabel = "DIR|FILE.ls",
@@ -68,8 +79,17 @@ public final class RunCommand implements Callable<Integer> {
   int overridePct;
 
   @Option(names = "--max-sim-seconds", defaultValue = "600", paramLabel = "N",
-      description = "Stop with exit code 1 after this much simulated time (default: ${DEFAULT-VALUE}).")
+      description = "Stop with exit code 1 after this much simulated time, more than 0 and at most 86400 "
+          + "(default: ${DEFAULT-VALUE}).")
   double maxSimSeconds;
+
+  @Option(names = "--max-wall-seconds", defaultValue = "3600", paramLabel = "N",
+      description = "Stop with exit code 1 (alarm RUN-002) when the run has taken this long in real (wall-clock) time, "
+          + "1..86400 (default: ${DEFAULT-VALUE}). A safety net for graders; it never changes what a finished run reports.")
+  double maxWallSeconds;
+
+  /** Largest --max-sim-seconds: a day of simulated time (21.6 million ticks). */
+  static final double MAX_SIM_SECONDS = 86_400;
 
   @Option(names = "--report", paramLabel = "out.json", description = "Write the JSON report here.")
   Path report;
@@ -82,14 +102,42 @@ public final class RunCommand implements Callable<Integer> {
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
     }
-    if (!(maxSimSeconds > 0) || Double.isInfinite(maxSimSeconds)) {
-      throw new UserError("--max-sim-seconds: expected a positive number, got " + maxSimSeconds);
+    if (!(maxSimSeconds > 0 && maxSimSeconds <= MAX_SIM_SECONDS)) {
+      throw new UserError("--max-sim-seconds: expected more than 0 and at most " + (long) MAX_SIM_SECONDS
+          + " seconds, got " + WallClock.format(maxSimSeconds));
     }
+    WallClock.checkOption(maxWallSeconds);
+    // Every output is checked before the simulation, so a bad path never costs a long run.
     checkOutput("--report", report);
     checkOutput("--trace", trace);
+    if (report != null && trace != null && report.toAbsolutePath().normalize().equals(trace.toAbsolutePath().normalize())) {
+      throw new UserError("--report and --trace name the same file " + report);
+    }
     Simulation sim;
     List<Path> programFiles = new ArrayList<>();
-    if (scenario != null) {
+    List<Program> fromWorkspace = new ArrayList<>();
+    WorkspaceSession session = null;
+    if (workspace != null) {
+      if (scenario != null) {
+        throw new UserError("--workspace and --scenario: give one of them (a workspace has its own cell)");
+      }
+      session = WorkspaceSession.open(workspace, true, java.util.Optional::empty, m -> {});
+      if (session.workspace.cellBlocked()) {
+        String why = session.problems();
+        session.close();
+        throw new UserError(why);
+      }
+      if (!session.workspace.problems().isEmpty()) {
+        System.err.println("robotrun: warning: " + session.problems());
+      }
+      sim = session.sim;
+      fromWorkspace.addAll(session.workspace.programs());
+      if (program == null) {
+        String ws = workspace.toString();
+        program = session.workspace.scenario().mainProgram().orElseThrow(() -> new UserError(
+            "--program: name the program to run (the workspace " + ws + " names no main program)"));
+      }
+    } else if (scenario != null) {
       Scenario sc = switch (ScenarioReader.read(scenario)) {
         case ScenarioLoad.Loaded l -> l.scenario();
         case ScenarioLoad.Failed f -> throw new UserError(f.message());
@@ -111,7 +159,8 @@ public final class RunCommand implements Callable<Integer> {
       }
     }
     programFiles.addAll(programs);
-    List<Program> loaded = loadPrograms(programFiles);
+    List<Program> loaded = new ArrayList<>(fromWorkspace);
+    loaded.addAll(loadPrograms(programFiles));
     // Program names are upper case on the controller; accept 'pick3' for PICK3.
     String wanted = program;
     program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
@@ -122,38 +171,61 @@ public final class RunCommand implements Callable<Integer> {
     loaded.forEach(c::saveProgram);
     c.setOverridePct(overridePct);
 
-    HeadlessRun.Result result;
+    WallClock clock = WallClock.start(maxWallSeconds);
+    String wallReason = "stopped after --max-wall-seconds " + WallClock.format(maxWallSeconds) + " s of real time";
+    HeadlessRun.Result[] result = new HeadlessRun.Result[1];
     if (trace != null) {
-      try (Writer w = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
+      // Streamed to a temporary file beside the old trace and renamed at the end: a killed run
+      // leaves the old trace whole, never a truncated or partial one.
+      writeOutput("--trace", trace, out -> {
+        Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
         TraceWriter tw = new TraceWriter(w, sim.controllers());
         tw.write(sim);
-        result = HeadlessRun.run(sim, c, program, maxSimSeconds, tw::write);
-      }
+        result[0] = HeadlessRun.run(sim, c, program, maxSimSeconds, tw::write, clock::expired, wallReason);
+        w.flush();
+      });
     } else {
       Consumer<Simulation> none = s -> {};
-      result = HeadlessRun.run(sim, c, program, maxSimSeconds, none);
+      result[0] = HeadlessRun.run(sim, c, program, maxSimSeconds, none, clock::expired, wallReason);
     }
+    HeadlessRun.Result r = result[0];
     if (report != null) {
-      RunReport.write(report, program, result, sim);
+      writeOutput("--report", report, out -> out.write(RunReport.bytes(program, r, sim)));
     }
-    String summary = switch (result.status()) {
-      case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", program, result.cycleTimeSec());
-      case ALARM -> "alarm " + result.alarm().orElseThrow().display();
+    String summary = switch (r.status()) {
+      case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", program, r.cycleTimeSec());
+      case ALARM -> "alarm " + r.alarm().orElseThrow().display();
     };
-    System.out.println(summary);
-    return result.status() == HeadlessRun.Status.FINISHED ? Main.EXIT_OK : Main.EXIT_FAILED;
+    System.out.println(TerminalText.safe(summary));
+    if (session != null) {
+      session.close();
+    }
+    return r.status() == HeadlessRun.Status.FINISHED ? Main.EXIT_OK : Main.EXIT_FAILED;
   }
 
+  /** Refuses an output path that could not be written (missing folder, folder, device, no permission). */
   private static void checkOutput(String option, Path file) {
     if (file == null) {
       return;
     }
-    Path dir = file.toAbsolutePath().getParent();
-    if (dir == null || !Files.isDirectory(dir)) {
-      throw new UserError(option + ": the directory " + dir + " does not exist");
+    try {
+      AtomicFiles.checkWritable(file);
+    } catch (IOException e) {
+      throw new UserError(option + ": cannot write " + e.getMessage());
     }
-    if (Files.isDirectory(file)) {
-      throw new UserError(option + ": " + file + " is a directory; give a file name");
+  }
+
+  /** Writes an output through {@link AtomicFiles}; a failure (full disk) is one clear message, exit 2. */
+  private static void writeOutput(String option, Path file, AtomicFiles.Content content) {
+    try {
+      try {
+        AtomicFiles.write(file, content);
+      } catch (java.io.UncheckedIOException e) {
+        throw e.getCause();
+      }
+    } catch (IOException e) {
+      String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+      throw new UserError(option + ": could not write " + file + " (" + why + "); the old file, if any, is unchanged");
     }
   }
 
@@ -180,7 +252,12 @@ public final class RunCommand implements Callable<Integer> {
       } else if (Files.isRegularFile(p)) {
         files.add(p);
       } else {
-        throw new UserError("--programs: " + p + " does not exist");
+        try {
+          BoundedFiles.requireRegularFile(p);
+        } catch (UnreadableFileException e) {
+          throw new UserError("--programs: cannot read " + p + ": " + e.getMessage());
+        }
+        files.add(p);
       }
     }
     List<Program> out = new ArrayList<>();
@@ -188,10 +265,18 @@ public final class RunCommand implements Callable<Integer> {
     Map<String, Path> definedIn = new HashMap<>();
     Set<Path> seen = new HashSet<>();
     for (Path f : files) {
-      if (!seen.add(f.toRealPath())) {
-        continue;  // the same file named twice (a file and its directory, say)
+      LsReadResult r;
+      try {
+        if (!seen.add(f.toRealPath())) {
+          continue;  // the same file named twice (a file and its directory, say)
+        }
+        r = LsReader.read(f);
+      } catch (IOException e) {
+        String why = e instanceof UnreadableFileException ? e.getMessage()
+            : e instanceof java.nio.file.AccessDeniedException ? "permission denied" : e.getMessage();
+        errors.add(f + ": cannot read: " + why);
+        continue;
       }
-      LsReadResult r = LsReader.read(f);
       r.diagnostics().stream().filter(Diagnostic::blocksLoading).map(Diagnostic::toString).forEach(errors::add);
       if (!r.hasErrors()) {
         Path first = definedIn.putIfAbsent(r.program().name(), f);

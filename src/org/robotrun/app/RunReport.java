@@ -30,8 +30,12 @@ final class RunReport {
 
   /** Writes through {@link AtomicFiles}: a crash leaves the old report or the new one, never half. */
   static void write(Path file, String program, HeadlessRun.Result result, Simulation sim) throws IOException {
-    ObjectNode root = build(program, result, sim);
-    AtomicFiles.write(file, JSON.writeValueAsBytes(root));
+    AtomicFiles.write(file, bytes(program, result, sim));
+  }
+
+  /** The report as UTF-8 JSON bytes. */
+  static byte[] bytes(String program, HeadlessRun.Result result, Simulation sim) throws IOException {
+    return JSON.writeValueAsBytes(build(program, result, sim));
   }
 
   static ObjectNode build(String program, HeadlessRun.Result result, Simulation sim) {
@@ -120,7 +124,7 @@ final class RunReport {
         if (regs.isInteger(i)) {
           rr.put(Integer.toString(i), (long) regs.number(i));
         } else {
-          rr.put(Integer.toString(i), regs.number(i));
+          rr.put(Integer.toString(i), finite(regs.number(i)));
         }
       }
     }
@@ -134,7 +138,7 @@ final class RunReport {
     ObjectNode io = r.putObject("io");
     for (IoKind k : IoKind.values()) {
       ObjectNode ports = io.putObject(k.name());
-      for (int i = 1; i <= k.size(); i++) {
+      for (int i = 1; i <= regs.ioSize(k); i++) {
         int v = regs.value(k, i);
         if (v != 0) {
           if (k.group()) {
@@ -160,12 +164,12 @@ final class RunReport {
     ObjectNode o = JSON.createObjectNode();
     switch (p) {
       case Position.Cartesian c -> {
-        o.put("x", c.xMm());
-        o.put("y", c.yMm());
-        o.put("z", c.zMm());
-        o.put("w", c.wDeg());
-        o.put("p", c.pDeg());
-        o.put("r", c.rDeg());
+        o.put("x", finite(c.xMm()));
+        o.put("y", finite(c.yMm()));
+        o.put("z", finite(c.zMm()));
+        o.put("w", finite(c.wDeg()));
+        o.put("p", finite(c.pDeg()));
+        o.put("r", finite(c.rDeg()));
         var cf = c.config();
         o.put("config", (cf.flip() ? "F" : "N") + " " + (cf.up() ? "U" : "D") + " " + (cf.top() ? "T" : "B")
             + ", " + cf.turn1() + ", " + cf.turn2() + ", " + cf.turn3());
@@ -173,14 +177,27 @@ final class RunReport {
       case Position.Joint j -> {
         ArrayNode a = o.putArray("joints_deg");
         for (int i = 1; i <= 6; i++) {
-          a.add(j.element(i));
+          a.add(finite(j.element(i)));
         }
       }
     }
     return o;
   }
 
+  /**
+   * {@code v}, which the schema says is a JSON number: Jackson would write NaN and infinities as
+   * strings. Arithmetic overflow is an alarm in the interpreter, so none can reach here; if one
+   * did, the report is refused rather than written against its schema.
+   */
+  private static double finite(double v) {
+    if (!Double.isFinite(v)) {
+      throw new IllegalStateException("a non-finite number reached the run report: " + v);
+    }
+    return v;
+  }
+
   private static double round(double v, int decimals) {
+    finite(v);
     double s = Math.pow(10, decimals);
     double r = Math.round(v * s) / s;
     return r == 0 ? 0 : r;

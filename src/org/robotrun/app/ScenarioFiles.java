@@ -25,7 +25,7 @@ final class ScenarioFiles {
 
   /** Reads the scenario or throws one error listing every problem found (file:line: path: what). */
   static Scenario load(Path file) {
-    if (!Files.isRegularFile(file)) {
+    if (!Files.exists(file)) {
       throw new UserError("--scenario: no such file " + file);
     }
     return switch (ScenarioReader.read(file)) {
@@ -56,7 +56,7 @@ final class ScenarioFiles {
       double[] q = JointConvention.kinematicToPendant(model(first), JointsOption.parseToKinematic(jointsOverride, model(first)));
       List<RobotSetup> robots = new ArrayList<>(sc.robots());
       robots.set(0, new RobotSetup(first.name(), first.modelId(), first.X_CB(), first.endEffector(),
-          java.util.Arrays.stream(q).boxed().toList(), first.toolIo()));
+          java.util.Arrays.stream(q).boxed().toList(), first.toolIo(), first.io(), first.userAlarms()));
       s = new Scenario(sc.name(), sc.description(), robots, sc.world(), sc.programs(), sc.mainProgram(), sc.registers(),
           sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision());
     }

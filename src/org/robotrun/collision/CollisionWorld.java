@@ -13,10 +13,13 @@ import org.robotrun.math.Transform;
  * {@link #update()}. The broad phase is sort-and-sweep on world-axis-aligned bounds along x:
  * the order from the last tick is repaired by insertion sort, which is linear when little
  * moved. Pairs whose bounds overlap in x, y and z and that the {@link PairFilter} allows go to
- * the {@link SeparatingAxisTest}. The filter's answers are cached per pair (one byte per pair
- * of handles, so n² bytes: 47 KB for 216 bodies) until {@link #setFilter} is called again.
- * Once every pair has been asked and the contact buffer has grown to its working size,
- * {@code setPose} and {@code update} allocate nothing.
+ * the {@link SeparatingAxisTest}. The filter's answers are cached for the pairs the sweep meets
+ * (a hash table of candidate pairs, not an n×n table: memory grows with the bodies, and is
+ * capped at {@link #MAX_CACHED_PER_BODY} pairs per body, beyond which the filter is simply
+ * asked again) until {@link #setFilter} is called again. The first update after bodies were
+ * added sorts them in full (n log n); later ones repair the order by insertion sort, and fall
+ * back to a full sort when that would cost more. Once every pair has been asked and the buffers
+ * have grown to their working size, {@code setPose} and {@code update} allocate nothing.
  *
  * <p>Not thread-safe: one simulation owns one world.
  */
@@ -36,15 +39,24 @@ public final class CollisionWorld {
   private int contactCount;
   private PairFilter filter;
   /**
-   * The filter's answer per pair (row = smaller handle, stride = {@code order.length}):
-   * {@link #UNASKED}, {@link #CHECK} or {@link #SKIP}. The filter is asked once per pair
-   * and the answer kept until {@link #setFilter}: parts lying on tables are near each other
-   * every tick, and asking again would cost more than the whole sweep.
+   * The filter's answer per candidate pair, {@link #CHECK} or {@link #SKIP}, kept until
+   * {@link #setFilter}: parts lying on tables are near each other every tick, and asking again
+   * would cost more than the whole sweep. Open addressing on the key {@code lo << 32 | hi};
+   * {@link #EMPTY} marks a free slot.
    */
-  private byte[] pairRule = new byte[16 * 16];
-  private static final byte UNASKED = 0;
+  private long[] ruleKeys = emptyKeys(1 << 10);
+  private byte[] ruleValues = new byte[1 << 10];
+  private int ruleCount;
+  private static final long EMPTY = -1;
   private static final byte CHECK = 1;
   private static final byte SKIP = 2;
+
+  /** Cached filter answers allowed per body (plus a fixed floor), so memory stays linear in bodies. */
+  public static final int MAX_CACHED_PER_BODY = 16;
+  private static final int MIN_CACHED = 1 << 16;
+
+  /** Whether bodies were added since the last full sort of {@link #order}. */
+  private boolean needsFullSort;
 
   /** An empty world checking pairs with {@code filter}. */
   public CollisionWorld(PairFilter filter) {
@@ -60,8 +72,8 @@ public final class CollisionWorld {
       bounds = Arrays.copyOf(bounds, n * 6);
       order = Arrays.copyOf(order, n);
       touching = Arrays.copyOf(touching, n);
-      pairRule = new byte[n * n];
     }
+    needsFullSort = true;
     bodies.add(body);
     box_W.writeTo(boxes, h);
     order[h] = h;
@@ -71,7 +83,13 @@ public final class CollisionWorld {
   /** Replaces the pair filter, e.g. when a part is gripped or released. */
   public void setFilter(PairFilter filter) {
     this.filter = filter;
-    Arrays.fill(pairRule, UNASKED);
+    Arrays.fill(ruleKeys, EMPTY);
+    ruleCount = 0;
+  }
+
+  /** Bytes held by the pair-rule cache (for the broad-phase memory figure in docs). */
+  public long cacheBytes() {
+    return (long) ruleKeys.length * (Long.BYTES + 1);
   }
 
   public int size() {
@@ -215,13 +233,70 @@ public final class CollisionWorld {
   }
 
   private boolean mayCollide(int lo, int hi) {
-    int k = lo * order.length + hi;
-    byte rule = pairRule[k];
-    if (rule == UNASKED) {
-      rule = filter.mayCollide(bodies.get(lo), bodies.get(hi)) ? CHECK : SKIP;
-      pairRule[k] = rule;
+    long key = ((long) lo << 32) | hi;
+    int mask = ruleKeys.length - 1;
+    int slot = mix(key) & mask;
+    while (true) {
+      long k = ruleKeys[slot];
+      if (k == key) {
+        return ruleValues[slot] == CHECK;
+      }
+      if (k == EMPTY) {
+        break;
+      }
+      slot = (slot + 1) & mask;
     }
-    return rule == CHECK;
+    boolean check = filter.mayCollide(bodies.get(lo), bodies.get(hi));
+    long cap = Math.max(MIN_CACHED, (long) MAX_CACHED_PER_BODY * bodies.size());
+    if (ruleCount < cap) {
+      if (2 * (ruleCount + 1) > ruleKeys.length) {
+        growRules();
+        mask = ruleKeys.length - 1;
+        slot = mix(key) & mask;
+        while (ruleKeys[slot] != EMPTY) {
+          slot = (slot + 1) & mask;
+        }
+      }
+      ruleKeys[slot] = key;
+      ruleValues[slot] = check ? CHECK : SKIP;
+      ruleCount++;
+    }
+    return check;
+  }
+
+  private void growRules() {
+    long[] oldKeys = ruleKeys;
+    byte[] oldValues = ruleValues;
+    ruleKeys = emptyKeys(2 * oldKeys.length);
+    ruleValues = new byte[2 * oldKeys.length];
+    int mask = ruleKeys.length - 1;
+    for (int i = 0; i < oldKeys.length; i++) {
+      if (oldKeys[i] != EMPTY) {
+        int slot = mix(oldKeys[i]) & mask;
+        while (ruleKeys[slot] != EMPTY) {
+          slot = (slot + 1) & mask;
+        }
+        ruleKeys[slot] = oldKeys[i];
+        ruleValues[slot] = oldValues[i];
+      }
+    }
+  }
+
+  private static long[] emptyKeys(int n) {
+    long[] k = new long[n];
+    Arrays.fill(k, EMPTY);
+    return k;
+  }
+
+  /** A 64-bit finaliser (the MurmurHash3 fmix64 constants), so nearby handle pairs spread out. */
+  private static int mix(long key) {
+    long h = key;
+    h ^= h >>> 33;
+    h *= 0xff51afd7ed558ccdL;
+    h ^= h >>> 33;
+    h *= 0xc4ceb9fe1a85ec53L;
+    h ^= h >>> 33;
+    return (int) h;
   }
 
   private void addContact(int a, int b) {
@@ -257,8 +332,14 @@ public final class CollisionWorld {
     }
   }
 
-  // Insertion sort on minX: linear when the order barely changed since the last tick.
+  // Insertion sort on minX: linear when the order barely changed since the last tick; a full
+  // sort after bodies were added, or when the insertion sort has shifted more than a few passes.
   private void sortByMinX(int n) {
+    if (needsFullSort) {
+      fullSort(n);
+      return;
+    }
+    long budget = 8L * n + 1024;
     for (int s = 1; s < n; s++) {
       int h = order[s];
       double key = bounds[h * 6];
@@ -266,9 +347,26 @@ public final class CollisionWorld {
       while (u >= 0 && bounds[order[u] * 6] > key) {
         order[u + 1] = order[u];
         u--;
+        if (--budget < 0) {
+          order[u + 1] = h;
+          fullSort(n);
+          return;
+        }
       }
       order[u + 1] = h;
     }
+  }
+
+  private void fullSort(int n) {
+    Integer[] handles = new Integer[n];
+    for (int s = 0; s < n; s++) {
+      handles[s] = order[s];
+    }
+    Arrays.sort(handles, (a, b) -> Double.compare(bounds[a * 6], bounds[b * 6]));
+    for (int s = 0; s < n; s++) {
+      order[s] = handles[s];
+    }
+    needsFullSort = false;
   }
 
   private void check(int handle) {

@@ -48,10 +48,29 @@ public final class AtomicFiles {
    * buffered by the caller's choice; it is flushed and forced to disk here.
    */
   public static void write(Path target, Content content) throws IOException {
+    write(target, content, true);
+  }
+
+  /**
+   * Replaces {@code target} as {@link #write(Path, byte[])} does (temporary file, forced, renamed)
+   * but leaves the folder sync to the caller, who saves many files of one folder together and
+   * then calls {@link #syncFolder} once. Each file is whole after a crash either way; the folder
+   * sync makes the renames themselves durable.
+   */
+  public static void writeLeavingFolderSync(Path target, byte[] bytes) throws IOException {
+    write(target, out -> out.write(bytes), false);
+  }
+
+  /** Forces a folder's entries to disk (after {@link #writeLeavingFolderSync}); a no-op where unsupported. */
+  public static void syncFolder(Path dir) {
+    forceFolder(dir.toAbsolutePath());
+  }
+
+  private static void write(Path target, Content content, boolean syncFolder) throws IOException {
     Path abs = target.toAbsolutePath();
     Path dir = abs.getParent();
     if (dir == null) throw new IOException(abs + ": not a file path");
-    if (Files.isDirectory(abs)) throw new IOException(abs + ": is a folder");
+    refuseSpecial(abs);
     Path tmp = createUniqueTemp(dir, abs.getFileName().toString());
     try {
       try (FileChannel ch = FileChannel.open(tmp, StandardOpenOption.WRITE);
@@ -67,7 +86,9 @@ public final class AtomicFiles {
         // Some file systems (network shares) cannot rename atomically; a plain replace is the best left.
         Files.move(tmp, abs, StandardCopyOption.REPLACE_EXISTING);
       }
-      forceFolder(dir);
+      if (syncFolder) {
+        forceFolder(dir);
+      }
     } finally {
       Files.deleteIfExists(tmp);
     }
@@ -83,9 +104,30 @@ public final class AtomicFiles {
     Path abs = target.toAbsolutePath();
     Path dir = abs.getParent();
     if (dir == null || !Files.isDirectory(dir)) throw new IOException(abs + ": the folder does not exist");
-    if (Files.isDirectory(abs)) throw new IOException(abs + ": is a folder");
-    Path probe = createUniqueTemp(dir, abs.getFileName().toString());
+    refuseSpecial(abs);
+    if (Files.exists(abs) && !Files.isWritable(abs)) throw new IOException(abs + ": the file is read-only");
+    Path probe;
+    try {
+      probe = createUniqueTemp(dir, abs.getFileName().toString());
+    } catch (IOException e) {
+      String why = e instanceof java.nio.file.AccessDeniedException ? "permission denied"
+          : e instanceof java.nio.file.NoSuchFileException ? "the folder cannot hold new files"
+          : e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+      throw new IOException(abs + ": cannot create a file in " + dir + " (" + why + ")");
+    }
     Files.deleteIfExists(probe);
+  }
+
+  /**
+   * Refuses a target that exists and is not a regular file: a folder, or a device or pipe
+   * ({@code /dev/full}, a FIFO) that a rename would replace with a plain file.
+   */
+  private static void refuseSpecial(Path abs) throws IOException {
+    if (Files.isDirectory(abs)) throw new IOException(abs + ": is a folder");
+    if (Files.exists(abs) && !Files.isRegularFile(abs)) {
+      String kind = BoundedFiles.kind(abs, Files.readAttributes(abs, java.nio.file.attribute.BasicFileAttributes.class));
+      throw new IOException(abs + ": is " + kind + ", not a regular file");
+    }
   }
 
   /** Creates an empty, unique temporary file beside the target, with umask permissions. */

@@ -1,7 +1,6 @@
 package org.robotrun.io;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -34,8 +33,11 @@ public final class IkTargetsCsv {
     "s1", "s2", "s3", "s4", "s5", "s6", "n1", "n2", "n3", "n4", "n5", "n6"
   };
 
+  /** Largest targets file read (the 2 000-row reference file is under 1 MiB). */
+  public static final long MAX_FILE_BYTES = 64L << 20;
+
   public static List<Target> read(Path file) throws IOException {
-    List<String> lines = Files.readAllLines(file);
+    List<String> lines = BoundedFiles.readUtf8(file, MAX_FILE_BYTES, "IK target files").lines().toList();
     String name = file.toString();
     if (lines.isEmpty()) {
       throw new FileFormatException(name, 1, "empty file: expected a header line");

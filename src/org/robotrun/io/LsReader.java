@@ -5,7 +5,6 @@ import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -39,11 +38,14 @@ import org.robotrun.program.ProgramSource;
  * warning when the file said otherwise).
  */
 public final class LsReader {
+  /** Largest .LS file read (a controller's biggest programs are a few MiB of positions). */
+  public static final long MAX_FILE_BYTES = 16L << 20;
+
   private LsReader() {}
 
   /** Reads a file; CALL targets are not checked (the program set is unknown). */
   public static LsReadResult read(Path file) throws IOException {
-    return read(file.toString(), Files.readAllBytes(file));
+    return read(file.toString(), readBytes(file));
   }
 
   /**
@@ -52,7 +54,7 @@ public final class LsReader {
    * its /PROG name, so a student who renamed PICK3.LS to PICK.LS still has a program PICK3.
    */
   public static LsReadResult readCheckingFileName(Path file) throws IOException {
-    byte[] bytes = Files.readAllBytes(file);
+    byte[] bytes = readBytes(file);
     LsReadResult r = read(file.toString(), bytes);
     String fileName = file.getFileName().toString();
     boolean ls = fileName.length() > 3 && fileName.regionMatches(true, fileName.length() - 3, ".ls", 0, 3);
@@ -68,6 +70,11 @@ public final class LsReader {
     all.add(Diagnostic.warning(r.file(), line, "the program is named " + program + " (/PROG) but the file is "
         + fileName + ": a controller loads it as " + program + ", not " + stem.toUpperCase(Locale.ROOT)));
     return new LsReadResult(r.file(), r.program(), all, r.sourceLines());
+  }
+
+  /** The file's bytes, within {@link #MAX_FILE_BYTES}; a FIFO, device or folder is refused unopened. */
+  private static byte[] readBytes(Path file) throws IOException {
+    return BoundedFiles.read(file, MAX_FILE_BYTES, ".LS programs");
   }
 
   /** The 1-based line of the /PROG header, 0 when there is none. */

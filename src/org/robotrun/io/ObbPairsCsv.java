@@ -4,7 +4,6 @@ import java.io.BufferedReader;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
@@ -47,13 +46,18 @@ public final class ObbPairsCsv {
     return sb.toString();
   }
 
+  /** Largest pairs file read (1 million pairs of full-precision boxes is about 500 MiB; the
+   * benchmark's 100 000 fit in 64 MiB). */
+  public static final long MAX_FILE_BYTES = 256L << 20;
+
   /** Reads a pairs file; throws {@link FileFormatException} naming file:line and the problem. */
   public static Pairs read(Path file) throws IOException {
     String name = file.toString();
     double[] a = new double[1024 * Obb.STRIDE];
     double[] b = new double[1024 * Obb.STRIDE];
     int count = 0;
-    try (BufferedReader in = Files.newBufferedReader(file, StandardCharsets.UTF_8)) {
+    byte[] bytes = BoundedFiles.read(file, MAX_FILE_BYTES, "pair files");
+    try (BufferedReader in = new BufferedReader(new java.io.StringReader(BoundedFiles.decodeUtf8(name, bytes)))) {
       String header = in.readLine();
       if (header == null) {
         throw new FileFormatException(name, 1, "empty file: expected a header line and then rows of " + COLUMNS + " numbers");
@@ -132,7 +136,8 @@ public final class ObbPairsCsv {
   /** Writes pairs with full double precision (round-trips exactly). */
   public static void write(Path file, List<Obb> a, List<Obb> b) throws IOException {
     double[] box = new double[Obb.STRIDE];
-    try (BufferedWriter out = Files.newBufferedWriter(file, StandardCharsets.UTF_8)) {
+    AtomicFiles.write(file, stream -> {
+      BufferedWriter out = new BufferedWriter(new java.io.OutputStreamWriter(stream, StandardCharsets.UTF_8), 1 << 16);
       out.write(header());
       out.newLine();
       StringBuilder sb = new StringBuilder(512);
@@ -147,7 +152,8 @@ public final class ObbPairsCsv {
         out.write(sb.toString());
         out.newLine();
       }
-    }
+      out.flush();
+    });
   }
 
   private static String format(double v) {

@@ -1,11 +1,8 @@
 package org.robotrun.io;
 
 import java.io.IOException;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -59,6 +56,12 @@ public final class ScenarioReader {
   /** Largest position coordinate or size, in mm (the bound every position entry shares). */
   public static final double MAX_LENGTH_MM = PoseLimits.MAX_COORDINATE_MM;
 
+  /**
+   * Most objects in one scenario: every one is a collision body checked each tick, and a cell
+   * for teaching holds tens, not hundred thousands. Loading is linear in the objects either way.
+   */
+  public static final int MAX_OBJECTS = 100_000;
+
   /** Highest register index a scenario may preset. */
   public static final int MAX_REGISTER = 200;
 
@@ -67,7 +70,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision");
+      "onCollision", "state");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
       "io", "userAlarms");
   /** Highest UALM[i] a scenario may give a text for. */
@@ -83,33 +86,43 @@ public final class ScenarioReader {
 
   private ScenarioReader() {}
 
-  /** Loads a scenario file. Never throws for bad content: errors come back in the result. */
+  /**
+   * Loads a scenario file. Never throws for bad content: errors come back in the result. A
+   * {@code "state"} section (a workspace's saved controller state) is checked but not applied:
+   * open the folder as a workspace for that.
+   */
   public static ScenarioLoad read(Path file) {
+    return switch (readCell(file, false)) {
+      case CellLoad.Loaded l -> new ScenarioLoad.Loaded(l.scenario());
+      case CellLoad.Failed f -> new ScenarioLoad.Failed(f.errors());
+    };
+  }
+
+  /**
+   * Loads a workspace's {@code cell.json}: a scenario plus its {@code "state"} section. The
+   * programs live in the workspace's {@code programs/} folder, so {@code mainProgram} need not be
+   * listed in {@code "programs"}.
+   */
+  public static CellLoad readCell(Path file) {
+    return readCell(file, true);
+  }
+
+  private static CellLoad readCell(Path file, boolean workspace) {
     String name = file.toString();
     String text;
     try {
-      long size = Files.size(file);
-      if (size > MAX_FILE_BYTES) {
-        return fail(name, 0, "file is " + size + " bytes; scenario files are limited to " + MAX_FILE_BYTES + " bytes");
-      }
-      text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file))).toString();
-      // Some Windows editors start UTF-8 files with a byte-order mark; it is not JSON.
-      if (text.startsWith("\uFEFF")) {
-        text = text.substring(1);
-      }
-    } catch (NoSuchFileException e) {
-      return fail(name, 0, "no such file");
-    } catch (CharacterCodingException e) {
-      return fail(name, 0, "not UTF-8 text");
-    } catch (IOException e) {
-      return fail(name, 0, "cannot read: " + e.getMessage());
+      text = BoundedFiles.readUtf8(file, MAX_FILE_BYTES, "scenario files (meshes are separate files)");
+    } catch (UnreadableFileException e) {
+      return fail(name, 0, e.getMessage());
+    } catch (FileFormatException e) {
+      return fail(name, e.line(), e.reason());
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
-    return new Session(name, dir).read(text);
+    return new Session(name, dir, workspace).read(text);
   }
 
-  private static ScenarioLoad fail(String file, int line, String message) {
-    return new ScenarioLoad.Failed(List.of(new ScenarioError(file, line, "", message)));
+  private static CellLoad fail(String file, int line, String message) {
+    return new CellLoad.Failed(List.of(new ScenarioError(file, line, "", message)));
   }
 
   /** One load: the file, its folder and the errors found so far. */
@@ -121,25 +134,28 @@ public final class ScenarioReader {
     /** Where each name was first defined, for duplicate messages. */
     private final Map<String, String> definedAt = new HashMap<>();
 
-    Session(String file, Path dir) {
+    private final boolean workspace;
+
+    Session(String file, Path dir, boolean workspace) {
       this.file = file;
       this.dir = dir;
+      this.workspace = workspace;
     }
 
-    ScenarioLoad read(String text) {
+    CellLoad read(String text) {
       List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
       LocatedJson root;
       try {
         root = LocatedJson.parse(text, duplicates);
       } catch (LocatedJson.SyntaxError e) {
-        return new ScenarioLoad.Failed(List.of(new ScenarioError(file, e.line, "", e.getMessage())));
+        return new CellLoad.Failed(List.of(new ScenarioError(file, e.line, "", e.getMessage())));
       }
       for (LocatedJson.DuplicateKey d : duplicates) {
         errors.add(new ScenarioError(file, d.line(), d.key(), "field given twice"));
       }
       JObject top = object(root, "", TOP);
       if (top == null) {
-        return new ScenarioLoad.Failed(errors);
+        return new CellLoad.Failed(errors);
       }
       checkFormat(top);
       String title = string(top, "name", "", false).orElse("");
@@ -155,16 +171,23 @@ public final class ScenarioReader {
       Optional<CameraView> camera = camera(top);
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
+      SavedState state = null;
+      LocatedJson stateJson = top.members().get("state");
+      if (stateJson instanceof JObject so) {
+        state = StateJson.read(so, this::error);
+      } else if (stateJson != null) {
+        error(stateJson.line(), "state", "expected an object, got " + stateJson.describe());
+      }
       if (!errors.isEmpty()) {
         errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
-        return new ScenarioLoad.Failed(errors);
+        return new CellLoad.Failed(errors);
       }
       try {
-        return new ScenarioLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision));
+        return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision), Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
-        return new ScenarioLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
+        return new CellLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
       }
     }
 
@@ -394,6 +417,10 @@ public final class ScenarioReader {
       if (arr == null) {
         return out;
       }
+      if (arr.items().size() > MAX_OBJECTS) {
+        error(arr.line(), "objects", arr.items().size() + " objects; a scenario may hold at most " + MAX_OBJECTS);
+        return out;
+      }
       Map<String, ObjectKind> kinds = new LinkedHashMap<>();
       List<Parented> parented = new ArrayList<>();
       for (int i = 0; i < arr.items().size(); i++) {
@@ -402,13 +429,13 @@ public final class ScenarioReader {
         if (o == null) {
           continue;
         }
-        Optional<String> objName = string(o, "name", at, true);
-        objName.ifPresent(n -> {
+        Optional<String> objName = string(o, "name", at, true).filter(n -> {
           if (n.isBlank()) {
             error(o.members().get("name").line(), at + ".name", "expected a non-empty name");
-          } else {
-            defineName(n, at + ".name", o.members().get("name").line());
+            return false;
           }
+          defineName(n, at + ".name", o.members().get("name").line());
+          return true;
         });
         Optional<ObjectKind> kind = string(o, "kind", at, true).flatMap(k -> switch (k) {
           case "fixture" -> Optional.of(ObjectKind.FIXTURE);
@@ -452,24 +479,44 @@ public final class ScenarioReader {
       for (Parented p : parented) {
         parentOf.put(p.name(), p.parent());
       }
+      Set<String> inLoop = namesInLoops(parentOf);
       for (Parented p : parented) {
         ObjectKind k = kinds.get(p.parent());
         if (k == null) {
           error(p.line(), p.path(), "no object named '" + p.parent() + "' to be relative to");
         } else if (k != ObjectKind.FIXTURE) {
           error(p.line(), p.path(), "'" + p.parent() + "' is a part; only a fixture can be a parent");
-        } else {
-          // Follow the chain; coming back to p.name() is a loop.
-          String at = p.parent();
-          for (int steps = 0; at != null && steps <= parented.size(); steps++) {
-            if (at.equals(p.name())) {
-              error(p.line(), p.path(), "parents form a loop through '" + p.name() + "'");
-              break;
-            }
-            at = parentOf.get(at);
-          }
+        } else if (inLoop.contains(p.name())) {
+          error(p.line(), p.path(), "parents form a loop through '" + p.name() + "'");
         }
       }
+    }
+
+    /**
+     * The names that lie on a loop of parents, found in time linear in the number of objects:
+     * each chain is walked once, and a walk stops at a name an earlier walk has finished.
+     */
+    private static Set<String> namesInLoops(Map<String, String> parentOf) {
+      Map<String, Integer> state = new HashMap<>();  // absent: not seen, 1: on the current walk, 2: done
+      Set<String> inLoop = new java.util.HashSet<>();
+      List<String> walk = new ArrayList<>();
+      for (String start : parentOf.keySet()) {
+        walk.clear();
+        String at = start;
+        while (at != null && !state.containsKey(at)) {
+          state.put(at, 1);
+          walk.add(at);
+          at = parentOf.get(at);
+        }
+        if (at != null && state.get(at) == 1) {
+          // back on the current walk: the names from 'at' to the end form a loop
+          inLoop.addAll(walk.subList(walk.indexOf(at), walk.size()));
+        }
+        for (String n : walk) {
+          state.put(n, 2);
+        }
+      }
+      return inLoop;
     }
 
     private Shape shape(JObject o, String at) {
@@ -520,7 +567,7 @@ public final class ScenarioReader {
       if (meshFile == null) {
         return null;
       }
-      if (!Files.isRegularFile(meshFile)) {
+      if (!Files.exists(meshFile)) {
         error(line, at + ".file", "mesh file not found: " + meshFile + " (paths are relative to the scenario file)");
         return null;
       }
@@ -528,6 +575,8 @@ public final class ScenarioReader {
         return new Shape.Mesh(meshFile, scale, StlReader.read(meshFile, scale));
       } catch (FileFormatException e) {
         error(line, at + ".file", "bad mesh: " + e.getMessage());
+      } catch (UnreadableFileException e) {
+        error(line, at + ".file", "cannot read mesh " + meshFile + ": " + e.getMessage());
       } catch (IOException e) {
         error(line, at + ".file", "cannot read mesh " + meshFile + ": " + e.getMessage());
       }
@@ -555,8 +604,10 @@ public final class ScenarioReader {
         }
         if (!s.value().toLowerCase(Locale.ROOT).endsWith(".ls")) {
           error(v.line(), at, "expected a .LS program file, got \"" + s.value() + "\"");
-        } else if (!Files.isRegularFile(p)) {
+        } else if (!Files.exists(p)) {
           error(v.line(), at, "program file not found: " + p + " (paths are relative to the scenario file)");
+        } else if (!Files.isRegularFile(p)) {
+          error(v.line(), at, "program file " + p + " is not a regular file");
         } else {
           out.add(p);
         }
@@ -579,7 +630,7 @@ public final class ScenarioReader {
           }
         }
       }
-      if (!listed) {
+      if (!listed && !workspace) {
         error(line, "mainProgram", "'" + main.get() + "' is not one of the programs listed in \"programs\"");
         return Optional.empty();
       }

@@ -35,6 +35,14 @@ public final class ScenarioWriter {
 
   /** The JSON text, with paths relative to {@code dir}. */
   public static String toJson(Scenario s, Path dir) throws IOException {
+    return toJson(s, java.util.Optional.empty(), dir);
+  }
+
+  /**
+   * The JSON text of a workspace's {@code cell.json}: the scenario (where things are now) and,
+   * when given, the controller's {@code "state"} section.
+   */
+  public static String toJson(Scenario s, java.util.Optional<SavedState> state, Path dir) throws IOException {
     StringWriter text = new StringWriter();
     DefaultPrettyPrinter pretty = new DefaultPrettyPrinter().withObjectIndenter(new DefaultIndenter("  ", "\n"));
     try (JsonGenerator g = new JsonFactory().createGenerator(text)) {
@@ -126,6 +134,9 @@ public final class ScenarioWriter {
         number(g, "yawDeg", Math.toDegrees(c.yawRad()));
         number(g, "pitchDeg", Math.toDegrees(c.pitchRad()));
         g.writeEndObject();
+      }
+      if (state.isPresent()) {
+        StateJson.write(g, state.get());
       }
       g.writeEndObject();
     }

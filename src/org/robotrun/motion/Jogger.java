@@ -129,8 +129,8 @@ public final class Jogger {
         String side = (v != 0 ? v > 0 : keys.direction(i) > 0) ? "upper" : "lower";
         stop(keys);
         return new JogResult.Stopped(limiting == i
-            ? String.format("J%d at its %s limit (%.1f deg)", i + 1, side, Math.toDegrees(q[i]))
-            : String.format("J%d stopped: J3 (coupled to J2) at its %s limit", i + 1, side));
+            ? String.format(java.util.Locale.ROOT, "J%d at its %s limit (%.1f deg)", i + 1, side, Math.toDegrees(q[i]))
+            : String.format(java.util.Locale.ROOT, "J%d stopped: J3 (coupled to J2) at its %s limit", i + 1, side));
       }
     }
     return MOVING;
@@ -183,7 +183,7 @@ public final class Jogger {
     if (!ok || ratio > 1 || scale < MIN_SLOWDOWN || MotionRunner.entersWristSingularity(q, qTry)) {
       stop(keys);
       return new JogResult.Stopped(Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))
-          ? String.format("stopped near the wrist singularity (J5 = %.1f deg): jog J5 in JOINT first", Math.toDegrees(q[4]))
+          ? String.format(java.util.Locale.ROOT, "stopped near the wrist singularity (J5 = %.1f deg): jog J5 in JOINT first", Math.toDegrees(q[4]))
           : "stopped: singularity or edge of reach");
     }
     if (scale < 1) {
@@ -194,7 +194,7 @@ public final class Jogger {
     for (int i = 0; i < 6; i++) {
       if (!(qTry[i] >= chain.lower(i) && qTry[i] <= chain.upper(i))) {
         stop(keys);
-        return new JogResult.Stopped(String.format("J%d at its %s limit (%.1f deg)", i + 1,
+        return new JogResult.Stopped(String.format(java.util.Locale.ROOT, "J%d at its %s limit (%.1f deg)", i + 1,
             qTry[i] > chain.upper(i) ? "upper" : "lower", Math.toDegrees(q[i])));
       }
     }

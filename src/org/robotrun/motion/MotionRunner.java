@@ -662,7 +662,7 @@ public final class MotionRunner {
   private String limitMessage(int joint, double value) {
     // Limits hold for the kinematic joints; with the pendant's coupled J3 that is J2 + J3.
     String coupled = joint == 2 && model.coupledJ3() ? " (J2 + J3 as the pendant shows them)" : "";
-    return String.format("J%d would reach %.1f deg%s, outside its limits %.1f..%.1f deg", joint + 1,
+    return String.format(java.util.Locale.ROOT, "J%d would reach %.1f deg%s, outside its limits %.1f..%.1f deg", joint + 1,
         Math.toDegrees(value), coupled, Math.toDegrees(model.joint(joint).lowerRad()),
         Math.toDegrees(model.joint(joint).upperRad()));
   }

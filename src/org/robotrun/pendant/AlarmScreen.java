@@ -24,7 +24,7 @@ final class AlarmScreen implements Screen {
     }
     top = Math.max(0, Math.min(top, h.size() - 1));
     for (int i = top; i < h.size() && rows.size() < Lcd.BODY_ROWS; i++) {
-      rows.add(String.format(" %3d %s", i + 1, h.get(i).display()));
+      rows.add(String.format(java.util.Locale.ROOT, " %3d %s", i + 1, h.get(i).display()));
     }
     return rows;
   }

@@ -163,7 +163,8 @@ final class DataScreen implements Screen {
       return;
     }
     CommentTable ct = table == Table.REGISTERS ? CommentTable.R : CommentTable.PR;
-    if (column == 0 || table == Table.POSITION_REGISTERS && typed != null && !Character.isDigit(typed.charAt(0))) {
+    if (column == 0 || table == Table.POSITION_REGISTERS && typed != null
+        && (typed.isEmpty() || !Character.isDigit(typed.charAt(0)))) {
       p.entryOrTyped(ct + "[" + n + "] comment:", typed, p.control().comment(ct, n), true, c -> {
         p.control().setComment(ct, n, c.trim());
         return Optional.empty();

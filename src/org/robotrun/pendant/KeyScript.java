@@ -62,6 +62,18 @@ public final class KeyScript {
     }
   }
 
+  /** Largest key script read, in bytes (a script is typed by hand or generated; 1 MiB is plenty). */
+  public static final long MAX_FILE_BYTES = 1L << 20;
+
+  /** Longest simulated time one WAIT may ask for, in seconds. */
+  public static final double MAX_WAIT_SEC = 3600;
+
+  /**
+   * Longest simulated time a whole script may ask for, in seconds (the sum of its WAITs): each
+   * WAIT is bounded, and so is the sum, so a script cannot keep a grader busy for days.
+   */
+  public static final double MAX_TOTAL_WAIT_SEC = 4 * 3600;
+
   private final List<Step> steps;
 
   private KeyScript(List<Step> steps) {
@@ -77,6 +89,7 @@ public final class KeyScript {
   public static Parsed parse(String file, List<String> lines) {
     Objects.requireNonNull(file, "file");
     List<Step> steps = new ArrayList<>();
+    double totalWaitSec = 0;
     for (int i = 0; i < lines.size(); i++) {
       int n = i + 1;
       String raw = lines.get(i);
@@ -97,21 +110,26 @@ public final class KeyScript {
           // the text as written after "TYPE ", inner spaces kept
           String text = raw.stripLeading().substring(4);
           text = text.startsWith(" ") ? text.substring(1) : text;
-          if (text.isEmpty()) {
+          if (text.isBlank()) {
             return bad(file, n, "TYPE needs the text to type");
           }
           steps.add(new Step.Type(n, text.stripTrailing()));
         }
         case "WAIT" -> {
-          try {
-            double s = Double.parseDouble(rest);
-            if (!(s >= 0) || s > 3600) {
-              return bad(file, n, "WAIT seconds must be 0..3600, got " + rest);
-            }
-            steps.add(new Step.Wait(n, s));
-          } catch (NumberFormatException e) {
+          java.util.OptionalDouble v = org.robotrun.math.DecimalText.parse(rest);
+          if (v.isEmpty()) {
             return bad(file, n, "WAIT needs seconds (e.g. WAIT 2.5), got '" + rest + "'");
           }
+          double s = v.getAsDouble();
+          if (!(s >= 0) || s > MAX_WAIT_SEC) {
+            return bad(file, n, "WAIT seconds must be 0..3600, got " + rest);
+          }
+          totalWaitSec += s;
+          if (totalWaitSec > MAX_TOTAL_WAIT_SEC) {
+            return bad(file, n, "the WAITs up to here add up to more than " + (long) MAX_TOTAL_WAIT_SEC
+                + " s of simulated time, the limit for one script");
+          }
+          steps.add(new Step.Wait(n, s));
         }
         case "CLICK" -> {
           Optional<Key> k = Key.parse(rest);
@@ -185,8 +203,20 @@ public final class KeyScript {
    * LCD text.
    */
   public void run(Pendant pendant, Consumer<String> show) {
+    run(pendant, show, () -> false);
+  }
+
+  /**
+   * Runs the script as {@link #run(Pendant, Consumer)} does, asking {@code stop} between steps
+   * (and every simulated second of a WAIT); when it answers true the script ends there and this
+   * returns the line it stopped before, or 0 when the script ran to its end.
+   */
+  public int run(Pendant pendant, Consumer<String> show, java.util.function.BooleanSupplier stop) {
     double timeSec = 0;
     for (Step s : steps) {
+      if (stop.getAsBoolean()) {
+        return s.line();
+      }
       switch (s) {
         case Step.Tap t -> {
           for (int i = 0; i < t.times(); i++) {
@@ -204,12 +234,21 @@ public final class KeyScript {
         case Step.Click c -> pendant.click(c.key());
         case Step.Type t -> pendant.type(t.text());
         case Step.Wait w -> {
-          pendant.advance(w.seconds());
+          double left = w.seconds();
+          while (left > 0) {
+            if (stop.getAsBoolean()) {
+              return w.line();
+            }
+            double chunk = Math.min(1.0, left);
+            pendant.advance(chunk);
+            left -= chunk;
+          }
           timeSec += w.seconds();
         }
         case Step.Show sh -> show.accept(String.format(Locale.ROOT, "-- SHOW (line %d, t=%.3f s) --%n%s", sh.line(),
             timeSec, pendant.render()));
       }
     }
+    return 0;
   }
 }

@@ -1,7 +1,6 @@
 package org.robotrun.pendant;
 
 import java.util.Optional;
-import java.util.regex.Pattern;
 import org.robotrun.math.PoseLimits;
 import org.robotrun.pendant.ExprText.BadText;
 
@@ -14,23 +13,13 @@ import org.robotrun.pendant.ExprText.BadText;
 final class NumberEntry {
   private NumberEntry() {}
 
-  /**
-   * A plain decimal with an optional exponent ({@code 12}, {@code -0.5}, {@code 1e3}); not NaN,
-   * Infinity, hexadecimal or Java's {@code 5f}/{@code 5d}, which {@link Double#parseDouble} takes.
-   */
-  private static final Pattern DECIMAL = Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d{1,4})?");
-
   /** Longest typed text a message repeats: a message must fit the 64-column prompt line. */
   private static final int SHOWN_CHARS = 9;
 
   /** The typed text as a finite number, or empty when it is not one. */
   static Optional<Double> parse(String text) {
-    String t = text.trim();
-    if (!DECIMAL.matcher(t).matches()) {
-      return Optional.empty();
-    }
-    double v = Double.parseDouble(t);
-    return Double.isFinite(v) ? Optional.of(v) : Optional.empty();
+    java.util.OptionalDouble v = org.robotrun.math.DecimalText.parse(text.trim());
+    return v.isPresent() ? Optional.of(v.getAsDouble()) : Optional.empty();
   }
 
   /**

@@ -289,7 +289,20 @@ final class Nodes {
 
   /** Integer result when both operands are integers and it fits 32 bits (as FANUC's R[]); else real. */
   static int numericKind(int ka, int kb, double result) {
+    finite(result);
     return ka == INT && kb == INT && result >= Integer.MIN_VALUE && result <= Integer.MAX_VALUE ? INT : REAL;
+  }
+
+  /**
+   * {@code v}, or an alarm when arithmetic overflowed: a controller stops the program on a
+   * result its registers cannot hold instead of storing a wrong value. (The code is the
+   * interpreter table's "Invalid value"; see AlarmKind.)
+   */
+  static double finite(double v) {
+    if (!Double.isFinite(v)) {
+      throw new AlarmSignal(AlarmKind.BAD_VALUE, "value overflow: the result is beyond the range of a register");
+    }
+    return v;
   }
 
   static final class Add extends Node {
@@ -391,7 +404,7 @@ final class Nodes {
       return switch (op) {
         case DIVIDE -> {
           m.kind = REAL;
-          yield x / y;
+          yield finite(x / y);
         }
         case DIV -> {
           // FANUC DIV: the integer part of the quotient, truncated toward zero (-7 DIV 2 = -3).

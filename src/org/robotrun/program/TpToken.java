@@ -76,6 +76,6 @@ public record TpToken(Kind kind, String text, int line, int column) {
 
   private static String printable(String s) {
     int c = s.isEmpty() ? 0 : s.codePointAt(0);
-    return c >= 0x20 && c < 0x7f ? "'" + s + "'" : String.format("U+%04X", c);
+    return c >= 0x20 && c < 0x7f ? "'" + s + "'" : String.format(java.util.Locale.ROOT, "U+%04X", c);
   }
 }

@@ -52,7 +52,8 @@ public final class HeadlessRenderer implements AutoCloseable {
   }
 
   /**
-   * Draws one frame and writes it as a PNG.
+   * Draws one frame and writes it as a PNG: encoded in memory, then written through
+   * {@link org.robotrun.io.AtomicFiles}, so an old picture is replaced whole or not at all.
    *
    * @throws java.io.UncheckedIOException when the file cannot be written
    */
@@ -60,13 +61,33 @@ public final class HeadlessRenderer implements AutoCloseable {
     target.bind();
     renderer.render(scene, camera, target.width(), target.height());
     ByteBuffer px = target.readRgbTopDown();
+    byte[] png;
     try {
-      if (!STBImageWrite.stbi_write_png(out.toString(), target.width(), target.height(), 3, px, target.width() * 3)) {
-        throw new java.io.UncheckedIOException(new java.io.IOException("could not write " + out));
-      }
+      png = encodePng(px, target.width(), target.height());
     } finally {
       MemoryUtil.memFree(px);
     }
+    try {
+      org.robotrun.io.AtomicFiles.write(out, png);
+    } catch (java.io.IOException e) {
+      throw new java.io.UncheckedIOException(e);
+    }
+  }
+
+  /** PNG bytes of tightly packed RGB pixels, top row first (stb_image_write, to memory). */
+  static byte[] encodePng(ByteBuffer rgb, int width, int height) {
+    java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream(width * height);
+    try (org.lwjgl.stb.STBIWriteCallback sink = org.lwjgl.stb.STBIWriteCallback.create((context, data, size) -> {
+      ByteBuffer chunk = org.lwjgl.stb.STBIWriteCallback.getData(data, size);
+      byte[] b = new byte[size];
+      chunk.get(b);
+      bytes.write(b, 0, size);
+    })) {
+      if (!STBImageWrite.stbi_write_png_to_func(sink, 0L, width, height, 3, rgb, width * 3)) {
+        throw new java.io.UncheckedIOException(new java.io.IOException("could not encode the PNG"));
+      }
+    }
+    return bytes.toByteArray();
   }
 
   @Override

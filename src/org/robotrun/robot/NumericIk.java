@@ -21,7 +21,9 @@ import org.robotrun.math.Transform;
  * An attempt is abandoned when the error stops falling (local minimum, often pinned at a limit)
  * or after a per-attempt iteration budget; the next seed then starts: the caller's start, then
  * 64 seeds spread over the joint ranges (a Halton sequence), two of every three with J1 turned
- * toward or away from the target, with twins across J1's limit gap.
+ * toward or away from the target, with twins across J1's limit gap; then 32 seeds in the outer
+ * tenth of each range (postures folded to their limits); and at last a patient polish of the
+ * best posture found, which may be creeping along a limit.
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
@@ -71,9 +73,20 @@ public final class NumericIk {
 
   private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
   private static final boolean CPU_TIME = CPU.isCurrentThreadCpuTimeSupported();
-  private static final int SEEDS = 64;
-  /** Seeds stay off the limits: the middle 80 % of each range. */
+  /** Seeds in the middle 80 % of each range (most solutions are found from these). */
+  private static final int MIDDLE_SEEDS = 64;
+  /**
+   * Seeds in the outer tenth at either end of each range: a posture folded to its limits (J2
+   * near +139°, J3 near −68°, the wrist over the base) is a basin the middle seeds never start in.
+   */
+  private static final int EDGE_SEEDS = 32;
+  private static final int SEEDS = MIDDLE_SEEDS + EDGE_SEEDS;
+  /** Middle seeds stay off the limits: the middle 80 % of each range. */
   private static final double SEED_MARGIN = 0.1;
+  /** Iterations of the final polish from the best posture (a slow crawl along a limit). */
+  private static final int POLISH_ITERATIONS = 800;
+  /** Polished only when the best posture's scaled error is below this many millimetres. */
+  private static final double POLISH_BELOW_MM = 0.5;
   /** Below this manipulability (|det| of the scaled Jacobian) a failed solve is SINGULAR. */
   private static final double SINGULAR_MANIPULABILITY = 1e-4;
   /** λ0: keeps the normal equations positive definite at singularities. */
@@ -166,7 +179,7 @@ public final class NumericIk {
         fillJ1Seeds(Math.atan2(target[10], target[9]));
       }
       startFrom(attempt, qStart);
-      if (attemptConverges(invL, tolP, tolR)) {
+      if (attemptConverges(invL, tolP, tolR, settings.iterationsPerAttempt(), 3)) {
         return solved(total);
       }
       if (total >= settings.maxIterations()) {
@@ -181,14 +194,25 @@ public final class NumericIk {
         return giveUp(total, "time cap");
       }
     }
+    // Every seed stalled: the best one, when already within a millimetre or so, may be creeping
+    // along a limit toward the target, which the stall rule cuts short. Polish it, patiently.
+    if (bestE < POLISH_BELOW_MM * POLISH_BELOW_MM * invL * invL) {
+      System.arraycopy(bestQ, 0, q, 0, 6);
+      if (attemptConverges(invL, tolP, tolR, POLISH_ITERATIONS, POLISH_ITERATIONS)) {
+        return solved(total);
+      }
+    }
     return giveUp(total, "all seeds tried");
   }
 
-  /** Iterates from {@link #q}; true when converged (q then holds the solution). */
-  private boolean attemptConverges(double invL, double tolP, double tolR) {
+  /**
+   * Iterates from {@link #q} for at most {@code iterations}, giving up after {@code maxStalls}
+   * steps in a row that gain too little; true when converged (q then holds the solution).
+   */
+  private boolean attemptConverges(double invL, double tolP, double tolR, int iterations, int maxStalls) {
     double prevE = Double.POSITIVE_INFINITY;
     int stalls = 0;
-    for (int it = 0; it < settings.iterationsPerAttempt() && total < settings.maxIterations(); it++) {
+    for (int it = 0; it < iterations && total < settings.maxIterations(); it++) {
       total++;
       Jacobian.tcpJacobianInBase(chain, q, null, jac, pose, scratch);
       double e = error(invL);
@@ -203,7 +227,7 @@ public final class NumericIk {
       }
       // Stalled: the error no longer falls by the stall ratio per step (a local minimum or a limit).
       stalls = e > settings.stallRatio() * prevE ? stalls + 1 : 0;
-      if (stalls >= 3) {
+      if (stalls >= maxStalls) {
         return false;
       }
       prevE = e;
@@ -418,7 +442,7 @@ public final class NumericIk {
         atLimit = i;
       }
     }
-    String detail = String.format("best error %.3f mm, %.4f rad after %d iterations (%s)",
+    String detail = String.format(java.util.Locale.ROOT, "best error %.3g mm, %.3g rad after %d iterations (%s)",
         posErr, rotErr, iterations, why);
     if (atLimit >= 0) {
       return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
@@ -441,10 +465,18 @@ public final class NumericIk {
   /** Halton points (bases 2, 3, 5, 7, 11, 13) over the joint ranges: fixed, well spread. */
   private void fillSeeds() {
     int[] bases = {2, 3, 5, 7, 11, 13};
-    for (int s = 0; s < SEEDS; s++) {
+    for (int s = 0; s < MIDDLE_SEEDS; s++) {
       for (int i = 0; i < 6; i++) {
         double h = halton(s + 1, bases[i]);
         seeds[s * 6 + i] = lower[i] + (SEED_MARGIN + (1 - 2 * SEED_MARGIN) * h) * (upper[i] - lower[i]);
+      }
+    }
+    // Edge seeds: the same sequence folded into the outer bands [0, 10 %] and [90 %, 100 %].
+    for (int s = MIDDLE_SEEDS; s < SEEDS; s++) {
+      for (int i = 0; i < 6; i++) {
+        double h = halton(s + 1, bases[i]);
+        double t = h < 0.5 ? 2 * h * SEED_MARGIN : 1 - 2 * (h - 0.5) * SEED_MARGIN;
+        seeds[s * 6 + i] = lower[i] + t * (upper[i] - lower[i]);
       }
     }
   }

@@ -140,7 +140,7 @@ public final class Controller implements MotionPort {
     double[] q0 = resolver.kinematicOf(start);
     int bad = model.firstJointOutsideLimits(q0);
     if (bad >= 0) {
-      throw new IllegalArgumentException(String.format("start position: J%d = %.1f deg is outside its limits", bad + 1,
+      throw new IllegalArgumentException(String.format(java.util.Locale.ROOT, "start position: J%d = %.1f deg is outside its limits", bad + 1,
           start.element(bad + 1)));
     }
     this.runner = new MotionRunner(model, limits, q0, new Events());
@@ -347,7 +347,7 @@ public final class Controller implements MotionPort {
     }
     int bad = model.firstJointOutsideLimits(q);
     if (bad >= 0) {
-      return CommandResult.refused(String.format("J%d would be outside its limits", bad + 1));
+      return CommandResult.refused(String.format(java.util.Locale.ROOT, "J%d would be outside its limits", bad + 1));
     }
     long h = nextHandle++;
     moves.put(h, new MoveState("", 0, true));

@@ -13,6 +13,12 @@ public final class HeadlessRun {
   /** Alarm code reported when the time limit ends the run. */
   public static final String TIME_LIMIT_CODE = "RUN-001";
 
+  /** Alarm code reported when the caller's real-time limit ends the run ({@code --max-wall-seconds}). */
+  public static final String WALL_LIMIT_CODE = "RUN-002";
+
+  /** Ticks between two questions to the caller's stop check (about 1 s of simulated time). */
+  private static final int STOP_CHECK_TICKS = 250;
+
   private HeadlessRun() {}
 
   /** How a run ended. */
@@ -32,6 +38,17 @@ public final class HeadlessRun {
    *     message says why: missing program, active alarm)
    */
   public static Result run(Simulation sim, Controller c, String program, double maxSimSec, Consumer<Simulation> afterTick) {
+    return run(sim, c, program, maxSimSec, afterTick, () -> false, "");
+  }
+
+  /**
+   * As {@link #run(Simulation, Controller, String, double, Consumer)}, and also asks {@code stop}
+   * every {@value #STOP_CHECK_TICKS} ticks: when it answers true the run ends with alarm
+   * {@link #WALL_LIMIT_CODE} and {@code stopReason} as its message. The simulation never reads
+   * a clock itself; a caller's real-time limit only decides where a run is cut off.
+   */
+  public static Result run(Simulation sim, Controller c, String program, double maxSimSec, Consumer<Simulation> afterTick,
+      java.util.function.BooleanSupplier stop, String stopReason) {
     CommandResult start = c.run(program, 1, true);
     if (start instanceof CommandResult.Refused r) {
       throw new IllegalArgumentException(r.reason());
@@ -50,9 +67,13 @@ public final class HeadlessRun {
       if (s.state() == ExecutionStatus.State.PAUSED) {
         c.run(s.program(), s.line(), true);
       }
+      if (sim.ticks() % STOP_CHECK_TICKS == 0 && stop.getAsBoolean()) {
+        ControllerAlarm a = new ControllerAlarm(WALL_LIMIT_CODE, stopReason, s.program(), s.line(), sim.timeSec());
+        return new Result(Status.ALARM, Optional.of(a), sim.timeSec(), sim.timeSec() - t0, sim.ticks());
+      }
       if (sim.timeSec() - t0 >= maxSimSec) {
         ControllerAlarm a = new ControllerAlarm(TIME_LIMIT_CODE,
-            String.format("time limit reached: the program ran %.1f s of simulated time without ending", maxSimSec),
+            String.format(java.util.Locale.ROOT, "time limit reached: the program ran %.1f s of simulated time without ending", maxSimSec),
             s.program(), s.line(), sim.timeSec());
         return new Result(Status.ALARM, Optional.of(a), sim.timeSec(), sim.timeSec() - t0, sim.ticks());
       }

@@ -71,7 +71,7 @@ final class TargetResolver {
     Transform X_FT = frames.activeTool();
     MotionRequest.Waypoint wp = r.target();
     if (wp.position() instanceof Position.Cartesian && (wp.userFrame() != uf || wp.toolFrame() != ut)) {
-      return refuse(MotionAlarms.FRAME_MISMATCH, String.format("%s was taught in UF %d, UT %d but UF %d, UT %d are active",
+      return refuse(MotionAlarms.FRAME_MISMATCH, String.format(java.util.Locale.ROOT, "%s was taught in UF %d, UT %d but UF %d, UT %d are active",
           wp.name(), wp.userFrame(), wp.toolFrame(), uf, ut));
     }
     Speed speed;
@@ -107,7 +107,7 @@ final class TargetResolver {
         int bad = model.firstJointOutsideLimits(qTarget);
         if (bad >= 0) {
           String coupled = bad == 2 && model.coupledJ3() ? " (J2 + J3 as the pendant shows them)" : "";
-          return refuse(MotionAlarms.JOINT_LIMIT, String.format("%s needs J%d = %.1f deg%s, outside %.1f..%.1f deg",
+          return refuse(MotionAlarms.JOINT_LIMIT, String.format(java.util.Locale.ROOT, "%s needs J%d = %.1f deg%s, outside %.1f..%.1f deg",
               wp.name(), bad + 1, Math.toDegrees(qTarget[bad]), coupled, Math.toDegrees(model.joint(bad).lowerRad()),
               Math.toDegrees(model.joint(bad).upperRad())));
         }

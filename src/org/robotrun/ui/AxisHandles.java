@@ -74,7 +74,7 @@ final class AxisHandles {
       dl.addCircleFilled(screen[a + 1][0], screen[a + 1][1], 5, COLOURS[a]);
     }
     if (dragAxis >= 0) {
-      dl.addText(screen[0][0] + 8, screen[0][1] + 8, 0xFFFFFFFF, String.format("%+.0f mm %s", dragMm, "XYZ".charAt(dragAxis)));
+      dl.addText(screen[0][0] + 8, screen[0][1] + 8, 0xFFFFFFFF, String.format(java.util.Locale.ROOT, "%+.0f mm %s", dragMm, "XYZ".charAt(dragAxis)));
     }
     dl.popClipRect();
   }

@@ -42,6 +42,8 @@ public final class SimulatorWindow implements AutoCloseable {
   private KeyHandler keyHandler = (key, action) -> false;
   private IntPredicate charHandler = codepoint -> false;
   private Runnable focusLost = () -> {};
+  private Runnable focusGained = () -> {};
+  private BooleanSupplier mayClose = () -> true;
   private Runnable firstFrame = () -> {};
   private Runnable afterFrame = () -> {};
   private ShortcutHandler shortcuts = (key, mods) -> false;
@@ -248,11 +250,19 @@ public final class SimulatorWindow implements AutoCloseable {
     });
     glfwSetWindowSizeCallback(window, (w, ww, wh) -> lastInputNanos = System.nanoTime());
     glfwSetWindowRefreshCallback(window, w -> lastInputNanos = System.nanoTime());
+    // The close button asks first (unsaved work); a refusal keeps the window open.
+    glfwSetWindowCloseCallback(window, w -> {
+      if (!mayClose.getAsBoolean()) {
+        glfwSetWindowShouldClose(w, false);
+      }
+    });
     // Keys held when the window loses the focus never see their release: let go of them now.
     glfwSetWindowFocusCallback(window, (w, focused) -> {
       lastInputNanos = System.nanoTime();
       if (!focused) {
         focusLost.run();
+      } else {
+        focusGained.run();
       }
     });
   }
@@ -405,6 +415,21 @@ public final class SimulatorWindow implements AutoCloseable {
   /** Runs when the window loses the keyboard focus. */
   public void setFocusLostHandler(Runnable handler) {
     focusLost = handler;
+  }
+
+  /** Runs when the window gets the keyboard focus back (files may have changed meanwhile). */
+  public void setFocusGainedHandler(Runnable handler) {
+    focusGained = handler;
+  }
+
+  /** Asked when the user closes the window; returning false keeps it open. */
+  public void setCloseHandler(BooleanSupplier handler) {
+    mayClose = handler;
+  }
+
+  /** Ends {@link #run} after the current frame, as the window's close button does. */
+  public void requestClose() {
+    glfwSetWindowShouldClose(window, true);
   }
 
   public OrbitCamera camera() {

@@ -58,9 +58,9 @@ public final class WindowSettings {
     }
     try {
       Properties p = new Properties();
-      p.load(new StringReader(Files.readString(f.get(), StandardCharsets.UTF_8)));
+      p.load(new StringReader(org.robotrun.io.BoundedFiles.readUtf8(f.get(), 1 << 20, "window settings")));
       return LayoutState.fromProperties(p);
-    } catch (IOException | IllegalArgumentException e) {
+    } catch (IOException | IllegalArgumentException | org.robotrun.io.FileFormatException e) {
       return new LayoutState();
     }
   }

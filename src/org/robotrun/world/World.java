@@ -3,6 +3,7 @@ package org.robotrun.world;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -17,6 +18,9 @@ import org.robotrun.math.Transform;
  */
 public final class World {
   private final Map<String, WorldObject> byName;
+  private final List<WorldObject> objects;
+  /** Poses in the cell, filled on demand; a world is immutable, so they never go stale. */
+  private final Map<String, Transform> poseCache = new java.util.concurrent.ConcurrentHashMap<>();
 
   public World(List<WorldObject> objects) {
     Map<String, WorldObject> m = new LinkedHashMap<>();
@@ -25,10 +29,14 @@ public final class World {
         throw new IllegalArgumentException("two objects are named '" + o.name() + "'");
       }
     }
+    // Each chain is followed once: a walk stops at an object an earlier walk has cleared, so
+    // checking 100 000 objects in one long chain is linear, not quadratic.
+    Set<String> cleared = new HashSet<>();
     for (WorldObject o : objects) {
-      checkParents(m, o);
+      checkParents(m, o, cleared);
     }
     this.byName = java.util.Collections.unmodifiableMap(m);
+    this.objects = List.copyOf(m.values());
   }
 
   /** A world with no objects. */
@@ -36,8 +44,8 @@ public final class World {
     return new World(List.of());
   }
 
-  private static void checkParents(Map<String, WorldObject> m, WorldObject o) {
-    Set<String> seen = new HashSet<>();
+  private static void checkParents(Map<String, WorldObject> m, WorldObject o, Set<String> cleared) {
+    Set<String> seen = new LinkedHashSet<>();
     seen.add(o.name());
     for (Optional<String> p = o.parent(); p.isPresent(); ) {
       WorldObject parent = m.get(p.get());
@@ -47,16 +55,20 @@ public final class World {
       if (parent.kind() != ObjectKind.FIXTURE) {
         throw new IllegalArgumentException(o.name() + ": parent '" + p.get() + "' is not a fixture");
       }
+      if (cleared.contains(parent.name())) {
+        break;  // its chain above was checked already
+      }
       if (!seen.add(parent.name())) {
         throw new IllegalArgumentException(o.name() + ": parents form a loop through '" + parent.name() + "'");
       }
       p = parent.parent();
     }
+    cleared.addAll(seen);
   }
 
   /** The objects in the order they were given. */
   public List<WorldObject> objects() {
-    return List.copyOf(byName.values());
+    return objects;
   }
 
   public Optional<WorldObject> find(String name) {
@@ -69,11 +81,32 @@ public final class World {
     if (o == null) {
       throw new IllegalArgumentException("no object named '" + name + "'");
     }
-    Transform X_CO = o.pose();
-    for (Optional<String> p = o.parent(); p.isPresent(); p = byName.get(p.get()).parent()) {
-      X_CO = byName.get(p.get()).pose().compose(X_CO);
+    Transform cached = poseCache.get(name);
+    if (cached != null) {
+      return cached;
     }
-    return X_CO;
+    // Walk up to the first object whose pose is known (or the cell), then come back down
+    // composing, caching every pose on the way: linear over all objects, however deep the chains.
+    List<WorldObject> chain = new ArrayList<>();
+    Transform X_CP = null;  // null: the cell itself
+    for (WorldObject at = o; ; ) {
+      Transform known = poseCache.get(at.name());
+      if (known != null) {
+        X_CP = known;
+        break;
+      }
+      chain.add(at);
+      if (at.parent().isEmpty()) {
+        break;
+      }
+      at = byName.get(at.parent().get());
+    }
+    for (int i = chain.size() - 1; i >= 0; i--) {
+      WorldObject c = chain.get(i);
+      X_CP = X_CP == null ? c.pose() : X_CP.compose(c.pose());
+      poseCache.put(c.name(), X_CP);
+    }
+    return X_CP;
   }
 
   /** The object's collision box in the cell. */

@@ -1,0 +1,127 @@
+package org.robotrun.app;
+
+import imgui.ImGui;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.Supplier;
+import org.robotrun.io.UserDirs;
+import org.robotrun.io.Workspace;
+import org.robotrun.program.Program;
+import org.robotrun.sim.Controller;
+import org.robotrun.ui.FileMenu;
+import org.robotrun.world.CameraView;
+
+/** The window's side of one open workspace: its session, save state in the menu bar, outside edits. Window thread only. */
+final class WindowCell {
+  final WorkspaceSession session;
+  /** Autosave reports arrive on the writer thread; the window shows them. */
+  private final Queue<String> reports;
+
+  private final String name;
+
+  private WindowCell(WorkspaceSession session, Queue<String> reports, String name) {
+    this.session = session;
+    this.name = name;
+    this.reports = reports;
+  }
+
+  /**
+   * Opens the workspace in {@code dir} (UserError when it cannot be opened at all) and remembers
+   * it as the last one; problems at open go to {@code tell} (the File menu, once it exists).
+   */
+  static WindowCell open(Path dir, UserDirs dirs, java.util.function.Consumer<String> tell,
+      Supplier<Optional<CameraView>> camera) {
+    Queue<String> reports = new ConcurrentLinkedQueue<>();
+    WorkspaceSession s = WorkspaceSession.open(dir, false, camera, m -> {
+      System.err.println("robotrun: " + m);
+      reports.add(m);
+    });
+    String problems = s.problems();
+    if (!problems.isEmpty()) {
+      System.err.println("robotrun: " + problems);
+      tell.accept(problems);
+    }
+    boolean handIn = dir.getFileName() != null && dir.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".zip");
+    try {
+      if (!handIn) {  // a hand-in opens from a temporary copy, which is not worth remembering
+        dirs.remember(s.workspace.folder());
+      }
+    } catch (IOException e) {
+      System.err.println("robotrun: cannot remember the last workspace in " + dirs.configDir() + " (" + e.getMessage() + ")");
+    }
+    return new WindowCell(s, reports, handIn ? dir.getFileName().toString() : s.workspace.name());
+  }
+
+  String title() {
+    return "RobotRun — " + name + (session.workspace.readOnly() ? " (read-only)" : "");
+  }
+
+  /** In the menu bar: the workspace and whether its last save worked. Shows autosave reports. */
+  void drawSaveState(FileMenu menu) {
+    for (String r; (r = reports.poll()) != null; ) {
+      if (!r.startsWith("saved again")) {
+        menu.tell(r);
+      }
+    }
+    ImGui.separator();
+    ImGui.textDisabled(session.workspace.folder().toString());
+    if (session.workspace.readOnly()) {
+      ImGui.textColored(0.95f, 0.7f, 0.2f, 1f, "read-only");
+    } else if (!session.autosave.problem().isEmpty()) {
+      ImGui.textColored(0.95f, 0.3f, 0.3f, 1f, "NOT SAVED");
+      if (ImGui.isItemHovered()) {
+        ImGui.setTooltip(session.autosave.problem());
+      }
+    } else if (!session.autosave.status().isEmpty()) {
+      ImGui.textDisabled(session.autosave.status());
+    }
+  }
+
+  /**
+   * The window got the focus back: programs changed on disk meanwhile are reloaded when they
+   * were not edited here; an edited one makes the menu ask which version to keep.
+   */
+  void checkExternalEdits(FileMenu menu) {
+    Workspace ws = session.workspace;
+    if (ws.readOnly()) {
+      return;
+    }
+    Controller c = session.sim.controllers().get(0);
+    List<String> problems = new ArrayList<>();
+    for (Workspace.ExternalChange ch : ws.externalChanges()) {
+      if (ch.deleted()) {
+        menu.tell(ch.file() + " was deleted outside RobotRun; program " + ch.programName()
+            + " is still open here and is saved again.");
+        continue;
+      }
+      Optional<Program> mine = ch.programName().isEmpty() ? Optional.empty() : c.program(ch.programName());
+      if (mine.isPresent() && !ws.isSaved(ch.programName(), mine.get())) {
+        menu.askConflict(ch.file());
+        continue;
+      }
+      takeFile(ch.file(), problems);
+    }
+    problems.forEach(menu::tell);
+  }
+
+  /** Loads the program in {@code file} into the controller (a message in {@code problems} when it cannot be read). */
+  void takeFile(Path file, List<String> problems) {
+    session.workspace.reread(file, problems).ifPresent(p -> session.sim.controllers().get(0).saveProgram(p));
+  }
+
+  void close() {
+    session.close();
+  }
+
+  /** Closes (final save) and returns the save problem left, "" when everything is on disk. */
+  String closeAndReport() {
+    String problem = session.workspace.readOnly() ? "" : session.autosave.saveNow(10_000);
+    session.close();
+    return problem.isEmpty() ? "" : "your last changes could not be saved: " + problem;
+  }
+}

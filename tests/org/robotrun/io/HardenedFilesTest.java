@@ -1,0 +1,135 @@
+package org.robotrun.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.StringJoiner;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robotrun.world.TriangleMesh;
+
+/** Reproducers from issue 18 for the scenario and STL readers, kept as regression tests. */
+class HardenedFilesTest {
+  @TempDir Path dir;
+
+  private static final String HEAD = """
+      {"format": 1, "robots": [{"name": "robot1", "model": "lrmate200id"}], "objects": [
+      """;
+
+  private static String box(String name, String extra) {
+    return "{\"name\": \"" + name + "\", \"kind\": \"fixture\", \"shape\": \"box\", \"size\": {\"x\": 10, \"y\": 10, \"z\": 10},"
+        + " \"pose\": {\"x\": 0, \"y\": 0, \"z\": 0}" + extra + "}";
+  }
+
+  private List<ScenarioError> errors(String text) throws Exception {
+    Path f = Files.writeString(dir.resolve("s.json"), text);
+    ScenarioLoad load = ScenarioReader.read(f);
+    assertThat(load).isInstanceOf(ScenarioLoad.Failed.class);
+    return ((ScenarioLoad.Failed) load).errors();
+  }
+
+  @Test
+  void anEmptyObjectNameIsOneErrorAndNoObject() throws Exception {
+    List<ScenarioError> e = errors(HEAD + box("", "") + "]}");
+    assertThat(e).extracting(ScenarioError::message).containsExactly("expected a non-empty name");
+  }
+
+  @Test
+  void parentLoopsAreFoundInLinearTime() throws Exception {
+    // Method: a 30 000-long chain (quadratic checking took minutes), then the same with its end
+    // pointing back at its start; the loop names each member once.
+    int n = 30_000;
+    StringJoiner chain = new StringJoiner(",\n");
+    for (int i = 0; i < n; i++) {
+      chain.add(box("o" + i, i == 0 ? "" : ", \"parent\": \"o" + (i - 1) + "\""));
+    }
+    Path ok = Files.writeString(dir.resolve("chain.json"), HEAD + chain + "]}");
+    assertThat(ScenarioReader.read(ok)).isInstanceOf(ScenarioLoad.Loaded.class);
+    ScenarioLoad.Loaded loaded = (ScenarioLoad.Loaded) ScenarioReader.read(ok);
+    assertThat(loaded.scenario().world().poseInCell("o" + (n - 1)).z()).isEqualTo(0);
+
+    StringJoiner loop = new StringJoiner(",\n");
+    loop.add(box("a", ", \"parent\": \"c\""));
+    loop.add(box("b", ", \"parent\": \"a\""));
+    loop.add(box("c", ", \"parent\": \"b\""));
+    loop.add(box("d", ", \"parent\": \"c\""));
+    List<ScenarioError> e = errors(HEAD + loop + "]}");
+    assertThat(e).extracting(ScenarioError::message).containsExactlyInAnyOrder(
+        "parents form a loop through 'a'", "parents form a loop through 'b'", "parents form a loop through 'c'");
+  }
+
+  @Test
+  void tooManyObjectsIsAClearLimit() throws Exception {
+    StringJoiner many = new StringJoiner(",");
+    for (int i = 0; i <= ScenarioReader.MAX_OBJECTS; i++) {
+      many.add("{}");
+    }
+    List<ScenarioError> e = errors(HEAD + many + "]}");
+    assertThat(e).extracting(ScenarioError::message).containsExactly("100001 objects; a scenario may hold at most 100000");
+  }
+
+  @Test
+  void aFolderAsAMeshIsNotMissing() throws Exception {
+    Files.createDirectories(dir.resolve("m.stl"));
+    String mesh = "{\"name\": \"m\", \"kind\": \"fixture\", \"shape\": \"mesh\", \"file\": \"m.stl\","
+        + " \"pose\": {\"x\": 0, \"y\": 0, \"z\": 0}}";
+    List<ScenarioError> e = errors(HEAD + mesh + "]}");
+    assertThat(e).hasSize(1);
+    assertThat(e.getFirst().message()).contains("a folder, not a regular file").doesNotContain("not found");
+  }
+
+  private static String facet(String a, String b, String c) {
+    return "facet normal 0 0 1\nouter loop\nvertex " + a + "\nvertex " + b + "\nvertex " + c + "\nendloop\nendfacet\n";
+  }
+
+  @Test
+  void anAsciiVertexBeyondFloatRangeIsAFileError() throws Exception {
+    Path f = Files.writeString(dir.resolve("big.stl"), "solid x\n" + facet("1e39 0 0", "0 1 0", "0 0 1") + "endsolid x\n");
+    assertThatThrownBy(() -> StlReader.read(f, 1)).isInstanceOf(FileFormatException.class)
+        .hasMessageStartingWith(f + ":4: vertex has a coordinate of 1.00000e+39 mm after scaling");
+  }
+
+  @Test
+  void meshesFarOutsideTheCellAreRefused() throws Exception {
+    Path f = Files.writeString(dir.resolve("far.stl"), "solid x\n" + facet("1e30 0 0", "0 1 0", "0 0 1") + "endsolid x\n");
+    assertThatThrownBy(() -> StlReader.read(f, 1)).isInstanceOf(FileFormatException.class)
+        .hasMessageContaining("meshes must lie within ±100000 mm");
+    // in metres, scaled by 1000: 200 m is out too
+    Path m = Files.writeString(dir.resolve("m.stl"), "solid x\n" + facet("200 0 0", "0 1 0", "0 0 1") + "endsolid x\n");
+    assertThatThrownBy(() -> StlReader.read(m, 1000)).hasMessageContaining("a coordinate of 200000 mm");
+    // binary too
+    ByteBuffer b = ByteBuffer.allocate(84 + 50).order(ByteOrder.LITTLE_ENDIAN);
+    b.position(80);
+    b.putInt(1);
+    b.position(84 + 12);
+    b.putFloat(1e30f);
+    Path bin = Files.write(dir.resolve("b.stl"), b.array());
+    assertThatThrownBy(() -> StlReader.read(bin, 1)).hasMessageContaining("triangle 1 has a coordinate");
+  }
+
+  @Test
+  void anAsciiSolidNamedWithAccentsIsReadAsAscii() throws Exception {
+    String text = "solid Pièce_détachée\n" + facet("0 0 0", "1 0 0", "0 1 0") + "endsolid Pièce_détachée\n";
+    Path f = Files.write(dir.resolve("accent.stl"), text.getBytes(StandardCharsets.UTF_8));
+    TriangleMesh mesh = StlReader.read(f, 1);
+    assertThat(mesh.triangleCount()).isEqualTo(1);
+  }
+
+  @Test
+  void hexAndSuffixedNumbersAreNotNumbers() throws Exception {
+    for (String n : new String[] {"0x1p3", "1d", "1f", "NaN", "Infinity"}) {
+      Path f = Files.writeString(dir.resolve("n.stl"), "solid x\n" + facet(n + " 0 0", "0 1 0", "0 0 1") + "endsolid x\n");
+      assertThatThrownBy(() -> StlReader.read(f, 1)).as(n).hasMessageContaining(":4: expected a finite number");
+    }
+    for (String n : new String[] {"0x1p3", "1d"}) {
+      List<ScenarioError> e = errors(HEAD + box("a", "").replace("\"x\": 10", "\"x\": " + n) + "]}");
+      assertThat(e).as(n).isNotEmpty();
+    }
+  }
+}

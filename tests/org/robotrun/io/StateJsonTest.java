@@ -1,0 +1,38 @@
+package org.robotrun.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The "state" section of cell.json: every bad entry is named by its JSON path and line. */
+class StateJsonTest {
+  @Test
+  void badStateEntriesAreNamedByPath(@TempDir Path tmp) throws Exception {
+    String base = Files.readString(Path.of("scenarios/empty-cell.json")).strip();
+    String withState = base.substring(0, base.lastIndexOf('}')) + """
+        ,
+          "state": {
+            "overridePct": 0,
+            "utool": 11,
+            "registers": {"0": 1, "2": "x"},
+            "positionRegisters": {"1": {"x": 1, "y": 2, "z": 3, "config": "Q U T, 0, 0, 0"}, "2": {"joints": [1, 2]}},
+            "outputs": {"DI[1]": 1, "DO[2]": 3, "GO[1]": 7},
+            "comments": {"Q[1]": "x"},
+            "colour": 1
+          }
+        }
+        """;
+    Path f = tmp.resolve("cell.json");
+    Files.writeString(f, withState);
+    String message = ((CellLoad.Failed) ScenarioReader.readCell(f)).message();
+    assertThat(message).contains("state.overridePct").contains("state.utool").contains("state.registers.0")
+        .contains("state.registers.2").contains("state.positionRegisters.1.config").doesNotContain("state.positionRegisters.1.w")
+        .contains("state.positionRegisters.2.joints").contains("state.outputs.DI[1]").contains("state.outputs.DO[2]")
+        .contains("state.comments.Q[1]").contains("state.colour").doesNotContain("state.outputs.GO[1]");
+    // A plain scenario read checks the section too (and ignores it when it is good).
+    assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Failed.class);
+  }
+}
