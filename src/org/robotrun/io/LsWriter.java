@@ -443,6 +443,7 @@ public final class LsWriter {
         sb.append("OFFSET CONDITION ");
         item("PR", o.register(), sb);
       }
+      case Instruction.MacroCall c -> sb.append(c.name());
       case Instruction.SetSysVar s -> {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);

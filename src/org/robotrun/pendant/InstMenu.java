@@ -140,7 +140,8 @@ final class InstMenu {
               new Instruction.SetSysVar(SystemVariables.GENOVERRIDE, new Expr.IntConst(100))),
           Template.of("SKIP CONDITION ...", new Instruction.SkipCondition(
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)))),
-          Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))))));
+          Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))),
+          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

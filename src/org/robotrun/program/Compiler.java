@@ -80,6 +80,7 @@ final class Compiler {
       case Instruction.Label l -> "";
       case Instruction.Message msg -> "";
       case Instruction.SetSysVar s -> "";
+      case Instruction.MacroCall c -> "CALL";
       case Instruction.SkipCondition s -> "";
       case Instruction.OffsetCondition o -> "";
       case Instruction.Payload p -> "";
@@ -149,6 +150,7 @@ final class Compiler {
       case Instruction.Blank b -> new Ops.Nop();
       case Instruction.Message msg -> new Ops.MessageOp(msg.text());
       case Instruction.SetSysVar s -> new Ops.SetSysVarOp(s.name(), expr(s.value()));
+      case Instruction.MacroCall c -> call(new Instruction.Call(c.name(), java.util.List.of()));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
       case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register());
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));

@@ -342,6 +342,16 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * A macro called by its name ({@code OPEN_HAND}): runs the program of that name as a CALL
+   * without arguments (RobotRun's macro table maps each macro to the program of its own name).
+   */
+  record MacroCall(String name) implements Instruction {
+    public MacroCall {
+      Objects.requireNonNull(name, "name");
+    }
+  }
+
   /** {@code MESSAGE[text]}: shown on the user screen. */
   record Message(String text) implements Instruction {
     public Message {

@@ -367,7 +367,14 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         yield new Instruction.SetOverride(pct);
       }
-      default -> throw unknownStatement(t);
+      default -> {
+        // A macro listed by its one-word name (OPEN_HAND): run as a CALL of the program of that name.
+        if (t.is(Kind.WORD) && peek().is(Kind.EOL) && !UNSUPPORTED.containsKey(w) && !w.startsWith("PAL")
+            && Program.isValidName(w)) {
+          yield new Instruction.MacroCall(w);
+        }
+        throw unknownStatement(t);
+      }
     };
   }
 

@@ -186,6 +186,13 @@ class LsReaderTest {
   }
 
   @Test
+  void aOneWordMacroIsACallOfTheProgramOfThatName() {
+    LsReadResult r = mn("   1:  open_hand ;\n");
+    assertThat(r.diagnostics()).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.MacroCall("OPEN_HAND"));
+  }
+
+  @Test
   void systemVariablesRobotRunRunsAreReadIntoTheModel() {
     LsReadResult r = mn("   1:  $WAITTMOUT=500 ;\n   2:  R[1]=$mcr.$genoverride+$WAITTMOUT    ;\n");
     assertThat(r.diagnostics()).isEmpty();
@@ -209,7 +216,7 @@ class LsReaderTest {
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
-        {"FROBNICATE", "not supported: macro call FROBNICATE (the line alarms when it runs)"},
+        {"HAND1 OPEN", "not supported: macro call HAND1 (the line alarms when it runs)"},
         {"FROBNICATE=3", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);
