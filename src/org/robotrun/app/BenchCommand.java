@@ -16,6 +16,7 @@ import picocli.CommandLine.Command;
       BenchBroadPhaseCommand.class,
       BenchScenarioCommand.class,
       BenchSimCommand.class,
+      BenchGradeCommand.class,
       BenchCellCommand.class,
       BenchWorkspaceCommand.class,
     })

@@ -3,7 +3,9 @@ package org.robotrun.app;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.io.UserDirs;
@@ -18,11 +20,15 @@ import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.Controller;
+import org.robotrun.grade.Grader;
+import org.robotrun.grade.TaskLoad;
+import org.robotrun.grade.TaskReader;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
 import org.robotrun.ui.CellEditorPanel;
 import org.robotrun.ui.CellPanel;
+import org.robotrun.ui.CheckWorkPanel;
 import org.robotrun.ui.FileDialogs;
 import org.robotrun.ui.FileMenu;
 import org.robotrun.ui.LayoutState;
@@ -71,6 +77,19 @@ public final class GuiCommand implements Callable<Integer> {
           + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
 
+  @Option(names = "--task", paramLabel = "TASK.json",
+      description = "A grading task (docs/grading.md): adds a Check menu whose 'Check my work' runs the task's visible "
+          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario.")
+  Path task;
+
+  @Option(names = "--program", paramLabel = "FILE.LS",
+      description = "Also load this TP program into the pendant's program list (repeatable); 'robotrun FILE.LS' does the same, so a file manager can open .LS files in RobotRun.")
+  List<Path> programFiles = new ArrayList<>();
+
+  /** Start-up timing and the packaging's class-data training run: close after this many frames. */
+  @Option(names = "--quit-after-frames", hidden = true, defaultValue = "0")
+  int quitAfterFrames;
+
   /**
    * Everything one window session holds; tests drive it through {@link #open}. {@code workspace}
    * is null when the window shows a scenario without a workspace (tests).
@@ -80,6 +99,30 @@ public final class GuiCommand implements Callable<Integer> {
 
   @Override
   public Integer call() {
+    Natives.windowProblem(Natives.currentPlatform()).ifPresent(why -> {
+      throw new UserError("cannot open the simulator window: " + why, Main.EXIT_FAILED);
+    });
+    try {
+      return openWindow();
+    } catch (GlUnavailableException e) {
+      if (e.noGl33Context() && SoftwareGl.mayRetry(System.getProperty("os.name", ""), System.getenv())) {
+        System.err.println("robotrun: " + e.getMessage());
+        System.err.println("robotrun: starting again with Mesa's software renderer (llvmpipe): slower, but it works without OpenGL 3.3 from the graphics driver");
+        Optional<Integer> code = SoftwareGl.relaunch();
+        if (code.isPresent()) {
+          return code.get();
+        }
+      }
+      String software = SoftwareGl.active(System.getenv()) ? " (also with Mesa's software renderer)" : "";
+      throw new UserError("cannot open the simulator window: " + e.getMessage() + software, Main.EXIT_FAILED);
+    } catch (LinkageError e) {
+      // A native library that does not load on this machine: one line, no stack trace.
+      throw new UserError("cannot open the simulator window: a native library did not load on "
+          + Natives.currentPlatform() + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+    }
+  }
+
+  private int openWindow() {
     if (width != 0) {
       RenderCommand.checkSize("--width", width);
     }
@@ -93,6 +136,19 @@ public final class GuiCommand implements Callable<Integer> {
     if (log) {
       stage("command line parsed");
     }
+    TaskLoad.Loaded taskLoaded = task == null ? null : switch (TaskReader.read(task)) {
+      case TaskLoad.Loaded l -> l;
+      case TaskLoad.Failed f -> throw new UserError(f.message());
+    };
+    if (taskLoaded != null && scenario == null && workspace == null) {
+      scenario = taskLoaded.task().scenario();
+    }
+    List<Program> extraPrograms;
+    try {
+      extraPrograms = programFiles.isEmpty() ? List.of() : RunCommand.loadPrograms(programFiles);
+    } catch (IOException e) {
+      throw new UserError("--program: cannot read a program (" + e.getMessage() + ")");
+    }
     UserDirs dirs = UserDirs.fromSystem();
     Path next;
     if (scenario != null) {
@@ -104,18 +160,26 @@ public final class GuiCommand implements Callable<Integer> {
     // File ▸ Open workspace ends one window and starts the next on the other folder.
     while (next != null) {
       Path[] switchTo = {null};
-      Session s;
-      try {
-        s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forUser());
-      } catch (GlUnavailableException e) {
-        throw new UserError("cannot open the simulator window: " + e.getMessage(), Main.EXIT_FAILED);
-      }
+      Session s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forUser());
+      // Programs opened from the file manager join the workspace's list (the first window only).
+      extraPrograms.forEach(s.controller()::saveProgram);
+      extraPrograms = List.of();
       if (log) {
         stage("cell and window ready");
+      }
+      if (taskLoaded != null) {
+        s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()), s.controller()));
       }
       try (SimulatorWindow w = s.window()) {
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
           logFrames(w);
+        }
+        if (quitAfterFrames > 0) {
+          w.setAfterFrameHandler(() -> {
+            if (w.frames() >= quitAfterFrames) {
+              w.close(true);
+            }
+          });
         }
         run(s);
       }
@@ -222,8 +286,9 @@ public final class GuiCommand implements Callable<Integer> {
     Path editedCopy = ws != null ? ws.session.workspace.folder().resolve("scenario-edited.json")
         : scenario == null ? null : scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json");
     CellEditorPanel editorPanel = editor == null ? null : new CellEditorPanel(editor, editedCopy);
-    w.setTitle(ws != null ? ws.title()
-        : "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()));
+    w.setTitle((ws != null ? ws.title()
+        : "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()))
+        + (SoftwareGl.active(System.getenv()) ? " (software rendering)" : ""));
     if (sc != null) {
       sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, w.camera()));
     }

@@ -23,6 +23,7 @@ import picocli.CommandLine.Command;
       CheckCommand.class,
       PendantCommand.class,
       RunCommand.class,
+      GradeCommand.class,
       BenchCommand.class,
       CommandLine.HelpCommand.class
     })
@@ -39,7 +40,18 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
   }
 
   public static void main(String[] args) {
+    if (args.length == 1 && (args[0].equals("--version") || args[0].equals("-V"))) {
+      // Fast path: the same line picocli prints, without building the whole command tree
+      // (picocli reflects over every subcommand's annotations first).
+      System.out.println(versionLine());
+      System.exit(EXIT_OK);
+    }
     System.exit(execute(args));
+  }
+
+  /** What {@code robotrun --version} prints. */
+  static String versionLine() {
+    return new Version().getVersion()[0];
   }
 
   /** Runs the command line and returns the exit code (tests call this). */
@@ -62,8 +74,13 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     if (first.startsWith("-") && !topLevelOption) {
       return prepend("gui", args);
     }
-    if (args.length == 1 && first.toLowerCase(java.util.Locale.ROOT).endsWith(".json")) {
+    String lower = first.toLowerCase(java.util.Locale.ROOT);
+    if (args.length == 1 && lower.endsWith(".json")) {
       return new String[] {"gui", "--scenario", first};
+    }
+    if (args.length == 1 && lower.endsWith(".ls")) {
+      // What a file manager runs for a .LS file associated with RobotRun.
+      return new String[] {"gui", "--program", first};
     }
     return args;
   }

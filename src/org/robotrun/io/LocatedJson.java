@@ -18,7 +18,7 @@ import java.util.Map;
  * parser; {@code NaN} and {@code Infinity} are accepted by the parser so that the loader can
  * reject them with a path rather than a bare syntax error.
  */
-sealed interface LocatedJson {
+public sealed interface LocatedJson {
   /** Line (1-based) where the value starts. */
   int line();
 
@@ -74,6 +74,11 @@ sealed interface LocatedJson {
     SyntaxError(int line, String message) {
       super(message);
       this.line = line;
+    }
+
+    /** 1-based line of the error, 0 when unknown. */
+    public int line() {
+      return line;
     }
   }
 

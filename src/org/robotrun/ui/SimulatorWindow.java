@@ -119,7 +119,7 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwTerminate();
       freeErrorCallback();
       throw new GlUnavailableException("could not open a window with OpenGL 3.3" + (lastError[0].isEmpty() ? "" : " (" + lastError[0] + ")")
-          + ": update the graphics driver or Mesa");
+          + ": update the graphics driver or Mesa", true);
     }
     open[0] = true;
     glfwMakeContextCurrent(window);

@@ -20,6 +20,14 @@ class MainArgumentsTest {
   }
 
   @Test
+  void aLoneTpProgramOpensTheWindowWithItLoaded() {
+    // A file manager opening a .LS file associated with the installed app runs "RobotRun FILE.LS".
+    assertThat(Main.withDefaultCommand(new String[] {"/home/s/PICK.LS"}))
+        .containsExactly("gui", "--program", "/home/s/PICK.LS");
+    assertThat(Main.withDefaultCommand(new String[] {"check", "PICK.LS"})).containsExactly("check", "PICK.LS");
+  }
+
+  @Test
   void subcommandsHelpAndVersionAreLeftAlone() {
     assertThat(Main.withDefaultCommand(new String[] {})).isEmpty();
     assertThat(Main.withDefaultCommand(new String[] {"--help"})).containsExactly("--help");
@@ -27,6 +35,15 @@ class MainArgumentsTest {
     assertThat(Main.withDefaultCommand(new String[] {"run", "--scenario", "x.json"}))
         .containsExactly("run", "--scenario", "x.json");
     assertThat(Main.withDefaultCommand(new String[] {"check", "a.json"})).containsExactly("check", "a.json");
+  }
+
+  @Test
+  void theFastVersionLineIsWhatPicocliPrints() {
+    java.io.StringWriter out = new java.io.StringWriter();
+    picocli.CommandLine cl = Main.commandLine();
+    cl.setOut(new java.io.PrintWriter(out, true));
+    assertThat(cl.execute("--version")).isZero();
+    assertThat(out.toString().strip()).isEqualTo(Main.versionLine()).startsWith("robotrun ");
   }
 
   @Test

@@ -1,0 +1,65 @@
+package org.robotrun.grade;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Optional;
+
+/**
+ * A grading task (docs/grading.md): the scenario a submission runs on, its program, limits,
+ * seeded variations and the checks with their points.
+ *
+ * @param file the task file as given, for messages
+ * @param title shown at the top of each report
+ * @param scenario the scenario file (resolved against the task's folder)
+ * @param program the program to run, by /PROG name (upper case)
+ * @param limits per-run simulated-time and per-submission wall-clock limits
+ * @param variations the seeded variations (count 0: none)
+ * @param checks in the order they are reported
+ */
+public record Task(String file, String title, Path scenario, String program, Limits limits, Variations variations,
+    List<Check> checks) {
+  public Task {
+    checks = List.copyOf(checks);
+  }
+
+  /** Total points of all checks. */
+  public double maxPoints() {
+    return checks.stream().mapToDouble(c -> c.meta().points()).sum();
+  }
+
+  /** Total points of the checks students see. */
+  public double visiblePoints() {
+    return checks.stream().filter(c -> !c.meta().hidden()).mapToDouble(c -> c.meta().points()).sum();
+  }
+
+  /**
+   * @param simSeconds simulated seconds one run may take before it is stopped (RUN-001)
+   * @param wallSeconds wall-clock seconds one submission may take, all runs together
+   */
+  public record Limits(double simSeconds, double wallSeconds) {
+    public static final Limits DEFAULT = new Limits(120, 30);
+  }
+
+  /**
+   * @param count how many variations besides the nominal run
+   * @param seed variation i uses seed + i; the same task grades the same way every time
+   * @param parts parts whose start poses are jittered
+   * @param overrideMinPct lowest speed override drawn for a variation
+   * @param overrideMaxPct highest (the nominal run uses 100)
+   */
+  public record Variations(int count, long seed, List<PartJitter> parts, int overrideMinPct, int overrideMaxPct) {
+    public static final Variations NONE = new Variations(0, 0, List.of(), 100, 100);
+
+    public Variations {
+      parts = List.copyOf(parts);
+    }
+  }
+
+  /**
+   * A part moved on its fixture by a uniform draw within ±{@code xMm}, ±{@code yMm} (in its
+   * parent's frame) and turned within ±{@code rDeg} about the parent's z axis. The offset drawn is
+   * written to {@code offsetRegister} as PR[i] = (dx, dy, 0, 0, 0, dr) in mm and degrees, as a
+   * vision system or a PLC would report it; the nominal run writes zeros there.
+   */
+  public record PartJitter(String part, double xMm, double yMm, double rDeg, Optional<Integer> offsetRegister) {}
+}

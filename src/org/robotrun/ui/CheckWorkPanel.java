@@ -1,0 +1,124 @@
+package org.robotrun.ui;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.flag.ImGuiWindowFlags;
+import imgui.type.ImBoolean;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import org.robotrun.grade.CheckResult;
+import org.robotrun.grade.GradeResult;
+import org.robotrun.grade.Grader;
+import org.robotrun.math.Transform;
+import org.robotrun.program.Instruction.FrameKind;
+import org.robotrun.program.Position;
+import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
+import org.robotrun.sim.Controller;
+import org.robotrun.sim.FrameTable;
+
+/**
+ * The "Check" menu and the "Check my work" window: runs the task's visible checks on the
+ * programs, frames and registers the student has now, in fresh simulations on a background
+ * thread (the window's own simulation is not touched), and shows the same feedback the grader
+ * gives. Hidden checks stay hidden. Joins the menu bar as a {@link Workbench.MenuContributor}.
+ */
+public final class CheckWorkPanel implements Workbench.MenuContributor {
+  private final Grader grader;
+  private final Controller controller;
+  private CompletableFuture<GradeResult> running;
+  private GradeResult last;
+  private String error = "";
+  private final ImBoolean open = new ImBoolean(false);
+
+  /** @param controller the window's first robot: its programs, frames and registers are checked */
+  public CheckWorkPanel(Grader grader, Controller controller) {
+    this.grader = grader;
+    this.controller = controller;
+  }
+
+  /** The Check menu, then the results window when open (on the GUI thread, which owns the controller). */
+  @Override
+  public void drawMenus() {
+    if (ImGui.beginMenu("Check")) {
+      if (ImGui.menuItem("Check my work", "", false, running == null)) {
+        open.set(true);
+        start();
+      }
+      ImGui.endMenu();
+    }
+    if (open.get()) {
+      draw();
+    }
+  }
+
+  private void draw() {
+    ImGui.setNextWindowPos(ImGui.getIO().getDisplaySizeX() * 0.25f, 60, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowSize(520, ImGui.getIO().getDisplaySizeY() * 0.7f, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowBgAlpha(0.95f);
+    if (ImGui.begin("Check my work", open, ImGuiWindowFlags.NoCollapse)) {
+      ImGui.pushTextWrapPos(0);
+      ImGui.text(grader.task().title());
+      boolean busy = running != null && !running.isDone();
+      if (busy) {
+        ImGui.textDisabled("checking...");
+      } else if (ImGui.button("Check my work")) {
+        start();
+      }
+      if (running != null && running.isDone()) {
+        try {
+          last = running.join();
+          error = "";
+        } catch (RuntimeException e) {
+          error = "The check failed: " + e.getMessage();
+        }
+        running = null;
+      }
+      if (!error.isEmpty()) {
+        ImGui.text(error);
+      }
+      if (last != null) {
+        ImGui.text(String.format(Locale.ROOT, "%s of %s points", fmt(last.score()), fmt(last.maxScore())));
+        for (CheckResult c : last.checks()) {
+          ImGui.textColored(c.passed() ? 0.3f : 0.95f, c.passed() ? 0.8f : 0.35f, c.passed() ? 0.4f : 0.3f, 1f,
+              (c.passed() ? "PASS " : "FAIL ") + fmt(c.score()) + "/" + fmt(c.maxScore()) + "  " + c.name());
+          ImGui.indent();
+          ImGui.textDisabled(c.feedback());
+          ImGui.unindent();
+        }
+      }
+      ImGui.popTextWrapPos();
+    }
+    ImGui.end();
+  }
+
+  /** Copies what the student has now (on this thread) and grades the copy on another. */
+  private void start() {
+    List<Program> programs = controller.programNames().stream()
+        .map(n -> controller.program(n).orElseThrow()).toList();
+    FrameTable frames = controller.frames();
+    Map<Integer, Transform> tool = new HashMap<>();
+    Map<Integer, Transform> user = new HashMap<>();
+    for (int n = 1; n <= FrameTable.COUNT; n++) {
+      tool.put(n, frames.transform(FrameKind.TOOL, n));
+      user.put(n, frames.transform(FrameKind.USER, n));
+    }
+    Map<Integer, Double> registers = new HashMap<>();
+    Registers regs = controller.registers();
+    for (int i = 1; i <= Registers.R_COUNT; i++) {
+      registers.put(i, regs.number(i));
+    }
+    Map<Integer, Position> positions = new HashMap<>();
+    for (int i = 1; i <= Registers.PR_COUNT; i++) {
+      positions.put(i, regs.position(i));
+    }
+    running = CompletableFuture.supplyAsync(() -> grader.checkMyWork(programs, tool, user, registers, positions));
+  }
+
+  private static String fmt(double d) {
+    return d == Math.rint(d) ? Long.toString((long) d) : String.format(Locale.ROOT, "%.1f", d);
+  }
+}

@@ -1,0 +1,93 @@
+package org.robotrun.grade;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Task files are read as strictly as scenarios: every problem with its line and JSON path. */
+class TaskReaderTest {
+  @TempDir Path dir;
+
+  private String read(String json) throws Exception {
+    Files.copy(Path.of("scenarios/pick-and-place.json"), dir.resolve("cell.json"));
+    Files.createDirectories(dir.resolve("programs"));
+    Files.copy(Path.of("scenarios/programs/PICKPLACE.LS"), dir.resolve("programs/PICKPLACE.LS"));
+    Path f = dir.resolve("t.task.json");
+    Files.writeString(f, json);
+    TaskLoad l = TaskReader.read(f);
+    return l instanceof TaskLoad.Failed failed ? failed.message().replace(f.toString(), "t.task.json") : "loaded";
+  }
+
+  @Test
+  void theExampleTaskLoads() {
+    TaskLoad l = TaskReader.read(Path.of("scenarios/tasks/pick-and-place.task.json"));
+    assertThat(l).isInstanceOf(TaskLoad.Loaded.class);
+    Task t = ((TaskLoad.Loaded) l).task();
+    assertThat(t.program()).isEqualTo("PICKPLACE");
+    assertThat(t.checks()).hasSize(16);
+    assertThat(t.variations().parts()).extracting(Task.PartJitter::offsetRegister).extracting(o -> o.orElseThrow())
+        .containsExactly(11, 12, 13);
+  }
+
+  @Test
+  void aMinimalTaskUsesTheScenariosMainProgramAndDefaults() throws Exception {
+    assertThat(read("{\"format\":1,\"scenario\":\"cell.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\",\"points\":1}]}"))
+        .isEqualTo("loaded");
+  }
+
+  @Test
+  void unknownFieldsWrongTypesAndBadNamesAreReportedWithLineAndPath() throws Exception {
+    String msg = read("""
+        {"format": 1, "scenario": "cell.json", "colour": "red",
+         "variations": {"count": 3.5, "parts": [{"part": "part9", "xMm": -1}]},
+         "checks": [
+           {"name": "a", "type": "partAt", "points": 5, "part": "part1", "fixture": "tray",
+            "position": {"x": 0, "y": 0, "z": "ten"}},
+           {"name": "a", "type": "cycleTime", "points": "ten", "maxSec": 5},
+           {"name": "b", "type": "teleport", "points": 1},
+           {"name": "c", "type": "programUse", "points": 1, "requires": ["goto"], "extra": true},
+           {"name": "d", "type": "endState", "points": 1, "values": {"R[1]": true, "Q[2]": 1}},
+           {"name": "e", "type": "frame", "points": 1, "frame": "UT[11]", "pose": {"x": 0, "y": 0, "z": 0}}
+         ]}
+        """);
+    assertThat(msg.lines().toList()).containsExactly(
+        "t.task.json:1: colour: unknown field (expected one of: checks, format, limits, program, scenario, title, variations)",
+        "t.task.json:2: variations.count: expected a whole number 0..100, got 3.5",
+        "t.task.json:2: variations.parts[0].part: the scenario has no part named 'part9'",
+        "t.task.json:2: variations.parts[0].xMm: expected 0 to 1000, got -1",
+        "t.task.json:5: checks[0].position.z: expected a number, got \"ten\"",
+        "t.task.json:6: checks[1].name: check name \"a\" is used twice",
+        "t.task.json:6: checks[1].points: expected a number, got \"ten\"",
+        "t.task.json:7: checks[2].type: unknown check type \"teleport\" (expected one of: handIn, programs, runsToEnd, "
+            + "partAt, nothingHeld, noneDropped, noCollision, noMotionStop, cycleTime, programUse, endState, frame)",
+        "t.task.json:8: checks[3].extra: unknown field (expected one of: forbids, hidden, maxMotionLines, message, name, "
+            + "points, requires, runs, type)",
+        "t.task.json:8: checks[3].requires[0]: unknown feature \"goto\" (expected one of: offsetPR, toolOffsetPR, "
+            + "prTarget, for, call, jmpBackward, wait, if, select)",
+        "t.task.json:9: checks[4].values.R[1]: expected a number, got a boolean",
+        "t.task.json:9: checks[4].values.Q[2]: expected a name like R[1], F[2], DO[3], RO[1], GO[1]",
+        "t.task.json:10: checks[5].frame: expected UT[n] or UF[n] with n 1..10, got \"UT[11]\"");
+  }
+
+  @Test
+  void aMissingPointsFieldIsAnError() throws Exception {
+    assertThat(read("{\"format\":1,\"scenario\":\"cell.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\"}]}"))
+        .isEqualTo("t.task.json:1: checks[0].points: missing: expected a number of points (0 or more)");
+  }
+
+  @Test
+  void aWrongFormatAndABrokenScenarioAreTheTasksErrors() throws Exception {
+    assertThat(read("{\"format\":2,\"scenario\":\"nope.json\",\"checks\":[]}").lines().toList()).containsExactly(
+        "t.task.json:1: format: expected 1 (the task format this RobotRun reads), got 2",
+        "t.task.json:1: scenario: scenario file not found: " + dir.resolve("nope.json") + " (paths are relative to the task file)",
+        "t.task.json:1: checks: expected at least one check");
+  }
+
+  @Test
+  void invalidJsonSaysWhere() throws Exception {
+    assertThat(read("{\"format\":1,\n\"scenario\": }")).startsWith("t.task.json:2: not valid JSON");
+  }
+}
