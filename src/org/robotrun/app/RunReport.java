@@ -138,7 +138,7 @@ final class RunReport {
     ObjectNode io = r.putObject("io");
     for (IoKind k : IoKind.values()) {
       ObjectNode ports = io.putObject(k.name());
-      for (int i = 1; i <= k.size(); i++) {
+      for (int i = 1; i <= regs.ioSize(k); i++) {
         int v = regs.value(k, i);
         if (v != 0) {
           if (k.group()) {

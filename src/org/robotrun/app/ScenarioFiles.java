@@ -56,7 +56,7 @@ final class ScenarioFiles {
       double[] q = JointConvention.kinematicToPendant(model(first), JointsOption.parseToKinematic(jointsOverride, model(first)));
       List<RobotSetup> robots = new ArrayList<>(sc.robots());
       robots.set(0, new RobotSetup(first.name(), first.modelId(), first.X_CB(), first.endEffector(),
-          java.util.Arrays.stream(q).boxed().toList(), first.toolIo()));
+          java.util.Arrays.stream(q).boxed().toList(), first.toolIo(), first.io(), first.userAlarms()));
       s = new Scenario(sc.name(), sc.description(), robots, sc.world(), sc.programs(), sc.mainProgram(), sc.registers(),
           sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode());
     }

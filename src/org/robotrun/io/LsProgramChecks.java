@@ -68,7 +68,8 @@ final class LsProgramChecks {
         String target = call.get().program();
         if (!target.equalsIgnoreCase(self) && !known.test(target)) {
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
-              "CALL " + target + ": no program named " + target + " is known"));
+              (lines.get(i) instanceof Instruction.MacroCall ? "macro " : "CALL ") + target + ": no program named "
+                  + target + " is known"));
         }
       }
     }
@@ -80,6 +81,9 @@ final class LsProgramChecks {
     Optional<Instruction.Branch> b = branchOf(in);
     if (in instanceof Instruction.Call c) {
       return Optional.of(c);
+    }
+    if (in instanceof Instruction.MacroCall m) {
+      return Optional.of(new Instruction.Call(m.name(), List.of()));
     }
     return b.filter(x -> x instanceof Instruction.Call).map(x -> (Instruction.Call) x);
   }

@@ -435,6 +435,19 @@ public final class LsWriter {
       case Instruction.Comment c -> sb.append('!').append(c.text().stripTrailing());
       case Instruction.CommentedOut c -> sb.append("//").append(c.text().stripTrailing());
       case Instruction.Message m -> sb.append("MESSAGE[").append(m.text()).append(']');
+      case Instruction.SkipCondition s -> {
+        sb.append("SKIP CONDITION ");
+        expr(s.condition(), sb);
+      }
+      case Instruction.OffsetCondition o -> {
+        sb.append("OFFSET CONDITION ");
+        item("PR", o.register(), sb);
+      }
+      case Instruction.MacroCall c -> sb.append(c.name());
+      case Instruction.SetSysVar s -> {
+        sb.append(s.name()).append('=');
+        expr(s.value(), sb);
+      }
       case Instruction.UserAlarm u -> {
         sb.append("UALM[");
         index(u.number(), sb);
@@ -492,6 +505,7 @@ public final class LsWriter {
       case Expr.Io io -> 7;
       case Expr.Timer t -> 7;
       case Expr.Arg a -> 7;
+      case Expr.SysVar v -> 7;
       case Expr.Group g -> 7;
     };
   }
@@ -528,6 +542,7 @@ public final class LsWriter {
       }
       case Expr.Io io -> item(io.kind().name(), io.port(), sb);
       case Expr.Timer t -> item("TIMER", t.timer(), sb);
+      case Expr.SysVar v -> sb.append(v.name());
       case Expr.Arg a -> {
         sb.append("AR[");
         index(a.index(), sb);

@@ -72,7 +72,7 @@ public record SavedState(
       if (!k.writable()) {
         continue;  // inputs come from the cell, not from the student
       }
-      for (int i = 1; i <= k.size(); i++) {
+      for (int i = 1; i <= regs.ioSize(k); i++) {
         if (regs.value(k, i) != 0) {
           out.put(k.name() + "[" + i + "]", regs.value(k, i));
         }
@@ -117,7 +117,11 @@ public record SavedState(
     positionRegisters.forEach(c.registers()::setPosition);
     outputs.forEach((key, v) -> {
       Item item = Item.parse(key);
-      c.registers().setValue(IoKind.valueOf(item.table()), item.index(), v);
+      IoKind kind = IoKind.valueOf(item.table());
+      // A port beyond this robot's configured I/O (the cell's "io" was made smaller) has no value to restore.
+      if (item.index() <= c.registers().ioSize(kind)) {
+        c.registers().setValue(kind, item.index(), v);
+      }
     });
     comments.forEach((key, text) -> {
       Item item = Item.parse(key);

@@ -14,6 +14,8 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
+import org.robotrun.program.IoKind;
+import org.robotrun.program.IoRanges;
 import org.robotrun.io.LocatedJson.JArray;
 import org.robotrun.io.LocatedJson.JNumber;
 import org.robotrun.io.LocatedJson.JObject;
@@ -69,7 +71,10 @@ public final class ScenarioReader {
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
       "onCollision", "state", "mode");
-  private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo");
+  private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
+      "io", "userAlarms");
+  /** Highest UALM[i] a scenario may give a text for. */
+  static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
       "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent");
@@ -221,17 +226,69 @@ public final class ScenarioReader {
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
         double[] jointsRad = joints(r, at, model);
-        ToolIo io = toolIo(r, at);
-        if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null) {
+        TreeMap<String, Integer> ioSizes = ioSizes(r, at);
+        ToolIo io = toolIo(r, at, ioSizes);
+        TreeMap<Integer, String> userAlarms = userAlarms(r, at);
+        if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
           out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
-              Arrays.stream(jointsRad).boxed().toList(), io));
+              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms));
+        }
+      }
+      return out;
+    }
+
+    /** The robot's {@code "io"} sizes ({@code {"DO": 1024}}); null after an error. */
+    private TreeMap<String, Integer> ioSizes(JObject r, String at) {
+      TreeMap<String, Integer> out = new TreeMap<>();
+      JObject o = member(r, "io", at, null, false);
+      if (o == null) {
+        return r.members().containsKey("io") ? null : out;
+      }
+      boolean ok = true;
+      for (Map.Entry<String, LocatedJson> e : o.members().entrySet()) {
+        String path = join(at, "io." + e.getKey());
+        int line = o.keyLines().get(e.getKey());
+        try {
+          IoRanges.kind(e.getKey());
+        } catch (IllegalArgumentException x) {
+          error(line, path, x.getMessage());
+          ok = false;
+          continue;
+        }
+        LocatedJson v = e.getValue();
+        if (!(v instanceof JNumber n) || !n.integral() || n.value() < 1 || n.value() > IoRanges.MAX_SIZE) {
+          error(v.line(), path, "expected a number of ports 1.." + IoRanges.MAX_SIZE + ", got " + v.describe());
+          ok = false;
+          continue;
+        }
+        out.put(e.getKey(), (int) n.value());
+      }
+      return ok ? out : null;
+    }
+
+    /** The robot's {@code "userAlarms"}: UALM[i] texts by number. */
+    private TreeMap<Integer, String> userAlarms(JObject r, String at) {
+      TreeMap<Integer, String> out = new TreeMap<>();
+      JObject o = member(r, "userAlarms", at, null, false);
+      if (o == null) {
+        return out;
+      }
+      for (Map.Entry<String, LocatedJson> e : o.members().entrySet()) {
+        String path = join(at, "userAlarms." + e.getKey());
+        Integer n = index(e.getKey(), MAX_USER_ALARM, o.keyLines().get(e.getKey()), path, "user alarm");
+        if (!(e.getValue() instanceof JString text)) {
+          error(e.getValue().line(), path, "expected the alarm text as a string, got " + e.getValue().describe());
+          continue;
+        }
+        if (n != null) {
+          out.put(n, text.value());
         }
       }
       return out;
     }
 
     /** The robot's {@code toolIo}: default RO[1], RI[1], RI[2]; null after an error. */
-    private ToolIo toolIo(JObject r, String at) {
+    private ToolIo toolIo(JObject r, String at, Map<String, Integer> ioSizes) {
       if (!r.members().containsKey("toolIo")) {
         return ToolIo.DEFAULT;
       }
@@ -249,6 +306,22 @@ public final class ScenarioReader {
       if (actuated.equals(holding)) {
         error(t.line(), path, "actuated and holding must be different inputs, both are RI[" + holding + "]");
         return null;
+      }
+      if (ioSizes != null) {
+        IoRanges ranges = IoRanges.of(ioSizes);
+        boolean ok = true;
+        for (var p : List.of(Map.entry("output", IoKind.RO), Map.entry("actuated", IoKind.RI), Map.entry("holding", IoKind.RI))) {
+          int port = p.getKey().equals("output") ? output : p.getKey().equals("actuated") ? actuated : holding;
+          int size = ranges.size(p.getValue());
+          if (port > size && t.members().containsKey(p.getKey())) {
+            error(t.members().get(p.getKey()).line(), join(path, p.getKey()), p.getValue() + "[" + port
+                + "] is beyond this robot's " + p.getValue() + "[1.." + size + "] (raise io." + p.getValue() + ")");
+            ok = false;
+          }
+        }
+        if (!ok) {
+          return null;
+        }
       }
       return new ToolIo(output, actuated, holding);
     }

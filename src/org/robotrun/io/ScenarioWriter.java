@@ -74,6 +74,20 @@ public final class ScenarioWriter {
           g.writeNumberField("holding", r.toolIo().holdingInput());
           g.writeEndObject();
         }
+        if (!r.io().isEmpty()) {
+          g.writeObjectFieldStart("io");
+          for (Map.Entry<String, Integer> e : r.io().entrySet()) {
+            g.writeNumberField(e.getKey(), e.getValue());
+          }
+          g.writeEndObject();
+        }
+        if (!r.userAlarms().isEmpty()) {
+          g.writeObjectFieldStart("userAlarms");
+          for (Map.Entry<Integer, String> e : r.userAlarms().entrySet()) {
+            g.writeStringField(Integer.toString(e.getKey()), e.getValue());
+          }
+          g.writeEndObject();
+        }
         g.writeEndObject();
       }
       g.writeEndArray();

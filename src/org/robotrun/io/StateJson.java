@@ -184,7 +184,7 @@ final class StateJson {
         String at = "state.outputs." + key;
         SavedState.Item item = SavedState.Item.parse(key);
         IoKind kind = item == null ? null : ioKind(item.table());
-        if (kind == null || !kind.writable() || item.index() < 1 || item.index() > kind.size()) {
+        if (kind == null || !kind.writable() || item.index() < 1 || item.index() > org.robotrun.program.IoRanges.MAX_SIZE) {
           counting.add(outObj.keyLines().get(key), at, "expected an output or flag such as DO[1], RO[1], GO[1], F[1], got \""
               + key + "\"");
         } else if (!(v instanceof JNumber n) || !n.integral() || (!kind.group() && n.value() != 0 && n.value() != 1)

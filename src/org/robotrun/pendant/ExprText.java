@@ -53,6 +53,7 @@ public final class ExprText {
       case Expr.Io io -> item(io.kind().name(), io.port());
       case Expr.Timer t -> item("TIMER", t.timer());
       case Expr.Arg a -> "AR[" + index(a.index()) + "]";
+      case Expr.SysVar v -> v.name();
       case Expr.Unary u -> u.op().symbol() + format(u.operand());
       case Expr.Binary b -> format(b.left()) + binary(b.op()) + format(b.right());
       case Expr.Group g -> "(" + format(g.inner()) + ")";
@@ -149,8 +150,9 @@ public final class ExprText {
       case "R" -> org.robotrun.program.Registers.R_COUNT;
       case "PR" -> org.robotrun.program.Registers.PR_COUNT;
       case "TIMER" -> org.robotrun.program.Registers.TIMER_COUNT;
-      case "F" -> org.robotrun.program.Registers.FLAG_COUNT;
-      case "DI", "DO", "RI", "RO", "GI", "GO" -> org.robotrun.program.Registers.IO_COUNT;
+      case "F" -> org.robotrun.program.IoRanges.MAX_SIZE;
+      // The controller's I/O sizes are configured per cell; beyond them the line alarms when it runs.
+      case "DI", "DO", "RI", "RO", "GI", "GO" -> org.robotrun.program.IoRanges.MAX_SIZE;
       default -> Integer.MAX_VALUE;
     };
   }
@@ -330,6 +332,20 @@ public final class ExprText {
       }
       if (Character.isDigit(c) || c == '.') {
         return number();
+      }
+      if (c == '$') {
+        int e = pos + 1;
+        while (e < s.length() && (Character.isLetterOrDigit(s.charAt(e)) || s.charAt(e) == '_'
+            || (s.charAt(e) == '.' && e + 1 < s.length() && s.charAt(e + 1) == '$') || s.charAt(e) == '$')) {
+          e++;
+        }
+        String name = s.substring(pos, e);
+        java.util.Optional<String> known = org.robotrun.program.SystemVariables.supported(name);
+        if (known.isEmpty()) {
+          throw error("a system variable RobotRun runs (" + String.join(", ", org.robotrun.program.SystemVariables.SUPPORTED) + ")");
+        }
+        pos = e;
+        return new Expr.SysVar(known.get());
       }
       String w = peekWord();
       switch (w) {

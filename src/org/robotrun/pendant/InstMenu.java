@@ -5,6 +5,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.function.Supplier;
+import org.robotrun.program.SystemVariables;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
 import org.robotrun.program.Instruction;
@@ -133,7 +134,14 @@ final class InstMenu {
           Template.of("UALM[ ]", new Instruction.UserAlarm(Index.of(1))),
           Template.of("OVERRIDE=...%", new Instruction.SetOverride(new Expr.IntConst(100))),
           Template.of("(blank line)", new Instruction.Blank()),
-          Template.of("//commented-out line", new Instruction.CommentedOut("")))));
+          Template.of("//commented-out line", new Instruction.CommentedOut("")),
+          Template.of("$WAITTMOUT=... (parameter name)", new Instruction.SetSysVar(SystemVariables.WAITTMOUT, new Expr.IntConst(3000))),
+          Template.of("$MCR.$GENOVERRIDE=... (parameter name)",
+              new Instruction.SetSysVar(SystemVariables.GENOVERRIDE, new Expr.IntConst(100))),
+          Template.of("SKIP CONDITION ...", new Instruction.SkipCondition(
+              new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)))),
+          Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))),
+          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

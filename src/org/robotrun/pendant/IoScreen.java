@@ -26,8 +26,8 @@ final class IoScreen implements Screen {
   public List<String> body(Pendant p) {
     List<String> rows = new ArrayList<>();
     int cur = cursor[kind.ordinal()];
-    int top = Math.max(0, Math.min(cur - Lcd.BODY_ROWS / 2, kind.size() - Lcd.BODY_ROWS));
-    for (int i = top; i < kind.size() && rows.size() < Lcd.BODY_ROWS; i++) {
+    int top = Math.max(0, Math.min(cur - Lcd.BODY_ROWS / 2, p.control().registers().ioSize(kind) - Lcd.BODY_ROWS));
+    for (int i = top; i < p.control().registers().ioSize(kind) && rows.size() < Lcd.BODY_ROWS; i++) {
       int n = i + 1;
       String v = kind.group() ? Integer.toString(p.control().registers().value(kind, n))
           : p.control().registers().bit(kind, n) ? "ON" : "OFF";
@@ -47,7 +47,7 @@ final class IoScreen implements Screen {
     int n = cursor[t] + 1;
     switch (k) {
       case UP -> cursor[t] = Math.max(0, cursor[t] - 1);
-      case DOWN -> cursor[t] = Math.min(kind.size() - 1, cursor[t] + 1);
+      case DOWN -> cursor[t] = Math.min(p.control().registers().ioSize(kind) - 1, cursor[t] + 1);
       case F1 -> p.choose("I/O TYPE", KINDS.stream().map(IoKind::name).toList(), i -> kind = KINDS.get(i));
       case F4, F5 -> {
         if (kind.group()) {
@@ -58,9 +58,9 @@ final class IoScreen implements Screen {
         p.message(kind + "[" + n + "]=" + (k == Key.F4 ? "ON" : "OFF") + (kind.writable() ? "" : " (simulated input)"));
       }
       case ITEM -> p.entry("Port number:", "", false, s -> {
-        Optional<Integer> v = Pendant.parseInt(s, 1, kind.size());
+        Optional<Integer> v = Pendant.parseInt(s, 1, p.control().registers().ioSize(kind));
         if (v.isEmpty()) {
-          return Optional.of("Port must be 1.." + kind.size() + ", got '" + s.trim() + "'");
+          return Optional.of("Port must be 1.." + p.control().registers().ioSize(kind) + ", got '" + s.trim() + "'");
         }
         cursor[t] = v.get() - 1;
         return Optional.empty();

@@ -38,6 +38,21 @@ public final class TpLine {
         f.add(Field.fixed("="));
         f.add(exprField(a.value(), e -> new Instruction.AssignRegister(a.register(), e)));
       }
+      case Instruction.SkipCondition s -> {
+        f.add(Field.fixed("SKIP CONDITION"));
+        f.add(exprField(s.condition(), Instruction.SkipCondition::new));
+      }
+      case Instruction.OffsetCondition o -> {
+        f.add(Field.fixed("OFFSET CONDITION"));
+        f.add(itemField("PR", o.register(), Instruction.OffsetCondition::new));
+      }
+      case Instruction.MacroCall c -> f.add(new Field(c.name(), Field.Edit.both(programs,
+          k -> new Instruction.MacroCall(programs.get(k)), c.name(), t -> new Instruction.MacroCall(macroName(t)))));
+      case Instruction.SetSysVar s -> {
+        f.add(Field.fixed(s.name()));
+        f.add(Field.fixed("="));
+        f.add(exprField(s.value(), e -> new Instruction.SetSysVar(s.name(), e)));
+      }
       case Instruction.AssignPosReg a -> {
         f.add(itemField("PR", a.register(), i -> new Instruction.AssignPosReg(i, a.source())));
         f.add(Field.fixed("="));
@@ -508,6 +523,7 @@ public final class TpLine {
       case Expr.Io x -> false;
       case Expr.Timer x -> false;
       case Expr.Arg x -> false;
+      case Expr.SysVar x -> false;
     };
   }
 
@@ -648,6 +664,15 @@ public final class TpLine {
   }
 
   /** {@code NAME} or {@code NAME(arg,...)}. */
+  /** A macro's name as typed: a program name (the macro runs the program of that name). */
+  static String macroName(String text) throws BadText {
+    String name = text.trim().toUpperCase(Locale.ROOT);
+    if (!Program.isValidName(name)) {
+      throw new BadText("'" + name + "' is not a program name (letters, digits, _; a letter first)");
+    }
+    return name;
+  }
+
   static Instruction.Call parseCall(String text) throws BadText {
     String t = text.trim();
     int open = t.indexOf('(');

@@ -3,7 +3,7 @@ package org.robotrun.program;
 import java.util.Objects;
 
 /**
- * An alarm that stopped a program, as the pendant shows it: {@code INTP-202 (MAIN, 7) Divide by
+ * An alarm that stopped a program, as the pendant shows it: {@code SIMU-001 (MAIN, 7) Divide by
  * zero: R[3] is 0}.
  *
  * @param kind which fault

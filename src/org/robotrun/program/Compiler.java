@@ -79,6 +79,10 @@ final class Compiler {
       case Instruction.Blank b -> "";
       case Instruction.Label l -> "";
       case Instruction.Message msg -> "";
+      case Instruction.SetSysVar s -> "";
+      case Instruction.MacroCall c -> "CALL";
+      case Instruction.SkipCondition s -> "";
+      case Instruction.OffsetCondition o -> "";
       case Instruction.Payload p -> "";
       case Instruction.AssignRegister a -> "";
       case Instruction.AssignPosReg a -> "";
@@ -145,6 +149,10 @@ final class Compiler {
       case Instruction.CommentedOut c -> new Ops.Nop();
       case Instruction.Blank b -> new Ops.Nop();
       case Instruction.Message msg -> new Ops.MessageOp(msg.text());
+      case Instruction.SetSysVar s -> new Ops.SetSysVarOp(s.name(), expr(s.value()));
+      case Instruction.MacroCall c -> call(new Instruction.Call(c.name(), java.util.List.of()));
+      case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
+      case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register());
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
@@ -224,6 +232,7 @@ final class Compiler {
       case Expr.Io io -> new Nodes.IoRead(io.kind(), idx(io.port().index()));
       case Expr.Timer t -> new Nodes.TimerRead(idx(t.timer().index()));
       case Expr.Arg a -> new Nodes.ArgRead(idx(a.index()));
+      case Expr.SysVar v -> new Nodes.SysVarRead(v.name());
       case Expr.Unary u -> switch (u.op()) {
         case MINUS -> new Nodes.Neg(expr(u.operand()));
         case NOT -> new Nodes.Not(expr(u.operand()));

@@ -59,6 +59,13 @@ public sealed interface Expr {
   }
 
   /** {@code AR[i]}: the i-th argument of the current CALL. */
+  /** A system variable RobotRun runs ({@link SystemVariables}), e.g. {@code $WAITTMOUT}. */
+  record SysVar(String name) implements Expr {
+    public SysVar {
+      Objects.requireNonNull(name, "name");
+    }
+  }
+
   record Arg(Index index) implements Expr {
     public Arg {
       Objects.requireNonNull(index, "index");

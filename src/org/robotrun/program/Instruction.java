@@ -313,6 +313,45 @@ public sealed interface Instruction {
     }
   }
 
+  /** {@code $WAITTMOUT=500}: sets a system variable RobotRun runs ({@link SystemVariables}). */
+  record SetSysVar(String name, Expr value) implements Instruction {
+    public SetSysVar {
+      Objects.requireNonNull(name, "name");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
+  /**
+   * {@code SKIP CONDITION cond}: the condition the following motions with {@code Skip,LBL[n]}
+   * watch. It stays set until the next SKIP CONDITION or the program ends.
+   */
+  record SkipCondition(Expr condition) implements Instruction {
+    public SkipCondition {
+      Objects.requireNonNull(condition, "condition");
+    }
+  }
+
+  /**
+   * {@code OFFSET CONDITION PR[i]}: the offset a motion with a plain {@code Offset} option applies
+   * (PR[i] is read when the motion starts). It stays set until the next OFFSET CONDITION or the
+   * program ends.
+   */
+  record OffsetCondition(Item register) implements Instruction {
+    public OffsetCondition {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /**
+   * A macro called by its name ({@code OPEN_HAND}): runs the program of that name as a CALL
+   * without arguments (RobotRun's macro table maps each macro to the program of its own name).
+   */
+  record MacroCall(String name) implements Instruction {
+    public MacroCall {
+      Objects.requireNonNull(name, "name");
+    }
+  }
+
   /** {@code MESSAGE[text]}: shown on the user screen. */
   record Message(String text) implements Instruction {
     public Message {

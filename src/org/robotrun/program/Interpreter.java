@@ -64,6 +64,12 @@ public final class Interpreter {
   final Registers regs;
   final MotionPort port;
   final InterpreterSettings settings;
+  /** $WAITTMOUT in seconds: starts at the setting, a program may change it (global, as on the controller). */
+  double waitTimeoutSec;
+  /** The last SKIP CONDITION of this run, or null. */
+  Nodes.Node skipCondition;
+  /** The PR of the last OFFSET CONDITION of this run, or null. */
+  Item offsetCondition;
 
   private final Map<String, CompiledProgram> compiled = new HashMap<>();
   private final Frame[] frames;
@@ -115,11 +121,15 @@ public final class Interpreter {
     this.regs = Objects.requireNonNull(registers, "registers");
     this.port = Objects.requireNonNull(port, "port");
     this.settings = Objects.requireNonNull(settings, "settings");
+    this.waitTimeoutSec = settings.waitTimeoutSec();
     this.frames = new Frame[settings.maxCallDepth()];
     for (int i = 0; i < frames.length; i++) {
       frames[i] = new Frame();
     }
-    this.pulseLeftSec = new double[IoKind.values().length][Registers.IO_COUNT + 1];
+    this.pulseLeftSec = new double[IoKind.values().length][];
+    for (IoKind k : IoKind.values()) {
+      pulseLeftSec[k.ordinal()] = new double[registers.ioSize(k) + 1];
+    }
   }
 
   // ================================================================ pendant-facing API
@@ -470,6 +480,14 @@ public final class Interpreter {
         case W_MOTION -> {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
+              if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
+                // The skip condition turned true: the arm stops and the program goes on with the
+                // next line, without the jump (FANUC Skip,LBL[] semantics).
+                port.cancel(motionHandle);
+                waitKind = W_NONE;
+                motionSkip = null;
+                break;
+              }
               return Outcome.WAITING_FOR_MOTION;
             }
             case FAILED -> {
@@ -499,7 +517,7 @@ public final class Interpreter {
         case W_CONDITION -> {
           waitElapsedSec += dtSec;
           if (!waitOp.condition.bool(this, "WAIT")) {
-            if (waitOp.timeout == null || waitElapsedSec < settings.waitTimeoutSec() - TIME_EPS_SEC) {
+            if (waitOp.timeout == null || waitElapsedSec < waitTimeoutSec - TIME_EPS_SEC) {
               return Outcome.WAITING_ON_CONDITION;
             }
             cur.pc = waitOp.timeout.line(this);
@@ -565,6 +583,8 @@ public final class Interpreter {
       return;
     }
     push(cp, Math.min(cursorLine - 1, cp.ops.length));
+    skipCondition = null;
+    offsetCondition = null;
     finishedProgram = null;
     state = State.RUNNING;
   }
@@ -814,8 +834,12 @@ public final class Interpreter {
     boolean inc = false;
     for (Motion.Option o : mv.options()) {
       switch (o) {
-        case Motion.Offset x -> throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION,
-            "Offset needs an OFFSET CONDITION, which RobotRun does not support: write Offset,PR[i]");
+        case Motion.Offset x -> {
+          if (offsetCondition == null) {
+            throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "Offset needs an OFFSET CONDITION PR[i] before it (or write Offset,PR[i])");
+          }
+          offset = Optional.of(positionRegister(offsetCondition));
+        }
         case Motion.OffsetPr x -> offset = Optional.of(positionRegister(x.register()));
         case Motion.ToolOffsetPr x -> toolOffset = Optional.of(positionRegister(x.register()));
         case Motion.Acc x -> {

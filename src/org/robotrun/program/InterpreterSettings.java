@@ -11,9 +11,15 @@ import java.util.Map;
  * @param waitTimeoutSec {@code WAIT … TIMEOUT,LBL[n]} timeout in seconds ($WAITTMOUT)
  * @param defaultPulseSec pulse width of {@code DO[i]=PULSE} without a width ($DEFPULSE)
  * @param userAlarmMessages UALM[i] texts ($UALRM_MSG[i]); missing ones show "UALM[i]"
+ * @param ioRanges the controller's I/O index ranges (its registers are made with them)
  */
 public record InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth, double waitTimeoutSec,
-    double defaultPulseSec, Map<Integer, String> userAlarmMessages) {
+    double defaultPulseSec, Map<Integer, String> userAlarmMessages, IoRanges ioRanges) {
+
+  public InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth, double waitTimeoutSec,
+      double defaultPulseSec, Map<Integer, String> userAlarmMessages) {
+    this(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages, IoRanges.DEFAULT);
+  }
 
   public InterpreterSettings {
     if (instructionBudgetPerTick < 1) {
@@ -23,22 +29,28 @@ public record InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth
       throw new IllegalArgumentException("maxCallDepth must be >= 1, got " + maxCallDepth);
     }
     userAlarmMessages = Map.copyOf(userAlarmMessages);
+    java.util.Objects.requireNonNull(ioRanges, "ioRanges");
   }
 
-  /** 100 000 lines per tick, depth 32, $WAITTMOUT 30 s, $DEFPULSE 0.4 s, no UALM texts. */
+  /** 100 000 lines per tick, depth 32, $WAITTMOUT 30 s, $DEFPULSE 0.4 s, no UALM texts, default I/O ranges. */
   public static InterpreterSettings defaults() {
     return new InterpreterSettings(100_000, 32, 30.0, 0.4, Map.of());
   }
 
   public InterpreterSettings withBudget(int budget) {
-    return new InterpreterSettings(budget, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages);
+    return new InterpreterSettings(budget, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages, ioRanges);
   }
 
   public InterpreterSettings withWaitTimeoutSec(double seconds) {
-    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, seconds, defaultPulseSec, userAlarmMessages);
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, seconds, defaultPulseSec, userAlarmMessages, ioRanges);
   }
 
   public InterpreterSettings withUserAlarmMessages(Map<Integer, String> messages) {
-    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, messages);
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, messages, ioRanges);
+  }
+
+  public InterpreterSettings withIoRanges(IoRanges ranges) {
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec,
+        userAlarmMessages, ranges);
   }
 }

@@ -1,7 +1,8 @@
 package org.robotrun.program;
 
 /**
- * Bit and group I/O plus flags, each indexed 1..64 (flags 1..200). Inputs (DI, RI, GI) are set
+ * Bit and group I/O plus flags, indexed from 1 up to the controller's configured size
+ * ({@link IoRanges}: by default DI/DO 512, RI/RO 8, GI/GO 100, flags 200). Inputs (DI, RI, GI) are set
  * by the simulation (RI[1] reports the gripper closed); outputs (DO, RO, GO) and flags (F) are
  * written by programs. RO[1] drives the end effector unless a scenario maps it otherwise.
  */
@@ -26,8 +27,8 @@ public enum IoKind {
     return group;
   }
 
-  /** Highest valid index: 200 for flags, 64 for I/O. */
+  /** Highest valid index with the default ranges ({@link IoRanges#DEFAULT}); a controller may be configured otherwise. */
   public int size() {
-    return this == F ? Registers.FLAG_COUNT : Registers.IO_COUNT;
+    return IoRanges.DEFAULT.size(this);
   }
 }

@@ -94,7 +94,7 @@ public final class Motion {
   /** Motion options, in the order written. */
   public sealed interface Option {}
 
-  /** {@code Offset}: shifts by the PR named in the offset condition (RobotRun has none: an alarm). */
+  /** {@code Offset}: shifts by the PR named in the last OFFSET CONDITION (an alarm without one). */
   public record Offset() implements Option {}
 
   /** {@code Offset,PR[i]}: shifts the target by PR[i] in the active user frame. */
@@ -114,7 +114,10 @@ public final class Motion {
   /** {@code ACCn}: acceleration override in percent. */
   public record Acc(int percent) implements Option {}
 
-  /** {@code Skip,LBL[i]}: jump to the label if the skip condition is not met by the end of motion. */
+  /**
+   * {@code Skip,LBL[i]}: the motion stops when the SKIP CONDITION turns true (the program goes on
+   * with the next line); it jumps to the label when the motion ends without the condition.
+   */
   public record Skip(LabelRef label) implements Option {
     public Skip {
       Objects.requireNonNull(label, "label");

@@ -195,7 +195,7 @@ final class Nodes {
 
     @Override
     double eval(Interpreter m) {
-      int i = check(io.name(), idx.resolve(m), io.size());
+      int i = check(io.name(), idx.resolve(m), m.regs.ioSize(io));
       int v = m.regs.io[io.ordinal()][i];
       if (io.group()) {
         m.kind = INT;
@@ -203,6 +203,25 @@ final class Nodes {
       }
       m.kind = BOOL;
       return v != 0 ? 1 : 0;
+    }
+  }
+
+  /** A system variable's value: $WAITTMOUT in 1/100 s, $MCR.$GENOVERRIDE in percent (integers). */
+  static final class SysVarRead extends Node {
+    final String name;
+
+    SysVarRead(String name) {
+      this.name = name;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      m.kind = INT;
+      return switch (name) {
+        case SystemVariables.WAITTMOUT -> Math.round(m.waitTimeoutSec * 100);
+        case SystemVariables.GENOVERRIDE -> m.port.overridePct();
+        default -> throw new IllegalStateException("no system variable " + name);
+      };
     }
   }
 

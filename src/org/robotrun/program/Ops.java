@@ -379,7 +379,7 @@ final class Ops {
 
     @Override
     int exec(Interpreter m) {
-      int i = Nodes.check(io.name(), idx.resolve(m), io.size());
+      int i = Nodes.check(io.name(), idx.resolve(m), m.regs.ioSize(io));
       if (!io.writable()) {
         throw new AlarmSignal(AlarmKind.WRITE_PROTECTED, io.name() + "[" + i + "] is an input");
       }
@@ -415,7 +415,7 @@ final class Ops {
 
     @Override
     int exec(Interpreter m) {
-      int i = Nodes.check(io.name(), idx.resolve(m), io.size());
+      int i = Nodes.check(io.name(), idx.resolve(m), m.regs.ioSize(io));
       if (!io.writable() || io.group()) {
         throw new AlarmSignal(io.writable() ? AlarmKind.TYPE_MISMATCH : AlarmKind.WRITE_PROTECTED,
             io.name() + "[" + i + "] cannot be pulsed");
@@ -458,6 +458,68 @@ final class Ops {
     @Override
     int exec(Interpreter m) {
       throw new AlarmSignal(AlarmKind.ABORTED, "ABORT");
+    }
+  }
+
+  /** {@code $WAITTMOUT=…}, {@code $MCR.$GENOVERRIDE=…} (SystemVariables). */
+  static final class SetSysVarOp extends Op {
+    final String name;
+    final Node value;
+
+    SetSysVarOp(String name, Node value) {
+      this.name = name;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int v = value.integer(m, name);
+      switch (name) {
+        case SystemVariables.WAITTMOUT -> {
+          if (v < 0 || v > SystemVariables.MAX_WAITTMOUT) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, name + "=" + v + ": expected 0.." + SystemVariables.MAX_WAITTMOUT);
+          }
+          m.waitTimeoutSec = v / 100.0;
+        }
+        case SystemVariables.GENOVERRIDE -> {
+          if (v < 1 || v > 100) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, name + "=" + v + ": expected 1..100");
+          }
+          m.port.setOverridePct(v);
+        }
+        default -> throw new IllegalStateException("no system variable " + name);
+      }
+      return NEXT;
+    }
+  }
+
+  /** SKIP CONDITION: remembered for the following motions with Skip,LBL[]. */
+  static final class SkipConditionOp extends Op {
+    final Node condition;
+
+    SkipConditionOp(Node condition) {
+      this.condition = condition;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      m.skipCondition = condition;
+      return NEXT;
+    }
+  }
+
+  /** OFFSET CONDITION PR[i]: remembered for the following motions with a plain Offset. */
+  static final class OffsetConditionOp extends Op {
+    final Item register;
+
+    OffsetConditionOp(Item register) {
+      this.register = register;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      m.offsetCondition = register;
+      return NEXT;
     }
   }
 

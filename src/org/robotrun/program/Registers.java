@@ -5,8 +5,8 @@ import java.util.Objects;
 
 /**
  * The controller's register and I/O state (mutable, one per controller): data registers
- * R[1..200], position registers PR[1..100], flags F[1..200], DI/DO/RI/RO/GI/GO[1..64] and
- * TIMER[1..10]. Indices are 1-based as on the pendant; an index out of range throws
+ * R[1..200], position registers PR[1..100], flags and DI/DO/RI/RO/GI/GO up to their configured
+ * sizes ({@link IoRanges}) and TIMER[1..10]. Indices are 1-based as on the pendant; an index out of range throws
  * {@link RegisterIndexException}, which the interpreter reports as an alarm. Call arguments
  * (AR[]) belong to a call frame and live in the interpreter.
  *
@@ -18,7 +18,6 @@ public final class Registers {
   public static final int R_COUNT = 200;
   public static final int PR_COUNT = 100;
   public static final int FLAG_COUNT = 200;
-  public static final int IO_COUNT = 64;
   public static final int TIMER_COUNT = 10;
 
   // Package-private so the interpreter's compiled code reads them without per-access checks
@@ -30,13 +29,31 @@ public final class Registers {
   private final double[] timerSec = new double[TIMER_COUNT + 1];
   private final boolean[] timerRunning = new boolean[TIMER_COUNT + 1];
 
-  /** All registers zero (integer 0), PRs Cartesian zero, I/O OFF, timers stopped at 0. */
+  private final IoRanges ioRanges;
+
+  /** All registers zero (integer 0), PRs Cartesian zero, I/O OFF, timers stopped at 0; default I/O ranges. */
   public Registers() {
+    this(IoRanges.DEFAULT);
+  }
+
+  /** As {@link #Registers()} with the I/O sizes of {@code ranges}. */
+  public Registers(IoRanges ranges) {
+    this.ioRanges = Objects.requireNonNull(ranges, "ranges");
     Arrays.fill(rIsInteger, true);
     Arrays.fill(pr, Position.Cartesian.ZERO);
     for (IoKind k : IoKind.values()) {
-      io[k.ordinal()] = new int[k.size() + 1];
+      io[k.ordinal()] = new int[ranges.size(k) + 1];
     }
+  }
+
+  /** The I/O sizes this controller has. */
+  public IoRanges ioRanges() {
+    return ioRanges;
+  }
+
+  /** The highest valid index of {@code kind} on this controller. */
+  public int ioSize(IoKind kind) {
+    return io[kind.ordinal()].length - 1;
   }
 
   private static void check(String table, int i, int size) {
@@ -98,25 +115,25 @@ public final class Registers {
 
   /** A bit port or flag: ON is true. For GI/GO, whether the group value is non-zero. */
   public boolean bit(IoKind kind, int i) {
-    check(kind.name(), i, kind.size());
+    check(kind.name(), i, ioSize(kind));
     return io[kind.ordinal()][i] != 0;
   }
 
   /** Sets a bit port or flag (inputs too: the simulation writes DI/RI). */
   public void setBit(IoKind kind, int i, boolean on) {
-    check(kind.name(), i, kind.size());
+    check(kind.name(), i, ioSize(kind));
     io[kind.ordinal()][i] = on ? 1 : 0;
   }
 
   /** A port's value as an integer: 0/1 for bits, the group value for GI/GO. */
   public int value(IoKind kind, int i) {
-    check(kind.name(), i, kind.size());
+    check(kind.name(), i, ioSize(kind));
     return io[kind.ordinal()][i];
   }
 
   /** Sets a group port's integer value (GI/GO); for a bit port any non-zero value is ON. */
   public void setValue(IoKind kind, int i, int value) {
-    check(kind.name(), i, kind.size());
+    check(kind.name(), i, ioSize(kind));
     io[kind.ordinal()][i] = kind.group() ? value : (value != 0 ? 1 : 0);
   }
 

@@ -112,7 +112,9 @@ public final class TpLexer {
       }
       if (isWordStart(c)) {
         int j = i + 1;
-        while (j < n && isWordPart(text.charAt(j))) {
+        // A system variable's path ($MCR.$GENOVERRIDE) is one word.
+        while (j < n && (isWordPart(text.charAt(j))
+            || (c == '$' && text.charAt(j) == '.' && j + 1 < n && text.charAt(j + 1) == '$'))) {
           j++;
         }
         out.add(new TpToken(Kind.WORD, english(text.substring(i, j), out), line, col));

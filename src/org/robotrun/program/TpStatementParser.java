@@ -149,6 +149,8 @@ public final class TpStatementParser extends TpTokenCursor {
   private int operators;
   private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
+  /** The I/O sizes a direct index is checked against (a warning beyond them). */
+  private final IoRanges ioRanges = IoRanges.DEFAULT;
 
   private TpStatementParser(List<TpToken> tokens) {
     super(tokens);
@@ -187,6 +189,8 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.IfThen f -> f.condition();
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
+      case Instruction.SetSysVar s -> s.value();
+      case Instruction.SkipCondition s -> s.condition();
       default -> null;
     };
     if (checked != null) {
@@ -249,6 +253,12 @@ public final class TpStatementParser extends TpTokenCursor {
       throw unsupported(peek(1), "motion to " + targetKind(peek(1).text()), false);
     }
     if (w.startsWith("$")) {
+      Optional<String> known = SystemVariables.supported(w);
+      if (known.isPresent() && peek(1).is(Kind.EQ)) {
+        next();
+        next();
+        return new Instruction.SetSysVar(known.get(), expression());
+      }
       throw unsupported(t, "system variable assignment", true);
     }
     next();
@@ -294,6 +304,26 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         yield new Instruction.Label(d.value(), l.comment());
       }
+      case "SKIP" -> {
+        if (!peek().isWord("CONDITION")) {
+          throw unknownStatement(t);
+        }
+        next();
+        yield new Instruction.SkipCondition(expression());
+      }
+      case "OFFSET" -> {
+        if (!peek().isWord("CONDITION") || !peek(1).isWord("PR")) {
+          throw unknownStatement(t);
+        }
+        next();
+        next();
+        Item pr = item("PR");
+        if (!peek().is(Kind.EOL)) {
+          // OFFSET CONDITION PR[1],UFRAME[2]: an offset in another frame
+          throw unsupported(t, "OFFSET CONDITION with a frame", false);
+        }
+        yield new Instruction.OffsetCondition(pr);
+      }
       case "JMP" -> jump();
       case "CALL" -> call();
       case "END" -> new Instruction.End();
@@ -337,7 +367,14 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         yield new Instruction.SetOverride(pct);
       }
-      default -> throw unknownStatement(t);
+      default -> {
+        // A macro listed by its one-word name (OPEN_HAND): run as a CALL of the program of that name.
+        if (t.is(Kind.WORD) && peek().is(Kind.EOL) && !UNSUPPORTED.containsKey(w) && !w.startsWith("PAL")
+            && Program.isValidName(w)) {
+          yield new Instruction.MacroCall(w);
+        }
+        throw unknownStatement(t);
+      }
     };
   }
 
@@ -944,6 +981,10 @@ public final class TpStatementParser extends TpTokenCursor {
               throw unsupported(t, name + " in an expression", false);
             }
             if (w.startsWith("$")) {
+              Optional<String> known = SystemVariables.supported(w);
+              if (known.isPresent() && !peek().is(Kind.LBRACKET)) {
+                yield new Expr.SysVar(known.get());
+              }
               throw unsupported(t, "system variable in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
@@ -1041,8 +1082,7 @@ public final class TpStatementParser extends TpTokenCursor {
     int size = switch (table) {
       case "R" -> Registers.R_COUNT;
       case "PR" -> Registers.PR_COUNT;
-      case "F" -> Registers.FLAG_COUNT;
-      case "DI", "DO", "RI", "RO", "GI", "GO" -> Registers.IO_COUNT;
+      case "F", "DI", "DO", "RI", "RO", "GI", "GO" -> ioRanges.size(IoKind.valueOf(table));
       case "TIMER" -> Registers.TIMER_COUNT;
       default -> 0;
     };

@@ -80,7 +80,7 @@ public final class Controller implements MotionPort {
   private final JogState jogKeys = new JogState();
   private final TargetResolver resolver;
   private final FrameTable frames = new FrameTable();
-  private final Registers registers = new Registers();
+  private final Registers registers;
   private final Map<String, Program> programs = new TreeMap<>();
   private final Map<String, String> comments = new HashMap<>();
   private final Interpreter interpreter;
@@ -144,6 +144,7 @@ public final class Controller implements MotionPort {
   public Controller(String name, RobotModel model, Position.Joint start, InterpreterSettings settings) {
     this.name = Objects.requireNonNull(name, "name");
     this.model = model;
+    this.registers = new Registers(settings.ioRanges());
     this.limits = MotionLimits.forModel(model);
     this.resolver = new TargetResolver(model);
     double[] q0 = resolver.kinematicOf(start);

@@ -5,7 +5,7 @@ import java.util.Objects;
 /**
  * An alarm as the controller keeps it (active list and history).
  *
- * @param code FANUC-style code, e.g. {@code MOTN-017}, {@code INTP-202}
+ * @param code FANUC-style code, e.g. {@code MOTN-017}, {@code INTP-224}
  * @param message what happened
  * @param program program whose line raised it, "" when not from a program (jog, MOVE_TO, world)
  * @param line that line (1-based), 0 when none

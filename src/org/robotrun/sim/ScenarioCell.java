@@ -1,5 +1,7 @@
 package org.robotrun.sim;
 
+import org.robotrun.program.InterpreterSettings;
+import org.robotrun.program.IoRanges;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -41,7 +43,8 @@ public final class ScenarioCell {
           Math.toDegrees(j[3]), Math.toDegrees(j[4]), Math.toDegrees(j[5]));
       Controller c;
       try {
-        c = new Controller(r.name(), model, start);
+        c = new Controller(r.name(), model, start, InterpreterSettings.defaults()
+            .withIoRanges(IoRanges.of(r.io())).withUserAlarmMessages(r.userAlarms()));
       } catch (IllegalArgumentException e) {
         throw new IllegalArgumentException("robot " + r.name() + ": " + e.getMessage(), e);
       }

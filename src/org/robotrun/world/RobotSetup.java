@@ -12,15 +12,26 @@ import org.robotrun.math.Transform;
  * @param endEffector the tool on its flange
  * @param initialJointsRad six joint values in the pendant's convention (FANUC coupled J3), rad
  * @param toolIo the I/O ports the end effector uses
+ * @param io the controller's I/O sizes that differ from its defaults, by kind ("DO" → 1024); the
+ *     names and bounds are checked by the reader and the controller (program.IoRanges)
+ * @param userAlarms the UALM[i] texts of the controller ($UALRM_MSG[i]), by number
  */
 public record RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
-    ToolIo toolIo) {
+    ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms) {
   public RobotSetup {
     java.util.Objects.requireNonNull(toolIo, "toolIo");
+    io = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(io));
+    userAlarms = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(userAlarms));
     initialJointsRad = List.copyOf(initialJointsRad);
     if (initialJointsRad.size() != 6) {
       throw new IllegalArgumentException("a robot needs 6 initial joint values, got " + initialJointsRad.size());
     }
+  }
+
+  /** A robot with the controller's default I/O sizes and no UALM texts. */
+  public RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
+      ToolIo toolIo) {
+    this(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, new java.util.TreeMap<>(), new java.util.TreeMap<>());
   }
 
   /** A robot whose end effector uses {@link ToolIo#DEFAULT} (RO[1], RI[1], RI[2]). */

@@ -97,6 +97,12 @@ class LsRandomProgramsTest {
     return new Item(index(), comment());
   }
 
+  /** An I/O port within every kind's default range (RI/RO have 8). */
+  private Item ioItem() {
+    return new Item(rnd.nextInt(4) == 0 ? new Index.Indirect(1 + rnd.nextInt(200), comment())
+        : new Index.Direct(1 + rnd.nextInt(8)), comment());
+  }
+
   private Item direct() {
     return new Item(new Index.Direct(1 + rnd.nextInt(64)), comment());
   }
@@ -117,9 +123,10 @@ class LsRandomProgramsTest {
       case 2 -> new Expr.OnOff(rnd.nextBoolean());
       case 3 -> new Expr.Register(item());
       case 4 -> new Expr.PosElement(item(), 1 + rnd.nextInt(6));
-      case 5 -> new Expr.Io(IoKind.values()[rnd.nextInt(IoKind.values().length)], item());
+      case 5 -> new Expr.Io(IoKind.values()[rnd.nextInt(IoKind.values().length)], ioItem());
       case 6 -> new Expr.Timer(timer());
-      case 7 -> new Expr.Arg(new Index.Direct(1 + rnd.nextInt(10)));
+      case 7 -> rnd.nextInt(3) == 0 ? new Expr.SysVar(org.robotrun.program.SystemVariables.SUPPORTED.get(rnd.nextInt(2)))
+          : new Expr.Arg(new Index.Direct(1 + rnd.nextInt(10)));
       case 8 -> new Expr.Unary(Expr.UnaryOp.values()[rnd.nextInt(2)], expr(depth - 1));
       case 9 -> new Expr.Group(expr(depth - 1));
       default -> new Expr.Binary(Expr.BinaryOp.values()[rnd.nextInt(Expr.BinaryOp.values().length)], expr(depth - 1), expr(depth - 1));
@@ -208,7 +215,7 @@ class LsRandomProgramsTest {
   }
 
   private Instruction statement() {
-    return switch (rnd.nextInt(24)) {
+    return switch (rnd.nextInt(25)) {
       case 0 -> new Instruction.AssignRegister(item(), expr(3));
       case 1 -> new Instruction.AssignPosReg(item(), switch (rnd.nextInt(6)) {
         case 0 -> new Instruction.FromPosReg(item());
@@ -232,8 +239,8 @@ class LsRandomProgramsTest {
       case 12 -> new Instruction.WaitTime(rnd.nextBoolean() ? new Expr.RealConst(rnd.nextInt(1000) / 100.0) : new Expr.Register(direct()));
       case 13 -> new Instruction.WaitCondition(expr(2), rnd.nextBoolean() ? Optional.of(label()) : Optional.empty());
       case 14 -> new Instruction.TimerSet(timer(), Instruction.TimerAction.values()[rnd.nextInt(3)]);
-      case 15 -> new Instruction.SetIo(new IoKind[] {IoKind.DO, IoKind.RO, IoKind.GO, IoKind.F}[rnd.nextInt(4)], item(), expr(2));
-      case 16 -> new Instruction.Pulse(rnd.nextBoolean() ? IoKind.DO : IoKind.RO, item(),
+      case 15 -> new Instruction.SetIo(new IoKind[] {IoKind.DO, IoKind.RO, IoKind.GO, IoKind.F}[rnd.nextInt(4)], ioItem(), expr(2));
+      case 16 -> new Instruction.Pulse(rnd.nextBoolean() ? IoKind.DO : IoKind.RO, ioItem(),
           rnd.nextBoolean() ? OptionalDouble.of(rnd.nextInt(100) / 10.0) : OptionalDouble.empty());
       case 17 -> new Instruction.Comment(" " + comment());
       case 18 -> new Instruction.CommentedOut("L P[1] 100mm/sec FINE");
@@ -241,6 +248,7 @@ class LsRandomProgramsTest {
       case 20 -> new Instruction.UserAlarm(new Index.Direct(1 + rnd.nextInt(10)));
       case 21 -> new Instruction.SetOverride(rnd.nextBoolean() ? new Expr.IntConst(1 + rnd.nextInt(100)) : new Expr.Register(direct()));
       case 22 -> new Instruction.Blank();
+      case 23 -> new Instruction.SetSysVar(org.robotrun.program.SystemVariables.SUPPORTED.get(rnd.nextInt(2)), expr(1));
       default -> new Instruction.Label(1 + nextLabel(), comment());
     };
   }

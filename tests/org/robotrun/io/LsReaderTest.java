@@ -97,7 +97,7 @@ class LsReaderTest {
     assertThat(messages(r)).containsExactly(
         "t.ls:4: warning: R[201]: index out of range (expected 1..200); running this line raises an alarm",
         "t.ls:4: warning: TIMER[11]: index out of range (expected 1..10); running this line raises an alarm",
-        "t.ls:4: warning: DI[0]: index out of range (expected 1..64); running this line raises an alarm",
+        "t.ls:4: warning: DI[0]: index out of range (expected 1..512); running this line raises an alarm",
         "t.ls:4: warning: R[300]: index out of range (expected 1..200); running this line raises an alarm",
         "t.ls:5: warning: PR[101]: index out of range (expected 1..100); running this line raises an alarm");
     assertThat(r.hasAnyError()).isFalse();
@@ -152,7 +152,7 @@ class LsReaderTest {
         "   4:J P[1] 100mm/sec FINE    ;",
         "   5:L PR[1] 30% FINE    ;",
         "   6:  FOR R[1]=1 UNTIL 3 ;",
-        "   7:  SKIP CONDITION DI[1]=ON ;",
+        "   7:  RUN SUB1 ;",
         "   8:  R[2]=3 ;",
         "   9:  WAIT 2 ;",
         "  10:  DI[1]=ON ;",
@@ -170,7 +170,7 @@ class LsReaderTest {
         "t.ls:7: speed unit mm/sec does not fit a J motion: expected %, sec or msec",
         "t.ls:8: speed unit % does not fit a L motion: expected mm/sec, cm/min, inch/min, deg/sec, sec or msec",
         "t.ls:9: expected TO or DOWNTO in FOR, found 'UNTIL'",
-        "t.ls:10: not supported: SKIP CONDITION (the line alarms when it runs)",
+        "t.ls:10: not supported: RUN (multitasking) (the line alarms when it runs)",
         "t.ls:12: expected '(sec)' after the wait time, found end of line",
         "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO or F)",
         "t.ls:15: expected ';' at the end of the line",
@@ -186,19 +186,37 @@ class LsReaderTest {
   }
 
   @Test
+  void aOneWordMacroIsACallOfTheProgramOfThatName() {
+    LsReadResult r = mn("   1:  open_hand ;\n");
+    assertThat(r.diagnostics()).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.MacroCall("OPEN_HAND"));
+  }
+
+  @Test
+  void systemVariablesRobotRunRunsAreReadIntoTheModel() {
+    LsReadResult r = mn("   1:  $WAITTMOUT=500 ;\n   2:  R[1]=$mcr.$genoverride+$WAITTMOUT    ;\n");
+    assertThat(r.diagnostics()).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.SetSysVar("$WAITTMOUT", new Expr.IntConst(500)));
+    assertThat(r.program().line(2)).isEqualTo(new Instruction.AssignRegister(org.robotrun.program.Item.of(1),
+        new Expr.Binary(Expr.BinaryOp.ADD, new Expr.SysVar("$MCR.$GENOVERRIDE"), new Expr.SysVar("$WAITTMOUT"))));
+  }
+
+  @Test
   void unsupportedStatementsAreNamedNotDropped() {
     for (String[] c : new String[][] {
         {"RUN SUB1", "not supported: RUN (multitasking) (the line alarms when it runs)"},
-        {"$WAITTMOUT=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
+        {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
         {"SR[1]=R[1]", "not supported: string registers SR[] (the line alarms when it runs)"},
         {"AO[1]=5", "not supported: analog output AO[] (the line alarms when it runs)"},
-        {"OFFSET CONDITION PR[1]", "not supported: OFFSET CONDITION (the line alarms when it runs)"},
+        {"OFFSET CONDITION PR[1],UFRAME[2]", "not supported: OFFSET CONDITION with a frame (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
-        {"FROBNICATE", "not supported: macro call FROBNICATE (the line alarms when it runs)"},
+        {"HAND1 OPEN", "not supported: macro call HAND1 (the line alarms when it runs)"},
         {"FROBNICATE=3", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);

@@ -129,6 +129,39 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void ioSizesAndUserAlarmTextsAreReadPerRobotAndWrittenBack() throws Exception {
+    String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\", \"io\": {\"DO\": 1024, \"RO\": 16},"
+            + " \"toolIo\": {\"output\": 12}, \"userAlarms\": {\"1\": \"Gripper did not close\", \"7\": \"Part missing\"},");
+    Path file = write("io-sizes.json", text);
+    Scenario s = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario();
+    org.robotrun.world.RobotSetup r = s.robots().getFirst();
+    assertThat(r.io()).containsExactly(java.util.Map.entry("DO", 1024), java.util.Map.entry("RO", 16));
+    assertThat(r.userAlarms()).containsExactly(java.util.Map.entry(1, "Gripper did not close"), java.util.Map.entry(7, "Part missing"));
+    assertThat(r.toolIo().output()).isEqualTo(12);
+    ScenarioWriter.write(s, file);
+    org.robotrun.world.RobotSetup again = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario().robots().getFirst();
+    assertThat(again.io()).isEqualTo(r.io());
+    assertThat(again.userAlarms()).isEqualTo(r.userAlarms());
+  }
+
+  @Test
+  void badIoSizesAreNamedWithTheirLine() throws Exception {
+    String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\",\n \"io\": {\"XO\": 8,\n \"DI\": 5000},");
+    List<ScenarioError> errors = ((ScenarioLoad.Failed) ScenarioReader.read(write("bad-sizes.json", text))).errors();
+    assertThat(errors).extracting(ScenarioError::path).containsExactlyInAnyOrder("robots[0].io.XO", "robots[0].io.DI");
+    assertThat(errors).extracting(ScenarioError::message).anySatisfy(m -> assertThat(m).contains("unknown I/O kind 'XO'"))
+        .anySatisfy(m -> assertThat(m).contains("1..4096").contains("5000"));
+    // A tool port beyond the robot's (default) 8 robot outputs.
+    String beyond = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\",\n \"toolIo\": {\"output\": 9},");
+    ScenarioError e = onlyError(write("beyond.json", beyond));
+    assertThat(e.path()).isEqualTo("robots[0].toolIo.output");
+    assertThat(e.message()).contains("RO[9]").contains("RO[1..8]").contains("io.RO");
+  }
+
+  @Test
   void badToolIoPortIsNamedWithItsLine() throws Exception {
     String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
         "\"endEffector\": \"gripper\",\n \"toolIo\": {\"output\": 65},");

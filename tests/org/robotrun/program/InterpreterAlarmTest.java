@@ -1,6 +1,7 @@
 package org.robotrun.program;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.robotrun.program.Expr.BinaryOp.ADD;
 import static org.robotrun.program.Expr.BinaryOp.AND;
 import static org.robotrun.program.Expr.BinaryOp.DIV;
@@ -55,10 +56,28 @@ class InterpreterAlarmTest {
   }
 
   @Test
+  void ioRangesAreTheControllersConfiguredSizes() {
+    InterpreterSettings big = InterpreterSettings.defaults()
+        .withIoRanges(IoRanges.of(java.util.Map.of("DO", 1024, "RI", 16)));
+    Rig ok = new Rig(big, 0.1, prog("A", setIo(IoKind.DO, 1024, on()), setIo(IoKind.RO, 8, on())));
+    assertThat(ok.run()).isEqualTo(Outcome.FINISHED);
+    assertThat(ok.regs.bit(IoKind.DO, 1024)).isTrue();
+    assertThat(ok.regs.ioSize(IoKind.RI)).isEqualTo(16);
+    Rig bad = new Rig(big, 0.1, prog("A", setIo(IoKind.DO, 1025, on())));
+    Alarm a = bad.alarm(bad.run());
+    assertThat(a.kind()).isEqualTo(AlarmKind.BAD_INDEX);
+    assertThat(a.message()).isEqualTo("DO[1025]: index out of range (expected 1..1024)");
+    // Robot outputs default to the 8 of the end-effector connector.
+    assertThat(alarmOf(prog("A", setIo(IoKind.RO, 9, on()))).message()).contains("RO[9]").contains("1..8");
+    assertThatThrownBy(() -> IoRanges.of(java.util.Map.of("XO", 4))).hasMessageContaining("unknown I/O kind 'XO'");
+    assertThatThrownBy(() -> IoRanges.of(java.util.Map.of("DI", 0))).hasMessageContaining("DI: expected a number of ports 1..4096");
+  }
+
+  @Test
   void indexOutOfRangeIsABadIndex() {
     assertThat(alarmOf(prog("A", setR(201, num(1)))).message()).isEqualTo("R[201]: index out of range (expected 1..200)");
     assertThat(alarmOf(prog("A", setR(1, r(0)))).kind()).isEqualTo(AlarmKind.BAD_INDEX);
-    assertThat(alarmOf(prog("A", setIo(IoKind.DO, 65, on()))).message()).contains("DO[65]");
+    assertThat(alarmOf(prog("A", setIo(IoKind.DO, 513, on()))).message()).contains("DO[513]").contains("1..512");
     assertThat(alarmOf(prog("A", setR(1, Tp.prEl(1, 7)))).kind()).isEqualTo(AlarmKind.BAD_INDEX);
     assertThat(alarmOf(prog("A", setR(1, Tp.timer(11)))).kind()).isEqualTo(AlarmKind.BAD_INDEX);
     // R[R[1]] with R[1] = 0.5 is not an index.

@@ -406,4 +406,31 @@ class InterpreterFlowTest {
     assertThat(a.message()).isEqualTo("Part missing");
     assertThat(a.display()).isEqualTo("INTP-213 (U, 1) Part missing");
   }
+
+  @Test
+  void waittmoutSetByTheProgramTimesTheWaitAndStaysSet() {
+    Program w = prog("W", new Instruction.SetSysVar(SystemVariables.WAITTMOUT, num(50)),
+        Tp.waitFor(io(IoKind.DI, 1), 1), lbl(1));
+    Program again = prog("W2", Tp.waitFor(io(IoKind.DI, 1), 1), lbl(1));
+    Rig rig = new Rig(w, again);
+    rig.interp.forward();
+    int ticks = 0;
+    Outcome o;
+    do {
+      o = rig.tick(Rig.TICK_SEC);
+      ticks++;
+    } while (!(o instanceof Outcome.Finished) && ticks < 100_000);
+    assertThat(o).isEqualTo(Outcome.FINISHED);
+    // 50 hundredths of a second, to within a tick (the 30 s default would take 7500 ticks).
+    assertThat(ticks * Rig.TICK_SEC).isCloseTo(0.5, within(2 * Rig.TICK_SEC));
+    // The variable is global: another program's WAIT ... TIMEOUT uses the new value.
+    rig.interp.select("W2");
+    rig.interp.forward();
+    ticks = 0;
+    do {
+      o = rig.tick(Rig.TICK_SEC);
+      ticks++;
+    } while (!(o instanceof Outcome.Finished) && ticks < 100_000);
+    assertThat(ticks * Rig.TICK_SEC).isCloseTo(0.5, within(2 * Rig.TICK_SEC));
+  }
 }

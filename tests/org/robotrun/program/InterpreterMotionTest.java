@@ -276,6 +276,59 @@ class InterpreterMotionTest {
   }
 
   @Test
+  void skipConditionTurningTrueStopsTheMotionAndGoesOnWithoutTheJump() {
+    Program p = progWithPositions("SK", 1,
+        new Instruction.SkipCondition(new Expr.Binary(Expr.BinaryOp.EQ, Tp.io(IoKind.DI, 1), Tp.on())),
+        lin(1, new Motion.Skip(LabelRef.of(5))),
+        setR(1, num(1)),
+        new Instruction.End(),
+        Tp.lbl(5),
+        setR(1, num(5)));
+    Rig rig = new Rig(InterpreterSettings.defaults(), 1.0, p);
+    rig.interp.forward();
+    for (int i = 0; i < 25; i++) {
+      rig.tick(Rig.TICK_SEC);
+    }
+    // 0.1 s into a 1 s motion: still moving, nothing cancelled.
+    assertThat(rig.port.cancelled()).isEmpty();
+    assertThat(rig.interp.state()).isEqualTo(Interpreter.State.RUNNING);
+    rig.regs.setBit(IoKind.DI, 1, true);
+    assertThat(rig.runUntilStopped(Rig.TICK_SEC, 1000)).isInstanceOf(Outcome.Finished.class);
+    // The arm was stopped (the motion cancelled) and the line after the motion ran: no jump.
+    assertThat(rig.port.cancelled()).hasSize(1);
+    assertThat(rig.regs.number(1)).isEqualTo(1);
+  }
+
+  @Test
+  void skipConditionThatNeverTurnsTrueJumpsAfterTheMotion() {
+    Program p = progWithPositions("SK", 1,
+        new Instruction.SkipCondition(new Expr.Binary(Expr.BinaryOp.EQ, Tp.io(IoKind.DI, 1), Tp.on())),
+        lin(1, new Motion.Skip(LabelRef.of(5))),
+        setR(1, num(1)),
+        new Instruction.End(),
+        Tp.lbl(5),
+        setR(1, num(5)));
+    Rig rig = new Rig(p);
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.port.cancelled()).isEmpty();
+    assertThat(rig.regs.number(1)).isEqualTo(5);
+  }
+
+  @Test
+  void plainOffsetUsesTheOffsetConditionsRegisterWhenTheMotionStarts() {
+    Position.Cartesian shift = new Position.Cartesian(10, 20, 30, 0, 0, 0, Config.DEFAULT);
+    Program p = progWithPositions("OF", 1,
+        new Instruction.OffsetCondition(Item.of(4)),
+        lin(1, new Motion.Offset()),
+        lin(1));
+    Rig rig = new Rig(p);
+    rig.regs.setPosition(4, shift);
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.port.requests().get(0).offset()).contains(shift);
+    assertThat(rig.port.requests().get(1).offset()).isEmpty();
+  }
+
+  @Test
   void localPositionCarriesItsTaughtFrames() {
     LocalPosition inUf1 = new LocalPosition(1, "PICK", 1, 1, pos(1).position());
     Program p = Program.of("F", List.of(

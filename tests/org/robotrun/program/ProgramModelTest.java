@@ -96,7 +96,10 @@ class ProgramModelTest {
     assertThatThrownBy(() -> r.number(201)).isInstanceOf(RegisterIndexException.class)
         .hasMessage("R[201]: index out of range (expected 1..200)");
     assertThatThrownBy(() -> r.position(0)).isInstanceOf(RegisterIndexException.class);
-    assertThatThrownBy(() -> r.bit(IoKind.DO, 65)).isInstanceOf(RegisterIndexException.class);
+    assertThat(r.bit(IoKind.DO, 512)).isFalse();
+    assertThatThrownBy(() -> r.bit(IoKind.DO, 513)).isInstanceOf(RegisterIndexException.class)
+        .hasMessage("DO[513]: index out of range (expected 1..512)");
+    assertThatThrownBy(() -> r.setBit(IoKind.RO, 9, true)).isInstanceOf(RegisterIndexException.class);
     r.setBit(IoKind.F, 200, true);
     assertThat(r.bit(IoKind.F, 200)).isTrue();
     r.setValue(IoKind.GO, 1, 300);

@@ -4,11 +4,12 @@ package org.robotrun.program;
 final class Rig {
   static final double TICK_SEC = 0.004;
 
-  final Registers regs = new Registers();
+  final Registers regs;
   final FakeMotionPort port;
   final Interpreter interp;
 
   Rig(InterpreterSettings settings, double motionTimeSec, Program... programs) {
+    regs = new Registers(settings.ioRanges());
     port = new FakeMotionPort(motionTimeSec);
     interp = new Interpreter(ProgramStore.of(programs), regs, port, settings);
     interp.select(programs[0].name());

@@ -10,6 +10,7 @@ import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
+import org.robotrun.program.IoKind;
 import org.robotrun.program.Program;
 
 /** C, A, Offset, Tool_Offset and INC motions as a program states them, checked on the TCP path. */
@@ -147,6 +148,36 @@ class ProgramMotionTest {
     Xyzwpr end = c.tcpInWorld();
     assertThat(end.y()).isCloseTo(-100, offset(0.01));
     assertThat(end.z()).isCloseTo(70, offset(0.01));
+  }
+
+  @Test
+  void skipConditionStopsTheArmBetweenItsPointsAndTheNextLineRuns() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE", "SKIP CONDITION DI[1]=ON",
+        "L P[3:B] 100mm/sec FINE Skip,LBL[1]", "R[1]=1", "LBL[1]", "R[2]=2"));
+    c.run("FORMS", 1, true);
+    int steps = 0;
+    while (c.status().line() != 4 && steps++ < 10_000) {
+      sim.step();
+    }
+    // One second into the 2.7 s move from A to B, the sensor sees the part.
+    for (int i = 0; i < 250; i++) {
+      sim.step();
+    }
+    assertThat(c.status().line()).isEqualTo(4);
+    c.registers().setBit(IoKind.DI, 1, true);
+    for (int i = 0; i < 10_000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.activeAlarms()).isEmpty();
+    // The line after the motion ran (no jump), and the arm stopped short of B, on the line A-B.
+    assertThat(c.registers().number(1)).isEqualTo(1);
+    assertThat(c.registers().number(2)).isEqualTo(2);
+    Vec3 p = c.tcpInWorld().position();
+    assertThat(p.distanceTo(B)).isGreaterThan(100);
+    assertThat(p.distanceTo(A)).isGreaterThan(50);
+    assertThat(p.distanceTo(A) + p.distanceTo(B)).isCloseTo(A.distanceTo(B), org.assertj.core.data.Offset.offset(0.5));
   }
 
   @Test

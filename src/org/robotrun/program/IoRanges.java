@@ -1,0 +1,90 @@
+package org.robotrun.program;
+
+import java.util.Arrays;
+import java.util.Map;
+
+/**
+ * How many ports of each I/O kind a controller has (its configured index ranges): {@code DO[i]}
+ * is valid for 1 ≤ i ≤ {@code size(DO)}. An index beyond the range alarms when the line runs, as
+ * on the controller where the port is not assigned. Defaults are those of an R-30iB with its
+ * usual I/O: DI/DO 1..512, robot I/O RI/RO 1..8 (the end-effector connector), GI/GO 1..100,
+ * flags F 1..200. A scenario may set other sizes per robot ({@code "io"}, docs/scenario-format.md).
+ */
+public final class IoRanges {
+  /** The largest size RobotRun accepts for any kind. */
+  public static final int MAX_SIZE = 4096;
+
+  /** DI/DO 512, RI/RO 8, GI/GO 100, F 200. */
+  public static final IoRanges DEFAULT = new IoRanges(defaults());
+
+  private final int[] sizes;
+
+  private IoRanges(int[] sizes) {
+    this.sizes = sizes;
+  }
+
+  private static int[] defaults() {
+    int[] s = new int[IoKind.values().length];
+    s[IoKind.DI.ordinal()] = 512;
+    s[IoKind.DO.ordinal()] = 512;
+    s[IoKind.RI.ordinal()] = 8;
+    s[IoKind.RO.ordinal()] = 8;
+    s[IoKind.GI.ordinal()] = 100;
+    s[IoKind.GO.ordinal()] = 100;
+    s[IoKind.F.ordinal()] = Registers.FLAG_COUNT;
+    return s;
+  }
+
+  /**
+   * The defaults with the given kinds resized, e.g. {@code {"DO": 1024}}.
+   *
+   * @throws IllegalArgumentException naming the kind if one is unknown or a size is outside 1..{@link #MAX_SIZE}
+   */
+  public static IoRanges of(Map<String, Integer> sizes) {
+    int[] s = defaults();
+    for (Map.Entry<String, Integer> e : sizes.entrySet()) {
+      IoKind k = kind(e.getKey());
+      int n = e.getValue();
+      if (n < 1 || n > MAX_SIZE) {
+        throw new IllegalArgumentException(e.getKey() + ": expected a number of ports 1.." + MAX_SIZE + ", got " + n);
+      }
+      s[k.ordinal()] = n;
+    }
+    return new IoRanges(s);
+  }
+
+  /** The kind named {@code name} (DI, DO, RI, RO, GI, GO, F). */
+  public static IoKind kind(String name) {
+    for (IoKind k : IoKind.values()) {
+      if (k.name().equals(name)) {
+        return k;
+      }
+    }
+    throw new IllegalArgumentException("unknown I/O kind '" + name + "': expected one of "
+        + Arrays.toString(IoKind.values()).replace("[", "").replace("]", ""));
+  }
+
+  /** The highest valid index of {@code kind}. */
+  public int size(IoKind kind) {
+    return sizes[kind.ordinal()];
+  }
+
+  @Override
+  public boolean equals(Object o) {
+    return o instanceof IoRanges r && Arrays.equals(sizes, r.sizes);
+  }
+
+  @Override
+  public int hashCode() {
+    return Arrays.hashCode(sizes);
+  }
+
+  @Override
+  public String toString() {
+    StringBuilder b = new StringBuilder("IoRanges[");
+    for (IoKind k : IoKind.values()) {
+      b.append(k.name()).append('=').append(sizes[k.ordinal()]).append(k == IoKind.F ? "]" : ", ");
+    }
+    return b.toString();
+  }
+}
