@@ -161,7 +161,7 @@ public final class GuiCommand implements Callable<Integer> {
     // File ▸ Open workspace ends one window and starts the next on the other folder.
     while (next != null) {
       Path[] switchTo = {null};
-      Session s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forUser());
+      Session s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forWorkspace(next));
       // Programs opened from the file manager join the workspace's list (the first window only).
       extraPrograms.forEach(s.controller()::saveProgram);
       extraPrograms = List.of();
