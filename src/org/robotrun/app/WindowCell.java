@@ -1,6 +1,7 @@
 package org.robotrun.app;
 
 import imgui.ImGui;
+import org.robotrun.ui.Txt;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -69,16 +70,16 @@ final class WindowCell {
       }
     }
     ImGui.separator();
-    ImGui.textDisabled(session.workspace.folder().toString());
+    Txt.disabled(session.workspace.folder().toString());
     if (session.workspace.readOnly()) {
-      ImGui.textColored(0.95f, 0.7f, 0.2f, 1f, "read-only");
+      Txt.colored(0.95f, 0.7f, 0.2f, 1f, "read-only");
     } else if (!session.autosave.problem().isEmpty()) {
-      ImGui.textColored(0.95f, 0.3f, 0.3f, 1f, "NOT SAVED");
+      Txt.colored(0.95f, 0.3f, 0.3f, 1f, "NOT SAVED");
       if (ImGui.isItemHovered()) {
-        ImGui.setTooltip(session.autosave.problem());
+        Txt.tooltip(session.autosave.problem());
       }
     } else if (!session.autosave.status().isEmpty()) {
-      ImGui.textDisabled(session.autosave.status());
+      Txt.disabled(session.autosave.status());
     }
   }
 

@@ -140,13 +140,13 @@ public final class CellEditorPanel {
       redo();
     }
     ImGui.sameLine();
-    ImGui.textDisabled("Ctrl+Z / Ctrl+Y");
+    Txt.disabled("Ctrl+Z / Ctrl+Y");
     drawSave();
     if (!message.isEmpty()) {
       if (messageIsError) {
         ImGui.pushStyleColor(imgui.flag.ImGuiCol.Text, 1f, 0.45f, 0.35f, 1f);
       }
-      ImGui.textWrapped(message);
+      Txt.wrapped(message);
       if (messageIsError) {
         ImGui.popStyleColor();
       }
@@ -163,7 +163,7 @@ public final class CellEditorPanel {
 
   private void drawScenarios() {
     var scenarios = editor.scenarios();
-    ImGui.textDisabled("Scenario");
+    Txt.disabled("Scenario");
     ImGui.setNextItemWidth(-1);
     if (ImGui.beginCombo("##scenario", editor.active().name().isBlank() ? "(unnamed)" : editor.active().name())) {
       for (int i = 0; i < scenarios.size(); i++) {
@@ -200,7 +200,7 @@ public final class CellEditorPanel {
     ImGui.setNextItemWidth(ImGui.getFontSize() * 3);
     ImGui.inputText("##stlscale", stlScale);
     if (ImGui.isItemHovered()) {
-      ImGui.setTooltip("scale: mm per file unit (1000 for a file in metres)");
+      Txt.tooltip("scale: mm per file unit (1000 for a file in metres)");
     }
     ImGui.sameLine();
     if (ImGui.button("Add STL")) {
@@ -222,7 +222,7 @@ public final class CellEditorPanel {
   }
 
   private void drawObjectList() {
-    ImGui.textDisabled("Objects (click one here or in the 3D view)");
+    Txt.disabled("Objects (click one here or in the 3D view)");
     float h = Math.min(6, Math.max(1, editor.world().objects().size())) * ImGui.getTextLineHeightWithSpacing() + 6;
     if (ImGui.beginListBox("##objects", -1, h)) {
       for (WorldObject o : editor.world().objects()) {
@@ -245,7 +245,7 @@ public final class CellEditorPanel {
       return r;
     });
     ImGui.alignTextToFramePadding();
-    ImGui.text("kind");
+    ImGui.textUnformatted("kind");
     ImGui.sameLine();
     if (ImGui.radioButton("part", o.kind() == ObjectKind.PART) && o.kind() != ObjectKind.PART) {
       report(editor.setKind(name, ObjectKind.PART));
@@ -255,7 +255,7 @@ public final class CellEditorPanel {
       report(editor.setKind(name, ObjectKind.FIXTURE));
     }
     ImGui.alignTextToFramePadding();
-    ImGui.text("parent");
+    ImGui.textUnformatted("parent");
     ImGui.sameLine();
     ImGui.setNextItemWidth(-1);
     if (ImGui.beginCombo("##parent", o.startParent().orElse("(the cell)"))) {
@@ -271,16 +271,16 @@ public final class CellEditorPanel {
       ImGui.endCombo();
     }
     field("colour", name, o.colour().hex(), t -> editor.setColour(name, t));
-    ImGui.textDisabled("pose on its parent (mm, deg)");
+    Txt.disabled("pose on its parent (mm, deg)");
     numbers(name, NumberField.X, NumberField.Y, NumberField.Z);
     numbers(name, NumberField.W, NumberField.P, NumberField.R);
-    ImGui.textDisabled("size");
+    Txt.disabled("size");
     switch (o.shape()) {
       case Shape.Box b -> numbers(name, NumberField.LENGTH, NumberField.WIDTH, NumberField.HEIGHT);
       case Shape.Cylinder c -> numbers(name, NumberField.RADIUS, NumberField.HEIGHT);
       case Shape.Mesh m -> {
         numbers(name, NumberField.SCALE);
-        ImGui.textDisabled(m.file().getFileName().toString());
+        Txt.disabled(m.file().getFileName().toString());
       }
     }
     if (ImGui.button("Duplicate")) {
@@ -309,7 +309,7 @@ public final class CellEditorPanel {
       }
       NumberField f = fs[i];
       ImGui.alignTextToFramePadding();
-      ImGui.textDisabled(shortLabel(f));
+      Txt.disabled(shortLabel(f));
       ImGui.sameLine();
       double v = editor.number(object, f);
       String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "");
@@ -331,7 +331,7 @@ public final class CellEditorPanel {
 
   private void field(String label, String object, String value, Function<String, Result> apply) {
     ImGui.alignTextToFramePadding();
-    ImGui.text(label);
+    ImGui.textUnformatted(label);
     ImGui.sameLine(ImGui.getFontSize() * 4);
     ImGui.setNextItemWidth(-1);
     textInput(label, object + "/" + label, value, apply, label);
@@ -345,7 +345,7 @@ public final class CellEditorPanel {
     ImString buf = fields.computeIfAbsent(key, k -> new ImString(value, 64));
     boolean enter = ImGui.inputTextWithHint("##" + key, label, buf, ImGuiInputTextFlags.EnterReturnsTrue | ImGuiInputTextFlags.AutoSelectAll);
     if (ImGui.isItemHovered()) {
-      ImGui.setTooltip(hint);
+      Txt.tooltip(hint);
     }
     if (!ImGui.isItemActive() && !enter && !buf.get().equals(value) && !ImGui.isItemDeactivatedAfterEdit()) {
       buf.set(value);  // the model changed (undo, another field): show it

@@ -27,7 +27,7 @@ public final class CellPanel {
         sim.resetScene();
       }
       if (ImGui.isItemHovered()) {
-        ImGui.setTooltip("Every part back at its start pose; the gripper lets go");
+        Txt.tooltip("Every part back at its start pose; the gripper lets go");
       }
       if (ImGui.checkbox("Show collision boxes", showBoxes)) {
         sim.setShowCollisionBoxes(showBoxes.get());
@@ -36,9 +36,9 @@ public final class CellPanel {
         sim.setCollisionAlarms(alarms.get());
       }
       var held = sim.heldParts();
-      ImGui.textDisabled(held.isEmpty() ? "holding nothing" : "holding " + String.join(", ", held.keySet()));
+      Txt.disabled(held.isEmpty() ? "holding nothing" : "holding " + String.join(", ", held.keySet()));
       int n = sim.collisionEvents().size();
-      ImGui.textDisabled(n == 0 ? "no collisions" : n + " collision" + (n == 1 ? "" : "s") + " so far");
+      Txt.disabled(n == 0 ? "no collisions" : n + " collision" + (n == 1 ? "" : "s") + " so far");
     }
   }
 }

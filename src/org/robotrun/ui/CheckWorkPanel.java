@@ -61,10 +61,10 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
     ImGui.setNextWindowBgAlpha(0.95f);
     if (ImGui.begin("Check my work", open, ImGuiWindowFlags.NoCollapse)) {
       ImGui.pushTextWrapPos(0);
-      ImGui.text(grader.task().title());
+      ImGui.textUnformatted(grader.task().title());
       boolean busy = running != null && !running.isDone();
       if (busy) {
-        ImGui.textDisabled("checking...");
+        Txt.disabled("checking...");
       } else if (ImGui.button("Check my work")) {
         start();
       }
@@ -78,15 +78,15 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
         running = null;
       }
       if (!error.isEmpty()) {
-        ImGui.text(error);
+        ImGui.textUnformatted(error);
       }
       if (last != null) {
-        ImGui.text(String.format(Locale.ROOT, "%s of %s points", fmt(last.score()), fmt(last.maxScore())));
+        ImGui.textUnformatted(String.format(Locale.ROOT, "%s of %s points", fmt(last.score()), fmt(last.maxScore())));
         for (CheckResult c : last.checks()) {
-          ImGui.textColored(c.passed() ? 0.3f : 0.95f, c.passed() ? 0.8f : 0.35f, c.passed() ? 0.4f : 0.3f, 1f,
+          Txt.colored(c.passed() ? 0.3f : 0.95f, c.passed() ? 0.8f : 0.35f, c.passed() ? 0.4f : 0.3f, 1f,
               (c.passed() ? "PASS " : "FAIL ") + fmt(c.score()) + "/" + fmt(c.maxScore()) + "  " + c.name());
           ImGui.indent();
-          ImGui.textDisabled(c.feedback());
+          Txt.disabled(c.feedback());
           ImGui.unindent();
         }
       }

@@ -201,7 +201,7 @@ public final class FileMenu {
       ImGui.endMenu();
     }
     if (!status.isEmpty() && ImGui.getTime() < statusUntil) {
-      ImGui.textDisabled(status);
+      Txt.disabled(status);
     }
   }
 
@@ -239,7 +239,7 @@ public final class FileMenu {
       openPathPopup = false;
     }
     if (ImGui.beginPopupModal("Path##file", ImGuiWindowFlags.AlwaysAutoResize)) {
-      ImGui.textWrapped(pathPrompt);
+      Txt.wrapped(pathPrompt);
       ImGui.setNextItemWidth(520);
       if (ImGui.isWindowAppearing()) {
         ImGui.setKeyboardFocusHere();
@@ -267,8 +267,8 @@ public final class FileMenu {
     }
     if (ImGui.beginPopupModal("Changed on disk", ImGuiWindowFlags.AlwaysAutoResize)) {
       Path file = conflicts.peek();
-      ImGui.text(file + " was changed outside RobotRun,");
-      ImGui.text("and the program was also edited here. Which version do you keep?");
+      ImGui.textUnformatted(file + " was changed outside RobotRun,");
+      ImGui.textUnformatted("and the program was also edited here. Which version do you keep?");
       if (ImGui.button("Keep the window's version")) {
         actions.resolveConflict(conflicts.poll(), false);
         ImGui.closeCurrentPopup();
@@ -303,7 +303,7 @@ public final class FileMenu {
       handInError = "";
     }
     if (ImGui.beginPopupModal("Hand in", ImGuiWindowFlags.AlwaysAutoResize)) {
-      ImGui.text("Writes one .zip of this workspace (cell.json, programs/*.LS, manifest.json) for your instructor.");
+      ImGui.textUnformatted("Writes one .zip of this workspace (cell.json, programs/*.LS, manifest.json) for your instructor.");
       ImGui.setNextItemWidth(400);
       ImGui.inputText("Your name", student);
       ImGui.setNextItemWidth(400);
@@ -317,11 +317,11 @@ public final class FileMenu {
       }
       if (!handInError.isEmpty()) {
         ImGui.pushTextWrapPos(640);
-        ImGui.textColored(0.95f, 0.3f, 0.3f, 1f, handInError);
+        Txt.colored(0.95f, 0.3f, 0.3f, 1f, handInError);
         ImGui.popTextWrapPos();
       }
       if (askReplace) {
-        ImGui.textColored(0.95f, 0.7f, 0.2f, 1f, handInPath.get() + " exists.");
+        Txt.colored(0.95f, 0.7f, 0.2f, 1f, handInPath.get() + " exists.");
         if (ImGui.button("Replace it")) {
           finishHandIn(true);
         }

@@ -67,23 +67,23 @@ public final class HelpWindows {
       if (ImGui.begin("First steps", welcome, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
         ImGui.pushTextWrapPos(ImGui.getFontSize() * 34);
         if (!task.isBlank()) {
-          ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "Your task");
-          ImGui.textWrapped(task);
+          Txt.colored(0.95f, 0.8f, 0.35f, 1f, "Your task");
+          Txt.wrapped(task);
           ImGui.separator();
         }
-        ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "1. TP ENABLE, DEADMAN, SHIFT");
-        ImGui.textWrapped("As on a real teach pendant the robot only moves with TP ENABLE on and the DEADMAN and "
+        Txt.colored(0.95f, 0.8f, 0.35f, 1f, "1. TP ENABLE, DEADMAN, SHIFT");
+        Txt.wrapped("As on a real teach pendant the robot only moves with TP ENABLE on and the DEADMAN and "
             + "SHIFT held: click DEADMAN above the LCD (or hold Space) and hold Shift. Letting the DEADMAN go is "
             + "alarm SRVO-003 (hold it, then RESET = F12). The cell starts in T1 (at most 250 mm/s) at 10% override.");
-        ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "2. Jogging");
-        ImGui.textWrapped("With the DEADMAN held, hold Shift and Q W E R T Y to move +J1..+J6 (or +X +Y +Z +W +P +R), "
+        Txt.colored(0.95f, 0.8f, 0.35f, 1f, "2. Jogging");
+        Txt.wrapped("With the DEADMAN held, hold Shift and Q W E R T Y to move +J1..+J6 (or +X +Y +Z +W +P +R), "
             + "A S D F G H for the minus direction. F7 (COORD) switches JOINT / JGFRM / WORLD / TOOL / USER. "
             + "Page Up / Page Down change the speed override.");
-        ImGui.textColored(0.95f, 0.8f, 0.35f, 1f, "3. Your first program");
-        ImGui.textWrapped("SELECT (Insert) -> F1 CREATE, type a name, Enter. Then jog and press Shift+F1 "
+        Txt.colored(0.95f, 0.8f, 0.35f, 1f, "3. Your first program");
+        Txt.wrapped("SELECT (Insert) -> F1 CREATE, type a name, Enter. Then jog and press Shift+F1 "
             + "(POINT) to record each position. Shift+F9 (FWD) runs it while you keep Shift held (T1 hold-to-run).");
         ImGui.separator();
-        ImGui.textDisabled("Every key: Help > Key map (Ctrl+H).  Hover a pendant key to see its keyboard key.");
+        Txt.disabled("Every key: Help > Key map (Ctrl+H).  Hover a pendant key to see its keyboard key.");
         ImGui.popTextWrapPos();
         if (ImGui.button("Got it")) {
           welcome.set(false);
@@ -95,7 +95,7 @@ public final class HelpWindows {
       ImGui.setNextWindowPos(cx, cy, ImGuiCond.Appearing, 0.5f, 0.5f);
       ImGui.setNextWindowSizeConstraints(0, 0, Math.max(200, view.w() - 20), Math.max(150, view.h() - 20));
       if (ImGui.begin("Key map (Ctrl+H)", keyMap, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
-        ImGui.textDisabled("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.");
+        Txt.disabled("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.");
         // the keypad keys are their own characters: one line for them below
         var map = PendantKeyboard.keyMap().stream().filter(r -> !r[0].matches("[0-9.,\\-]")).toList();
         int half = (map.size() + 1) / 2;
@@ -111,11 +111,11 @@ public final class HelpWindows {
           }
           ImGui.endTable();
         }
-        ImGui.text("0-9 . - ,   the keypad");
+        ImGui.textUnformatted("0-9 . - ,   the keypad");
         ImGui.separator();
         ImGui.pushTextWrapPos(ImGui.getFontSize() * 30);
-        ImGui.textWrapped("Window: Ctrl+H or ? this map, Ctrl+Z / Ctrl+Y undo / redo a cell edit, Home resets the view.");
-        ImGui.textWrapped("Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object.");
+        Txt.wrapped("Window: Ctrl+H or ? this map, Ctrl+Z / Ctrl+Y undo / redo a cell edit, Home resets the view.");
+        Txt.wrapped("Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object.");
         ImGui.popTextWrapPos();
       }
       ImGui.end();
@@ -123,7 +123,7 @@ public final class HelpWindows {
     if (guides.get()) {
       ImGui.setNextWindowPos(cx, cy, ImGuiCond.Appearing, 0.5f, 0.5f);
       if (ImGui.begin("User guide", guides, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
-        ImGui.text("The guides come with RobotRun, in its docs folder:");
+        ImGui.textUnformatted("The guides come with RobotRun, in its docs folder:");
         guide("Getting started, the window, the keyboard", USER_GUIDE);
         guide("The teach pendant, screen by screen", PENDANT_GUIDE);
         guide("The TP language", TP_GUIDE);
@@ -133,7 +133,7 @@ public final class HelpWindows {
   }
 
   private static void guide(String what, String path) {
-    ImGui.bulletText(what + ":  " + path);
+    Txt.bullet(what + ":  " + path);
     ImGui.sameLine();
     if (ImGui.smallButton("Copy##" + path)) {
       ImGui.setClipboardText(path);

@@ -22,7 +22,7 @@ public final class OperatorPanel {
   /** The panel's controls, inside whatever window or section the caller opened. */
   public void drawContents() {
     RobotControl.Mode mode = pendant.control().mode();
-    ImGui.text("Mode");
+    ImGui.textUnformatted("Mode");
     for (RobotControl.Mode m : RobotControl.Mode.values()) {
       ImGui.sameLine();
       if (ImGui.radioButton(m.name() + "##mode", mode == m) && m != mode) {

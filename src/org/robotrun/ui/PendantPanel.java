@@ -157,9 +157,9 @@ public final class PendantPanel {
 
   private void drawTextEntry() {
     ImGui.alignTextToFramePadding();
-    ImGui.textDisabled("Type");
+    Txt.disabled("Type");
     if (ImGui.isItemHovered()) {
-      ImGui.setTooltip("Text for an open entry (a program name, a comment); Enter sends it and presses ENTER.\n"
+      Txt.tooltip("Text for an open entry (a program name, a comment); Enter sends it and presses ENTER.\n"
           + "The keyboard goes back to the pendant after Enter.");
     }
     ImGui.sameLine();
@@ -242,7 +242,7 @@ public final class PendantPanel {
         ImGui.getItemRectSizeX(), ImGui.getItemRectSizeY()));
     if (ImGui.isItemHovered()) {
       String sc = PendantKeyboard.shortcut(k);
-      ImGui.setTooltip(k.label() + (sc.isEmpty() ? "  (no keyboard key: click it)" : "   keyboard: " + sc)
+      Txt.tooltip(k.label() + (sc.isEmpty() ? "  (no keyboard key: click it)" : "   keyboard: " + sc)
           + (k.isJog() ? "\nhold the DEADMAN and SHIFT, then this key, to jog" : ""));
     }
   }

@@ -13,21 +13,21 @@ public final class RobotStatusPanel {
    */
   public static void drawContents(double[] pendantDeg, Xyzwpr flangeInWorld) {
     {
-      ImGui.text("JOINT (deg)");
+      ImGui.textUnformatted("JOINT (deg)");
       for (int i = 0; i < pendantDeg.length; i++) {
-        ImGui.text(String.format(java.util.Locale.ROOT, "  J%d %9.3f", i + 1, shown(pendantDeg[i])));
+        ImGui.textUnformatted(String.format(java.util.Locale.ROOT, "  J%d %9.3f", i + 1, shown(pendantDeg[i])));
       }
       ImGui.separator();
-      ImGui.text("WORLD, flange (mm, deg)");
+      ImGui.textUnformatted("WORLD, flange (mm, deg)");
       Xyzwpr p = flangeInWorld;
-      ImGui.text(String.format(java.util.Locale.ROOT, "  X %9.3f  W %8.3f", shown(p.x()), shown(p.wDeg())));
-      ImGui.text(String.format(java.util.Locale.ROOT, "  Y %9.3f  P %8.3f", shown(p.y()), shown(p.pDeg())));
-      ImGui.text(String.format(java.util.Locale.ROOT, "  Z %9.3f  R %8.3f", shown(p.z()), shown(p.rDeg())));
+      ImGui.textUnformatted(String.format(java.util.Locale.ROOT, "  X %9.3f  W %8.3f", shown(p.x()), shown(p.wDeg())));
+      ImGui.textUnformatted(String.format(java.util.Locale.ROOT, "  Y %9.3f  P %8.3f", shown(p.y()), shown(p.pDeg())));
+      ImGui.textUnformatted(String.format(java.util.Locale.ROOT, "  Z %9.3f  R %8.3f", shown(p.z()), shown(p.rDeg())));
       ImGui.separator();
       ImGui.pushTextWrapPos(0);
-      ImGui.textDisabled("Mouse: drag orbit, right-drag pan, wheel zoom, Home resets");
+      Txt.disabled("Mouse: drag orbit, right-drag pan, wheel zoom, Home resets");
       ImGui.popTextWrapPos();
-      ImGui.textDisabled(String.format(java.util.Locale.ROOT, "%.0f frames/s", ImGui.getIO().getFramerate()));
+      Txt.disabled(String.format(java.util.Locale.ROOT, "%.0f frames/s", ImGui.getIO().getFramerate()));
     }
   }
 

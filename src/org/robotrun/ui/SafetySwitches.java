@@ -60,7 +60,7 @@ public final class SafetySwitches {
 
   static void hint(String text) {
     if (ImGui.isItemHovered()) {
-      ImGui.setTooltip(text);
+      Txt.tooltip(text);
     }
   }
 }

@@ -343,7 +343,7 @@ public final class Workbench implements SimulatorWindow.Panels {
       }
       state.taskOpen = section("Task", state.taskOpen);
       if (state.taskOpen) {
-        ImGui.textWrapped(task.isBlank() ? "No task: this cell is free play. Help > First steps shows how to start." : task);
+        Txt.wrapped(task.isBlank() ? "No task: this cell is free play. Help > First steps shows how to start." : task);
       }
       for (Section extra : sections) {
         boolean open = section(extra.title(), sectionOpen.getOrDefault(extra.title(), true));
@@ -366,7 +366,7 @@ public final class Workbench implements SimulatorWindow.Panels {
           editorPanel.drawContents();
         }
       } else {
-        ImGui.textDisabled("Open a scenario to edit its cell:\n  robotrun --scenario FILE.json");
+        Txt.disabled("Open a scenario to edit its cell:\n  robotrun --scenario FILE.json");
       }
     }
     ImGui.end();
@@ -388,7 +388,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), 200);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
         | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav | ImGuiWindowFlags.NoInputs)) {
-      ImGui.textColored(1f, 0.55f, 0.45f, 1f, editorPanel.message());
+      Txt.colored(1f, 0.55f, 0.45f, 1f, editorPanel.message());
     }
     ImGui.end();
   }
