@@ -234,8 +234,10 @@ public final class Interpreter {
       String program = cur.prog.name;
       cancelWait();
       deactivate(program, line);
-      // an alarm that paused the program stays until RESET; the program is no longer active
+      // the program is no longer active; the controller keeps the alarm shown until RESET
       alarmPaused = false;
+      alarm = null;
+      alarmOutcome = null;
     }
   }
 

@@ -86,6 +86,27 @@ class AlarmSeverityTest {
   }
 
   @Test
+  void fctnAbortEndsAProgramAStopAlarmPaused() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(ControllerTest.jointProgram("SUB", "J P[2] 50% FINE", new double[] {0, 0, 0, 0, -90, 0},
+        new double[] {0, 0, 0, 0, -140, 0}));
+    c.saveProgram(main("CALL SUB", "R[1]=R[1]+1"));
+    c.run("MAIN", 1, true);
+    stepWhileRunning(sim, c);
+    assertThat(c.interpreter().callDepth()).isEqualTo(2);
+    c.abort();
+    assertThat(c.interpreter().callDepth()).isZero();
+    assertThat(c.hasActiveAlarm()).as("the alarm stays shown until RESET").isTrue();
+    c.reset();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    // a new start runs MAIN from line 1 again
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    stepWhileRunning(sim, c);
+    assertThat(c.status()).isEqualTo(new ExecutionStatus("SUB", 2, ExecutionStatus.State.ALARMED));
+  }
+
+  @Test
   void abortSeverityEndsTheProgramAndLosesTheCallStack() {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
