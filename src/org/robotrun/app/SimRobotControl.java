@@ -295,7 +295,8 @@ public final class SimRobotControl implements RobotControl {
       case IDLE -> ExecState.IDLE;
       case RUNNING -> ExecState.RUNNING;
       case PAUSED -> ExecState.PAUSED;
-      case ALARMED -> ExecState.ABORTED;
+      // a PAUSE/STOP/SERVO alarm keeps the program (and its call stack): it reads PAUSED; ABORT ended it
+      case ALARMED -> controller.interpreter().callDepth() > 0 ? ExecState.PAUSED : ExecState.ABORTED;
     };
     return new ExecutionStatus(s.program(), s.line(), state);
   }

@@ -61,14 +61,14 @@ public enum AlarmCode {
       "Teach the position (move the arm there and TOUCHUP), or add the OFFSET CONDITION before the move."),
 
   // ---- motion -------------------------------------------------------------------------------
-  MOTN_017("MOTN-017", AlarmSeverity.ABORT, "Limit error", Source.VERIFIED,
+  MOTN_017("MOTN-017", AlarmSeverity.STOP, "Limit error", Source.VERIFIED,
       "A joint would have to pass its limit to reach the target or a point on the way to it.",
       "RESET, then choose a target the joints can reach, another configuration (CONFIG), or a joint move (J) "
           + "instead of a straight line (L)."),
-  MOTN_018("MOTN-018", AlarmSeverity.ABORT, "Position not reachable", Source.RECALLED,
+  MOTN_018("MOTN-018", AlarmSeverity.STOP, "Position not reachable", Source.RECALLED,
       "The target (or a point of the straight or circular path) is out of the arm's reach.",
       "RESET and move the target closer to the robot, or check the user and tool frames it was taught in."),
-  MOTN_023("MOTN-023", AlarmSeverity.ABORT, "In singularity", Source.VERIFIED,
+  MOTN_023("MOTN-023", AlarmSeverity.STOP, "In singularity", Source.VERIFIED,
       "A straight or circular move runs the wrist into its singularity (J5 near 0: J4 and J6 in line), where the "
           + "joints would have to turn infinitely fast.",
       "RESET, then tilt the tool a little at that point so J5 stays away from 0, or use a joint move (J) there."),

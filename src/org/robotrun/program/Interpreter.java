@@ -44,7 +44,11 @@ public final class Interpreter {
     RUNNING,
     /** Stopped and resumable (HOLD, PAUSE, STEP, after a backward step). */
     PAUSED,
-    /** Stopped by an alarm; {@link #reset()} clears it. */
+    /**
+     * Stopped by an alarm; {@link #reset()} clears it. An ABORT-severity alarm ended the program
+     * (RESET leaves it IDLE); a PAUSE/STOP/SERVO one keeps it paused on the faulty line with its
+     * call stack (RESET leaves it PAUSED, SHIFT+FWD re-runs that line).
+     */
     ALARMED
   }
 
@@ -81,6 +85,8 @@ public final class Interpreter {
   private boolean stepMode;
   private Alarm alarm;
   private Outcome alarmOutcome;
+  /** The alarm paused the program (call stack kept) instead of ending it. */
+  private boolean alarmPaused;
   private Outcome haltOutcome = Outcome.FINISHED;
   private String selected = "";
   private int cursorLine = 1;
@@ -209,19 +215,29 @@ public final class Interpreter {
    */
   public void reset() {
     if (state == State.ALARMED) {
-      state = State.IDLE;
+      state = alarmPaused ? State.PAUSED : State.IDLE;
+      alarmPaused = false;
       alarm = null;
       alarmOutcome = null;
     }
   }
 
+  /** Whether a program is on the stack: running, paused, or paused by an alarm not yet reset. */
+  private boolean active() {
+    return state == State.RUNNING || state == State.PAUSED || (state == State.ALARMED && alarmPaused);
+  }
+
   /** FCTN ABORT: ends the active program (cancelling its motion); the cursor stays where it was. */
   public void abort() {
-    if (state == State.RUNNING || state == State.PAUSED) {
+    if (active()) {
       int line = cursorLine();
       String program = cur.prog.name;
       cancelWait();
       deactivate(program, line);
+      // the program is no longer active; the controller keeps the alarm shown until RESET
+      alarmPaused = false;
+      alarm = null;
+      alarmOutcome = null;
     }
   }
 
@@ -537,13 +553,30 @@ public final class Interpreter {
     return null;
   }
 
+  /**
+   * Stops the program on an alarm, as its severity says (docs/alarms.md): ABORT ends it (the
+   * cursor stays on the alarm's line of the program that raised it); PAUSE, STOP and SERVO keep
+   * the call stack with the faulty line next, so RESET then SHIFT+FWD runs that line again.
+   */
   private Outcome raise(AlarmSignal a, String program, int line) {
     cancelWait();
     alarm = new Alarm(a.kind, a.code, program, line, a.getMessage());
     alarmOutcome = new Outcome.Alarmed(alarm);
-    deactivate(program, line);
+    if (pausesProgram(a) && cur != null && cur.prog.name.equals(program) && line >= 1) {
+      cur.pc = Math.min(line - 1, cur.prog.ops.length);
+      alarmPaused = true;
+    } else {
+      deactivate(program, line);
+      alarmPaused = false;
+    }
     state = State.ALARMED;
     return alarmOutcome;
+  }
+
+  /** Whether the alarm's severity pauses the program (PAUSE, STOP, SERVO) rather than ending it. */
+  private static boolean pausesProgram(AlarmSignal a) {
+    AlarmSeverity s = AlarmCode.of(a.code).map(AlarmCode::severity).orElse(a.kind.entry().severity());
+    return s == AlarmSeverity.PAUSE || s == AlarmSeverity.STOP || s == AlarmSeverity.SERVO;
   }
 
   private void deactivate(String program, int line) {
@@ -566,7 +599,7 @@ public final class Interpreter {
   }
 
   private void requireIdle(String what) {
-    if (state == State.RUNNING || state == State.PAUSED) {
+    if (active()) {
       throw new IllegalStateException("cannot " + what + " while program " + currentProgram() + " is active");
     }
   }

@@ -608,6 +608,10 @@ public final class Controller implements MotionPort {
     if (!activeAlarms.isEmpty()) {
       return CommandResult.refused("alarm active: RESET first (" + activeAlarms.get(0).display() + ")");
     }
+    if (interpreter.state() == Interpreter.State.ALARMED && interpreter.callDepth() > 0) {
+      // an alarm paused the program (not yet seen by a tick): it keeps its stack until RESET
+      return CommandResult.refused("alarm active: RESET first (" + interpreter.alarm().map(Alarm::display).orElse("") + ")");
+    }
     Program p = programs.get(programName);
     if (p == null) {
       return CommandResult.refused("no program " + programName);
