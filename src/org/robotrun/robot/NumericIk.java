@@ -91,6 +91,8 @@ public final class NumericIk {
   private static final double SINGULAR_MANIPULABILITY = 1e-4;
   /** λ0: keeps the normal equations positive definite at singularities. */
   private static final double BASE_DAMPING = 1e-9;
+  /** The least λ0 when the error is tiny: still well above rounding in the normal equations. */
+  private static final double MIN_DAMPING = 1e-14;
 
   private final KinematicChain chain;
   private final Settings settings;
@@ -306,10 +308,19 @@ public final class NumericIk {
     for (int c = 0; c < 18; c++) {
       jac[c] *= invL;
     }
-    double lambda = settings.dampingGain() * e + BASE_DAMPING;
+    // λ0 shrinks with the error (down to a floor): near a singular wrist (J5 within ~1e-4 rad
+    // of 0) the smallest singular value σ of Js is about |J5|, and a fixed λ0 ≫ σ² would let
+    // each step gain only σ²/(σ² + λ0) of the error along that direction (a crawl that ended
+    // a hair short of the tolerance).
+    double lambda = settings.dampingGain() * e + Math.max(MIN_DAMPING, Math.min(BASE_DAMPING, e));
     int locked = 0;
     for (int pass = 0; pass < 6; pass++) {
       solveNormalEquations(lambda, locked);
+      if (!finite(g)) {
+        // Cholesky lost positive definiteness to rounding on an exactly singular posture.
+        lambda += BASE_DAMPING;
+        solveNormalEquations(lambda, locked);
+      }
       int more = locked;
       for (int r = 0; r < 6; r++) {
         if ((q[r] <= lower[r] && g[r] < 0) || (q[r] >= upper[r] && g[r] > 0)) {
@@ -325,6 +336,14 @@ public final class NumericIk {
       double v = (locked & (1 << r)) != 0 ? q[r] : q[r] + g[r];
       q[r] = v < lower[r] ? lower[r] : (v > upper[r] ? upper[r] : v);
     }
+  }
+
+  private static boolean finite(double[] v) {
+    double s = 0;
+    for (double x : v) {
+      s += x;
+    }
+    return Double.isFinite(s);
   }
 
   /** g = Δq from the normal equations with the locked joints' columns left out (Δq = 0 there). */

@@ -84,6 +84,39 @@ class NumericIkCoverageTest {
     assertThat(ROBOT.firstJointOutsideLimits(sol)).isEqualTo(-1);
   }
 
+  /**
+   * Corners: each joint independently at a limit (exactly, or within 1e-6..0.05 rad of it) with
+   * probability one half, so several joints sit at their limits at once, and J5 at or near the
+   * wrist singularity (0, ±1e-7..±1e-3 rad) in most draws.
+   */
+  @Provide
+  Arbitrary<double[]> corners() {
+    double[] lo = ROBOT.lowerLimits();
+    double[] hi = ROBOT.upperLimits();
+    double[] offsets = {0, 0, 1e-9, 1e-6, 1e-4, 1e-3, 0.01, 0.05};
+    double[] wrist = {0, 0, 1e-7, -1e-7, 1e-6, -1e-5, 1e-4, -1e-4, 3e-4, -1e-3};
+    return Arbitraries.randomValue(r -> {
+      double[] q = new double[6];
+      for (int i = 0; i < 6; i++) {
+        q[i] = lo[i] + r.nextDouble() * (hi[i] - lo[i]);
+        if (r.nextBoolean()) {
+          double d = offsets[r.nextInt(offsets.length)];
+          q[i] = r.nextBoolean() ? lo[i] + d : hi[i] - d;
+        }
+      }
+      if (r.nextInt(4) != 0) {
+        q[4] = wrist[r.nextInt(wrist.length)];
+      }
+      return q;
+    });
+  }
+
+  @Property(seed = "1818", tries = 800, edgeCases = net.jqwik.api.EdgeCasesMode.NONE)
+  void severalJointsAtTheirLimitsWithTheWristSingularAreSolvedToo(@ForAll("corners") double[] q,
+      @ForAll("starts") int start) {
+    whatTheClosedFormFindsTheNumericSolverFindsToo(q, start);
+  }
+
   @Provide
   Arbitrary<Integer> starts() {
     return Arbitraries.of(0, 0, 1);
