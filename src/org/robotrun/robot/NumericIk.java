@@ -7,7 +7,7 @@ import org.robotrun.math.Transform;
 
 /**
  * Numeric position IK for any 6-axis arm: damped least squares (Levenberg–Marquardt) on the
- * analytic Jacobian, joints clamped to their limits after every step, restarts from a fixed,
+ * analytic Jacobian, joints kept inside their limits by an active set, restarts from a fixed,
  * deterministic list of seeds, and hard caps on iterations and time. Never returns null,
  * never hangs.
  *
@@ -22,8 +22,11 @@ import org.robotrun.math.Transform;
  * or after a per-attempt iteration budget; the next seed then starts: the caller's start, then
  * 64 seeds spread over the joint ranges (a Halton sequence), two of every three with J1 turned
  * toward or away from the target, with twins across J1's limit gap; then 32 seeds in the outer
- * tenth of each range (postures folded to their limits); and at last a patient polish of the
- * best posture found, which may be creeping along a limit.
+ * tenth of each range (postures folded to their limits); 16 seeds with the arm folded hard (J2
+ * at the top, J3 at the bottom of its range); and at last a patient polish of the best posture
+ * found, which may be creeping along a limit. A joint whose step would cross a limit is held at
+ * the limit and the rest of the step solved again (an active set), and λ0 shrinks with the
+ * error so the last steps near a singular wrist are Gauss–Newton.
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
