@@ -7,7 +7,7 @@ import org.robotrun.math.Transform;
 
 /**
  * Numeric position IK for any 6-axis arm: damped least squares (Levenberg–Marquardt) on the
- * analytic Jacobian, joints clamped to their limits after every step, restarts from a fixed,
+ * analytic Jacobian, joints kept inside their limits by an active set, restarts from a fixed,
  * deterministic list of seeds, and hard caps on iterations and time. Never returns null,
  * never hangs.
  *
@@ -22,8 +22,11 @@ import org.robotrun.math.Transform;
  * or after a per-attempt iteration budget; the next seed then starts: the caller's start, then
  * 64 seeds spread over the joint ranges (a Halton sequence), two of every three with J1 turned
  * toward or away from the target, with twins across J1's limit gap; then 32 seeds in the outer
- * tenth of each range (postures folded to their limits); and at last a patient polish of the
- * best posture found, which may be creeping along a limit.
+ * tenth of each range (postures folded to their limits); 16 seeds with the arm folded hard (J2
+ * at the top, J3 at the bottom of its range); and at last a patient polish of the best posture
+ * found, which may be creeping along a limit. A joint whose step would cross a limit is held at
+ * the limit and the rest of the step solved again (an active set), and λ0 shrinks with the
+ * error so the last steps near a singular wrist are Gauss–Newton.
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
@@ -80,7 +83,14 @@ public final class NumericIk {
    * near +139°, J3 near −68°, the wrist over the base) is a basin the middle seeds never start in.
    */
   private static final int EDGE_SEEDS = 32;
-  private static final int SEEDS = MIDDLE_SEEDS + EDGE_SEEDS;
+  /**
+   * Seeds with the arm folded hard: J2 at the top of its range and J3 at the bottom (the corner
+   * where the forearm lies back over the upper arm), the wrist spread by the Halton sequence.
+   * Targets with J2 and J3 pinned there and J1 or J6 at a limit too sit in basins so narrow that
+   * no edge seed started in them.
+   */
+  private static final int FOLDED_SEEDS = 16;
+  private static final int SEEDS = MIDDLE_SEEDS + EDGE_SEEDS + FOLDED_SEEDS;
   /** Middle seeds stay off the limits: the middle 80 % of each range. */
   private static final double SEED_MARGIN = 0.1;
   /** Iterations of the final polish from the best posture (a slow crawl along a limit). */
@@ -91,6 +101,8 @@ public final class NumericIk {
   private static final double SINGULAR_MANIPULABILITY = 1e-4;
   /** λ0: keeps the normal equations positive definite at singularities. */
   private static final double BASE_DAMPING = 1e-9;
+  /** The least λ0 when the error is tiny: still well above rounding in the normal equations. */
+  private static final double MIN_DAMPING = 1e-16;
 
   private final KinematicChain chain;
   private final Settings settings;
@@ -110,6 +122,8 @@ public final class NumericIk {
   private final double[] jt = new double[36];
   private final double[] invDiag = new double[6];
   private final double[] g = new double[6];
+  private final double[] rhs = new double[6];
+  private final double[] fixedStep = new double[6];
   private final double[] q = new double[6];
   private final double[] bestQ = new double[6];
   private final int[] perm = new int[6];
@@ -306,14 +320,36 @@ public final class NumericIk {
     for (int c = 0; c < 18; c++) {
       jac[c] *= invL;
     }
-    double lambda = settings.dampingGain() * e + BASE_DAMPING;
+    // λ0 shrinks with the error (down to a floor): near a singular wrist (J5 within ~1e-4 rad
+    // of 0) the smallest singular value σ of Js is about |J5|, and a fixed λ0 ≫ σ² would let
+    // each step gain only σ²/(σ² + λ0) of the error along that direction (a crawl that ended
+    // a hair short of the tolerance).
+    double lambda = settings.dampingGain() * e + Math.max(MIN_DAMPING, Math.min(BASE_DAMPING, e));
+    // Active set: a joint whose step would leave its range is held at the limit (Δq = the
+    // distance to it, its column taken out) and the rest of the step solved again for what is
+    // left of the error, so the other joints make up for it instead of the step being cut short.
     int locked = 0;
+    System.arraycopy(err, 0, rhs, 0, 6);
     for (int pass = 0; pass < 6; pass++) {
       solveNormalEquations(lambda, locked);
+      if (!finite(g)) {
+        // Cholesky lost positive definiteness to rounding on an exactly singular posture.
+        lambda += BASE_DAMPING;
+        solveNormalEquations(lambda, locked);
+      }
       int more = locked;
       for (int r = 0; r < 6; r++) {
-        if ((q[r] <= lower[r] && g[r] < 0) || (q[r] >= upper[r] && g[r] > 0)) {
+        if ((locked & (1 << r)) != 0) {
+          continue;
+        }
+        double v = q[r] + g[r];
+        double d = v < lower[r] ? lower[r] - q[r] : (v > upper[r] ? upper[r] - q[r] : Double.NaN);
+        if (!Double.isNaN(d)) {
           more |= 1 << r;
+          fixedStep[r] = d;
+          for (int k = 0; k < 6; k++) {
+            rhs[k] -= jac[k * 6 + r] * d;
+          }
         }
       }
       if (more == locked) {
@@ -322,9 +358,17 @@ public final class NumericIk {
       locked = more;
     }
     for (int r = 0; r < 6; r++) {
-      double v = (locked & (1 << r)) != 0 ? q[r] : q[r] + g[r];
+      double v = q[r] + ((locked & (1 << r)) != 0 ? fixedStep[r] : g[r]);
       q[r] = v < lower[r] ? lower[r] : (v > upper[r] ? upper[r] : v);
     }
+  }
+
+  private static boolean finite(double[] v) {
+    double s = 0;
+    for (double x : v) {
+      s += x;
+    }
+    return Double.isFinite(s);
   }
 
   /** g = Δq from the normal equations with the locked joints' columns left out (Δq = 0 there). */
@@ -340,7 +384,7 @@ public final class NumericIk {
     for (int r = 0; r < 6; r++) {
       int ro = r * 6;
       double t0 = jt[ro], t1 = jt[ro + 1], t2 = jt[ro + 2], t3 = jt[ro + 3], t4 = jt[ro + 4], t5 = jt[ro + 5];
-      g[r] = t0 * err[0] + t1 * err[1] + t2 * err[2] + t3 * err[3] + t4 * err[4] + t5 * err[5];
+      g[r] = t0 * rhs[0] + t1 * rhs[1] + t2 * rhs[2] + t3 * rhs[3] + t4 * rhs[4] + t5 * rhs[5];
       for (int c = 0; c <= r; c++) {
         int co = c * 6;
         a[ro + c] = t0 * jt[co] + t1 * jt[co + 1] + t2 * jt[co + 2] + t3 * jt[co + 3]
@@ -361,9 +405,10 @@ public final class NumericIk {
     }
     System.arraycopy(seeds, (attempt - 1) * 6, q, 0, 6);
     // Two of every three restarts turn J1 toward (or away from) the target; the third keeps the
-    // seed's own J1, for postures folded around the base where neither is close.
+    // seed's own J1, for postures folded around the base where neither is close. Folded seeds
+    // keep their J1, near a limit.
     int slot = (attempt - 1) % 3;
-    if (slot < 2) {
+    if (slot < 2 && attempt <= MIDDLE_SEEDS + EDGE_SEEDS) {
       q[0] = j1Seeds[((attempt - 1) / 3 * 2 + slot) % j1SeedCount];
     }
   }
@@ -472,10 +517,22 @@ public final class NumericIk {
       }
     }
     // Edge seeds: the same sequence folded into the outer bands [0, 10 %] and [90 %, 100 %].
-    for (int s = MIDDLE_SEEDS; s < SEEDS; s++) {
+    for (int s = MIDDLE_SEEDS; s < MIDDLE_SEEDS + EDGE_SEEDS; s++) {
       for (int i = 0; i < 6; i++) {
         double h = halton(s + 1, bases[i]);
         double t = h < 0.5 ? 2 * h * SEED_MARGIN : 1 - 2 * (h - 0.5) * SEED_MARGIN;
+        seeds[s * 6 + i] = lower[i] + t * (upper[i] - lower[i]);
+      }
+    }
+    for (int s = MIDDLE_SEEDS + EDGE_SEEDS; s < SEEDS; s++) {
+      for (int i = 0; i < 6; i++) {
+        double h = halton(s + 1, bases[i]);
+        double t = switch (i) {
+          case 0 -> h < 0.5 ? 2 * h * SEED_MARGIN : 1 - 2 * (h - 0.5) * SEED_MARGIN; // J1 near a limit
+          case 1 -> 1 - 0.03 * h;
+          case 2 -> 0.03 * h;
+          default -> h;
+        };
         seeds[s * 6 + i] = lower[i] + t * (upper[i] - lower[i]);
       }
     }

@@ -17,9 +17,8 @@ import org.robotrun.math.Transform;
  * Issue 18: every target the closed-form solver finds inside the limits, the numeric solver
  * finds too, from the home position and from a start elsewhere — over the whole joint space,
  * with extra weight at a limit (one joint within 0.05 rad of it), at the wrist singularity
- * (J5 = 0, ±0.001, 0.01 rad) and at axis-aligned values. Known gap, documented in docs/kinematics.md: with
- * several arm joints at their limits at once and the wrist singular, the solver can creep
- * along the limits and stop just short of its 1e-6 mm tolerance.
+ * (J5 = 0 and 1e-7..1e-2 rad) and at axis-aligned values; and a second property over corners,
+ * several joints at their limits at once with the wrist singular or nearly so.
  */
 class NumericIkCoverageTest {
   private static final RobotModel ROBOT = RobotDefinitions.defaultRobot();
@@ -48,7 +47,7 @@ class NumericIkCoverageTest {
           c[i] = low ? lo[i] + d : hi[i] - d;
           return c;
         });
-    Arbitrary<double[]> singular = net.jqwik.api.Combinators.combine(uniform, Arbitraries.of(0.0, 1e-3, -1e-3, 1e-2))
+    Arbitrary<double[]> singular = net.jqwik.api.Combinators.combine(uniform, Arbitraries.of(0.0, 1e-7, -1e-6, 1e-5, -1e-4, 1e-3, -1e-3, 1e-2))
         .as((q, j5) -> {
           double[] c = q.clone();
           c[4] = j5;
@@ -82,6 +81,39 @@ class NumericIkCoverageTest {
     assertThat(reached.distanceTo(X_BF)).isLessThan(1e-6);
     assertThat(reached.rotationAngleTo(X_BF)).isLessThan(1e-8);
     assertThat(ROBOT.firstJointOutsideLimits(sol)).isEqualTo(-1);
+  }
+
+  /**
+   * Corners: each joint independently at a limit (exactly, or within 1e-6..0.05 rad of it) with
+   * probability one half, so several joints sit at their limits at once, and J5 at or near the
+   * wrist singularity (0, ±1e-7..±1e-3 rad) in most draws.
+   */
+  @Provide
+  Arbitrary<double[]> corners() {
+    double[] lo = ROBOT.lowerLimits();
+    double[] hi = ROBOT.upperLimits();
+    double[] offsets = {0, 0, 1e-9, 1e-6, 1e-4, 1e-3, 0.01, 0.05};
+    double[] wrist = {0, 0, 1e-7, -1e-7, 1e-6, -1e-5, 1e-4, -1e-4, 3e-4, -1e-3};
+    return Arbitraries.randomValue(r -> {
+      double[] q = new double[6];
+      for (int i = 0; i < 6; i++) {
+        q[i] = lo[i] + r.nextDouble() * (hi[i] - lo[i]);
+        if (r.nextBoolean()) {
+          double d = offsets[r.nextInt(offsets.length)];
+          q[i] = r.nextBoolean() ? lo[i] + d : hi[i] - d;
+        }
+      }
+      if (r.nextInt(4) != 0) {
+        q[4] = wrist[r.nextInt(wrist.length)];
+      }
+      return q;
+    });
+  }
+
+  @Property(seed = "1818", tries = 2000, edgeCases = net.jqwik.api.EdgeCasesMode.NONE)
+  void severalJointsAtTheirLimitsWithTheWristSingularAreSolvedToo(@ForAll("corners") double[] q,
+      @ForAll("starts") int start) {
+    whatTheClosedFormFindsTheNumericSolverFindsToo(q, start);
   }
 
   @Provide
