@@ -321,7 +321,7 @@ public final class GuiCommand implements Callable<Integer> {
     if (ws != null) {
       FileMenu menu = fileMenu(ws, dirs, w, switchTo);
       early.forEach(menu::tell);
-      bench.addMenus(menu::drawMenus);
+      bench.addMenus(menu);
       w.setShortcutHandler((key, mods) -> menu.onShortcut(key, mods) || bench.onShortcut(key, mods));
       w.setFocusGainedHandler(() -> ws.checkExternalEdits(menu));
     }

@@ -40,7 +40,7 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
     this.controller = controller;
   }
 
-  /** The Check menu, then the results window when open (on the GUI thread, which owns the controller). */
+  /** The Check menu (on the GUI thread, which owns the controller). */
   @Override
   public void drawMenus() {
     if (ImGui.beginMenu("Check")) {
@@ -50,6 +50,11 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
       }
       ImGui.endMenu();
     }
+  }
+
+  /** The results window when open, after the other windows. */
+  @Override
+  public void drawPopups() {
     if (open.get()) {
       draw();
     }

@@ -17,7 +17,7 @@ import java.util.function.Consumer;
  * path where no system file dialog is available, messages, and the question asked when a
  * program edited in the window was also changed on disk.
  */
-public final class FileMenu {
+public final class FileMenu implements Workbench.MenuContributor {
   /** What the menu asks the application to do; each returns a message for the user, "" when all went well. */
   public interface Actions {
     Path workspaceFolder();
@@ -126,13 +126,13 @@ public final class FileMenu {
   }
 
   /**
-   * Draws the File menu and, after it, the menu's dialogs; call between {@code beginMainMenuBar}
-   * and {@code endMainMenuBar} (a {@code Workbench.MenuContributor}).
+   * Draws the File menu and the workspace's status; call between {@code beginMainMenuBar} and
+   * {@code endMainMenuBar}. Its dialogs are drawn by {@link #drawPopups()}, after the other windows.
    */
+  @Override
   public void drawMenus() {
     drawMenu();
     statusLine.run();
-    drawPopups();
   }
 
   /** Draws the File menu; call between {@code beginMainMenuBar} and {@code endMainMenuBar}. */
@@ -232,7 +232,8 @@ public final class FileMenu {
     }
   }
 
-  /** Draws the menu's dialogs; call once per frame outside the menu bar. */
+  /** Draws the menu's dialogs; call once per frame, after the other windows and outside the menu bar. */
+  @Override
   public void drawPopups() {
     if (openPathPopup) {
       ImGui.openPopup("Path##file");

@@ -32,6 +32,14 @@ public final class Workbench implements SimulatorWindow.Panels {
   @FunctionalInterface
   public interface MenuContributor {
     void drawMenus();
+
+    /**
+     * Draws the contributor's dialogs (modal popups), after every other window of the frame. A
+     * modal begun earlier in the frame than a window appearing for the first time trips Dear
+     * ImGui 1.86's assertion in Begin (FindBlockingModal skips a modal that was not active the
+     * frame before) and ends the application.
+     */
+    default void drawPopups() {}
   }
 
   /** Robot status for the left column. */
@@ -249,6 +257,9 @@ public final class Workbench implements SimulatorWindow.Panels {
     if (!help.welcomeOpen() && !state.welcomeSeen) {
       state.welcomeSeen = true;
       onLayoutChange.run();
+    }
+    for (MenuContributor m : menus) {
+      m.drawPopups();
     }
   }
 

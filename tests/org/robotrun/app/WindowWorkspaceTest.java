@@ -141,4 +141,27 @@ class WindowWorkspaceTest {
     String lcd2 = finish(second, out2);
     assertThat(lcd2).contains("SELECT").contains("HW");
   }
+
+  @Test
+  void anUnreadableCellJsonIsReportedInTheWindowAndNeverSavedOver(@TempDir Path tmp) throws Exception {
+    // The message dialog opened on the first frame used to trip a Dear ImGui assertion that ended
+    // the window; the student saw the window vanish instead of the reason.
+    Path ws = Files.createDirectories(tmp.resolve("broken"));
+    Files.createDirectories(ws.resolve("programs"));
+    byte[] broken = "{\"format\": 1, \"robots\": [".getBytes(StandardCharsets.UTF_8);
+    Files.write(ws.resolve("cell.json"), broken);
+    Path out = tmp.resolve("run.txt");
+    Process p = window(ws, tmp, out);
+    focus();
+    Thread.sleep(1500);
+    assertThat(p.isAlive()).as(Files.readString(out)).isTrue();
+    keys("Return", "ctrl+q");
+    if (!p.waitFor(60, TimeUnit.SECONDS)) {
+      p.destroyForcibly();
+      fail("the window did not close after Ctrl+Q:\n" + Files.readString(out));
+    }
+    String text = Files.readString(out);
+    assertThat(text).contains("cell.json:1").contains("not saved over").doesNotContain("Assertion").doesNotContain("Exception");
+    assertThat(Files.readAllBytes(ws.resolve("cell.json"))).isEqualTo(broken);
+  }
 }
