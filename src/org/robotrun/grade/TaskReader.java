@@ -19,6 +19,7 @@ import java.util.Optional;
 import java.util.OptionalInt;
 import java.util.Set;
 import java.util.regex.Pattern;
+import org.robotrun.io.JsonFieldReader;
 import org.robotrun.io.LocatedJson;
 import org.robotrun.io.LocatedJson.JArray;
 import org.robotrun.io.LocatedJson.JBool;
@@ -103,13 +104,11 @@ public final class TaskReader {
   }
 
   /** One read: the file and the errors found so far. */
-  private static final class Session {
-    private final String file;
+  private static final class Session extends JsonFieldReader {
     private final Path dir;
-    private final List<ScenarioError> errors = new ArrayList<>();
 
     Session(String file, Path dir) {
-      this.file = file;
+      super(file);
       this.dir = dir;
     }
 
@@ -179,7 +178,7 @@ public final class TaskReader {
     }
 
     private Task.Limits limits(JObject top) {
-      JObject o = member(top, "limits", "", LIMITS);
+      JObject o = member(top, "limits", "", LIMITS, false);
       if (o == null) {
         return Task.Limits.DEFAULT;
       }
@@ -189,7 +188,7 @@ public final class TaskReader {
     }
 
     private Task.Variations variations(JObject top, Scenario scenario) {
-      JObject o = member(top, "variations", "", VARIATIONS);
+      JObject o = member(top, "variations", "", VARIATIONS, false);
       if (o == null) {
         return Task.Variations.NONE;
       }
@@ -197,7 +196,7 @@ public final class TaskReader {
       long seed = integer(o, "seed", "variations", 0, Long.MAX_VALUE >> 11, false).orElse(0L);
       int min = 100;
       int max = 100;
-      JObject ov = member(o, "overridePct", "variations", OVERRIDE);
+      JObject ov = member(o, "overridePct", "variations", OVERRIDE, false);
       if (ov != null) {
         min = integer(ov, "min", "variations.overridePct", 1, 100, true).orElse(100L).intValue();
         max = integer(ov, "max", "variations.overridePct", 1, 100, true).orElse(100L).intValue();
@@ -206,7 +205,7 @@ public final class TaskReader {
         }
       }
       List<Task.PartJitter> parts = new ArrayList<>();
-      JArray arr = array(o, "parts", "variations");
+      JArray arr = array(o, "parts", "variations", false);
       Set<String> seen = new HashSet<>();
       Set<Integer> registers = new HashSet<>();
       for (int i = 0; arr != null && i < arr.items().size(); i++) {
@@ -239,7 +238,7 @@ public final class TaskReader {
 
     private List<Check> checks(JObject top, Scenario scenario) {
       List<Check> out = new ArrayList<>();
-      JArray arr = array(top, "checks", "");
+      JArray arr = array(top, "checks", "", false);
       if (arr == null) {
         if (!top.members().containsKey("checks")) {
           error(top.line(), "checks", "missing: expected an array of checks");
@@ -361,7 +360,7 @@ public final class TaskReader {
               + f.get() + "\"");
         }
       }
-      JObject p = member(o, "pose", at, Set.of("x", "y", "z", "w", "p", "r"));
+      JObject p = member(o, "pose", at, Set.of("x", "y", "z", "w", "p", "r"), false);
       double[] v = new double[6];
       if (p == null) {
         error(o.line(), at + ".pose", "missing: expected the true frame {x, y, z, w, p, r} (mm, deg)");
@@ -379,7 +378,7 @@ public final class TaskReader {
     }
 
     private Vec3 position(JObject o, String at) {
-      JObject p = member(o, "position", at, Set.of("x", "y", "z"));
+      JObject p = member(o, "position", at, Set.of("x", "y", "z"), false);
       if (p == null) {
         error(o.line(), at + ".position", "missing: expected {x, y, z} in mm, in the fixture's frame");
         return Vec3.ZERO;
@@ -392,7 +391,7 @@ public final class TaskReader {
 
     private Set<Check.Feature> features(JObject o, String key, String at) {
       Set<Check.Feature> out = EnumSet.noneOf(Check.Feature.class);
-      JArray arr = array(o, key, at);
+      JArray arr = array(o, key, at, false);
       for (int i = 0; arr != null && i < arr.items().size(); i++) {
         LocatedJson v = arr.items().get(i);
         String path = at + "." + key + "[" + i + "]";
@@ -408,7 +407,7 @@ public final class TaskReader {
 
     private Map<String, Double> values(JObject o, String at) {
       Map<String, Double> out = new LinkedHashMap<>();
-      JObject vals = member(o, "values", at, null);
+      JObject vals = member(o, "values", at, null, false);
       if (vals == null) {
         error(o.line(), at + ".values", "missing: expected {\"R[1]\": 3, \"DO[2]\": true, ...}");
         return out;
@@ -445,54 +444,6 @@ public final class TaskReader {
     }
 
     // ---- typed fields ----------------------------------------------------------------------
-
-    private JObject object(LocatedJson v, String path, Set<String> allowed) {
-      if (!(v instanceof JObject o)) {
-        error(v.line(), path, "expected an object, got " + v.describe());
-        return null;
-      }
-      if (allowed != null) {
-        for (Map.Entry<String, Integer> k : o.keyLines().entrySet()) {
-          if (!allowed.contains(k.getKey())) {
-            error(k.getValue(), join(path, k.getKey()), "unknown field (expected one of: "
-                + String.join(", ", allowed.stream().sorted().toList()) + ")");
-          }
-        }
-      }
-      return o;
-    }
-
-    private JObject member(JObject o, String key, String at, Set<String> allowed) {
-      LocatedJson v = o.members().get(key);
-      return v == null ? null : object(v, join(at, key), allowed);
-    }
-
-    private JArray array(JObject o, String key, String at) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        return null;
-      }
-      if (!(v instanceof JArray a)) {
-        error(v.line(), join(at, key), "expected an array, got " + v.describe());
-        return null;
-      }
-      return a;
-    }
-
-    private Optional<String> string(JObject o, String key, String at, boolean required) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        if (required) {
-          error(o.line(), join(at, key), "missing: expected a string");
-        }
-        return Optional.empty();
-      }
-      if (!(v instanceof JString s)) {
-        error(v.line(), join(at, key), "expected a string, got " + v.describe());
-        return Optional.empty();
-      }
-      return Optional.of(s.value());
-    }
 
     private Optional<Boolean> bool(JObject o, String key, String at) {
       LocatedJson v = o.members().get(key);
@@ -535,14 +486,6 @@ public final class TaskReader {
         return Optional.empty();
       }
       return Optional.of(Long.parseLong(n.text()));
-    }
-
-    private void error(int line, String path, String message) {
-      errors.add(new ScenarioError(file, line, path, message));
-    }
-
-    private static String join(String at, String key) {
-      return at.isEmpty() ? key : at + "." + key;
     }
 
     private static String text(LocatedJson v) {

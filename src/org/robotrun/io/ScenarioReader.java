@@ -126,10 +126,8 @@ public final class ScenarioReader {
   }
 
   /** One load: the file, its folder and the errors found so far. */
-  private static final class Session {
-    private final String file;
+  private static final class Session extends JsonFieldReader {
     private final Path dir;
-    private final List<ScenarioError> errors = new ArrayList<>();
     private final Map<String, RobotModel> models = new HashMap<>();
     /** Where each name was first defined, for duplicate messages. */
     private final Map<String, String> definedAt = new HashMap<>();
@@ -137,7 +135,7 @@ public final class ScenarioReader {
     private final boolean workspace;
 
     Session(String file, Path dir, boolean workspace) {
-      this.file = file;
+      super(file);
       this.dir = dir;
       this.workspace = workspace;
     }
@@ -724,77 +722,11 @@ public final class ScenarioReader {
 
     // ---- typed access that records errors ---------------------------------------------------
 
-    private void error(int line, String path, String message) {
-      errors.add(new ScenarioError(file, line, path, message));
-    }
-
     private void defineName(String name, String path, int line) {
       String first = definedAt.putIfAbsent(name, path + " (line " + line + ")");
       if (first != null) {
         error(line, path, "duplicate name '" + name + "': already used by " + first.replace(".name", ""));
       }
-    }
-
-    private static String join(String at, String key) {
-      return at.isEmpty() ? key : at + "." + key;
-    }
-
-    /** {@code v} as an object whose keys are all in {@code allowed} (null = any key). */
-    private JObject object(LocatedJson v, String path, Set<String> allowed) {
-      if (!(v instanceof JObject o)) {
-        error(v.line(), path, "expected an object, got " + v.describe());
-        return null;
-      }
-      if (allowed != null) {
-        for (Map.Entry<String, Integer> k : o.keyLines().entrySet()) {
-          if (!allowed.contains(k.getKey())) {
-            error(k.getValue(), join(path, k.getKey()), "unknown field (expected one of: "
-                + String.join(", ", allowed.stream().sorted().toList()) + ")");
-          }
-        }
-      }
-      return o;
-    }
-
-    private JObject member(JObject o, String key, String at, Set<String> allowed, boolean required) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        if (required) {
-          error(o.line(), join(at, key), "missing: expected an object");
-        }
-        return null;
-      }
-      return object(v, join(at, key), allowed);
-    }
-
-    private JArray array(JObject o, String key, String at, boolean required) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        if (required) {
-          error(o.line(), join(at, key), "missing: expected an array");
-        }
-        return null;
-      }
-      if (!(v instanceof JArray a)) {
-        error(v.line(), join(at, key), "expected an array, got " + v.describe());
-        return null;
-      }
-      return a;
-    }
-
-    private Optional<String> string(JObject o, String key, String at, boolean required) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        if (required) {
-          error(o.line(), join(at, key), "missing: expected a string");
-        }
-        return Optional.empty();
-      }
-      if (!(v instanceof JString s)) {
-        error(v.line(), join(at, key), "expected a string, got " + v.describe());
-        return Optional.empty();
-      }
-      return Optional.of(s.value());
     }
 
     /** A finite number, or null with an error. */

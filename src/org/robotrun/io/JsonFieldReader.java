@@ -1,0 +1,94 @@
+package org.robotrun.io;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+import org.robotrun.io.LocatedJson.JArray;
+import org.robotrun.io.LocatedJson.JObject;
+import org.robotrun.io.LocatedJson.JString;
+
+/**
+ * Typed access to a {@link LocatedJson} tree that records every problem as a
+ * {@link ScenarioError} (file, line, JSON path, message) instead of stopping at the first: the
+ * strict readers of scenario and task files build on it.
+ */
+public abstract class JsonFieldReader {
+  protected final String file;
+  protected final List<ScenarioError> errors = new ArrayList<>();
+
+  protected JsonFieldReader(String file) {
+    this.file = file;
+  }
+
+  protected final void error(int line, String path, String message) {
+    errors.add(new ScenarioError(file, line, path, message));
+  }
+
+  /** {@code at.key}, or {@code key} at the top. */
+  protected static String join(String at, String key) {
+    return at.isEmpty() ? key : at + "." + key;
+  }
+
+  /** {@code v} as an object whose keys are all in {@code allowed} (null = any key); null with an error otherwise. */
+  protected final JObject object(LocatedJson v, String path, Set<String> allowed) {
+    if (!(v instanceof JObject o)) {
+      error(v.line(), path, "expected an object, got " + v.describe());
+      return null;
+    }
+    if (allowed != null) {
+      for (Map.Entry<String, Integer> k : o.keyLines().entrySet()) {
+        if (!allowed.contains(k.getKey())) {
+          error(k.getValue(), join(path, k.getKey()), "unknown field (expected one of: "
+              + String.join(", ", allowed.stream().sorted().toList()) + ")");
+        }
+      }
+    }
+    return o;
+  }
+
+  /** The object field {@code key} of {@code o}, or null (with an error when it is required or not an object). */
+  protected final JObject member(JObject o, String key, String at, Set<String> allowed, boolean required) {
+    LocatedJson v = o.members().get(key);
+    if (v == null) {
+      if (required) {
+        error(o.line(), join(at, key), "missing: expected an object");
+      }
+      return null;
+    }
+    return object(v, join(at, key), allowed);
+  }
+
+  /** The array field {@code key} of {@code o}, or null (with an error when it is required or not an array). */
+  protected final JArray array(JObject o, String key, String at, boolean required) {
+    LocatedJson v = o.members().get(key);
+    if (v == null) {
+      if (required) {
+        error(o.line(), join(at, key), "missing: expected an array");
+      }
+      return null;
+    }
+    if (!(v instanceof JArray a)) {
+      error(v.line(), join(at, key), "expected an array, got " + v.describe());
+      return null;
+    }
+    return a;
+  }
+
+  /** The string field {@code key} of {@code o}, or empty (with an error when it is required or not a string). */
+  protected final Optional<String> string(JObject o, String key, String at, boolean required) {
+    LocatedJson v = o.members().get(key);
+    if (v == null) {
+      if (required) {
+        error(o.line(), join(at, key), "missing: expected a string");
+      }
+      return Optional.empty();
+    }
+    if (!(v instanceof JString s)) {
+      error(v.line(), join(at, key), "expected a string, got " + v.describe());
+      return Optional.empty();
+    }
+    return Optional.of(s.value());
+  }
+}
