@@ -58,7 +58,7 @@ final class ScenarioFiles {
       robots.set(0, new RobotSetup(first.name(), first.modelId(), first.X_CB(), first.endEffector(),
           java.util.Arrays.stream(q).boxed().toList(), first.toolIo(), first.io(), first.userAlarms()));
       s = new Scenario(sc.name(), sc.description(), robots, sc.world(), sc.programs(), sc.mainProgram(), sc.registers(),
-          sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode());
+          sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode()).withExtrasOf(sc);
     }
     Simulation sim;
     try {

@@ -47,7 +47,7 @@ final class WorkspaceFiles {
       throw new UserError(dir + ": cannot create the workspace (" + Workspace.describe(e) + ")", Main.EXIT_FAILED);
     }
     Scenario cell = new Scenario(sc.name(), sc.description(), sc.robots(), sc.world(), List.of(), sc.mainProgram(),
-        sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision());
+        sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision()).withExtrasOf(sc);
     try (Workspace ws = Workspace.open(dir, cell)) {
       return ws.folder();
     } catch (WorkspaceException e) {

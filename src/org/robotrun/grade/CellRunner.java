@@ -76,7 +76,7 @@ final class CellRunner {
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
         : rng.nextInt(v.overrideMinPct(), v.overrideMaxPct() + 1);
     Scenario s = new Scenario(base.name(), base.description(), base.robots(), world, base.programs(), base.mainProgram(),
-        base.registers(), base.toolFrames(), base.userFrames(), base.camera(), base.onCollision());
+        base.registers(), base.toolFrames(), base.userFrames(), base.camera(), base.onCollision()).withExtrasOf(base);
     return new Variant(i, s, override, regs);
   }
 

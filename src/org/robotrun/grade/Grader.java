@@ -110,7 +110,7 @@ public final class Grader {
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
     user.putAll(userFrames);
     Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
-        scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision());
+        scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
     return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of()), List.of(), List.of(), cell,
         Map.copyOf(positionRegisters), checks, t0);
   }
@@ -330,7 +330,7 @@ public final class Grader {
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
     user.putAll(own.userFrames());
     return new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
-        scenario.programs(), scenario.mainProgram(), registers, tool, user, scenario.camera(), scenario.onCollision());
+        scenario.programs(), scenario.mainProgram(), registers, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
   }
 
   // ---- helpers -----------------------------------------------------------------------------

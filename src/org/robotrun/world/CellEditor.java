@@ -410,7 +410,7 @@ public final class CellEditor {
     }
     Scenario a = active();
     Scenario copy = new Scenario(n, a.description(), a.robots(), a.world(), a.programs(), a.mainProgram(),
-        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision());
+        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision(), a.mode()).withExtrasOf(a);
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.add(copy);
     return apply(new State(List.copyOf(out), out.size() - 1), "scenario " + n + " added");
@@ -486,7 +486,7 @@ public final class CellEditor {
   private State withWorld(World w) {
     Scenario a = active();
     Scenario s = new Scenario(a.name(), a.description(), a.robots(), w.reset(), a.programs(), a.mainProgram(),
-        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision());
+        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision(), a.mode()).withExtrasOf(a);
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.set(state.active, s);
     return new State(List.copyOf(out), state.active);

@@ -25,6 +25,9 @@ import org.robotrun.math.Transform;
  * @param onCollision whether a collision stops the robot with an alarm or is only shown
  * @param mode the operator panel's mode switch when the window or a pendant script opens the
  *     cell: "T1", "T2" or "AUTO" (empty: T1, the window's default; {@code robotrun run} is AUTO)
+ * @param wiring signals wired between robots and the cell (empty: none)
+ * @param production production start from a PLC: UOP, PNS/RSR, background logic (empty: none)
+ * @param vision cameras, vision processes and random part placement (empty: none)
  */
 public record Scenario(
     String name,
@@ -38,7 +41,10 @@ public record Scenario(
     SortedMap<Integer, Transform> userFrames,
     Optional<CameraView> camera,
     CollisionResponse onCollision,
-    Optional<String> mode) {
+    Optional<String> mode,
+    Wiring wiring,
+    ProductionSetup production,
+    VisionSetup vision) {
 
   /** The values {@code mode} may take. */
   public static final java.util.List<String> MODES = java.util.List.of("T1", "T2", "AUTO");
@@ -53,9 +59,21 @@ public record Scenario(
       throw new IllegalArgumentException("a scenario needs at least one robot");
     }
     java.util.Objects.requireNonNull(onCollision, "onCollision");
+    java.util.Objects.requireNonNull(wiring, "wiring");
+    java.util.Objects.requireNonNull(production, "production");
+    java.util.Objects.requireNonNull(vision, "vision");
     if (mode.isPresent() && !MODES.contains(mode.get())) {
       throw new IllegalArgumentException("mode must be one of " + MODES + ", got " + mode.get());
     }
+  }
+
+  /** A scenario with no wiring, production setup or vision. */
+  public Scenario(String name, String description, List<RobotSetup> robots, World world, List<Path> programs,
+      Optional<String> mainProgram, SortedMap<Integer, Double> registers, SortedMap<Integer, Transform> toolFrames,
+      SortedMap<Integer, Transform> userFrames, Optional<CameraView> camera, CollisionResponse onCollision,
+      Optional<String> mode) {
+    this(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames, camera,
+        onCollision, mode, Wiring.NONE, ProductionSetup.NONE, VisionSetup.NONE);
   }
 
   /** A scenario that leaves the mode switch at its default (T1). */
@@ -72,5 +90,29 @@ public record Scenario(
       SortedMap<Integer, Transform> userFrames, Optional<CameraView> camera) {
     this(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames, camera,
         CollisionResponse.ALARM);
+  }
+
+  /** This scenario with {@code from}'s wiring, production setup and vision (a copy that changed other fields keeps them). */
+  public Scenario withExtrasOf(Scenario from) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, from.wiring, from.production, from.vision);
+  }
+
+  /** This scenario with other wiring. */
+  public Scenario withWiring(Wiring w) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, w, production, vision);
+  }
+
+  /** This scenario with another production setup. */
+  public Scenario withProduction(ProductionSetup p) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, wiring, p, vision);
+  }
+
+  /** This scenario with another vision setup. */
+  public Scenario withVision(VisionSetup v) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, wiring, production, v);
   }
 }
