@@ -47,6 +47,10 @@ public final class ClosedFormIk {
   private static final double ACOS_SLACK = 1e-10;
   /** Joint values this close outside a limit (rad) count as at the limit. */
   private static final double LIMIT_SLACK = 1e-9;
+  /** {@link #reachability}'s "maybe inside the limits" slack (rad): well above its rounding. */
+  private static final double VERDICT_SLACK = 1e-6;
+  /** A wrist centre this close to the J1 axis (mm) leaves J1 undetermined for {@link #reachability}. */
+  private static final double SHOULDER_FREE_MM = 1e-5;
 
   private final RobotModel model;
   private final KinematicChain chain;
@@ -192,9 +196,12 @@ public final class ClosedFormIk {
   }
 
   /**
-   * Whether a packed flange pose has a solution inside the limits, without building it: empty
-   * if so, else why not. Cheaper than a solve (no result, no FK check); for other solvers'
-   * quick rejection of unreachable targets.
+   * Whether a packed flange pose may have a solution inside the limits, without building it:
+   * empty if so, else why not. Cheaper than a solve (no result, no FK check); for other solvers'
+   * quick rejection of unreachable targets, so it errs on the side of "maybe": a solution within
+   * {@link #VERDICT_SLACK} of the limits counts. With the elbow stretched the closed form's acos
+   * near ±1 loses half the digits (about 1e-8 rad), which would otherwise put a joint that sits
+   * exactly at its limit just outside and turn a reachable target away.
    */
   public Optional<IkResult.Unreachable> reachability(double[] X_BF) {
     System.arraycopy(X_BF, 0, target, 0, 12);
@@ -202,10 +209,34 @@ public final class ClosedFormIk {
     if (valid == 0) {
       return Optional.of(outOfReach());
     }
-    for (int i = 0; i < 6; i++) {
-      cand[i] = 0;
+    // The wrist centre on the J1 axis (a shoulder singularity): J1 is free there, but the base
+    // solutions take it from the centre's meaningless azimuth, so the limits say nothing.
+    double cx = target[9] - c4 * target[2], cy = target[10] - c4 * target[5];
+    if (cx * cx + cy * cy - b * b < SHOULDER_FREE_MM * SHOULDER_FREE_MM) {
+      return Optional.empty();
     }
-    return nearest(valid, cand) ? Optional.empty() : Optional.of(limitsOnly());
+    for (int k = 0; k < BASE_SOLUTIONS; k++) {
+      if ((valid & (1 << k)) != 0 && withinLimitsLoosely(k)) {
+        return Optional.empty();
+      }
+    }
+    return Optional.of(limitsOnly());
+  }
+
+  /** Base solution k has a turn of every joint within {@link #VERDICT_SLACK} of the limits. */
+  private boolean withinLimitsLoosely(int k) {
+    for (int i = 0; i < 6; i++) {
+      double q = base[k * 6 + i];
+      boolean any = false;
+      for (int t = -2; t <= 2 && !any; t++) {
+        double v = q + TWO_PI * t;
+        any = v >= lower[i] - VERDICT_SLACK && v <= upper[i] + VERDICT_SLACK;
+      }
+      if (!any) {
+        return false;
+      }
+    }
+    return true;
   }
 
   /** Puts into {@link #best} the in-limit variant nearest to {@code qCurrent}; false if none. */

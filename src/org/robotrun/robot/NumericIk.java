@@ -4,6 +4,7 @@ import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
 import java.util.Optional;
 import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
 
 /**
  * Numeric position IK for any 6-axis arm: damped least squares (Levenberg–Marquardt) on the
@@ -21,7 +22,7 @@ import org.robotrun.math.Transform;
  * An attempt is abandoned when the error stops falling (local minimum, often pinned at a limit)
  * or after a per-attempt iteration budget; the next seed then starts: the caller's start, then
  * 64 seeds spread over the joint ranges (a Halton sequence), two of every three with J1 turned
- * toward or away from the target, with twins across J1's limit gap; then 32 seeds in the outer
+ * toward or away from the target's wrist point, with twins across J1's limit gap; then 32 seeds in the outer
  * tenth of each range (postures folded to their limits); 16 seeds with the arm folded hard (J2
  * at the top, J3 at the bottom of its range); and at last a patient polish of the best posture
  * found, which may be creeping along a limit. A joint whose step would cross a limit is held at
@@ -108,6 +109,11 @@ public final class NumericIk {
   private final Settings settings;
   private final Optional<ClosedFormIk> reachCheck;
   private final double reachRadiusMm;
+  /**
+   * The wrist point (J5's origin) in the flange frame when it lies on J6's axis, so that it
+   * does not move with J6 (a spherical or offset wrist); else the flange origin (all zero).
+   */
+  private final double[] wristInFlange = new double[3];
   private final double[] shoulder = new double[3];
   private final double[] lower;
   private final double[] upper;
@@ -155,6 +161,14 @@ public final class NumericIk {
       r += model.joint(i).X_PJ().translationVector().norm();
     }
     reachRadiusMm = r + model.X_6F().translationVector().norm();
+    JointSpec j6 = model.joint(RobotModel.DOF - 1);
+    Vec3 j5InJ6 = j6.X_PJ().inverse().translationVector();
+    if (j5InJ6.cross(j6.axis()).norm() <= 1e-9 * (1 + j5InJ6.norm())) {
+      Vec3 w = model.X_6F().inverse().apply(j5InJ6);
+      wristInFlange[0] = w.x();
+      wristInFlange[1] = w.y();
+      wristInFlange[2] = w.z();
+    }
     fillSeeds();
   }
 
@@ -190,7 +204,11 @@ public final class NumericIk {
         if (early.isPresent()) {
           return early.get();
         }
-        fillJ1Seeds(Math.atan2(target[10], target[9]));
+        // J1 turns toward the wrist point, not the flange: for a target near the J1 axis (the
+        // wrist folded back over the base) the flange's azimuth says nothing about J1.
+        double wx = target[0] * wristInFlange[0] + target[1] * wristInFlange[1] + target[2] * wristInFlange[2] + target[9];
+        double wy = target[3] * wristInFlange[0] + target[4] * wristInFlange[1] + target[5] * wristInFlange[2] + target[10];
+        fillJ1Seeds(Math.atan2(wy, wx));
       }
       startFrom(attempt, qStart);
       if (attemptConverges(invL, tolP, tolR, settings.iterationsPerAttempt(), 3)) {
