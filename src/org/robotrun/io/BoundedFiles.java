@@ -121,7 +121,7 @@ public final class BoundedFiles {
     }
   }
 
-  private static String sizeText(long bytes) {
+  static String sizeText(long bytes) {
     return bytes % (1L << 20) == 0 ? (bytes >> 20) + " MiB" : bytes + " bytes";
   }
 

@@ -27,10 +27,46 @@ import org.robotrun.world.WorldObject;
 public final class ScenarioWriter {
   private ScenarioWriter() {}
 
-  /** Saves {@code scenario} to {@code file}: a crash leaves either the old file or the new one. */
+  private static final JsonFactory JSON = new JsonFactory();
+
+  /**
+   * Saves {@code scenario} to {@code file}: a crash leaves either the old file or the new one.
+   *
+   * @throws IOException also when the text would be larger than {@link ScenarioReader} reads
+   *     back (nothing is written then)
+   */
   public static void write(Scenario scenario, Path file) throws IOException {
     Path dir = file.toAbsolutePath().normalize().getParent();
-    AtomicFiles.write(file, toJson(scenario, dir).getBytes(StandardCharsets.UTF_8));
+    AtomicFiles.write(file, readableBytes(toJson(scenario, dir), file));
+  }
+
+  /**
+   * The UTF-8 bytes of {@code json} (scenario or {@code cell.json} text from {@link #toJson}) for
+   * {@code file}, refused when {@link ScenarioReader} could not read them back: RobotRun never
+   * writes a file it cannot open again.
+   */
+  public static byte[] readableBytes(String json, Path file) throws IOException {
+    return readableBytes(json, file, ScenarioReader.MAX_FILE_BYTES);
+  }
+
+  static byte[] readableBytes(String json, Path file, long maxBytes) throws IOException {
+    byte[] bytes = json.getBytes(StandardCharsets.UTF_8);
+    if (bytes.length > maxBytes) {
+      throw new TooLargeException(String.format(java.util.Locale.ROOT,
+          "%s would be %.1f MiB, more than the %s RobotRun reads back; nothing was written. "
+              + "Remove objects, or split the cell",
+          file.getFileName(), bytes.length / 1048576.0, BoundedFiles.sizeText(maxBytes)));
+    }
+    return bytes;
+  }
+
+  /** A scenario text over the size RobotRun reads back: never written. */
+  public static final class TooLargeException extends IOException {
+    private static final long serialVersionUID = 1L;
+
+    TooLargeException(String message) {
+      super(message);
+    }
   }
 
   /** The JSON text, with paths relative to {@code dir}. */
@@ -43,9 +79,32 @@ public final class ScenarioWriter {
    * when given, the controller's {@code "state"} section.
    */
   public static String toJson(Scenario s, java.util.Optional<SavedState> state, Path dir) throws IOException {
+    return toJson(s, state, dir, ScenarioReader.MAX_FILE_BYTES);
+  }
+
+  /**
+   * The text indented for people; when that is over {@code maxBytes} (a cell of tens of
+   * thousands of objects: indenting more than doubles the size), one object a line instead, so a
+   * scenario that was read can be written back within the same limit.
+   */
+  static String toJson(Scenario s, java.util.Optional<SavedState> state, Path dir, long maxBytes) throws IOException {
+    String pretty = toJson(s, state, dir, false);
+    // A UTF-8 byte per char at least, at most three.
+    if (pretty.length() <= maxBytes / 3 || pretty.getBytes(StandardCharsets.UTF_8).length <= maxBytes) {
+      return pretty;
+    }
+    return toJson(s, state, dir, true);
+  }
+
+  private static String toJson(Scenario s, java.util.Optional<SavedState> state, Path dir, boolean compactObjects)
+      throws IOException {
     StringWriter text = new StringWriter();
     DefaultPrettyPrinter pretty = new DefaultPrettyPrinter().withObjectIndenter(new DefaultIndenter("  ", "\n"));
-    try (JsonGenerator g = new JsonFactory().createGenerator(text)) {
+    if (compactObjects) {
+      // Array items start a line of their own, unindented (100 000 objects: 0.4 MB less).
+      pretty = pretty.withArrayIndenter(new DefaultIndenter("", "\n"));
+    }
+    try (JsonGenerator g = JSON.createGenerator(text)) {
       g.setPrettyPrinter(pretty);
       g.writeStartObject();
       g.writeNumberField("format", ScenarioReader.FORMAT);
@@ -93,7 +152,15 @@ public final class ScenarioWriter {
       g.writeEndArray();
       g.writeArrayFieldStart("objects");
       for (WorldObject o : s.world().objects()) {
-        object(g, o, dir);
+        if (compactObjects) {
+          StringWriter one = new StringWriter();
+          try (JsonGenerator og = JSON.createGenerator(one)) {
+            object(og, o, dir);
+          }
+          g.writeRawValue(one.toString());
+        } else {
+          object(g, o, dir);
+        }
       }
       g.writeEndArray();
       if (!s.programs().isEmpty()) {

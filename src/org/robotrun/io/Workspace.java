@@ -212,8 +212,8 @@ public final class Workspace implements AutoCloseable {
     Files.createDirectories(abs.resolve(PROGRAMS));
     String created = Instant.now().truncatedTo(ChronoUnit.SECONDS).toString();
     SavedState fresh = SavedState.fresh(created);
-    AtomicFiles.write(abs.resolve(CELL), ScenarioWriter.toJson(newCell, Optional.of(fresh), abs)
-        .getBytes(StandardCharsets.UTF_8));
+    Path cell = abs.resolve(CELL);
+    AtomicFiles.write(cell, ScenarioWriter.readableBytes(ScenarioWriter.toJson(newCell, Optional.of(fresh), abs), cell));
   }
 
   /** The .LS files in {@code programs/}, by name. */
@@ -389,7 +389,7 @@ public final class Workspace implements AutoCloseable {
     if (!cellBlocked && !snap.cellJson().equals(writtenCell)) {
       Path cell = dir.resolve(CELL);
       try {
-        AtomicFiles.write(cell, snap.cellJson().getBytes(StandardCharsets.UTF_8));
+        AtomicFiles.write(cell, ScenarioWriter.readableBytes(snap.cellJson(), cell));
         writtenCell = snap.cellJson();
         touched.add(cell);
       } catch (IOException ex) {
