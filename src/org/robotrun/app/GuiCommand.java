@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.TerminalText;
 import org.robotrun.io.UserDirs;
 import org.robotrun.io.StlReader;
 import org.robotrun.math.Angles;
@@ -107,7 +108,7 @@ public final class GuiCommand implements Callable<Integer> {
       return openWindow();
     } catch (GlUnavailableException e) {
       if (e.noGl33Context() && SoftwareGl.mayRetry(System.getProperty("os.name", ""), System.getenv())) {
-        System.err.println("robotrun: " + e.getMessage());
+        System.err.println("robotrun: " + TerminalText.safe(e.getMessage()));
         System.err.println("robotrun: starting again with Mesa's software renderer (llvmpipe): slower, but it works without OpenGL 3.3 from the graphics driver");
         Optional<Integer> code = SoftwareGl.relaunch();
         if (code.isPresent()) {
@@ -450,7 +451,7 @@ public final class GuiCommand implements Callable<Integer> {
 
   private static void warn(String problem) {
     if (!problem.isEmpty()) {
-      System.err.println("robotrun: " + problem);
+      System.err.println("robotrun: " + TerminalText.safe(problem));
     }
   }
 

@@ -8,6 +8,7 @@ import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.robotrun.io.HandIn;
 import org.robotrun.io.HandInException;
+import org.robotrun.io.TerminalText;
 import org.robotrun.io.UserDirs;
 import org.robotrun.program.Program;
 import org.robotrun.sim.Controller;
@@ -80,7 +81,7 @@ final class GuiFileActions implements FileMenu.Actions {
       Path dir = WorkspaceFiles.createFromScenario(file, dirs.newWorkspaceFor(GuiCommand.stem(file)));
       String m = openWorkspace(dir, false);
       if (m.isEmpty()) {
-        System.err.println("robotrun: a new workspace was made from " + file + " in " + dir + " (the scenario is not changed)");
+        System.err.println(TerminalText.safe("robotrun: a new workspace was made from " + file + " in " + dir + " (the scenario is not changed)"));
       }
       return m;
     } catch (UserError e) {

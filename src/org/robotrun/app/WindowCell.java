@@ -1,6 +1,7 @@
 package org.robotrun.app;
 
 import imgui.ImGui;
+import org.robotrun.io.TerminalText;
 import org.robotrun.ui.Txt;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -39,12 +40,12 @@ final class WindowCell {
       Supplier<Optional<CameraView>> camera) {
     Queue<String> reports = new ConcurrentLinkedQueue<>();
     WorkspaceSession s = WorkspaceSession.open(dir, false, camera, m -> {
-      System.err.println("robotrun: " + m);
+      System.err.println("robotrun: " + TerminalText.safe(m));
       reports.add(m);
     });
     String problems = s.problems();
     if (!problems.isEmpty()) {
-      System.err.println("robotrun: " + problems);
+      System.err.println("robotrun: " + TerminalText.safe(problems));
       tell.accept(problems);
     }
     boolean handIn = dir.getFileName() != null && dir.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".zip");
@@ -53,7 +54,7 @@ final class WindowCell {
         dirs.remember(s.workspace.folder());
       }
     } catch (IOException e) {
-      System.err.println("robotrun: cannot remember the last workspace in " + dirs.configDir() + " (" + e.getMessage() + ")");
+      System.err.println(TerminalText.safe("robotrun: cannot remember the last workspace in " + dirs.configDir() + " (" + e.getMessage() + ")"));
     }
     return new WindowCell(s, reports, handIn ? dir.getFileName().toString() : s.workspace.name());
   }

@@ -8,9 +8,11 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
 import org.robotrun.io.AtomicFiles;
+import org.robotrun.io.BoundedFiles;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
+import org.robotrun.io.ScenarioReader;
 import org.robotrun.io.Workspace;
 import org.robotrun.io.WorkspaceException;
 import org.robotrun.program.Program;
@@ -41,7 +43,8 @@ final class WorkspaceFiles {
       Files.createDirectories(dir.resolve(Workspace.PROGRAMS));
       for (Path from : sc.programs()) {
         String name = LsReader.read(from).program().name();
-        AtomicFiles.write(dir.resolve(Workspace.PROGRAMS).resolve(name + ".LS"), Files.readAllBytes(from));
+        AtomicFiles.write(dir.resolve(Workspace.PROGRAMS).resolve(name + ".LS"),
+            BoundedFiles.read(from, LsReader.MAX_FILE_BYTES, ".LS programs"));
       }
     } catch (IOException e) {
       throw new UserError(dir + ": cannot create the workspace (" + Workspace.describe(e) + ")", Main.EXIT_FAILED);
@@ -73,10 +76,12 @@ final class WorkspaceFiles {
     }
     try {
       Files.createDirectories(to.resolve(Workspace.PROGRAMS));
-      AtomicFiles.write(to.resolve(Workspace.CELL), Files.readAllBytes(from.resolve(Workspace.CELL)));
+      AtomicFiles.write(to.resolve(Workspace.CELL),
+          BoundedFiles.read(from.resolve(Workspace.CELL), ScenarioReader.MAX_FILE_BYTES, "cell files"));
       try (Stream<Path> s = Files.list(from.resolve(Workspace.PROGRAMS))) {
         for (Path f : s.filter(Files::isRegularFile).toList()) {
-          AtomicFiles.write(to.resolve(Workspace.PROGRAMS).resolve(f.getFileName().toString()), Files.readAllBytes(f));
+          AtomicFiles.write(to.resolve(Workspace.PROGRAMS).resolve(f.getFileName().toString()),
+              BoundedFiles.read(f, LsReader.MAX_FILE_BYTES, ".LS programs"));
         }
       }
       return "";

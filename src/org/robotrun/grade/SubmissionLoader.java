@@ -138,11 +138,14 @@ public final class SubmissionLoader {
         hashes.put(rel, sha256(Files.readAllBytes(p)));
       }
     }
-    long manifestSize = Files.size(dir.resolve("manifest.json"));
-    if (manifestSize > limits.entryBytes()) {
-      return Submission.failed(name, kind, "manifest.json is too large", Optional.empty());
+    byte[] manifest;
+    try {
+      // Bounded and a regular file only: a FIFO named manifest.json must not block the grader.
+      manifest = org.robotrun.io.BoundedFiles.read(dir.resolve("manifest.json"), limits.entryBytes(), "manifest files");
+    } catch (org.robotrun.io.UnreadableFileException e) {
+      return Submission.failed(name, kind, "manifest.json: " + e.getMessage(), Optional.empty());
     }
-    String student = checkManifest(Files.readAllBytes(dir.resolve("manifest.json")), hashes, problems);
+    String student = checkManifest(manifest, hashes, problems);
     return new Submission(name, kind, programs, cell, student, problems, Optional.empty(), Optional.empty());
   }
 

@@ -6,7 +6,6 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.EnumSet;
@@ -81,16 +80,14 @@ public final class TaskReader {
     String name = file.toString();
     String text;
     try {
-      long size = Files.size(file);
-      if (size > MAX_FILE_BYTES) {
-        return fail(name, "file is " + size + " bytes; task files are limited to " + MAX_FILE_BYTES + " bytes");
-      }
-      text = StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(Files.readAllBytes(file))).toString();
+      // Bounded, counted from the stream, and a regular file only (a FIFO does not block).
+      byte[] bytes = org.robotrun.io.BoundedFiles.read(file, MAX_FILE_BYTES, "task files");
+      text = StandardCharsets.UTF_8.newDecoder().decode(ByteBuffer.wrap(bytes)).toString();
       if (text.startsWith("\uFEFF")) {
         text = text.substring(1);
       }
-    } catch (NoSuchFileException e) {
-      return fail(name, "no such file");
+    } catch (org.robotrun.io.UnreadableFileException e) {
+      return fail(name, e.getMessage());  // "no such file", "a named pipe (FIFO), not a regular file", the limit
     } catch (CharacterCodingException e) {
       return fail(name, "not UTF-8 text");
     } catch (IOException e) {

@@ -83,7 +83,7 @@ public final class HandIn {
     FileTime newest = FileTime.fromMillis(0);
     try {
       Path cell = workspaceDir.resolve(Workspace.CELL);
-      files.put(Workspace.CELL, Files.readAllBytes(cell));
+      files.put(Workspace.CELL, BoundedFiles.read(cell, ScenarioReader.MAX_FILE_BYTES, "cell files"));
       newest = Files.getLastModifiedTime(cell);
       Path programs = workspaceDir.resolve(Workspace.PROGRAMS);
       if (Files.isDirectory(programs)) {
@@ -93,7 +93,7 @@ public final class HandIn {
             if (!PROGRAM_ENTRY.matcher(entry).matches()) {
               continue;  // not a program (an editor's backup, a stray file)
             }
-            files.put(entry, Files.readAllBytes(f));
+            files.put(entry, BoundedFiles.read(f, LsReader.MAX_FILE_BYTES, ".LS programs"));
             FileTime t = Files.getLastModifiedTime(f);
             newest = t.compareTo(newest) > 0 ? t : newest;
           }

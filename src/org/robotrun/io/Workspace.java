@@ -186,8 +186,8 @@ public final class Workspace implements AutoCloseable {
     }
     if (!cellBlocked) {
       try {
-        ws.writtenCell = Files.readString(cell, StandardCharsets.UTF_8);
-      } catch (IOException e) {
+        ws.writtenCell = BoundedFiles.readUtf8(cell, ScenarioReader.MAX_FILE_BYTES, "cell files");
+      } catch (IOException | FileFormatException e) {
         // then the first save writes it
       }
     }
@@ -413,6 +413,9 @@ public final class Workspace implements AutoCloseable {
 
   /** A short reason for an I/O failure, in words a student can act on. */
   public static String describe(IOException e) {
+    if (e instanceof UnreadableFileException u) {
+      return u.file() + ": " + u.getMessage();  // a file read on the way: say which
+    }
     String m = e.getMessage() == null ? "" : e.getMessage();
     if (e instanceof AccessDeniedException || m.contains("Permission denied") || m.contains("Read-only file system")) {
       return m.contains("Read-only") ? "the disk is read-only" : "permission denied";
