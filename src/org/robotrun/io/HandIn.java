@@ -178,7 +178,12 @@ public final class HandIn {
     Map<String, byte[]> files = new TreeMap<>();
     byte[] manifestBytes = null;
     try {
-      long size = Files.size(zip);
+      long size;
+      try {
+        size = BoundedFiles.requireRegularFile(zip);  // a FIFO or a device is named, never opened
+      } catch (UnreadableFileException e) {
+        throw new HandInException(where + ": " + e.getMessage());
+      }
       if (size > MAX_TOTAL_BYTES) {
         throw new HandInException(where + ": the file is " + size + " bytes; hand-ins are limited to " + MAX_TOTAL_BYTES);
       }

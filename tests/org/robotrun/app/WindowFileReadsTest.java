@@ -69,6 +69,15 @@ class WindowFileReadsTest {
   }
 
   @Test
+  void openingAHandInThatIsAFifoSaysSo() throws Exception {
+    Path zip = dir.resolve("h.zip");
+    fifo(zip);
+    assertThatThrownBy(() -> HandIn.unpack(zip, Files.createDirectories(dir.resolve("into"))))
+        .isInstanceOf(HandInException.class)
+        .hasMessage(zip + ": a named pipe (FIFO), not a regular file");
+  }
+
+  @Test
   void aRecentListThatIsAFifoOrNotUtf8IsNoTrouble() throws Exception {
     Path config = Files.createDirectories(dir.resolve("config"));
     UserDirs dirs = new UserDirs(dir.resolve("data"), config);
