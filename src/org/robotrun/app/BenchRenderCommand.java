@@ -44,6 +44,7 @@ public final class BenchRenderCommand implements Callable<Integer> {
 
   @Override
   public Integer call() {
+    NativeLibraries.prepare();
     RenderCommand.checkSize("--width", width);
     RenderCommand.checkSize("--height", height);
     if (!(seconds > 0 && seconds <= 600)) {

@@ -77,6 +77,7 @@ public final class GradeCommand implements Callable<Integer> {
 
   @Override
   public Integer call() throws IOException {
+    NativeLibraries.prepare();  // the report's pictures are rendered with LWJGL
     PrintWriter w = spec.commandLine().getOut();
     int threads = jobs == null ? Runtime.getRuntime().availableProcessors() : jobs;
     if (threads < 1 || threads > 256) {

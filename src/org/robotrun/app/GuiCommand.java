@@ -104,6 +104,7 @@ public final class GuiCommand implements Callable<Integer> {
     Natives.windowProblem(Natives.currentPlatform()).ifPresent(why -> {
       throw new UserError("cannot open the simulator window: " + why, Main.EXIT_FAILED);
     });
+    NativeLibraries.prepare();
     try {
       return openWindow();
     } catch (GlUnavailableException e) {

@@ -54,6 +54,7 @@ public final class RenderCommand implements Callable<Integer> {
   public Integer call() {
     checkSize("--width", width);
     checkSize("--height", height);
+    NativeLibraries.prepare();
     Path dir = out.toAbsolutePath().getParent();
     if (dir == null || !Files.isDirectory(dir)) {
       throw new UserError("--out: the directory " + dir + " does not exist");
