@@ -514,13 +514,21 @@ public final class Package {
         "--description", DESCRIPTION,
         "--license-file", Path.of("LICENSE").toAbsolutePath().toString(),
         "--dest", work.resolve("installer").toString()));
-    // .LS programs open in RobotRun from the file manager (macOS passes opened files as Apple
-    // events, which the GLFW window does not receive, so no association there).
+    // .LS programs and .rrcell cells (scenarios under RobotRun's own extension: claiming .json
+    // would take every JSON file from the user's editor) open in RobotRun from the file manager,
+    // which runs 'RobotRun FILE'. Hand-ins stay .zip (course sites and Gradescope unpack zips), so
+    // they are not claimed. macOS passes opened files as Apple events, which the GLFW window does
+    // not receive, so no association there (docs/install.md).
     if (!type.equals("dmg")) {
-      Path fa = work.resolve("ls-association.properties");
-      Files.writeString(fa, "extension=ls\nmime-type=text/x-robotrun-tp\ndescription=RobotRun TP program\nicon="
-          + icon.toString().replace("\\", "/") + "\n");
-      a.addAll(List.of("--file-associations", fa.toString()));
+      String iconPath = icon.toString().replace("\\", "/");
+      for (String[] assoc : List.of(
+          new String[] {"ls", "text/x-robotrun-tp", "RobotRun TP program"},
+          new String[] {"rrcell", "application/x-robotrun-cell", "RobotRun cell"})) {
+        Path fa = work.resolve(assoc[0] + "-association.properties");
+        Files.writeString(fa, "extension=" + assoc[0] + "\nmime-type=" + assoc[1] + "\ndescription=" + assoc[2]
+            + "\nicon=" + iconPath + "\n");
+        a.addAll(List.of("--file-associations", fa.toString()));
+      }
     }
     switch (type) {
       case "deb" -> {

@@ -31,12 +31,20 @@ check_app() {  # LAUNCHER APPDIR
     # No imgui-java natives for this CPU: the window must say so in one line and exit 1.
     set +e; clean "$app" gui 2> "$out/err"; code=$?; set -e
     [ "$code" = 1 ] && grep -q 'Dear ImGui natives' "$out/err" && ! grep -q 'at org\.' "$out/err" || fail "window message on $(uname -m)"
-  elif [ -n "${DISPLAY:-}" ]; then clean "$app" gui --scenario "$appdir/scenarios/pick-and-place.json" --quit-after-frames 3 || fail "window"
-  elif command -v xvfb-run >/dev/null; then
-    xvfb-run -a -s '-screen 0 1366x768x24' bash -c 'env -i PATH=/usr/bin:/bin HOME="$0" DISPLAY="$DISPLAY" XAUTHORITY="$XAUTHORITY" "$@"' \
-      "$tmp/home" "$app" gui --scenario "$appdir/scenarios/pick-and-place.json" --quit-after-frames 3 || fail "window"
   else
-    echo "smoke: no display and no xvfb-run: window not tried"
+    # The window, opened the way a file manager opens a .rrcell file: 'RobotRun FILE'.
+    cp "$appdir/scenarios/pick-and-place.json" "$appdir/scenarios/smoke.rrcell"
+    if [ -n "${DISPLAY:-}" ]; then clean "$app" "$appdir/scenarios/smoke.rrcell" --quit-after-frames 3 || fail "window"
+    elif command -v xvfb-run >/dev/null; then
+      xvfb-run -a -s '-screen 0 1366x768x24' bash -c 'env -i PATH=/usr/bin:/bin HOME="$0" DISPLAY="$DISPLAY" XAUTHORITY="$XAUTHORITY" "$@"' \
+        "$tmp/home" "$app" "$appdir/scenarios/smoke.rrcell" --quit-after-frames 3 || fail "window"
+    else
+      echo "smoke: no display and no xvfb-run: window not tried"
+      touch "$tmp/no-window"
+    fi
+    rm -f "$appdir/scenarios/smoke.rrcell"
+    [ -e "$tmp/no-window" ] || ls "$tmp"/home/.local/share/robotrun/workspaces/ 2>/dev/null | grep -q '^smoke' \
+      || fail "opening a .rrcell made no workspace"
   fi
   echo "smoke: ok: version, check, run, render, bad input, window"
 }
@@ -47,7 +55,10 @@ dpkg-deb -x "$deb" "$tmp/root"
 dpkg-deb -e "$deb" "$tmp/control"
 grep -q 'ln -sf /opt/robotrun/bin/RobotRun /usr/bin/robotrun' "$tmp/control/postinst" || fail "postinst does not put robotrun on the PATH"
 grep -q '^Exec=/opt/robotrun/bin/RobotRun %f$' "$tmp"/root/opt/robotrun/lib/*.desktop || fail "no menu entry passing the opened file"
-grep -rqi 'robotrun' "$tmp"/root/opt/robotrun/lib/*.xml 2>/dev/null || fail "no .LS file association (shared-mime-info)"
+grep -rqi 'text/x-robotrun-tp' "$tmp"/root/opt/robotrun/lib/*.xml 2>/dev/null || fail "no .LS file association (shared-mime-info)"
+grep -rq 'pattern="\*\.rrcell"' "$tmp"/root/opt/robotrun/lib/*.xml 2>/dev/null || fail "no .rrcell file association (shared-mime-info)"
+grep -q '^MimeType=.*text/x-robotrun-tp.*' "$tmp"/root/opt/robotrun/lib/*.desktop || fail "menu entry without the .LS type"
+grep -q '^MimeType=.*application/x-robotrun-cell' "$tmp"/root/opt/robotrun/lib/*.desktop || fail "menu entry without the .rrcell type"
 check_app "$tmp/root/opt/robotrun/bin/RobotRun" "$tmp/root/opt/robotrun/lib/app"
 
 tgz=$(ls "$dir"/*.tar.gz | head -1)

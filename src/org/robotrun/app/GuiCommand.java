@@ -74,7 +74,7 @@ public final class GuiCommand implements Callable<Integer> {
           + "Default: the last workspace.")
   Path workspace;
 
-  @Option(names = "--scenario", paramLabel = "FILE.json",
+  @Option(names = "--scenario", paramLabel = "FILE.rrcell|FILE.json",
       description = "Start a new workspace copied from this scenario (the scenario file is not changed; the copy goes to "
           + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
@@ -466,6 +466,8 @@ public final class GuiCommand implements Callable<Integer> {
 
   static String stem(Path p) {
     String f = p.getFileName().toString();
-    return f.toLowerCase(java.util.Locale.ROOT).endsWith(".json") ? f.substring(0, f.length() - 5) : f;
+    String lower = f.toLowerCase(java.util.Locale.ROOT);
+    return lower.endsWith(".json") ? f.substring(0, f.length() - 5)
+        : lower.endsWith(Main.CELL_EXTENSION) ? f.substring(0, f.length() - Main.CELL_EXTENSION.length()) : f;
   }
 }

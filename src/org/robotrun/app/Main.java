@@ -29,6 +29,13 @@ import picocli.CommandLine.Command;
     })
 public final class Main implements java.util.concurrent.Callable<Integer> {
 
+  /**
+   * RobotRun's own extension for a scenario (a cell to start from; the same JSON as a scenario
+   * {@code .json}), so that file managers can open it in RobotRun without claiming every
+   * {@code .json} file. See docs/install.md.
+   */
+  public static final String CELL_EXTENSION = ".rrcell";
+
   /** Exit codes shared by every subcommand. */
   public static final int EXIT_OK = 0;
   public static final int EXIT_FAILED = 1;
@@ -62,7 +69,9 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
   /**
    * The window is the default command, so its options work without naming it:
-   * {@code robotrun --scenario F} and {@code robotrun F.json} mean {@code robotrun gui --scenario F}.
+   * {@code robotrun --scenario F}, {@code robotrun F.json} and {@code robotrun F.rrcell} mean
+   * {@code robotrun gui --scenario F}; {@code robotrun F.LS} is {@code gui --program F} and
+   * {@code robotrun F.zip} is {@code gui --workspace F}.
    * Anything else (a subcommand, --help, --version) is left as it is.
    */
   static String[] withDefaultCommand(String[] args) {
@@ -74,15 +83,21 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     if (first.startsWith("-") && !topLevelOption) {
       return prepend("gui", args);
     }
+    // A file first: what a file manager runs for a file associated with RobotRun ('RobotRun
+    // FILE'); window options may follow.
     String lower = first.toLowerCase(java.util.Locale.ROOT);
-    if (args.length == 1 && lower.endsWith(".json")) {
-      return new String[] {"gui", "--scenario", first};
+    String option = lower.endsWith(".json") || lower.endsWith(CELL_EXTENSION) ? "--scenario"
+        : lower.endsWith(".ls") ? "--program"
+        : lower.endsWith(".zip") ? "--workspace"  // a hand-in, read-only
+        : null;
+    if (option == null) {
+      return args;
     }
-    if (args.length == 1 && lower.endsWith(".ls")) {
-      // What a file manager runs for a .LS file associated with RobotRun.
-      return new String[] {"gui", "--program", first};
-    }
-    return args;
+    String[] out = new String[args.length + 2];
+    out[0] = "gui";
+    out[1] = option;
+    System.arraycopy(args, 0, out, 2, args.length);
+    return out;
   }
 
   private static String[] prepend(String first, String[] rest) {

@@ -369,7 +369,7 @@ public final class CellEditorPanel {
   /** Saves the active scenario as a scenario file (until the workspace saves the cell with it). */
   private void drawSave() {
     ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.65f);
-    ImGui.inputTextWithHint("##save", "save as FILE.json", savePath);
+    ImGui.inputTextWithHint("##save", "save as FILE.rrcell", savePath);
     ImGui.sameLine();
     if (ImGui.button("Save")) {
       report(save(Path.of(savePath.get().trim())));
@@ -380,8 +380,10 @@ public final class CellEditorPanel {
   /** Writes the active scenario to {@code file} (scenario format 1, through AtomicFiles). */
   public Result save(Path file) {
     String f = file.getFileName() == null ? "" : file.getFileName().toString();
-    if (!f.toLowerCase(java.util.Locale.ROOT).endsWith(".json")) {
-      return new Result.Refused("save as: expected a file name ending in .json, got '" + f + "'");
+    String lower = f.toLowerCase(java.util.Locale.ROOT);
+    // .rrcell opens in RobotRun from a file manager; .json is the same scenario for text tools.
+    if (!lower.endsWith(".rrcell") && !lower.endsWith(".json")) {
+      return new Result.Refused("save as: expected a file name ending in .rrcell or .json, got '" + f + "'");
     }
     try {
       ScenarioWriter.write(editor.active(), file.toAbsolutePath());

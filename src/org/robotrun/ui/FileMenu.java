@@ -145,8 +145,8 @@ public final class FileMenu implements Workbench.MenuContributor {
         openWorkspace(false);
       }
       if (ImGui.menuItem("Open scenario...")) {
-        choose("Open scenario: the scenario file (.json); it is copied into a new workspace",
-            () -> dialogs.open("Scenario", "json", false, null), p -> tell(actions.openScenario(p)));
+        choose("Open scenario: the scenario file (.rrcell or .json); it is copied into a new workspace",
+            () -> dialogs.open("Scenario", "rrcell,json", false, null), p -> tell(actions.openScenario(p)));
       }
       if (ImGui.beginMenu("Recent workspaces")) {
         List<Path> recent = actions.recentWorkspaces();

@@ -25,6 +25,14 @@ class MainArgumentsTest {
     assertThat(Main.withDefaultCommand(new String[] {"/home/s/PICK.LS"}))
         .containsExactly("gui", "--program", "/home/s/PICK.LS");
     assertThat(Main.withDefaultCommand(new String[] {"check", "PICK.LS"})).containsExactly("check", "PICK.LS");
+    // RobotRun's own scenario extension, and a hand-in (read-only), as a file manager passes them.
+    assertThat(Main.withDefaultCommand(new String[] {"/home/s/Cell 1.RRCELL"}))
+        .containsExactly("gui", "--scenario", "/home/s/Cell 1.RRCELL");
+    assertThat(Main.withDefaultCommand(new String[] {"hand-in.zip"})).containsExactly("gui", "--workspace", "hand-in.zip");
+    assertThat(Main.withDefaultCommand(new String[] {"c.rrcell", "--quit-after-frames", "3"}))
+        .containsExactly("gui", "--scenario", "c.rrcell", "--quit-after-frames", "3");
+    assertThat(Main.withDefaultCommand(new String[] {"run", "--scenario", "x.rrcell"}))
+        .containsExactly("run", "--scenario", "x.rrcell");
   }
 
   @Test
