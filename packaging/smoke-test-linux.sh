@@ -9,7 +9,10 @@ set -euo pipefail
 dir="$(cd "$1" && pwd)"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
-clean() { env -i PATH=/usr/bin:/bin HOME="$tmp/home" DISPLAY="${DISPLAY:-}" XAUTHORITY="${XAUTHORITY:-}" "$@"; }
+# Java takes user.home from the password file, not $HOME: the XDG folders keep the app's
+# workspaces, settings and cache in the temporary home.
+xdg=(XDG_DATA_HOME="$tmp/home/.local/share" XDG_CONFIG_HOME="$tmp/home/.config" XDG_CACHE_HOME="$tmp/home/.cache")
+clean() { env -i PATH=/usr/bin:/bin HOME="$tmp/home" "${xdg[@]}" DISPLAY="${DISPLAY:-}" XAUTHORITY="${XAUTHORITY:-}" "$@"; }
 mkdir -p "$tmp/home"
 fail() { echo "smoke: FAILED: $*" >&2; exit 1; }
 
@@ -36,7 +39,7 @@ check_app() {  # LAUNCHER APPDIR
     cp "$appdir/scenarios/pick-and-place.json" "$appdir/scenarios/smoke.rrcell"
     if [ -n "${DISPLAY:-}" ]; then clean "$app" "$appdir/scenarios/smoke.rrcell" --quit-after-frames 3 || fail "window"
     elif command -v xvfb-run >/dev/null; then
-      xvfb-run -a -s '-screen 0 1366x768x24' bash -c 'env -i PATH=/usr/bin:/bin HOME="$0" DISPLAY="$DISPLAY" XAUTHORITY="$XAUTHORITY" "$@"' \
+      xvfb-run -a -s '-screen 0 1366x768x24' bash -c 'env -i PATH=/usr/bin:/bin HOME="$0" XDG_DATA_HOME="$0/.local/share" XDG_CONFIG_HOME="$0/.config" XDG_CACHE_HOME="$0/.cache" DISPLAY="$DISPLAY" XAUTHORITY="$XAUTHORITY" "$@"' \
         "$tmp/home" "$app" "$appdir/scenarios/smoke.rrcell" --quit-after-frames 3 || fail "window"
     else
       echo "smoke: no display and no xvfb-run: window not tried"
