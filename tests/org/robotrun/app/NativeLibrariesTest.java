@@ -88,6 +88,31 @@ class NativeLibrariesTest {
   }
 
   @Test
+  @EnabledOnOs(value = OS.LINUX, architectures = "amd64")
+  void twoRendersStartingAtOnceBothDrawAndShareOneFolder() throws Exception {
+    // Two processes racing for a fresh cache: both must finish, with one whole folder between them.
+    String javaBin = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+    List<Process> ps = new ArrayList<>();
+    for (int i = 0; i < 2; i++) {
+      ProcessBuilder pb = new ProcessBuilder(javaBin, "--enable-native-access=ALL-UNNAMED", "-cp",
+          System.getProperty("java.class.path"), Main.class.getName(), "render", "--out",
+          dir.resolve("shot" + i + ".png").toString(), "--width", "160", "--height", "120")
+          .redirectErrorStream(true).redirectOutput(dir.resolve("log" + i).toFile());
+      pb.environment().put("ROBOTRUN_CACHE_DIR", dir.resolve("cache").toString());
+      ps.add(pb.start());
+    }
+    for (int i = 0; i < 2; i++) {
+      assertThat(ps.get(i).waitFor(120, java.util.concurrent.TimeUnit.SECONDS)).isTrue();
+      assertThat(ps.get(i).exitValue()).as(Files.readString(dir.resolve("log" + i))).isZero();
+      assertThat(Files.size(dir.resolve("shot" + i + ".png"))).isPositive();
+    }
+    try (Stream<Path> s = Files.list(dir.resolve("cache/natives"))) {
+      assertThat(s.map(p -> p.getFileName().toString()).toList()).singleElement()
+          .satisfies(n -> assertThat(n).startsWith(PLATFORM + "-"));
+    }
+  }
+
+  @Test
   void noNativesForThePlatformMeansNothingIsDone() throws Exception {
     assertThat(NativeLibraries.install(dir, "plan9-mips", getClass().getClassLoader())).isEmpty();
     try (Stream<Path> s = Files.list(dir)) {
