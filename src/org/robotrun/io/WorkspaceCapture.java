@@ -65,7 +65,7 @@ public final class WorkspaceCapture {
       for (int k = 1; k <= 6; k++) {
         rad.add(Math.toRadians(q.element(k)));
       }
-      robots.add(new RobotSetup(r.name(), r.modelId(), r.X_CB(), r.endEffector(), rad, r.toolIo(), r.io(), r.userAlarms()));
+      robots.add(r.withJoints(rad));
     }
     World world = sim.world();
     FrameTable frames = sim.controllers().get(0).frames();
