@@ -52,8 +52,9 @@ final class RunReport {
       HeadlessRun.RobotResult rr = result.robots().stream().filter(x -> x.robot().equals(c.name())).findFirst().orElse(null);
       if (rr == null) {
         r.putNull("program");
-        r.put("status", "idle");
-        r.putNull("alarm");
+        // No program of its own: its controller's alarm (another robot ran into it), if any.
+        r.put("status", c.hasActiveAlarm() ? "alarm" : "idle");
+        alarm(r, c.activeAlarms().stream().findFirst());
       } else {
         r.put("program", rr.program());
         r.put("status", rr.status().name().toLowerCase(java.util.Locale.ROOT));
