@@ -106,6 +106,28 @@ class CellRunTest {
     assertThat(new int[] {waits[0], waits[1], waits[2]}).as("ticks at LOADER 20, 28, UNLOADER 14").doesNotContain(0);
   }
 
+  @Test
+  void withoutTheUnloadersWaitTheArmsCollideAndBothStop(@TempDir Path dir) throws Exception {
+    // The user guide's lab, step 4: UNLOADER line 14 (WAIT DI[1:PART READY]=ON) made a comment.
+    Files.createDirectories(dir.resolve("programs"));
+    Files.copy(HANDSHAKE, dir.resolve("cell.json"));
+    Files.copy(Path.of("scenarios/programs/LOADER.LS"), dir.resolve("programs/LOADER.LS"));
+    String unloader = Files.readString(Path.of("scenarios/programs/UNLOADER.LS"));
+    assertThat(unloader).contains("  14:  WAIT DI[1:PART READY]=ON ;");
+    Files.writeString(dir.resolve("programs/UNLOADER.LS"),
+        unloader.replace("  14:  WAIT DI[1:PART READY]=ON ;", "  14:  ! no wait ;"));
+    Path report = dir.resolve("r.json");
+    assertThat(Main.execute("run", "--scenario", dir.resolve("cell.json").toString(), "--report", report.toString()))
+        .isEqualTo(1);
+    JsonNode r = new ObjectMapper().readTree(report.toFile());
+    assertThat(r.get("status").asText()).isEqualTo("alarm");
+    for (JsonNode robot : r.get("robots")) {
+      assertThat(robot.get("status").asText()).isEqualTo("alarm");
+      assertThat(robot.get("alarm").get("code").asText()).isEqualTo("SRVO-050");
+      assertThat(robot.get("alarm").get("message").asText()).contains("robot1/").contains("robot2/");
+    }
+  }
+
   private static int line(Controller c) {
     ExecutionStatus s = c.status();
     return s.state() == ExecutionStatus.State.IDLE ? 0 : s.line();
