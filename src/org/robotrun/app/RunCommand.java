@@ -48,13 +48,16 @@ import picocli.CommandLine.Option;
       "The controller runs as in AUTO mode (operator panel start, no T1 speed cap, no hold-to-run) at --override.",
       "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
           + "before --programs; --program defaults to its main program); the program runs on the first robot.",
+      "A cell of several robots runs every robot's main program at once (the first robot's is --program), all robots "
+          + "in one 4 ms tick; wired outputs reach their inputs the next tick; the run ends when all have ended or at "
+          + "the first alarm on any robot. The report has one entry per robot and the cell's cycle time.",
       "With --workspace DIR|FILE.zip they come from a workspace or a hand-in (docs/workspace.md), as the window would run them.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
           + "reports it closed 0.1 s later.",
       "Collisions (robot links and tool against the floor, fixtures, parts, other robots and the arm itself) are "
           + "checked every tick; a new contact is alarm SRVO-050 (a scenario may ask for warnings instead).",
-      "Exit codes: 0 the program reached its end, 1 an alarm stopped it (or the time limit passed), 2 bad input.",
+      "Exit codes: 0 the program (every robot's) reached its end, 1 an alarm stopped one (or the time limit passed), 2 bad input.",
       "The JSON report is described in docs/run-report.md; the trace has one CSV row per tick (time, joints, TCP)."
     })
 public final class RunCommand implements Callable<Integer> {
