@@ -366,6 +366,9 @@ public final class GuiCommand implements Callable<Integer> {
       w.setShortcutHandler((key, mods) -> menu.onShortcut(key, mods) || bench.onShortcut(key, mods));
       w.setFocusGainedHandler(() -> ws.checkExternalEdits(menu));
     }
+    if (selector.size() > 1) {
+      bench.addMenus(selector);  // after File
+    }
     w.setViewClickHandler(bench::onViewClick);
     w.setViewPressHandler(bench.viewPress());
     w.setFocusLostHandler(() -> {

@@ -11,9 +11,10 @@ import org.robotrun.pendant.Pendant;
  * every robot keeps its own controller and pendant (screens, cursor, TP ENABLE, DEADMAN), and the
  * selector chooses which one the window's pendant panel, keyboard and operator panel drive. The
  * robots not selected go on running what they run. Keys held on the robot left (SHIFT, DEADMAN,
- * a jog key) are let go first, so no robot keeps jogging unseen.
+ * a jog key) are let go first, so no robot keeps jogging unseen. Drawn as a section of the left
+ * column and as a Robots menu in the menu bar.
  */
-public final class RobotSelector implements Supplier<Pendant> {
+public final class RobotSelector implements Supplier<Pendant>, Workbench.MenuContributor {
   /** The section title. */
   public static final String TITLE = "Robot selector";
 
@@ -63,6 +64,19 @@ public final class RobotSelector implements Supplier<Pendant> {
     if (index != selected) {
       beforeSwitch.forEach(Runnable::run);
       selected = index;
+    }
+  }
+
+  /** A "Robots" menu in the menu bar (there at every window size, also when the left column is hidden). */
+  @Override
+  public void drawMenus() {
+    if (ImGui.beginMenu("Robots")) {
+      for (int i = 0; i < names.size(); i++) {
+        if (ImGui.menuItem(names.get(i) + "##menurobot" + i, "", i == selected)) {
+          select(i);
+        }
+      }
+      ImGui.endMenu();
     }
   }
 
