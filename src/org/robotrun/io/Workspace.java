@@ -323,11 +323,15 @@ public final class Workspace implements AutoCloseable {
 
   /**
    * The folder under {@code programs/} of a robot after the first: its name, with any character
-   * other than letters, digits, '-', '_' and '.' replaced by '_'.
+   * other than letters, digits, '-', '_' and '.' replaced by '_', a leading '.' or '-' prefixed
+   * with '_', at most 64 characters (as a hand-in's entry names allow).
    */
   public static String robotFolder(String robot) {
     String f = robot.replaceAll("[^A-Za-z0-9._-]", "_");
-    return f.isEmpty() || f.equals(".") || f.equals("..") ? "_" + f : f;
+    if (f.isEmpty() || f.startsWith(".") || f.startsWith("-")) {
+      f = "_" + f;
+    }
+    return f.length() > 64 ? f.substring(0, 64) : f;
   }
 
   /** What could not be read or done while opening, each a message for the user; empty when all went well. */

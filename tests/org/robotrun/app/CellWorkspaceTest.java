@@ -72,6 +72,19 @@ class CellWorkspaceTest {
     assertThat(Files.readString(dir.resolve("cell.json"))).contains("\"robots\" : {").contains("\"robot2\"");
   }
 
+  @Test
+  void aHandInOfATwoRobotCellCarriesEveryRobotsProgramsAndRunsBoth(@TempDir Path tmp) throws Exception {
+    Path dir = WorkspaceFiles.createFromScenario(Path.of("scenarios/two-robot-handshake.json"), tmp.resolve("ws"));
+    Path zip = tmp.resolve("hand-in.zip");
+    org.robotrun.io.HandIn.Manifest m = org.robotrun.io.HandIn.write(dir, zip, "Ada", "test", false);
+    assertThat(m.files()).containsKeys("cell.json", "programs/LOADER.LS", "programs/robot2/UNLOADER.LS");
+    Path report = tmp.resolve("r.json");
+    assertThat(Main.execute("run", "--workspace", zip.toString(), "--report", report.toString())).isZero();
+    var r = new com.fasterxml.jackson.databind.ObjectMapper().readTree(report.toFile());
+    assertThat(r.get("robots").get(1).get("program").asText()).isEqualTo("UNLOADER");
+    assertThat(r.get("robots").get(1).get("status").asText()).isEqualTo("finished");
+  }
+
   private static Program renamed(Program p, String name) {
     String text = org.robotrun.io.LsWriter.write(p).replaceFirst("/PROG\\s+\\S+", "/PROG  " + name);
     return org.robotrun.io.LsReader.parse(name + ".LS", text).program();
