@@ -500,7 +500,11 @@ public final class Workspace implements AutoCloseable {
     Path programDir = dir.resolve(PROGRAMS);
     Map<Path, String> nameOf = new HashMap<>();
     fileOf.forEach((name, file) -> nameOf.put(file, name));
-    for (Path f : programFiles(programDir, new ArrayList<>())) {
+    List<Path> watched = new ArrayList<>(programFiles(programDir, new ArrayList<>()));
+    for (int i = 1; i < scenario.robots().size(); i++) {
+      watched.addAll(programFiles(programDir.resolve(robotFolder(scenario.robots().get(i).name())), new ArrayList<>()));
+    }
+    for (Path f : watched) {
       Stamp before = stamps.get(f);
       if (before == null || !before.equals(Stamp.of(f))) {
         out.add(new ExternalChange(f, nameOf.getOrDefault(f, ""), false));
@@ -526,12 +530,23 @@ public final class Workspace implements AutoCloseable {
     stamps.put(file, Stamp.of(file));
     if (p.isPresent()) {
       blocked.remove(file);
-      fileOf.put(p.get().name(), file);
-      writtenPrograms.put(p.get().name(), p.get());
+      String key = robotFolderOf(file).map(f -> f + "/" + p.get().name()).orElse(p.get().name());
+      fileOf.put(key, file);
+      writtenPrograms.put(key, p.get());
     } else {
       blocked.add(file);
     }
     return p;
+  }
+
+  /** The robot folder ({@link #robotFolder}) a program file lies in, or empty for {@code programs/} itself (the first robot). */
+  public Optional<String> robotFolderOf(Path file) {
+    Path parent = file.toAbsolutePath().normalize().getParent();
+    Path programDir = dir.resolve(PROGRAMS);
+    if (parent == null || parent.equals(programDir) || !programDir.equals(parent.getParent())) {
+      return Optional.empty();
+    }
+    return Optional.of(parent.getFileName().toString());
   }
 
   /** Forgets a changed file's new stamp without reading it (the user chose to keep the program in the window). */

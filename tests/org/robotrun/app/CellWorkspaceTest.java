@@ -85,6 +85,28 @@ class CellWorkspaceTest {
     assertThat(r.get("robots").get(1).get("status").asText()).isEqualTo("finished");
   }
 
+  @Test
+  void aLaterRobotsProgramEditedOutsideIsNoticedAndReloadedIntoThatRobot(@TempDir Path tmp) throws Exception {
+    Path dir = WorkspaceFiles.createFromScenario(Path.of("scenarios/two-robot-handshake.json"), tmp.resolve("ws"));
+    WindowCell cell = WindowCell.open(dir, new org.robotrun.io.UserDirs(tmp.resolve("data"), tmp.resolve("cfg")), m -> {},
+        Optional::empty);
+    try {
+      Path file = dir.resolve("programs/robot2/UNLOADER.LS");
+      String text = Files.readString(file);
+      Files.writeString(file, text.replace("parts from the nest to the tray", "edited outside"));
+      Files.setLastModifiedTime(file, java.nio.file.attribute.FileTime.fromMillis(System.currentTimeMillis() + 5000));
+      var changes = cell.session.workspace.externalChanges();
+      assertThat(changes).extracting(org.robotrun.io.Workspace.ExternalChange::programName).containsExactly("robot2/UNLOADER");
+      cell.takeFile(file, new java.util.ArrayList<>());
+      Controller two = cell.session.sim.controllers().get(1);
+      assertThat(two.program("UNLOADER").orElseThrow().comment()).isEqualTo("edited outside");
+      assertThat(cell.session.sim.controllers().get(0).program("UNLOADER")).isEmpty();
+      assertThat(cell.session.workspace.externalChanges()).isEmpty();
+    } finally {
+      cell.close();
+    }
+  }
+
   private static Program renamed(Program p, String name) {
     String text = org.robotrun.io.LsWriter.write(p).replaceFirst("/PROG\\s+\\S+", "/PROG  " + name);
     return org.robotrun.io.LsReader.parse(name + ".LS", text).program();
