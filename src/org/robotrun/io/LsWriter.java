@@ -241,6 +241,7 @@ public final class LsWriter {
   }
 
   private static void move(Instruction.Move m, StringBuilder sb) {
+    String block = "";
     sb.append(m.type().name()).append(' ');
     target(m.target(), sb);
     if (m.circularEnd().isPresent()) {
@@ -281,10 +282,15 @@ public final class LsWriter {
         }
         case Motion.Wjnt x -> sb.append("Wjnt");
         case Motion.Inc x -> sb.append("INC");
-        case Motion.RawOption x -> sb.append(x.text());
+        case Motion.RawOption x -> {
+          // A point-logic block kept with the last option: its sub-lines follow the motion line.
+          int nl = x.text().indexOf('\n');
+          sb.append(x.text(), 0, nl < 0 ? x.text().length() : nl);
+          block = nl < 0 ? "" : x.text().substring(nl);
+        }
       }
     }
-    sb.append("    ;\n");
+    sb.append("    ;").append(block).append('\n');
   }
 
   private static void target(Motion.Target t, StringBuilder sb) {

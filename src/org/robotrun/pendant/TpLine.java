@@ -318,7 +318,8 @@ public final class TpLine {
       case Motion.Skip s -> "Skip," + ExprText.label(s.label());
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";
-      case Motion.RawOption x -> x.text();
+      // A point-logic block's sub-lines are not shown on the motion's line.
+      case Motion.RawOption x -> x.text().lines().findFirst().orElse("");
     };
   }
 
