@@ -199,6 +199,45 @@ public final class TpStatementParser extends TpTokenCursor {
     return new Parsed(in, List.copyOf(p.warnings));
   }
 
+  // ---- typed text (the pendant's field entry) ----------------------------------------------
+
+  /**
+   * Parses typed text as one expression, with the grammar and limits of a statement in a file
+   * (the pendant's field entry uses this, so it accepts exactly what a file may hold). A whole
+   * {@code 'string'} is a string constant (a CALL argument or a string register's value).
+   *
+   * @throws TpSyntaxError naming the column (line 1) and what was expected
+   */
+  public static Expr expressionText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Expr e = p.peek().is(Kind.STRING) && p.peek(1).is(Kind.EOL) ? new Expr.StringConst(p.next().text()) : p.expression();
+    p.expectEnd("the end of the expression");
+    return e;
+  }
+
+  /** Parses typed text as an index: {@code 5} or {@code R[2]}. */
+  public static Index indexText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Index i = p.indexValue("index");
+    p.expectEnd("the end of the index");
+    return i;
+  }
+
+  /** Parses typed text as an item of {@code kind}: {@code R[3]}, {@code R[3:COUNT]}. */
+  public static Item itemText(String kind, String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    p.expectWordNamed(kind, kind + "[i]");
+    Item item = p.item(kind);
+    p.expectEnd("the end of the item");
+    return item;
+  }
+
+  private void expectEnd(String what) {
+    if (!peek().is(Kind.EOL)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
+  }
+
   /**
    * A statement and the warnings about it (a register number outside the controller's table:
    * legal text, but running the line raises an alarm).
@@ -958,7 +997,10 @@ public final class TpStatementParser extends TpTokenCursor {
         nesting--;
         return new Expr.Group(inner);
       }
-      case STRING -> throw error(t, "a string is allowed only as a CALL argument");
+      case STRING -> {
+        // a string constant: a CALL argument, a string register's value (SR[1]=SR[2]+'_A'), a comparison
+        return new Expr.StringConst(t.text());
+      }
       case WORD -> {
         String w = t.text().toUpperCase(Locale.ROOT);
         return switch (w) {
