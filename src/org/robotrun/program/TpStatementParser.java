@@ -43,14 +43,10 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("UNLOCK", "UNLOCK PREG"),
       Map.entry("SR", "string registers SR[]"),
       Map.entry("VR", "vision registers VR[]"),
-      Map.entry("AI", "analog input AI[]"),
-      Map.entry("AO", "analog output AO[]"),
       Map.entry("SDI", "SDI[]"),
       Map.entry("SDO", "SDO[]"),
       Map.entry("UI", "UOP input UI[]"),
       Map.entry("UO", "UOP output UO[]"),
-      Map.entry("SI", "SOP input SI[]"),
-      Map.entry("SO", "SOP output SO[]"),
       Map.entry("WI", "weld input WI[]"),
       Map.entry("WO", "weld output WO[]"),
       Map.entry("JOINT_MAX_SPEED", "JOINT_MAX_SPEED"),
@@ -301,6 +297,17 @@ public final class TpStatementParser extends TpTokenCursor {
       throw unsupported(t, "system variable assignment", true);
     }
     next();
+    IoKind io = ioKind(w);
+    if (io != null && peek().is(Kind.LBRACKET)) {
+      if (io.writable()) {
+        return ioAssignment(io);
+      }
+      if (io == IoKind.DI || io == IoKind.RI || io == IoKind.GI || io == IoKind.SI || io == IoKind.AI) {
+        throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)");
+      }
+      // SO[] (and the UOP outputs): driven by the controller itself
+      throw unsupported(t, "assigning " + w + "[] (the controller sets it)", false);
+    }
     return switch (w) {
       case "R" -> {
         Item reg = item("R");
@@ -308,8 +315,6 @@ public final class TpStatementParser extends TpTokenCursor {
         yield new Instruction.AssignRegister(reg, expression());
       }
       case "PR" -> positionRegisterAssignment();
-      case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
-      case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
       case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
@@ -415,6 +420,16 @@ public final class TpStatementParser extends TpTokenCursor {
         throw unknownStatement(t);
       }
     };
+  }
+
+  /** The I/O kind named {@code w} (upper case), or null. */
+  private static IoKind ioKind(String w) {
+    for (IoKind k : IoKind.values()) {
+      if (k.name().equals(w)) {
+        return k;
+      }
+    }
+    return null;
   }
 
   private static String targetKind(String word) {
@@ -1008,7 +1023,7 @@ public final class TpStatementParser extends TpTokenCursor {
           case "OFF" -> new Expr.OnOff(false);
           case "R" -> new Expr.Register(item("R"));
           case "PR" -> positionElement();
-          case "DI", "DO", "RI", "RO", "GI", "GO", "F" -> new Expr.Io(IoKind.valueOf(w), item(w));
+
           case "TIMER" -> new Expr.Timer(item("TIMER"));
           case "AR" -> {
             Item a = item("AR");
@@ -1018,6 +1033,10 @@ public final class TpStatementParser extends TpTokenCursor {
             yield new Expr.Arg(a.index());
           }
           default -> {
+            IoKind io = ioKind(w);
+            if (io != null && peek().is(Kind.LBRACKET)) {
+              yield new Expr.Io(io, item(w));
+            }
             String name = UNSUPPORTED.get(w);
             if (name != null) {
               throw unsupported(t, name + " in an expression", false);
@@ -1124,9 +1143,8 @@ public final class TpStatementParser extends TpTokenCursor {
     int size = switch (table) {
       case "R" -> Registers.R_COUNT;
       case "PR" -> Registers.PR_COUNT;
-      case "F", "DI", "DO", "RI", "RO", "GI", "GO" -> ioRanges.size(IoKind.valueOf(table));
       case "TIMER" -> Registers.TIMER_COUNT;
-      default -> 0;
+      default -> ioKind(table) != null ? ioRanges.size(ioKind(table)) : 0;
     };
     if (size > 0 && (n < 1 || n > size)) {
       warnings.add(table + "[" + n + "]: index out of range (expected 1.." + size + "); running this line raises an alarm");
