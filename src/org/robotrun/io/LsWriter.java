@@ -454,6 +454,11 @@ public final class LsWriter {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);
       }
+      case Instruction.AssignString a -> {
+        item("SR", a.register(), sb);
+        sb.append('=');
+        expr(a.value(), sb);
+      }
       case Instruction.UserAlarm u -> {
         sb.append("UALM[");
         index(u.number(), sb);
@@ -512,6 +517,8 @@ public final class LsWriter {
       case Expr.Timer t -> 7;
       case Expr.Arg a -> 7;
       case Expr.SysVar v -> 7;
+      case Expr.StringReg r -> 7;
+      case Expr.StringFunc f -> 7;
       case Expr.Group g -> 7;
     };
   }
@@ -549,6 +556,16 @@ public final class LsWriter {
       case Expr.Io io -> item(io.kind().name(), io.port(), sb);
       case Expr.Timer t -> item("TIMER", t.timer(), sb);
       case Expr.SysVar v -> sb.append(v.name());
+      case Expr.StringReg r -> item("SR", r.register(), sb);
+      case Expr.StringFunc f -> {
+        sb.append(f.fn().name()).append(' ');
+        for (int k = 0; k < f.args().size(); k++) {
+          if (k > 0) {
+            sb.append(',');
+          }
+          operand(f.args().get(k), strength(f.args().get(k)) < 6, sb);
+        }
+      }
       case Expr.Arg a -> {
         sb.append("AR[");
         index(a.index(), sb);

@@ -56,6 +56,9 @@ public final class ExprText {
       case Expr.Timer t -> item("TIMER", t.timer());
       case Expr.Arg a -> "AR[" + index(a.index()) + "]";
       case Expr.SysVar v -> v.name();
+      case Expr.StringReg r -> item("SR", r.register());
+      case Expr.StringFunc f -> f.fn().name() + " " + String.join(",", f.args().stream().map(a ->
+          a instanceof Expr.Binary ? "(" + format(a) + ")" : format(a)).toList());
       case Expr.Unary u -> u.op().symbol() + format(u.operand());
       case Expr.Binary b -> format(b.left()) + binary(b.op()) + format(b.right());
       case Expr.Group g -> "(" + format(g.inner()) + ")";
@@ -169,6 +172,12 @@ public final class ExprText {
       case Expr.PosElement p -> checkRange("PR", p.register().index());
       case Expr.Io io -> checkRange(io.kind().name(), io.port().index());
       case Expr.Timer t -> checkRange("TIMER", t.timer().index());
+      case Expr.StringReg r -> checkRange("SR", r.register().index());
+      case Expr.StringFunc f -> {
+        for (Expr a : f.args()) {
+          checkRanges(a, depth + 1);
+        }
+      }
       case Expr.Arg a -> {
         if (a.index() instanceof Index.Indirect) {
           checkRange("AR", a.index());
@@ -190,6 +199,7 @@ public final class ExprText {
       case "R" -> org.robotrun.program.Registers.R_COUNT;
       case "PR" -> org.robotrun.program.Registers.PR_COUNT;
       case "TIMER" -> org.robotrun.program.Registers.TIMER_COUNT;
+      case "SR" -> org.robotrun.program.Registers.SR_COUNT;
       // The controller's I/O sizes are configured per cell; beyond them the line alarms when it runs.
       default -> java.util.Arrays.stream(IoKind.values()).anyMatch(k -> k.name().equals(kind))
           ? org.robotrun.program.IoRanges.MAX_SIZE : Integer.MAX_VALUE;

@@ -69,7 +69,10 @@ final class InstMenu {
           Template.of("PR[ ]=UTOOL[ ]", new Instruction.AssignPosReg(Item.of(1), new Instruction.FromFrame(FrameKind.TOOL, Index.of(1)))),
           Template.of("PR[ ]=PR[ ]+PR[ ]", new Instruction.AssignPosReg(Item.of(1), new Instruction.PosArithmetic(Item.of(2), true, Item.of(3)))),
           Template.of("PR[ ]=PR[ ]-PR[ ]", new Instruction.AssignPosReg(Item.of(1), new Instruction.PosArithmetic(Item.of(2), false, Item.of(3)))),
-          Template.of("PR[i,j]=...", new Instruction.AssignPosElement(Item.of(1), 1, new Expr.IntConst(0))))),
+          Template.of("PR[i,j]=...", new Instruction.AssignPosElement(Item.of(1), 1, new Expr.IntConst(0))),
+          Template.of("SR[ ]=...", new Instruction.AssignString(Item.of(1), new Expr.StringReg(Item.of(2)))),
+          Template.of("R[ ]=STRLEN SR[ ]", new Instruction.AssignRegister(Item.of(1),
+              new Expr.StringFunc(Expr.StringFn.STRLEN, java.util.List.of(new Expr.StringReg(Item.of(1)))))))),
       new Category("I/O", List.of(
           Template.of("DO[ ]=ON/OFF", new Instruction.SetIo(IoKind.DO, Item.of(1), new Expr.OnOff(true))),
           Template.of("DO[ ]=PULSE", new Instruction.Pulse(IoKind.DO, Item.of(1), OptionalDouble.empty())),

@@ -36,7 +36,15 @@ public final class TpLine {
       case Instruction.AssignRegister a -> {
         f.add(itemField("R", a.register(), i -> new Instruction.AssignRegister(i, a.value())));
         f.add(Field.fixed("="));
-        f.add(exprField(a.value(), e -> new Instruction.AssignRegister(a.register(), e)));
+        String text = ExprText.format(a.value());
+        f.add(new Field(text, Field.Edit.entry(text, t -> {
+          Expr e = value(t);
+          if (e instanceof Expr.StringConst) {
+            // as the .LS reader refuses R[1]='A'
+            throw new BadText("R[] holds a number, not a string constant: put the text in a string register SR[i]");
+          }
+          return new Instruction.AssignRegister(a.register(), e);
+        })));
       }
       case Instruction.SkipCondition s -> {
         f.add(Field.fixed("SKIP CONDITION"));
@@ -48,6 +56,11 @@ public final class TpLine {
       }
       case Instruction.MacroCall c -> f.add(new Field(c.name(), Field.Edit.both(programs,
           k -> new Instruction.MacroCall(programs.get(k)), c.name(), t -> new Instruction.MacroCall(macroName(t)))));
+      case Instruction.AssignString a -> {
+        f.add(itemField("SR", a.register(), i -> new Instruction.AssignString(i, a.value())));
+        f.add(Field.fixed("="));
+        f.add(exprField(a.value(), e -> new Instruction.AssignString(a.register(), e)));
+      }
       case Instruction.SetSysVar s -> {
         f.add(Field.fixed(s.name()));
         f.add(Field.fixed("="));
@@ -494,39 +507,11 @@ public final class TpLine {
     }));
   }
 
-  /**
-   * A typed expression as the .LS reader takes it inside a statement: a string ('...') only as a
-   * whole CALL argument.
-   */
+  /** A typed expression, as the .LS reader takes it inside a statement. */
   static Expr value(String text) throws BadText {
-    Expr e = ExprText.parse(text);
-    if (hasString(e)) {
-      throw stringNotAllowed();
-    }
-    return e;
+    return ExprText.parse(text);
   }
 
-  private static BadText stringNotAllowed() {
-    return new BadText("a string ('...') is allowed only as a CALL argument");
-  }
-
-  private static boolean hasString(Expr e) {
-    return switch (e) {
-      case Expr.StringConst s -> true;
-      case Expr.Unary u -> hasString(u.operand());
-      case Expr.Binary b -> hasString(b.left()) || hasString(b.right());
-      case Expr.Group g -> hasString(g.inner());
-      case Expr.IntConst x -> false;
-      case Expr.RealConst x -> false;
-      case Expr.OnOff x -> false;
-      case Expr.Register x -> false;
-      case Expr.PosElement x -> false;
-      case Expr.Io x -> false;
-      case Expr.Timer x -> false;
-      case Expr.Arg x -> false;
-      case Expr.SysVar x -> false;
-    };
-  }
 
   /** A WAIT time: 0 or more seconds, or an expression (the reader refuses a negative constant). */
   static Expr waitTime(String text) throws BadText {
@@ -689,12 +674,7 @@ public final class TpLine {
       String inner = t.substring(open + 1, t.length() - 1).trim();
       if (!inner.isEmpty()) {
         for (String a : splitTopLevel(inner)) {
-          // a whole argument may be a string; a string inside an expression is refused
-          Expr arg = ExprText.parse(a);
-          if (!(arg instanceof Expr.StringConst) && hasString(arg)) {
-            throw stringNotAllowed();
-          }
-          args.add(arg);
+          args.add(ExprText.parse(a));
         }
       }
     }

@@ -59,6 +59,17 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code SR[i]=expr}: a string register. A number is stored as its text ({@code SR[1]=R[2]}),
+   * {@code +} with a string concatenates ({@code SR[1]=SR[2]+R[3]}).
+   */
+  record AssignString(Item register, Expr value) implements Instruction {
+    public AssignString {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
   /** {@code PR[i]=source}. */
   record AssignPosReg(Item register, PosSource source) implements Instruction {
     public AssignPosReg {

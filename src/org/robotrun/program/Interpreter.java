@@ -721,6 +721,11 @@ public final class Interpreter {
         regs.r[i] = v;
         regs.rIsInteger[i] = false;
       }
+      case Nodes.STR -> {
+        // R[i]=SR[j]: the string's leading number
+        double n = Nodes.number(this, str, "R[" + i + "]=" + "a string");
+        storeR(i, n);
+      }
       default -> throw Nodes.mismatch("R[" + i + "] needs a number", kind);
     }
   }

@@ -62,6 +62,29 @@ final class Ops {
     }
   }
 
+  /** {@code SR[i]=expr}: a number is stored as its text. */
+  static final class AssignSrOp extends Op {
+    final Idx idx;
+    final Node value;
+
+    AssignSrOp(Idx idx, Node value) {
+      this.idx = idx;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("SR", idx.resolve(m), Registers.SR_COUNT);
+      String t = Nodes.text(m, value.eval(m), "SR[" + i + "]");
+      if (t.length() > Registers.SR_LENGTH) {
+        throw new AlarmSignal(AlarmKind.BAD_VALUE, "SR[" + i + "]: at most " + Registers.SR_LENGTH
+            + " characters, got " + t.length());
+      }
+      m.regs.setString(i, t);
+      return NEXT;
+    }
+  }
+
   /** {@code R[R[j]]=expr}. */
   static final class AssignRIndexed extends Op {
     final Idx idx;

@@ -41,7 +41,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("COL", "COL DETECT"),
       Map.entry("LOCK", "LOCK PREG"),
       Map.entry("UNLOCK", "UNLOCK PREG"),
-      Map.entry("SR", "string registers SR[]"),
       Map.entry("VR", "vision registers VR[]"),
       Map.entry("SDI", "SDI[]"),
       Map.entry("SDO", "SDO[]"),
@@ -124,9 +123,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("COL_GUARD_ADJUST", "COL GUARD ADJUST"),
       Map.entry("REMARK", "remark"),
       Map.entry("FREE", "FREE"),
-      Map.entry("STRLEN", "string functions"),
-      Map.entry("SUBSTR", "string functions"),
-      Map.entry("FINDSTR", "string functions"),
       Map.entry("STATION", "station sync"),
       Map.entry("DIAGNOSTIC_REC", "DIAGNOSTIC"));
 
@@ -186,6 +182,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
       case Instruction.SetSysVar s -> s.value();
+      case Instruction.AssignString a -> a.value();
       case Instruction.SkipCondition s -> s.condition();
       default -> null;
     };
@@ -312,7 +309,15 @@ public final class TpStatementParser extends TpTokenCursor {
       case "R" -> {
         Item reg = item("R");
         expect(Kind.EQ, "'=' after R[...]");
+        if (peek().is(Kind.STRING) && peek(1).is(Kind.EOL)) {
+          throw error("R[] holds a number, not a string constant: put the text in a string register SR[i]");
+        }
         yield new Instruction.AssignRegister(reg, expression());
+      }
+      case "SR" -> {
+        Item reg = item("SR");
+        expect(Kind.EQ, "'=' after SR[...]");
+        yield new Instruction.AssignString(reg, expression());
       }
       case "PR" -> positionRegisterAssignment();
       case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
@@ -1025,6 +1030,18 @@ public final class TpStatementParser extends TpTokenCursor {
           case "PR" -> positionElement();
 
           case "TIMER" -> new Expr.Timer(item("TIMER"));
+          case "SR" -> new Expr.StringReg(item("SR"));
+          case "STRLEN", "SUBSTR", "FINDSTR" -> {
+            Expr.StringFn fn = Expr.StringFn.valueOf(w);
+            List<Expr> args = new ArrayList<>(fn.arity());
+            for (int k = 0; k < fn.arity(); k++) {
+              if (k > 0) {
+                expect(Kind.COMMA, "',' (" + w + " takes " + fn.arity() + " arguments)");
+              }
+              args.add(unary());
+            }
+            yield new Expr.StringFunc(fn, args);
+          }
           case "AR" -> {
             Item a = item("AR");
             if (!a.comment().isEmpty()) {
@@ -1144,6 +1161,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case "R" -> Registers.R_COUNT;
       case "PR" -> Registers.PR_COUNT;
       case "TIMER" -> Registers.TIMER_COUNT;
+      case "SR" -> Registers.SR_COUNT;
       default -> ioKind(table) != null ? ioRanges.size(ioKind(table)) : 0;
     };
     if (size > 0 && (n < 1 || n > size)) {

@@ -208,7 +208,7 @@ class LsReaderTest {
         {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
-        {"SR[1]=R[1]", "not supported: string registers SR[] (the line alarms when it runs)"},
+        {"LOCK PREG", "warning: not supported: LOCK PREG (the line is skipped when it runs)"},
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
         {"OFFSET CONDITION PR[1],UFRAME[2]", "not supported: OFFSET CONDITION with a frame (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},

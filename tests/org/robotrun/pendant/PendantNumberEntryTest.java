@@ -184,7 +184,8 @@ class PendantNumberEntryTest {
     assertThat(type(loop, 3, "-2")).isEqualTo(new Instruction.For(Item.of(1), new Expr.IntConst(-2), false, new Expr.IntConst(3)));
 
     Instruction assign = new Instruction.AssignRegister(Item.of(1), new Expr.IntConst(0));
-    assertThatThrownBy(() -> type(assign, 2, "'A'")).hasMessageContaining("only as a CALL argument");
+    // a string is a value since SR[] runs (SR[1]='A'), but not one R[] holds: refused as the .LS reader refuses it
+    assertThatThrownBy(() -> type(assign, 2, "'A'")).hasMessageContaining("R[] holds a number, not a string constant");
 
     Instruction pulse = new Instruction.Pulse(IoKind.DO, Item.of(1), OptionalDouble.of(0.5));
     assertThatThrownBy(() -> type(pulse, 3, "NaN")).hasMessage("Pulse width NaN: not a number, enter a number above 0");
