@@ -448,6 +448,11 @@ public final class LsWriter {
       case Instruction.OffsetCondition o -> {
         sb.append("OFFSET CONDITION ");
         item("PR", o.register(), sb);
+        if (o.userFrame().isPresent()) {
+          sb.append(",UFRAME[");
+          index(o.userFrame().get(), sb);
+          sb.append(']');
+        }
       }
       case Instruction.MacroCall c -> sb.append(c.name());
       case Instruction.SetSysVar s -> {

@@ -52,7 +52,8 @@ public final class TpLine {
       }
       case Instruction.OffsetCondition o -> {
         f.add(Field.fixed("OFFSET CONDITION"));
-        f.add(itemField("PR", o.register(), Instruction.OffsetCondition::new));
+        f.add(itemField("PR", o.register(), i -> new Instruction.OffsetCondition(i, o.userFrame())));
+        o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + ExprText.index(j) + "]")));
       }
       case Instruction.MacroCall c -> f.add(new Field(c.name(), Field.Edit.both(programs,
           k -> new Instruction.MacroCall(programs.get(k)), c.name(), t -> new Instruction.MacroCall(macroName(t)))));

@@ -154,7 +154,7 @@ final class Compiler {
       case Instruction.AssignString a -> new Ops.AssignSrOp(idx(a.register().index()), expr(a.value()));
       case Instruction.MacroCall c -> call(new Instruction.Call(c.name(), java.util.List.of()));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
-      case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register());
+      case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register(), o.userFrame().map(Compiler::idx).orElse(null));
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.

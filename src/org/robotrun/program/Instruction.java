@@ -343,13 +343,20 @@ public sealed interface Instruction {
   }
 
   /**
-   * {@code OFFSET CONDITION PR[i]}: the offset a motion with a plain {@code Offset} option applies
-   * (PR[i] is read when the motion starts). It stays set until the next OFFSET CONDITION or the
+   * {@code OFFSET CONDITION PR[i]} or {@code OFFSET CONDITION PR[i],UFRAME[j]}: the offset a motion
+   * with a plain {@code Offset} option applies (PR[i] is read when the motion starts; with UFRAME[j]
+   * the offset is expressed in user frame j, 0 = world, and turned into the motion's frame). It stays set until the next OFFSET CONDITION or the
    * program ends.
    */
-  record OffsetCondition(Item register) implements Instruction {
+  record OffsetCondition(Item register, Optional<Index> userFrame) implements Instruction {
     public OffsetCondition {
       Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(userFrame, "userFrame");
+    }
+
+    /** {@code OFFSET CONDITION PR[i]}: the offset in the motion's own user frame. */
+    public OffsetCondition(Item register) {
+      this(register, Optional.empty());
     }
   }
 

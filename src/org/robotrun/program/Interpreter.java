@@ -74,6 +74,8 @@ public final class Interpreter {
   Nodes.Node skipCondition;
   /** The PR of the last OFFSET CONDITION of this run, or null. */
   Item offsetCondition;
+  /** The user frame of the OFFSET CONDITION's offset, -1 for the motion's own frame. */
+  int offsetConditionFrame = -1;
 
   private final Map<String, CompiledProgram> compiled = new HashMap<>();
   private final Frame[] frames;
@@ -618,6 +620,7 @@ public final class Interpreter {
     push(cp, Math.min(cursorLine - 1, cp.ops.length));
     skipCondition = null;
     offsetCondition = null;
+    offsetConditionFrame = -1;
     finishedProgram = null;
     state = State.RUNNING;
   }
@@ -876,7 +879,8 @@ public final class Interpreter {
           if (offsetCondition == null) {
             throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "Offset needs an OFFSET CONDITION PR[i] before it (or write Offset,PR[i])");
           }
-          offset = Optional.of(positionRegister(offsetCondition));
+          offset = Optional.of(offsetConditionFrame < 0 ? positionRegister(offsetCondition)
+              : offsetFromFrame(positionRegister(offsetCondition), offsetConditionFrame));
         }
         case Motion.OffsetPr x -> offset = Optional.of(positionRegister(x.register()));
         case Motion.ToolOffsetPr x -> toolOffset = Optional.of(positionRegister(x.register()));
@@ -903,6 +907,31 @@ public final class Interpreter {
   private double registerNumber(Item register, String what) {
     int i = Nodes.check("R", new Nodes.Idx(register.index()).resolve(this), Registers.R_COUNT);
     return regs.r[i];
+  }
+
+  /**
+   * An offset expressed in user frame {@code j} (OFFSET CONDITION PR[i],UFRAME[j]) as the same
+   * displacement in the active user frame u, where the motion's target is: O_u = F_u^-1 F_j O F_j^-1 F_u
+   * (frame 0 is the world). With j = u this is the offset itself.
+   */
+  private Position offsetFromFrame(Position offset, int j) {
+    if (!(offset instanceof Position.Cartesian oc)) {
+      throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, "OFFSET CONDITION ...,UFRAME[" + j + "] needs a Cartesian PR");
+    }
+    int u = port.activeFrame(Instruction.FrameKind.USER);
+    if (u == j) {
+      return offset;
+    }
+    org.robotrun.math.Transform fj = userFrame(j);
+    org.robotrun.math.Transform fu = userFrame(u);
+    org.robotrun.math.Transform o = oc.toXyzwpr().toTransform();
+    org.robotrun.math.Transform ou = fu.inverse().compose(fj).compose(o).compose(fj.inverse()).compose(fu);
+    return Position.Cartesian.of(org.robotrun.math.Xyzwpr.fromTransform(ou), oc.config());
+  }
+
+  private org.robotrun.math.Transform userFrame(int n) {
+    return n == 0 ? org.robotrun.math.Transform.IDENTITY
+        : port.frame(Instruction.FrameKind.USER, n).toXyzwpr().toTransform();
   }
 
   private Position positionRegister(Item register) {

@@ -534,14 +534,25 @@ final class Ops {
   /** OFFSET CONDITION PR[i]: remembered for the following motions with a plain Offset. */
   static final class OffsetConditionOp extends Op {
     final Item register;
+    /** The user frame the offset is expressed in, null for the motion's own frame. */
+    final Nodes.Idx userFrame;
 
-    OffsetConditionOp(Item register) {
+    OffsetConditionOp(Item register, Nodes.Idx userFrame) {
       this.register = register;
+      this.userFrame = userFrame;
     }
 
     @Override
     int exec(Interpreter m) {
       m.offsetCondition = register;
+      m.offsetConditionFrame = -1;
+      if (userFrame != null) {
+        int j = userFrame.resolve(m);
+        if (j < 0 || j > 10) {
+          throw new AlarmSignal(AlarmKind.BAD_VALUE, "OFFSET CONDITION UFRAME[" + j + "]: expected 0..10");
+        }
+        m.offsetConditionFrame = j;
+      }
       return NEXT;
     }
   }

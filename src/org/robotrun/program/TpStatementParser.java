@@ -367,9 +367,14 @@ public final class TpStatementParser extends TpTokenCursor {
         next();
         next();
         Item pr = item("PR");
+        if (peek().is(Kind.COMMA) && peek(1).isWord("UFRAME") && peek(2).is(Kind.LBRACKET)) {
+          // OFFSET CONDITION PR[1],UFRAME[2]: the offset expressed in user frame 2
+          next();
+          next();
+          yield new Instruction.OffsetCondition(pr, Optional.of(index("UFRAME")));
+        }
         if (!peek().is(Kind.EOL)) {
-          // OFFSET CONDITION PR[1],UFRAME[2]: an offset in another frame
-          throw unsupported(t, "OFFSET CONDITION with a frame", false);
+          throw unsupported(t, "OFFSET CONDITION with " + TpToken.clip(peek(1).text()), false);
         }
         yield new Instruction.OffsetCondition(pr);
       }

@@ -202,6 +202,16 @@ class LsReaderTest {
   }
 
   @Test
+  void offsetConditionWithAUserFrameIsReadAndWrittenBack() {
+    LsReadResult r = mn("   1:  OFFSET CONDITION PR[3:SHIFT],UFRAME[2] ;\n   2:  OFFSET CONDITION PR[3],UFRAME[R[4]] ;\n");
+    assertThat(r.diagnostics()).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.OffsetCondition(org.robotrun.program.Item.of(3, "SHIFT"),
+        java.util.Optional.of(org.robotrun.program.Index.of(2))));
+    String fresh = LsWriter.write(r.program().withoutSource());
+    assertThat(fresh).contains("   1:  OFFSET CONDITION PR[3:SHIFT],UFRAME[2] ;").contains("OFFSET CONDITION PR[3],UFRAME[R[4]] ;");
+  }
+
+  @Test
   void unsupportedStatementsAreNamedNotDropped() {
     for (String[] c : new String[][] {
         {"RUN SUB1", "not supported: RUN (multitasking) (the line alarms when it runs)"},
@@ -210,7 +220,7 @@ class LsReaderTest {
         {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
         {"LOCK PREG", "warning: not supported: LOCK PREG (the line is skipped when it runs)"},
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
-        {"OFFSET CONDITION PR[1],UFRAME[2]", "not supported: OFFSET CONDITION with a frame (the line alarms when it runs)"},
+        {"TOOL_OFFSET CONDITION PR[2]", "not supported: TOOL_OFFSET CONDITION (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
