@@ -282,6 +282,7 @@ public final class LsWriter {
         }
         case Motion.Wjnt x -> sb.append("Wjnt");
         case Motion.Inc x -> sb.append("INC");
+        case Motion.TimedAction x -> sb.append(x.text());
         case Motion.RawOption x -> {
           // A point-logic block kept with the last option: its sub-lines follow the motion line.
           int nl = x.text().indexOf('\n');

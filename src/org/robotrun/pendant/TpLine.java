@@ -308,6 +308,7 @@ public final class TpLine {
       case Motion.Wjnt x -> null;
       case Motion.Inc x -> null;
       case Motion.RawOption x -> null;
+      case Motion.TimedAction x -> null;
     };
     String initial = switch (o) {
       case Motion.OffsetPr p -> ExprText.index(p.register().index());
@@ -318,6 +319,7 @@ public final class TpLine {
       case Motion.Wjnt x -> "";
       case Motion.Inc x -> "";
       case Motion.RawOption x -> "";
+      case Motion.TimedAction x -> "";
     };
     return new Field(text, Field.Edit.both(List.of("(remove option)"), k -> withoutOption(m, at), initial, entry));
   }
@@ -332,6 +334,7 @@ public final class TpLine {
       case Motion.Skip s -> "Skip," + ExprText.label(s.label());
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";
+      case Motion.TimedAction x -> x.text();
       // A point-logic block's sub-lines are not shown on the motion's line.
       case Motion.RawOption x -> x.text().lines().findFirst().orElse("");
     };

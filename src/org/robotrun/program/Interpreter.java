@@ -108,6 +108,12 @@ public final class Interpreter {
   private boolean motionHeld;
   private boolean motionBackward;
   private Ops.LabelTarget motionSkip;
+  /** TIME BEFORE actions of the motion in flight, not fired yet. */
+  private final java.util.List<Motion.TimedAction> motionBefore = new java.util.ArrayList<>(2);
+  /** TIME AFTER actions of the motion in flight, started when it is done. */
+  private final java.util.List<Motion.TimedAction> motionAfter = new java.util.ArrayList<>(2);
+  /** TIME AFTER actions counting down: seconds left, and the action. */
+  private final java.util.List<Object[]> afterTimers = new java.util.ArrayList<>(2);
   private double waitRemainingSec;
   private double waitElapsedSec;
   private Ops.WaitConditionOp waitOp;
@@ -386,6 +392,9 @@ public final class Interpreter {
     if (activePulses > 0) {
       advancePulses(dtSec);
     }
+    if (!afterTimers.isEmpty()) {
+      advanceTimedActions(dtSec);
+    }
     regs.advanceTimers(dtSec);
     switch (state) {
       case IDLE -> {
@@ -498,6 +507,9 @@ public final class Interpreter {
         case W_MOTION -> {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
+              if (!motionBefore.isEmpty() && !motionHeld) {
+                fireTimeBefore(port.timeLeftSec(motionHandle));
+              }
               if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
                 // The skip condition turned true: the arm stops and the program goes on with the
                 // next line, without the jump (FANUC Skip,LBL[] semantics).
@@ -515,6 +527,16 @@ public final class Interpreter {
             }
             case DONE -> {
               waitKind = W_NONE;
+              // CNT: done when blending starts; TIME BEFORE actions not fired yet fire now, and
+              // TIME AFTER actions start counting (RobotRun's approximation of "after the point").
+              fireTimeBefore(0);
+              for (Motion.TimedAction t : motionAfter) {
+                afterTimers.add(new Object[] {t.seconds(), t});
+              }
+              motionAfter.clear();
+              if (!afterTimers.isEmpty()) {
+                advanceTimedActions(0);
+              }
               if (motionBackward) {
                 state = State.PAUSED;
                 return Outcome.PAUSED;
@@ -596,6 +618,8 @@ public final class Interpreter {
     if (waitKind == W_MOTION) {
       port.cancel(motionHandle);
     }
+    motionBefore.clear();
+    motionAfter.clear();
     waitKind = W_NONE;
     motionHeld = false;
   }
@@ -780,6 +804,39 @@ public final class Interpreter {
     pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
   }
 
+  /** Fires the TIME BEFORE actions whose time has come, {@code leftSec} before the point. */
+  private void fireTimeBefore(double leftSec) {
+    for (java.util.Iterator<Motion.TimedAction> it = motionBefore.iterator(); it.hasNext(); ) {
+      Motion.TimedAction t = it.next();
+      if (leftSec <= t.seconds() + TIME_EPS_SEC) {
+        it.remove();
+        runTimedAction(t);
+      }
+    }
+  }
+
+  private void advanceTimedActions(double dtSec) {
+    for (java.util.Iterator<Object[]> it = afterTimers.iterator(); it.hasNext(); ) {
+      Object[] a = it.next();
+      double left = (double) a[0] - dtSec;
+      a[0] = left;
+      if (left <= TIME_EPS_SEC) {
+        it.remove();
+        runTimedAction((Motion.TimedAction) a[1]);
+      }
+    }
+  }
+
+  /** The output of a TIME BEFORE/AFTER action (an alarm in it is the motion line's alarm). */
+  private void runTimedAction(Motion.TimedAction t) {
+    Ops.Op op = switch (t.action()) {
+      case Instruction.SetIo s -> new Ops.SetIoOp(s.kind(), new Nodes.Idx(s.port().index()), Compiler.expr(s.value()));
+      case Instruction.Pulse p -> new Ops.PulseOp(p.kind(), new Nodes.Idx(p.port().index()), p.widthSec());
+      default -> throw new IllegalStateException("timed action " + t.action());
+    };
+    op.exec(this);
+  }
+
   private void advancePulses(double dtSec) {
     for (IoKind io : PULSED) {
       double[] left = pulseLeftSec[io.ordinal()];
@@ -818,6 +875,15 @@ public final class Interpreter {
         motionHeld = false;
         motionBackward = backward;
         motionSkip = backward ? null : op.skip;
+        motionBefore.clear();
+        motionAfter.clear();
+        if (!backward) {
+          for (Motion.Option o : op.move.options()) {
+            if (o instanceof Motion.TimedAction t) {
+              (t.after() ? motionAfter : motionBefore).add(t);
+            }
+          }
+        }
         haltOutcome = Outcome.WAITING_FOR_MOTION;
         yield Ops.HALT;
       }
@@ -897,6 +963,9 @@ public final class Interpreter {
         case Motion.Inc x -> inc = true;
         case Motion.RawOption x -> {
           // Not run yet: check reported it; the motion runs without it.
+        }
+        case Motion.TimedAction x -> {
+          // Fired while the motion runs (see serviceWait).
         }
       }
     }

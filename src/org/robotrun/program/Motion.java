@@ -131,6 +131,26 @@ public final class Motion {
   public record Inc() implements Option {}
 
   /**
+   * {@code TB t sec,action} (TIME BEFORE: the action runs t seconds before the motion reaches its
+   * point) or {@code TA t sec,action} (TIME AFTER: t seconds after), with an output action
+   * RobotRun runs ({@code DO[1]=ON}, {@code RO[2]=PULSE,0.5sec}, {@code GO[1]=R[3]} ...).
+   *
+   * @param text the option as written ({@code "TB   .20sec,DO[1]=ON"}), so it is written back unchanged
+   */
+  public record TimedAction(boolean after, double seconds, Instruction action, String text) implements Option {
+    public TimedAction {
+      Objects.requireNonNull(action, "action");
+      Objects.requireNonNull(text, "text");
+      if (!(action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)) {
+        throw new IllegalArgumentException("a TIME BEFORE/AFTER action RobotRun runs is an output: " + action);
+      }
+      if (!(seconds >= 0)) {
+        throw new IllegalArgumentException("time must be 0 or more seconds, got " + seconds);
+      }
+    }
+  }
+
+  /**
    * A motion option the controller has and RobotRun does not run yet ({@code TB .50sec,CALL X},
    * {@code VOFFSET,VR[1]}, {@code PTH}, {@code RTCP}): the rest of the line from the option on,
    * kept as written. The motion itself runs without it; {@code check} says so.

@@ -20,6 +20,14 @@ public interface MotionPort {
    */
   Status poll(long handle);
 
+  /**
+   * Seconds until running motion {@code handle} reaches its end point (TIME BEFORE actions fire
+   * by it); infinite when the port cannot tell, so such an action fires when the motion is done.
+   */
+  default double timeLeftSec(long handle) {
+    return Double.POSITIVE_INFINITY;
+  }
+
   /** The reason motion {@code handle} failed, valid after {@link #poll} answered FAILED. */
   Start.Rejected failure(long handle);
 

@@ -865,11 +865,53 @@ public final class TpStatementParser extends TpTokenCursor {
             }
             return new Motion.Acc(acc);
           }
+          if (w.equals("TB") || w.equals("TA") || w.equals("TIME")) {
+            int at = tokens.indexOf(t);
+            Motion.RawOption raw = rawOption(t, optionKind(w));
+            return timedAction(at, raw);
+          }
           return rawOption(t, optionKind(w));
         }
       }
     }
     throw error(t, "expected a motion option or the end of the statement, found " + t.describe());
+  }
+
+  /**
+   * {@code TB t sec,action} / {@code TA ...} / {@code TIME BEFORE|AFTER ...} from token {@code at}:
+   * a {@link Motion.TimedAction} when the action is an output RobotRun runs, else {@code raw}
+   * (CALL, POINT_LOGIC and other actions stay as written and are not run).
+   */
+  private Motion.Option timedAction(int at, Motion.RawOption raw) {
+    if (at < 0) {
+      return raw;
+    }
+    List<TpToken> rest = tokens.subList(at, tokens.size());
+    int k = 1;
+    boolean after = rest.get(0).isWord("TA");
+    if (rest.get(0).isWord("TIME")) {
+      if (!rest.get(1).isWord("BEFORE") && !rest.get(1).isWord("AFTER")) {
+        return raw;
+      }
+      after = rest.get(1).isWord("AFTER");
+      k = 2;
+    }
+    if (rest.size() < k + 4 || !rest.get(k).is(Kind.NUMBER) || !rest.get(k + 1).isWord("sec")
+        || !rest.get(k + 2).is(Kind.COMMA)) {
+      return raw;
+    }
+    double sec = Double.parseDouble(rest.get(k).text());
+    try {
+      TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
+      Instruction action = p.statement();
+      if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)
+          && Double.isFinite(sec)) {
+        return new Motion.TimedAction(after, sec, action, raw.text());
+      }
+    } catch (TpSyntaxError e) {
+      // an action RobotRun does not run: kept as written
+    }
+    return raw;
   }
 
   private static String optionKind(String w) {

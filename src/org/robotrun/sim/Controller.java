@@ -834,6 +834,11 @@ public final class Controller implements MotionPort {
   }
 
   @Override
+  public double timeLeftSec(long handle) {
+    return moves.containsKey(handle) ? runner.timeLeftSec(handle) : 0;
+  }
+
+  @Override
   public Start.Rejected failure(long handle) {
     MoveState m = moves.get(handle);
     return m == null || m.failure == null ? new Start.Rejected(MotionAlarms.UNREACHABLE, "unknown motion") : m.failure;
