@@ -508,7 +508,7 @@ public final class Interpreter {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
               if (!motionBefore.isEmpty() && !motionHeld) {
-                fireTimeBefore(port.timeLeftSec(motionHandle));
+                fireBefore(port.timeLeftSec(motionHandle), port.distanceLeftMm(motionHandle));
               }
               if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
                 // The skip condition turned true: the arm stops and the program goes on with the
@@ -529,9 +529,9 @@ public final class Interpreter {
               waitKind = W_NONE;
               // CNT: done when blending starts; TIME BEFORE actions not fired yet fire now, and
               // TIME AFTER actions start counting (RobotRun's approximation of "after the point").
-              fireTimeBefore(0);
+              fireBefore(0, 0);
               for (Motion.TimedAction t : motionAfter) {
-                afterTimers.add(new Object[] {t.seconds(), t});
+                afterTimers.add(new Object[] {t.amount(), t});
               }
               motionAfter.clear();
               if (!afterTimers.isEmpty()) {
@@ -804,11 +804,13 @@ public final class Interpreter {
     pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
   }
 
-  /** Fires the TIME BEFORE actions whose time has come, {@code leftSec} before the point. */
-  private void fireTimeBefore(double leftSec) {
+  /** Fires the TIME/DISTANCE BEFORE actions whose moment has come, {@code leftSec} / {@code leftMm} before the point. */
+  private void fireBefore(double leftSec, double leftMm) {
     for (java.util.Iterator<Motion.TimedAction> it = motionBefore.iterator(); it.hasNext(); ) {
       Motion.TimedAction t = it.next();
-      if (leftSec <= t.seconds() + TIME_EPS_SEC) {
+      boolean due = t.when() == Motion.When.DISTANCE_BEFORE ? leftMm <= t.amount() + 1e-6
+          : leftSec <= t.amount() + TIME_EPS_SEC;
+      if (due) {
         it.remove();
         runTimedAction(t);
       }
@@ -880,7 +882,7 @@ public final class Interpreter {
         if (!backward) {
           for (Motion.Option o : op.move.options()) {
             if (o instanceof Motion.TimedAction t) {
-              (t.after() ? motionAfter : motionBefore).add(t);
+              (t.when() == Motion.When.TIME_AFTER ? motionAfter : motionBefore).add(t);
             }
           }
         }

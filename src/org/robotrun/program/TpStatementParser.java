@@ -865,7 +865,7 @@ public final class TpStatementParser extends TpTokenCursor {
             }
             return new Motion.Acc(acc);
           }
-          if (w.equals("TB") || w.equals("TA") || w.equals("TIME")) {
+          if (w.equals("TB") || w.equals("TA") || w.equals("TIME") || w.equals("DB") || w.equals("DISTANCE")) {
             int at = tokens.indexOf(t);
             Motion.RawOption raw = rawOption(t, optionKind(w));
             return timedAction(at, raw);
@@ -888,25 +888,33 @@ public final class TpStatementParser extends TpTokenCursor {
     }
     List<TpToken> rest = tokens.subList(at, tokens.size());
     int k = 1;
-    boolean after = rest.get(0).isWord("TA");
-    if (rest.get(0).isWord("TIME")) {
-      if (!rest.get(1).isWord("BEFORE") && !rest.get(1).isWord("AFTER")) {
-        return raw;
-      }
-      after = rest.get(1).isWord("AFTER");
+    Motion.When when;
+    TpToken first = rest.get(0);
+    if (first.isWord("TB") || first.isWord("TA")) {
+      when = first.isWord("TA") ? Motion.When.TIME_AFTER : Motion.When.TIME_BEFORE;
+    } else if (first.isWord("DB")) {
+      when = Motion.When.DISTANCE_BEFORE;
+    } else if (first.isWord("TIME") && (rest.get(1).isWord("BEFORE") || rest.get(1).isWord("AFTER"))) {
+      when = rest.get(1).isWord("AFTER") ? Motion.When.TIME_AFTER : Motion.When.TIME_BEFORE;
       k = 2;
+    } else if (first.isWord("DISTANCE") && rest.get(1).isWord("BEFORE")) {
+      when = Motion.When.DISTANCE_BEFORE;
+      k = 2;
+    } else {
+      return raw;
     }
-    if (rest.size() < k + 4 || !rest.get(k).is(Kind.NUMBER) || !rest.get(k + 1).isWord("sec")
+    String unit = when == Motion.When.DISTANCE_BEFORE ? "mm" : "sec";
+    if (rest.size() < k + 4 || !rest.get(k).is(Kind.NUMBER) || !rest.get(k + 1).isWord(unit)
         || !rest.get(k + 2).is(Kind.COMMA)) {
       return raw;
     }
-    double sec = Double.parseDouble(rest.get(k).text());
+    double amount = Double.parseDouble(rest.get(k).text());
     try {
       TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
       Instruction action = p.statement();
       if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)
-          && Double.isFinite(sec)) {
-        return new Motion.TimedAction(after, sec, action, raw.text());
+          && Double.isFinite(amount)) {
+        return new Motion.TimedAction(when, amount, action, raw.text());
       }
     } catch (TpSyntaxError e) {
       // an action RobotRun does not run: kept as written

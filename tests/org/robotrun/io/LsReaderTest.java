@@ -208,19 +208,25 @@ class LsReaderTest {
         "   2:L P[1] 100mm/sec FINE TA   0.50sec,RO[1]=PULSE,0.3sec    ;",
         "   3:L P[1] 100mm/sec FINE TB   0.50sec,CALL X    ;",
         "   4:L P[1] 100mm/sec FINE TIME AFTER 1.0sec,GO[2]=R[4]    ;",
+        "   5:L P[1] 100mm/sec CNT50 DB   10.0mm,DO[5]=OFF    ;",
+        "   6:L P[1] 100mm/sec CNT50 DB   10.0mm,CALL X    ;",
         ""));
+    assertThat(((Motion.TimedAction) ((Instruction.Move) r.program().line(5)).options().get(0)).when())
+        .isEqualTo(Motion.When.DISTANCE_BEFORE);
+    assertThat(((Instruction.Move) r.program().line(6)).options().get(0)).isInstanceOf(Motion.RawOption.class);
     Instruction.Move m1 = (Instruction.Move) r.program().line(1);
-    assertThat(m1.options()).containsExactly(new Motion.TimedAction(false, 0.2,
+    assertThat(m1.options()).containsExactly(new Motion.TimedAction(Motion.When.TIME_BEFORE, 0.2,
         new Instruction.SetIo(org.robotrun.program.IoKind.DO, org.robotrun.program.Item.of(3, "VAC"), new Expr.OnOff(true)),
         "TB    .20sec,DO[3:VAC]=ON"));
     Motion.TimedAction ta = (Motion.TimedAction) ((Instruction.Move) r.program().line(2)).options().get(0);
-    assertThat(ta.after()).isTrue();
+    assertThat(ta.when()).isEqualTo(Motion.When.TIME_AFTER);
     assertThat(ta.action()).isInstanceOf(Instruction.Pulse.class);
     assertThat(((Instruction.Move) r.program().line(3)).options().get(0)).isInstanceOf(Motion.RawOption.class);
     assertThat(((Instruction.Move) r.program().line(4)).options().get(0)).isInstanceOf(Motion.TimedAction.class);
     // only the CALL action is reported (it is not run); the line comes back as written
     assertThat(messages(r)).filteredOn(m -> m.contains("not supported")).containsExactly(
-        "t.ls:6: warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)");
+        "t.ls:6: warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)",
+        "t.ls:9: warning: not supported: DISTANCE BEFORE (DB) (the motion runs without it)");
     assertThat(LsWriter.write(r.program().withoutSource())).contains("   1:L P[1] 100mm/sec CNT100 TB    .20sec,DO[3:VAC]=ON    ;");
   }
 
