@@ -504,7 +504,7 @@ public final class LsReader {
       switch (key) {
         case LsAttributes.COMMENT, "KOMMENTAR" -> comment = value.length() >= 2 && value.startsWith("\"") && value.endsWith("\"")
             ? value.substring(1, value.length() - 1) : value;
-        case LsAttributes.LINE_COUNT -> {
+        case LsAttributes.LINE_COUNT, "ZEILEN" -> {
           lineCountLine = line;
           try {
             declaredLineCount = Integer.parseInt(value);

@@ -120,7 +120,10 @@ public final class LsWriter {
   /** A /ATTR LINE_COUNT line with the real count; any other line as it is. */
   private static String lineCountFixed(String line, int count) {
     String t = line.stripLeading();
-    if (!t.regionMatches(true, 0, LsAttributes.LINE_COUNT, 0, LsAttributes.LINE_COUNT.length())) {
+    // ZEILEN: the German listing's LINE_COUNT
+    String key = t.regionMatches(true, 0, "ZEILEN", 0, 6) ? "ZEILEN" : LsAttributes.LINE_COUNT;
+    if (!t.regionMatches(true, 0, key, 0, key.length())
+        || !(t.length() > key.length() && (t.charAt(key.length()) == '=' || Character.isWhitespace(t.charAt(key.length()))))) {
       return line;
     }
     int eq = line.indexOf('=');

@@ -136,6 +136,11 @@ class LsCorpusTest {
         assertThat(g).as("line %d", i).isEqualTo(e);
       }
     }
+    // an edit keeps the German /ATTR and fixes its line count (ZEILEN)
+    List<Instruction> more = new ArrayList<>(german.lines());
+    more.add(new Instruction.Blank());
+    String edited = new String(LsWriter.bytes(german.withBody(more, german.positions())), StandardCharsets.UTF_8);
+    assertThat(edited).contains("ZEILEN\t\t= 25;").contains("KOMMENTAR\t= \"Zelle Greifen\";").doesNotContain("LINE_COUNT");
     // the point-logic sub-lines stay with their motion and are written back after it
     Instruction.Move tb = (Instruction.Move) german.line(6);
     assertThat(((Motion.RawOption) tb.options().get(1)).text()).endsWith("\n      1:  A[3]=AN ;\n       ------ ;");
