@@ -418,10 +418,7 @@ public final class LsReader {
       if (words.length > 1) {
         String sub = words[1];
         attributes.put(Program.SUBTYPE_KEY, sub);
-        if (sub.equalsIgnoreCase("Cond")) {
-          diags.add(Diagnostic.warning(file, line,
-              "not supported: condition program (Cond sub-type, for MONITOR/WHEN): it is kept but not monitored"));
-        } else if (!sub.equalsIgnoreCase("Macro") && !sub.equalsIgnoreCase("Makro") // German listing
+        if (!sub.equalsIgnoreCase("Cond") && !sub.equalsIgnoreCase("Macro") && !sub.equalsIgnoreCase("Makro") // German listing
             && !sub.equalsIgnoreCase("Job") && !sub.equalsIgnoreCase("Process")) {
           diags.add(Diagnostic.warning(file, line,
               "not supported: program sub-type '" + clip(sub) + "' (read as a normal program)"));

@@ -463,6 +463,13 @@ public final class LsWriter {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);
       }
+      case Instruction.Monitor mo -> sb.append(mo.end() ? "MONITOR END " : "MONITOR ").append(mo.program());
+      case Instruction.When w -> {
+        sb.append("WHEN ");
+        expr(w.condition(), sb);
+        sb.append(',');
+        statement(w.action(), sb);
+      }
       case Instruction.AssignString a -> {
         item("SR", a.register(), sb);
         sb.append('=');

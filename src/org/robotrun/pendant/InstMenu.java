@@ -144,7 +144,12 @@ final class InstMenu {
           Template.of("SKIP CONDITION ...", new Instruction.SkipCondition(
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)))),
           Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))),
-          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")))));
+          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")),
+          Template.of("MONITOR ...", new Instruction.Monitor("MAIN", false)),
+          Template.of("MONITOR END ...", new Instruction.Monitor("MAIN", true)),
+          Template.of("WHEN ...,CALL ... (condition program)", new Instruction.When(
+              new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)),
+              new Instruction.Call("MAIN", List.of()))))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

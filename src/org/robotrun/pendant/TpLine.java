@@ -57,6 +57,19 @@ public final class TpLine {
       }
       case Instruction.MacroCall c -> f.add(new Field(c.name(), Field.Edit.both(programs,
           k -> new Instruction.MacroCall(programs.get(k)), c.name(), t -> new Instruction.MacroCall(macroName(t)))));
+      case Instruction.Monitor mo -> {
+        f.add(Field.fixed(mo.end() ? "MONITOR END" : "MONITOR"));
+        f.add(new Field(mo.program(), Field.Edit.both(programs, k -> new Instruction.Monitor(programs.get(k), mo.end()),
+            mo.program(), t -> new Instruction.Monitor(macroName(t), mo.end()))));
+      }
+      case Instruction.When w -> {
+        f.add(Field.fixed("WHEN"));
+        f.add(exprField(w.condition(), e -> new Instruction.When(e, w.action())));
+        f.add(Field.fixed(",CALL"));
+        f.add(new Field(w.action().program(), Field.Edit.both(programs,
+            k -> new Instruction.When(w.condition(), new Instruction.Call(programs.get(k), List.of())),
+            w.action().program(), t -> new Instruction.When(w.condition(), new Instruction.Call(macroName(t), List.of())))));
+      }
       case Instruction.AssignString a -> {
         f.add(itemField("SR", a.register(), i -> new Instruction.AssignString(i, a.value())));
         f.add(Field.fixed("="));

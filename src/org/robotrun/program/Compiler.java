@@ -81,6 +81,8 @@ final class Compiler {
       case Instruction.Message msg -> "";
       case Instruction.SetSysVar s -> "";
       case Instruction.AssignString a -> "";
+      case Instruction.When w -> "";
+      case Instruction.Monitor mo -> "MONITOR";
       case Instruction.MacroCall c -> "CALL";
       case Instruction.SkipCondition s -> "";
       case Instruction.OffsetCondition o -> "";
@@ -151,6 +153,9 @@ final class Compiler {
       case Instruction.Blank b -> new Ops.Nop();
       case Instruction.Message msg -> new Ops.MessageOp(msg.text());
       case Instruction.SetSysVar s -> new Ops.SetSysVarOp(s.name(), expr(s.value()));
+      case Instruction.Monitor mo -> new Ops.MonitorOp(mo.program(), mo.end());
+      // A WHEN line does nothing when run as a statement: it is watched through MONITOR.
+      case Instruction.When w -> new Ops.Nop();
       case Instruction.AssignString a -> new Ops.AssignSrOp(idx(a.register().index()), expr(a.value()));
       case Instruction.MacroCall c -> call(new Instruction.Call(c.name(), java.util.List.of()));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));

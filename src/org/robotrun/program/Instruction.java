@@ -370,6 +370,27 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code MONITOR NAME} (starts watching the WHEN conditions of condition program NAME) or
+   * {@code MONITOR END NAME} (stops it).
+   */
+  record Monitor(String program, boolean end) implements Instruction {
+    public Monitor {
+      Objects.requireNonNull(program, "program");
+    }
+  }
+
+  /**
+   * {@code WHEN cond,CALL NAME}: a line of a condition program (sub-type Cond). While the program
+   * is monitored, the action program runs when the condition turns true.
+   */
+  record When(Expr condition, Call action) implements Instruction {
+    public When {
+      Objects.requireNonNull(condition, "condition");
+      Objects.requireNonNull(action, "action");
+    }
+  }
+
   /** {@code MESSAGE[text]}: shown on the user screen. */
   record Message(String text) implements Instruction {
     public Message {

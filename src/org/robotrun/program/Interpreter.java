@@ -112,6 +112,10 @@ public final class Interpreter {
   private final java.util.List<Motion.TimedAction> motionBefore = new java.util.ArrayList<>(2);
   /** TIME AFTER actions of the motion in flight, started when it is done. */
   private final java.util.List<Motion.TimedAction> motionAfter = new java.util.ArrayList<>(2);
+  /** Condition monitors in force: condition program → its WHEN lines (condition node, action program). */
+  private final Map<String, List<Object[]>> monitors = new java.util.LinkedHashMap<>();
+  /** Action programs of monitors that fired, running beside the program. */
+  private final List<Interpreter> actions = new ArrayList<>(1);
   /** TIME AFTER actions counting down: seconds left, and the action. */
   private final java.util.List<Object[]> afterTimers = new java.util.ArrayList<>(2);
   private double waitRemainingSec;
@@ -396,6 +400,19 @@ public final class Interpreter {
       advanceTimedActions(dtSec);
     }
     regs.advanceTimers(dtSec);
+    if (state == State.RUNNING && !monitors.isEmpty()) {
+      try {
+        checkMonitors();
+      } catch (AlarmSignal a) {
+        return raise(a, cur.prog.name, waitKind != W_NONE ? waitLine + 1 : Math.max(1, cur.pc));
+      }
+    }
+    if (!actions.isEmpty()) {
+      Outcome failed = tickActions(dtSec);
+      if (failed != null) {
+        return failed;
+      }
+    }
     switch (state) {
       case IDLE -> {
         return Outcome.FINISHED;
@@ -645,6 +662,7 @@ public final class Interpreter {
     skipCondition = null;
     offsetCondition = null;
     offsetConditionFrame = -1;
+    monitors.clear();
     finishedProgram = null;
     state = State.RUNNING;
   }
@@ -802,6 +820,88 @@ public final class Interpreter {
     }
     // A zero width still shows ON until the next tick.
     pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
+  }
+
+  // ================================================================ condition monitors
+
+  /** MONITOR NAME: watches the WHEN lines of condition program NAME (again, if it fired before). */
+  void monitorStart(String name) {
+    Optional<Program> p = store.find(name);
+    if (p.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "MONITOR " + name + ": no such program");
+    }
+    List<Object[]> whens = new ArrayList<>();
+    for (Instruction in : p.get().lines()) {
+      if (in instanceof Instruction.When w) {
+        whens.add(new Object[] {Compiler.expr(w.condition()), w.action().program()});
+      }
+    }
+    if (whens.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.BAD_VALUE, "MONITOR " + name + ": the program has no WHEN line (a condition "
+          + "program holds WHEN ...,CALL ... lines)");
+    }
+    monitors.put(name, whens);
+  }
+
+  /** MONITOR END NAME. */
+  void monitorEnd(String name) {
+    monitors.remove(name);
+  }
+
+  /**
+   * Tests the WHEN conditions of the monitors in force (every tick while the program runs or
+   * waits). A monitor whose condition holds ends (it is one-shot: MONITOR starts it again) and
+   * its action program starts beside the program.
+   */
+  private void checkMonitors() {
+    for (java.util.Iterator<Map.Entry<String, List<Object[]>>> it = monitors.entrySet().iterator(); it.hasNext(); ) {
+      Map.Entry<String, List<Object[]>> e = it.next();
+      for (Object[] w : e.getValue()) {
+        if (((Nodes.Node) w[0]).bool(this, "WHEN")) {
+          it.remove();
+          startAction((String) w[1]);
+          break;
+        }
+      }
+    }
+  }
+
+  /** Starts a monitor's action program beside the program; it may not move the robot. */
+  private void startAction(String name) {
+    Optional<Program> p = store.find(name);
+    if (p.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "WHEN ...,CALL " + name + ": no such program");
+    }
+    if (p.get().lines().stream().anyMatch(in -> in instanceof Instruction.Move)) {
+      throw new AlarmSignal(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: the action program " + name
+          + " of a condition monitor moves the robot");
+    }
+    Interpreter child = new Interpreter(store, regs, port, settings);
+    child.select(name);
+    child.forward();
+    actions.add(child);
+  }
+
+  /** Runs the monitors' action programs for this tick; the first alarm in one stops the program too. */
+  private Outcome tickActions(double dtSec) {
+    for (java.util.Iterator<Interpreter> it = actions.iterator(); it.hasNext(); ) {
+      Interpreter child = it.next();
+      Outcome o = child.tick(dtSec);
+      if (o instanceof Outcome.Alarmed al) {
+        it.remove();
+        Alarm a = al.alarm();
+        if (state == State.RUNNING || state == State.PAUSED) {
+          return raise(new AlarmSignal(a.kind(), a.code(), a.message()), a.program(), a.line());
+        }
+        alarm = a;
+        alarmOutcome = al;
+        state = State.ALARMED;
+        return al;
+      } else if (!child.active()) {
+        it.remove();
+      }
+    }
+    return null;
   }
 
   /** Fires the TIME/DISTANCE BEFORE actions whose moment has come, {@code leftSec} / {@code leftMm} before the point. */

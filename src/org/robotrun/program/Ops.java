@@ -62,6 +62,27 @@ final class Ops {
     }
   }
 
+  /** {@code MONITOR NAME} / {@code MONITOR END NAME}. */
+  static final class MonitorOp extends Op {
+    final String program;
+    final boolean end;
+
+    MonitorOp(String program, boolean end) {
+      this.program = program;
+      this.end = end;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      if (end) {
+        m.monitorEnd(program);
+      } else {
+        m.monitorStart(program);
+      }
+      return NEXT;
+    }
+  }
+
   /** {@code SR[i]=expr}: a number is stored as its text. */
   static final class AssignSrOp extends Op {
     final Idx idx;

@@ -37,7 +37,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("OFFSET", "OFFSET CONDITION"),
       Map.entry("TOOL_OFFSET", "TOOL_OFFSET CONDITION"),
       Map.entry("RUN", "RUN (multitasking)"),
-      Map.entry("MONITOR", "MONITOR"),
       Map.entry("COL", "COL DETECT"),
       Map.entry("LOCK", "LOCK PREG"),
       Map.entry("UNLOCK", "UNLOCK PREG"),
@@ -74,7 +73,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("RESUME_PROG", "RESUME_PROG"),
       Map.entry("CLEAR_RESUME_PROG", "CLEAR_RESUME_PROG"),
       Map.entry("RETURN_PATH_DSBL", "RETURN_PATH_DSBL"),
-      Map.entry("WHEN", "WHEN (condition program)"),
       Map.entry("MONITOR_END", "MONITOR END"),
       Map.entry("PL", "palletizing register PL[]"),
       Map.entry("PAL", "palletizing"),
@@ -183,6 +181,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.SetIo s -> s.value();
       case Instruction.SetSysVar s -> s.value();
       case Instruction.AssignString a -> a.value();
+      case Instruction.When w -> w.condition();
       case Instruction.SkipCondition s -> s.condition();
       default -> null;
     };
@@ -377,6 +376,26 @@ public final class TpStatementParser extends TpTokenCursor {
           throw unsupported(t, "OFFSET CONDITION with " + TpToken.clip(peek(1).text()), false);
         }
         yield new Instruction.OffsetCondition(pr);
+      }
+      case "MONITOR" -> {
+        boolean end = peek().isWord("END") && peek(1).is(Kind.WORD);
+        if (end) {
+          next();
+        }
+        TpToken name = expectWord("a condition program name after MONITOR");
+        if (!Program.isValidName(name.text())) {
+          throw error(name, "'" + TpToken.clip(name.text()) + "' is not a program name");
+        }
+        yield new Instruction.Monitor(name.text().toUpperCase(Locale.ROOT), end);
+      }
+      case "WHEN" -> {
+        Expr cond = expression();
+        expect(Kind.COMMA, "',' then CALL after the WHEN condition");
+        if (!peek().isWord("CALL")) {
+          throw unsupported(peek(), "WHEN with an action other than CALL", false);
+        }
+        next();
+        yield new Instruction.When(cond, (Instruction.Call) call());
       }
       case "JMP" -> jump();
       case "CALL" -> call();
