@@ -7,7 +7,11 @@ package org.robotrun.program;
  * written by programs. RO[1] drives the end effector unless a scenario maps it otherwise.
  */
 public enum IoKind {
-  DI(false, false), DO(true, false), RI(false, false), RO(true, false), GI(false, true), GO(true, true), F(true, false);
+  DI(false, false), DO(true, false), RI(false, false), RO(true, false), GI(false, true), GO(true, true), F(true, false),
+  /** UOP inputs UI[1..18] (*IMSTP, *HOLD, ... PROD_START): set by the PLC, read by programs (sim.Uop). */
+  UI(false, false),
+  /** UOP outputs UO[1..20] (CMDENBL, SYSRDY, PROGRUN ...): set by the controller, read by programs (sim.Uop). */
+  UO(false, false);
 
   private final boolean writable;
   private final boolean group;

@@ -32,6 +32,8 @@ public final class IoRanges {
     s[IoKind.GI.ordinal()] = 100;
     s[IoKind.GO.ordinal()] = 100;
     s[IoKind.F.ordinal()] = Registers.FLAG_COUNT;
+    s[IoKind.UI.ordinal()] = 18;
+    s[IoKind.UO.ordinal()] = 20;
     return s;
   }
 
@@ -45,6 +47,9 @@ public final class IoRanges {
     for (Map.Entry<String, Integer> e : sizes.entrySet()) {
       IoKind k = kind(e.getKey());
       int n = e.getValue();
+      if (k == IoKind.UI || k == IoKind.UO) {
+        throw new IllegalArgumentException(e.getKey() + ": the UOP signals are fixed (UI 1..18, UO 1..20); they cannot be resized");
+      }
       if (n < 1 || n > MAX_SIZE) {
         throw new IllegalArgumentException(e.getKey() + ": expected a number of ports 1.." + MAX_SIZE + ", got " + n);
       }
@@ -83,7 +88,7 @@ public final class IoRanges {
   public String toString() {
     StringBuilder b = new StringBuilder("IoRanges[");
     for (IoKind k : IoKind.values()) {
-      b.append(k.name()).append('=').append(sizes[k.ordinal()]).append(k == IoKind.F ? "]" : ", ");
+      b.append(k.name()).append('=').append(sizes[k.ordinal()]).append(k.ordinal() == IoKind.values().length - 1 ? "]" : ", ");
     }
     return b.toString();
   }

@@ -36,7 +36,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("SKIP", "SKIP CONDITION"),
       Map.entry("OFFSET", "OFFSET CONDITION"),
       Map.entry("TOOL_OFFSET", "TOOL_OFFSET CONDITION"),
-      Map.entry("RUN", "RUN (multitasking)"),
       Map.entry("MONITOR", "MONITOR"),
       Map.entry("COL", "COL DETECT"),
       Map.entry("LOCK", "LOCK PREG"),
@@ -47,8 +46,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("AO", "analog output AO[]"),
       Map.entry("SDI", "SDI[]"),
       Map.entry("SDO", "SDO[]"),
-      Map.entry("UI", "UOP input UI[]"),
-      Map.entry("UO", "UOP output UO[]"),
       Map.entry("SI", "SOP input SI[]"),
       Map.entry("SO", "SOP output SO[]"),
       Map.entry("WI", "weld input WI[]"),
@@ -270,7 +267,8 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "PR" -> positionRegisterAssignment();
       case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
-      case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
+      case "DI", "RI", "GI", "UI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
+      case "UO" -> throw error("UO[] is set by the controller (UOP outputs): a program can read it but not set it");
       case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
@@ -326,6 +324,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "JMP" -> jump();
       case "CALL" -> call();
+      case "RUN" -> run();
       case "END" -> new Instruction.End();
       case "PAUSE" -> new Instruction.Pause();
       case "ABORT" -> new Instruction.Abort();
@@ -511,6 +510,12 @@ public final class TpStatementParser extends TpTokenCursor {
       expect(Kind.RPAREN, "')' closing the CALL arguments");
     }
     return new Instruction.Call(name.text().toUpperCase(Locale.ROOT), args);
+  }
+
+  /** {@code RUN NAME[(args)]}: starts NAME as a task of its own (multitasking), read like a CALL. */
+  private Instruction run() {
+    Instruction.Call c = (Instruction.Call) call();
+    return new Instruction.Run(c.program(), c.args());
   }
 
   private Instruction.Branch branch() {
@@ -966,7 +971,7 @@ public final class TpStatementParser extends TpTokenCursor {
           case "OFF" -> new Expr.OnOff(false);
           case "R" -> new Expr.Register(item("R"));
           case "PR" -> positionElement();
-          case "DI", "DO", "RI", "RO", "GI", "GO", "F" -> new Expr.Io(IoKind.valueOf(w), item(w));
+          case "DI", "DO", "RI", "RO", "GI", "GO", "F", "UI", "UO" -> new Expr.Io(IoKind.valueOf(w), item(w));
           case "TIMER" -> new Expr.Timer(item("TIMER"));
           case "AR" -> {
             Item a = item("AR");
@@ -1082,7 +1087,7 @@ public final class TpStatementParser extends TpTokenCursor {
     int size = switch (table) {
       case "R" -> Registers.R_COUNT;
       case "PR" -> Registers.PR_COUNT;
-      case "F", "DI", "DO", "RI", "RO", "GI", "GO" -> ioRanges.size(IoKind.valueOf(table));
+      case "F", "DI", "DO", "RI", "RO", "GI", "GO", "UI", "UO" -> ioRanges.size(IoKind.valueOf(table));
       case "TIMER" -> Registers.TIMER_COUNT;
       default -> 0;
     };
