@@ -34,6 +34,8 @@ import org.robotrun.program.Program;
 import org.robotrun.sim.Controller;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.HeadlessRun;
+import org.robotrun.sim.ProductionRun;
+import org.robotrun.world.ProductionSetup;
 import org.robotrun.sim.Simulation;
 import org.robotrun.sim.TraceWriter;
 import picocli.CommandLine.Command;
@@ -115,6 +117,8 @@ public final class RunCommand implements Callable<Integer> {
       throw new UserError("--report and --trace name the same file " + report);
     }
     Simulation sim;
+    // a production setup may say the run starts from its PLC sequence (docs/production.md)
+    java.util.Optional<ProductionSetup.Robot> plcStart = java.util.Optional.empty();
     List<Path> programFiles = new ArrayList<>();
     List<Program> fromWorkspace = new ArrayList<>();
     WorkspaceSession session = null;
@@ -149,7 +153,8 @@ public final class RunCommand implements Callable<Integer> {
         throw new UserError(scenario + ": " + e.getMessage());
       }
       programFiles.addAll(sc.programs());
-      if (program == null) {
+      plcStart = sc.production().of(sc.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
+      if (program == null && plcStart.isEmpty()) {
         program = sc.mainProgram().orElseThrow(() -> new UserError(
             "--program: name the program to run (the scenario " + scenario + " names no main program)"));
       }
@@ -164,13 +169,24 @@ public final class RunCommand implements Callable<Integer> {
     loaded.addAll(loadPrograms(programFiles));
     // Program names are upper case on the controller; accept 'pick3' for PICK3.
     String wanted = program;
-    program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
-        .orElseThrow(() -> new UserError("--program: no program named " + wanted + " among the loaded files"
-            + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
-                + String.join(", ", loaded.stream().map(Program::name).toList()) + ")")));
+    if (wanted != null) {
+      program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
+          .orElseThrow(() -> new UserError("--program: no program named " + wanted + " among the loaded files"
+              + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
+                  + String.join(", ", loaded.stream().map(Program::name).toList()) + ")")));
+    } else {
+      program = "(PLC)";
+    }
     Controller c = sim.controllers().get(0);
+    java.util.Optional<ProductionSetup.Robot> fromPlc = plcStart;
     loaded.forEach(c::saveProgram);
     c.setOverridePct(overridePct);
+    if (plcStart.isPresent()) {
+      List<String> bad = ProductionRun.check(c.name(), plcStart.get(), c);
+      if (!bad.isEmpty()) {
+        throw new UserError(scenario + ": " + String.join("; ", bad));
+      }
+    }
 
     WallClock clock = WallClock.start(maxWallSeconds);
     String wallReason = "stopped after --max-wall-seconds " + WallClock.format(maxWallSeconds) + " s of real time";
@@ -182,12 +198,14 @@ public final class RunCommand implements Callable<Integer> {
         Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
         TraceWriter tw = new TraceWriter(w, sim.controllers());
         tw.write(sim);
-        result[0] = HeadlessRun.run(sim, c, program, maxSimSeconds, tw::write, clock::expired, wallReason);
+        result[0] = fromPlc.isPresent() ? ProductionRun.run(sim, c, maxSimSeconds, tw::write, clock::expired, wallReason)
+            : HeadlessRun.run(sim, c, program, maxSimSeconds, tw::write, clock::expired, wallReason);
         w.flush();
       });
     } else {
       Consumer<Simulation> none = s -> {};
-      result[0] = HeadlessRun.run(sim, c, program, maxSimSeconds, none, clock::expired, wallReason);
+      result[0] = fromPlc.isPresent() ? ProductionRun.run(sim, c, maxSimSeconds, none, clock::expired, wallReason)
+          : HeadlessRun.run(sim, c, program, maxSimSeconds, none, clock::expired, wallReason);
     }
     HeadlessRun.Result r = result[0];
     if (report != null) {

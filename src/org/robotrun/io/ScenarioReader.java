@@ -32,6 +32,7 @@ import org.robotrun.world.ToolIo;
 import org.robotrun.world.EndEffectorType;
 import org.robotrun.world.ObjectKind;
 import org.robotrun.world.Rgb;
+import org.robotrun.world.ProductionSetup;
 import org.robotrun.world.RobotSetup;
 import org.robotrun.world.Scenario;
 import org.robotrun.world.Shape;
@@ -70,7 +71,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision", "state", "mode");
+      "onCollision", "state", "mode", "production");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
       "io", "userAlarms");
   /** Highest UALM[i] a scenario may give a text for. */
@@ -170,6 +171,7 @@ public final class ScenarioReader {
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
       Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
+      ProductionSetup production = ProductionJson.read(top, file, robots.stream().map(RobotSetup::name).toList(), errors::add);
       SavedState state = null;
       LocatedJson stateJson = top.members().get("state");
       if (stateJson instanceof JObject so) {
@@ -183,7 +185,8 @@ public final class ScenarioReader {
       }
       try {
         return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode), Optional.ofNullable(state));
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode).withProduction(production),
+            Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
         return new CellLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));

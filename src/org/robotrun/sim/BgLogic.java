@@ -154,6 +154,23 @@ public final class BgLogic {
     return Optional.empty();
   }
 
+  /**
+   * The scenario's slots: each program is put in a slot, running, without checking it yet (the
+   * programs may load later); a slot whose program is missing or refused stops at its first scan
+   * with INTP-105.
+   */
+  public void configure(List<String> programs) {
+    slots.clear();
+    for (String program : programs) {
+      Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+      in.setTaskPort(TaskPort.NONE);
+      in.setAdvancesTimers(false);
+      Slot s = new Slot(program, in);
+      s.running = true;
+      slots.add(s);
+    }
+  }
+
   /** Removes a slot's program. */
   public boolean remove(String program) {
     return slots.removeIf(s -> s.program.equals(program));
@@ -211,6 +228,13 @@ public final class BgLogic {
     scans++;
     for (Slot s : slots) {
       if (!s.running) {
+        continue;
+      }
+      Optional<Program> p = store.find(s.program);
+      Optional<String> bad = p.isEmpty() ? Optional.of("program " + s.program + " does not exist") : refusal(p.get());
+      if (bad.isPresent()) {
+        s.running = false;
+        controller.raiseRunFailed("BG Logic: " + bad.get());
         continue;
       }
       Interpreter in = s.interpreter;

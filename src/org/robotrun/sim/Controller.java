@@ -805,20 +805,15 @@ public final class Controller implements MotionPort {
 
   /**
    * Applies a robot's production setup: UOP, program selection, reference positions, the PLC
-   * sequence and the BG Logic slots (after the programs are loaded).
-   *
-   * @return why a BG program could not be put in its slot, one message per refused program (empty: all in)
+   * sequence and the BG Logic slots (whose programs are checked at their first scan: load them
+   * before the first tick).
    */
-  public List<String> configureProduction(org.robotrun.world.ProductionSetup.Robot setup) {
+  public void configureProduction(org.robotrun.world.ProductionSetup.Robot setup) {
     uop.configure(setup);
-    List<String> refused = new ArrayList<>();
     if (setup != null) {
       bgLogic.setScanSec(setup.bgScanSec());
-      for (String p : setup.backgroundLogic()) {
-        bgLogic.add(p).ifPresent(refused::add);
-      }
+      bgLogic.configure(setup.backgroundLogic());
     }
-    return refused;
   }
 
   /** An alarm a task or a BG program raised: shown like the main program's. */
