@@ -208,11 +208,13 @@ public final class RunCommand implements Callable<Integer> {
           : HeadlessRun.run(sim, c, program, maxSimSeconds, none, clock::expired, wallReason);
     }
     HeadlessRun.Result r = result[0];
+    // a PLC-started run reports the program the PLC selected
+    String ran = fromPlc.isPresent() && !c.uop().selectedProgram().isEmpty() ? c.uop().selectedProgram() : program;
     if (report != null) {
-      writeOutput("--report", report, out -> out.write(RunReport.bytes(program, r, sim)));
+      writeOutput("--report", report, out -> out.write(RunReport.bytes(ran, r, sim)));
     }
     String summary = switch (r.status()) {
-      case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", program, r.cycleTimeSec());
+      case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", ran, r.cycleTimeSec());
       case ALARM -> "alarm " + r.alarm().orElseThrow().display();
     };
     System.out.println(TerminalText.safe(summary));
