@@ -81,6 +81,30 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
+  public java.util.Map<String, String> programStates() {
+    java.util.Map<String, String> out = new java.util.TreeMap<>();
+    for (org.robotrun.sim.BgLogic.Slot s : controller.bgLogic().slots()) {
+      if (s.running()) {
+        out.put(s.program(), "BG");
+      }
+    }
+    org.robotrun.sim.ExecutionStatus main = controller.status();
+    if (main.state() == org.robotrun.sim.ExecutionStatus.State.RUNNING
+        || main.state() == org.robotrun.sim.ExecutionStatus.State.PAUSED) {
+      out.put(main.program(), main.state().name());
+    }
+    for (org.robotrun.sim.Tasks.Task t : controller.tasks().list()) {
+      out.put(t.program(), t.status().state().name());
+    }
+    return out;
+  }
+
+  @Override
+  public void tpEnableChanged(boolean on) {
+    controller.uop().setTpEnabled(on);
+  }
+
+  @Override
   public String comment(CommentTable table, int index) {
     return controller.registerComment(table.name(), index);
   }

@@ -25,6 +25,7 @@ import java.util.function.Consumer;
  * ESTOP / ESTOP PANEL       the pendant's / the operator panel's E-stop pressed
  * RELEASE ESTOP             both E-stops twisted out (RESET then clears the alarm)
  * CYCLE START               the operator panel's CYCLE START (AUTO, TP off)
+ * UI[6] ON / DI[3] OFF      a PLC input set (the PLC panel): UOP inputs UI[1..18] and DI[]
  * WAIT 2.5                  2.5 s of simulated time
  * SHOW                      print the LCD
  * </pre>
@@ -75,6 +76,9 @@ public final class KeyScript {
 
     /** CYCLE START on the operator panel. */
     record CycleStart(int line) implements Step {}
+
+    /** A PLC input set by hand: {@code UI[6] ON}, {@code DI[3] OFF} (the PLC panel). */
+    record Input(int line, org.robotrun.program.IoKind kind, int index, boolean on) implements Step {}
   }
 
   /** A parse failure: where and what. */
@@ -98,6 +102,8 @@ public final class KeyScript {
   public static final double MAX_TOTAL_WAIT_SEC = 4 * 3600;
 
   private final List<Step> steps;
+  /** {@code UI[6] ON}: an input the PLC drives, set by hand. */
+  private static final java.util.regex.Pattern INPUT = java.util.regex.Pattern.compile("(UI|DI)\\[(\\d{1,4})\\]\\s+(ON|OFF)");
 
   private KeyScript(List<Step> steps) {
     this.steps = List.copyOf(steps);
@@ -118,6 +124,17 @@ public final class KeyScript {
       String raw = lines.get(i);
       String t = raw.strip();
       if (t.isEmpty() || t.startsWith("#")) {
+        continue;
+      }
+      java.util.regex.Matcher io = INPUT.matcher(t.toUpperCase(Locale.ROOT));
+      if (io.matches()) {
+        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(io.group(1));
+        int index = Integer.parseInt(io.group(2));
+        int size = org.robotrun.program.IoRanges.DEFAULT.size(kind);
+        if (index < 1 || index > size) {
+          return bad(file, n, kind + "[" + index + "]: index out of range (expected 1.." + size + ")");
+        }
+        steps.add(new Step.Input(n, kind, index, io.group(3).equals("ON")));
         continue;
       }
       String word = t.split("\\s+", 2)[0].toUpperCase(Locale.ROOT);
@@ -234,7 +251,7 @@ public final class KeyScript {
           }
           if (k.isEmpty()) {
             return bad(file, n, "unknown key or command '" + keyText + "' (keys: F1..F5, ENTER, SHIFT+FWD, +X/J1...;"
-                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, WAIT, SHOW)");
+                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, UI[i] ON/OFF, DI[i] ON/OFF, WAIT, SHOW)");
           }
           steps.add(new Step.Tap(n, k.get(), shift, times));
         }
@@ -308,6 +325,7 @@ public final class KeyScript {
         case Step.Estop e -> pendant.emergencyStop(e.fromPendant());
         case Step.ReleaseEstop r -> pendant.releaseEmergencyStop();
         case Step.CycleStart c -> pendant.cycleStart();
+        case Step.Input in -> pendant.control().registers().setBit(in.kind(), in.index(), in.on());
         case Step.Show sh -> show.accept(String.format(Locale.ROOT, "-- SHOW (line %d, t=%.3f s) --%n%s", sh.line(),
             timeSec, pendant.render()));
       }

@@ -78,6 +78,7 @@ public final class Pendant {
   public Pendant(RobotControl control, LineParser lineParser) {
     this.control = Objects.requireNonNull(control, "control");
     this.lineParser = Objects.requireNonNull(lineParser, "lineParser");
+    control.tpEnableChanged(tpEnabled);
   }
 
   /** A pendant without a TP line parser. */
@@ -172,6 +173,7 @@ public final class Pendant {
       holdToRun("TP disabled");
     }
     tpEnabled = on;
+    control.tpEnableChanged(on);
     message = on ? "TP enabled" : "TP disabled";
   }
 

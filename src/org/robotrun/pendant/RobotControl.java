@@ -350,6 +350,20 @@ public interface RobotControl {
    */
   void advance(double dtSec);
 
+  // ---- tasks and UOP (defaults: a controller without them) -------------------------------------
+
+  /**
+   * What runs now, by program: "RUNNING" or "PAUSED" for the main program and every RUN task,
+   * "BG" for a running background logic program (the SELECT screen marks them).
+   */
+  default java.util.Map<String, String> programStates() {
+    return java.util.Map.of();
+  }
+
+  /** The pendant's TP ENABLE switch changed (the controller's UOP outputs TPENBL and needs it off for CMDENBL). */
+  default void tpEnableChanged(boolean on) {
+  }
+
   /** Outcome of a command the controller may refuse. */
   sealed interface Result {
     /** Done (or started), with an optional message for the prompt line. */
