@@ -314,6 +314,7 @@ public final class GuiCommand implements Callable<Integer> {
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
     // Menus of other parts of the window go into the menu bar here, left of View and Help.
     bench.addSection(OperatorPanel.TITLE, new OperatorPanel(pendant)::drawContents);
+    bench.addSection(org.robotrun.ui.PlcPanel.TITLE, new org.robotrun.ui.PlcPanel(controller)::drawContents);
     PendantKeyboard keyboard = new PendantKeyboard(pendant);
     w.setKeyHandler(keyboard::onKey);
     w.setCharHandler(cp -> bench.onChar(cp) || keyboard.onChar(cp));
