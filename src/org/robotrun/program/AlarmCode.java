@@ -63,7 +63,7 @@ public enum AlarmCode {
   PROG_040("PROG-040", AlarmSeverity.WARN, "Already locked by other task", Source.RECALLED,
       "The cause under INTP-105: motion group 1 is reserved by another running program, so a second program that "
           + "moves the arm cannot start. Two tasks never move the same arm at once.",
-      "Check the running tasks (STATUS > Program, or SELECT): end the one that holds the group first, or remove "
+      "Check the running tasks (SELECT marks them; the PLC panel lists them): end the one that holds the group first, or remove "
           + "the motion group from the program you RUN."),
   SIMU_021("SIMU-021", AlarmSeverity.ABORT, "Motion in a task without a group", Source.OWN,
       "A program whose motion group mask is empty (DEFAULT_GROUP = *,*,*,*,*) reached a motion statement. A "
