@@ -141,7 +141,9 @@ final class InstMenu {
           Template.of("SKIP CONDITION ...", new Instruction.SkipCondition(
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)))),
           Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))),
-          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")))));
+          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")))),
+      new Category("Multiple control", List.of(
+          Template.of("RUN program", new Instruction.Run("MAIN", List.of())))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

@@ -267,8 +267,10 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "PR" -> positionRegisterAssignment();
       case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
-      case "DI", "RI", "GI", "UI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
-      case "UO" -> throw error("UO[] is set by the controller (UOP outputs): a program can read it but not set it");
+      case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
+      // kept as written (a file may hold one), and alarms: the PLC sets UI, the controller sets UO
+      case "UI" -> throw unsupported(t, "assignment to UOP input UI[]", false);
+      case "UO" -> throw unsupported(t, "assignment to UOP output UO[]", false);
       case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
