@@ -246,4 +246,99 @@ class UopTest {
     assertThat(c.registers().number(1)).isZero();
     assertThat(c.activeAlarms()).isEmpty();
   }
+
+  @Test
+  void styleRunsTheStyleTablesProgramOnProdStartsFallingEdge() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("STYLE_C", true, "R[1]=3"));
+    cell(sim, setup(Selection.STYLE, NO_RSR, List.of()));
+    Uop u = c.uop();
+    u.setUi(Uop.SEL1, true);
+    u.setUi(Uop.SEL1 + 1, true); // style 3
+    u.setUi(Uop.PROD_START, true);
+    steps(sim, 2);
+    assertThat(c.registers().number(1)).isZero();
+    u.setUi(Uop.PROD_START, false);
+    steps(sim, 2);
+    assertThat(c.registers().number(1)).isEqualTo(3);
+    assertThat(u.uo(Uop.ACK1)).isTrue();
+    assertThat(u.uo(Uop.ACK1 + 1)).isTrue();
+    // style 4 has no program: INTP-105
+    u.setUi(Uop.SEL1, false);
+    u.setUi(Uop.SEL1 + 1, false);
+    u.setUi(Uop.SEL1 + 2, true);
+    u.setUi(Uop.PROD_START, true);
+    sim.step();
+    u.setUi(Uop.PROD_START, false);
+    steps(sim, 2);
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.activeAlarms().get(0).message()).contains("style 4");
+  }
+
+  @Test
+  void homeRunsTheHomeProgramAndCstopiAbortsOnlyWhenSetTo() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("GOHOME", false, "R[7]=R[7]+1"));
+    c.saveProgram(program("LONG", true, "WAIT 5.00(sec)", "R[1]=1"));
+    ProductionSetup.Robot s = setup(Selection.OTHER, NO_RSR, List.of());
+    ProductionSetup.Robot withHome = new ProductionSetup.Robot(true, true, Selection.OTHER, 0, 0, NO_RSR, s.styles(), 0.2,
+        false, false, Optional.of("GOHOME"), List.of(), List.of(), 0.008, List.of(), false);
+    cell(sim, withHome);
+    Uop u = c.uop();
+    u.setUi(Uop.HOME, true);
+    steps(sim, 3);
+    assertThat(c.registers().number(7)).isEqualTo(1);
+    // CSTOPI with $USE_ABORT false: the program runs on
+    c.run("LONG", 1, true);
+    steps(sim, 2);
+    u.setUi(Uop.CSTOPI, true);
+    steps(sim, 2);
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.RUNNING);
+    u.setUi(Uop.CSTOPI, false);
+    ProductionSetup.Robot aborting = new ProductionSetup.Robot(true, true, Selection.OTHER, 0, 0, NO_RSR, s.styles(), 0.2,
+        false, true, Optional.of("GOHOME"), List.of(), List.of(), 0.008, List.of(), false);
+    c.configureProduction(aborting);
+    steps(sim, 2);
+    u.setUi(Uop.CSTOPI, true);
+    steps(sim, 2);
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.registers().number(1)).isZero();
+  }
+
+  @Test
+  void aPlcSequenceStepsOnItsConditionsAndDelays() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("PNS0001", true, "R[1]=R[1]+1"));
+    java.util.Map<Signal, Boolean> on = new java.util.LinkedHashMap<>();
+    on.put(new Signal("UI", 1), true);
+    on.put(new Signal("UI", 2), true);
+    on.put(new Signal("UI", 3), true);
+    on.put(new Signal("UI", 8), true);
+    List<ProductionSetup.PlcStep> plc = List.of(
+        new ProductionSetup.PlcStep(Optional.empty(), 0, on, "safety"),
+        new ProductionSetup.PlcStep(Optional.of(java.util.Map.entry(new Signal("UO", 1), true)), 0,
+            java.util.Map.of(new Signal("UI", 9), true), "PNS1"),
+        new ProductionSetup.PlcStep(Optional.empty(), 0.1, java.util.Map.of(new Signal("UI", 17), true), "strobe"),
+        new ProductionSetup.PlcStep(Optional.of(java.util.Map.entry(new Signal("UO", 19), true)), 0,
+            java.util.Map.of(new Signal("UI", 18), true), "prod start"),
+        new ProductionSetup.PlcStep(Optional.empty(), 0.1, java.util.Map.of(new Signal("UI", 18), false), "release"));
+    ProductionSetup.Robot s = new ProductionSetup.Robot(true, true, Selection.PNS, 0, 0, NO_RSR, new TreeMap<>(), 0.2,
+        false, false, Optional.empty(), List.of(), List.of(), 0.008, plc, true);
+    c.configureProduction(s);
+    // before the sequence ran, the active-low inputs are off: nothing may start
+    assertThat(c.uop().ui(Uop.IMSTP)).isFalse();
+    steps(sim, 10);
+    // 0.1 s delay before the strobe: not yet
+    assertThat(c.uop().plcStep()).isEqualTo(2);
+    steps(sim, 20);
+    assertThat(c.uop().plcStep()).isEqualTo(4);
+    assertThat(c.registers().number(1)).isZero();
+    steps(sim, 30);
+    assertThat(c.uop().plcDone()).isTrue();
+    assertThat(c.registers().number(1)).isEqualTo(1);
+    assertThat(c.activeAlarms()).isEmpty();
+  }
 }
