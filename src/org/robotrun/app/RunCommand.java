@@ -50,6 +50,8 @@ import picocli.CommandLine.Option;
       "The controller runs as in AUTO mode (operator panel start, no T1 speed cap, no hold-to-run) at --override.",
       "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
           + "before --programs; --program defaults to its main program); the program runs on the first robot.",
+      "A scenario whose production setup has \"runStartsFromPlc\" is started by its PLC sequence through the UOP "
+          + "signals instead (docs/production.md); the run ends when the sequence is done and no program runs.",
       "With --workspace DIR|FILE.zip they come from a workspace or a hand-in (docs/workspace.md), as the window would run them.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
