@@ -73,5 +73,9 @@ class ExampleScenariosTest {
     // SNO1 shows the PNS number 1
     assertThat(robot.get("io").get("UO").get("11").asBoolean()).isTrue();
     assertThat(robot.get("motions")).allSatisfy(m -> assertThat(m.get("program").asText()).isEqualTo("PNS0001"));
+    // the PLC, the UOP handshake and the BG logic are deterministic: a second run writes the same bytes
+    Path again = dir.resolve("r2.json");
+    assertThat(Main.execute("run", "--scenario", "scenarios/plc-cell.json", "--report", again.toString())).isZero();
+    assertThat(Files.readAllBytes(again)).isEqualTo(Files.readAllBytes(report));
   }
 }
