@@ -109,6 +109,19 @@ public final class Uop {
     }
   }
 
+  /**
+   * Restarts the PLC sequence from its first step with every UI input OFF, as a PLC that is
+   * switched off and on again (the PLC panel's button).
+   */
+  public void restartPlc() {
+    for (int i = 1; i <= 18; i++) {
+      setUi(i, false);
+    }
+    plcStep = 0;
+    plcHeldSec = Double.NaN;
+    rsrQueue.clear();
+  }
+
   /** The setup now, if any. */
   public Optional<ProductionSetup.Robot> setup() {
     return Optional.ofNullable(setup);

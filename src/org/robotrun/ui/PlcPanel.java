@@ -48,6 +48,12 @@ public final class PlcPanel {
         String note = step < s.plc().size() ? s.plc().get(step).note() : "done";
         Txt.wrapped(String.format(Locale.ROOT, "PLC sequence: step %d of %d: %s", Math.min(step + 1, s.plc().size()),
             s.plc().size(), note));
+        if (ImGui.smallButton("Restart PLC")) {
+          u.restartPlc();
+        }
+        if (ImGui.isItemHovered()) {
+          Txt.tooltip("Every UI input OFF, the sequence from its first step (a PLC switched off and on)");
+        }
       }
     }
     if (!u.lastRefusal().isEmpty()) {

@@ -340,5 +340,13 @@ class UopTest {
     assertThat(c.uop().plcDone()).isTrue();
     assertThat(c.registers().number(1)).isEqualTo(1);
     assertThat(c.activeAlarms()).isEmpty();
+    // a restarted PLC begins again with every input off and runs its sequence once more (its first
+    // step closes the safety inputs before the controller reads them, so no SRVO-037)
+    c.uop().restartPlc();
+    assertThat(c.uop().plcStep()).isZero();
+    assertThat(c.uop().ui(Uop.PNSTROBE)).isFalse();
+    steps(sim, 60);
+    assertThat(c.registers().number(1)).isEqualTo(2);
+    assertThat(c.activeAlarms()).isEmpty();
   }
 }
