@@ -157,7 +157,7 @@ public final class PlcPanel {
         ImGui.endCombo();
       }
       ImGui.sameLine();
-      if (ImGui.button("Add to BG Logic")) {
+      if (ImGui.button("Add to BG")) {
         bgMessage = controller.bgLogic().add(names.get(bgChoice)).orElse(names.get(bgChoice) + " runs every scan");
       }
     }
