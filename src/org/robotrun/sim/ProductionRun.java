@@ -41,36 +41,50 @@ public final class ProductionRun {
     return out;
   }
 
-  /** Steps {@code sim} until the PLC-started work is done; the result is as {@link HeadlessRun}'s. */
-  public static HeadlessRun.Result run(Simulation sim, Controller c, double maxSimSec, Consumer<Simulation> afterTick,
+  /**
+   * Steps {@code sim} until the PLC-started work of {@code c} is done. The result has one robot
+   * entry, {@code c}'s, with the program its PLC selected (other robots of the cell step along but
+   * run nothing of their own).
+   */
+  public static HeadlessRun.CellResult run(Simulation sim, Controller c, double maxSimSec, Consumer<Simulation> afterTick,
       BooleanSupplier stop, String stopReason) {
     double t0 = sim.timeSec();
     boolean started = false;
+    long movingTicks = 0;
+    double[] lastQ = c.jointsRad();
     while (true) {
       sim.step();
       afterTick.accept(sim);
-      if (c.hasActiveAlarm()) {
-        return new HeadlessRun.Result(HeadlessRun.Status.ALARM, Optional.of(c.activeAlarms().get(0)), sim.timeSec(),
-            sim.timeSec() - t0, sim.ticks());
+      double t = sim.timeSec();
+      double[] q = c.jointsRad();
+      if (!java.util.Arrays.equals(q, lastQ)) {
+        movingTicks++;
+        lastQ = q;
       }
       ExecutionStatus s = c.status();
-      started |= c.busy();
-      if (started && c.uop().plcDone() && s.state() == ExecutionStatus.State.IDLE && !c.busy()) {
-        return new HeadlessRun.Result(HeadlessRun.Status.FINISHED, Optional.empty(), sim.timeSec(), sim.timeSec() - t0,
-            sim.ticks());
+      Optional<ControllerAlarm> alarm = Optional.empty();
+      boolean done = false;
+      if (c.hasActiveAlarm()) {
+        alarm = Optional.of(c.activeAlarms().get(0));
+      } else {
+        started |= c.busy();
+        done = started && c.uop().plcDone() && s.state() == ExecutionStatus.State.IDLE && !c.busy();
+        if (!done && sim.ticks() % STOP_CHECK_TICKS == 0 && stop.getAsBoolean()) {
+          alarm = Optional.of(new ControllerAlarm(HeadlessRun.WALL_LIMIT_CODE, stopReason, s.program(), s.line(), t));
+        } else if (!done && t - t0 >= maxSimSec) {
+          alarm = Optional.of(new ControllerAlarm(HeadlessRun.TIME_LIMIT_CODE, String.format(java.util.Locale.ROOT,
+              "time limit reached: the PLC-started cell ran %.1f s of simulated time without ending (PLC step %d of %d)",
+              maxSimSec, c.uop().plcStep() + 1, c.uop().setup().map(x -> x.plc().size()).orElse(0)),
+              s.program(), s.line(), t));
+        }
       }
-      if (sim.ticks() % STOP_CHECK_TICKS == 0 && stop.getAsBoolean()) {
-        ControllerAlarm a = new ControllerAlarm(HeadlessRun.WALL_LIMIT_CODE, stopReason, s.program(), s.line(), sim.timeSec());
-        return new HeadlessRun.Result(HeadlessRun.Status.ALARM, Optional.of(a), sim.timeSec(), sim.timeSec() - t0,
-            sim.ticks());
-      }
-      if (sim.timeSec() - t0 >= maxSimSec) {
-        ControllerAlarm a = new ControllerAlarm(HeadlessRun.TIME_LIMIT_CODE, String.format(java.util.Locale.ROOT,
-            "time limit reached: the PLC-started cell ran %.1f s of simulated time without ending (PLC step %d of %d)",
-            maxSimSec, c.uop().plcStep() + 1, c.uop().setup().map(x -> x.plc().size()).orElse(0)),
-            s.program(), s.line(), sim.timeSec());
-        return new HeadlessRun.Result(HeadlessRun.Status.ALARM, Optional.of(a), sim.timeSec(), sim.timeSec() - t0,
-            sim.ticks());
+      if (done || alarm.isPresent()) {
+        String program = c.uop().selectedProgram().isEmpty() ? s.program() : c.uop().selectedProgram();
+        HeadlessRun.RobotResult rr = new HeadlessRun.RobotResult(c.name(), program,
+            done ? HeadlessRun.RobotStatus.FINISHED : HeadlessRun.RobotStatus.ALARM, alarm, t - t0,
+            movingTicks * sim.tickSec());
+        return new HeadlessRun.CellResult(done ? HeadlessRun.Status.FINISHED : HeadlessRun.Status.ALARM, alarm, t, t - t0,
+            sim.ticks(), List.of(rr));
       }
     }
   }

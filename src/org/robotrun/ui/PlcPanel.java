@@ -23,17 +23,20 @@ public final class PlcPanel {
   /** The section title. */
   public static final String TITLE = "PLC panel (UOP)";
 
-  private final Controller controller;
+  private final java.util.function.Supplier<Controller> robot;
+  private Controller controller;
   private final ImBoolean box = new ImBoolean();
   private int bgChoice;
   private String bgMessage = "";
 
-  public PlcPanel(Controller controller) {
-    this.controller = controller;
+  /** @param robot the controller the panel shows (the robot the selector chose) */
+  public PlcPanel(java.util.function.Supplier<Controller> robot) {
+    this.robot = robot;
   }
 
   /** The panel's controls, inside the section the workbench opened. */
   public void drawContents() {
+    controller = robot.get();
     Uop u = controller.uop();
     Optional<ProductionSetup.Robot> setup = u.setup();
     if (!u.enabled()) {

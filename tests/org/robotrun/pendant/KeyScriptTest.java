@@ -87,7 +87,7 @@ class KeyScriptTest {
   @Test
   void malformedLinesNameFileAndLine() {
     assertThat(bad("ENTER\nFROB\n")).isEqualTo("t.keys:2: unknown key or command 'FROB' (keys: F1..F5, ENTER, SHIFT+FWD, "
-        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, UI[i] ON/OFF, DI[i] ON/OFF, "
+        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, UI[i] ON/OFF, DI[i] ON/OFF, "
         + "WAIT, SHOW)");
     assertThat(bad("UI[19] ON")).isEqualTo("t.keys:1: UI[19]: index out of range (expected 1..18)");
     assertThat(bad("WAIT soon")).isEqualTo("t.keys:1: WAIT needs seconds (e.g. WAIT 2.5), got 'soon'");
