@@ -119,6 +119,9 @@ public final class BgLogic {
       case Instruction.SkipCondition c -> "SKIP CONDITION";
       case Instruction.OffsetCondition c -> "OFFSET CONDITION";
       case Instruction.SetOverride o -> "OVERRIDE";
+      case Instruction.AssignString a -> "an SR[] assignment";
+      case Instruction.Monitor m -> "MONITOR";
+      case Instruction.When w -> "WHEN";
       case Instruction.Unsupported u -> u.what();
     };
   }
