@@ -59,7 +59,7 @@ public final class TaskReader {
   private static final Set<String> VARIATIONS = Set.of("count", "seed", "overridePct", "parts");
   private static final Set<String> OVERRIDE = Set.of("min", "max");
   private static final Set<String> JITTER = Set.of("part", "xMm", "yMm", "rDeg", "offsetRegister");
-  private static final Set<String> COMMON = Set.of("name", "type", "points", "message", "hidden", "runs", "robot");
+  private static final Set<String> COMMON = Set.of("name", "type", "points", "message", "hidden", "runs");
   private static final Map<String, Set<String>> TYPES = new LinkedHashMap<>();
   private static final Pattern REGISTER = Pattern.compile("(R|F|DO|DI|RO|RI|GO|GI)\\[([1-9][0-9]{0,3})\\]");
 
@@ -312,6 +312,10 @@ public final class TaskReader {
         }
         Set<String> allowed = new HashSet<>(COMMON);
         allowed.addAll(extra);
+        if (ROBOT_TYPES.contains(type.get()) || o.members().containsKey("robot")) {
+          // A cell-wide check given a robot gets its own message below, not "unknown field".
+          allowed.add("robot");
+        }
         object(o, at, allowed);
         Optional<String> name = string(o, "name", at, true);
         name.ifPresent(n -> {

@@ -54,7 +54,7 @@ class TaskReaderTest {
          ]}
         """);
     assertThat(msg.lines().toList()).containsExactly(
-        "t.task.json:1: colour: unknown field (expected one of: checks, format, limits, program, scenario, title, variations)",
+        "t.task.json:1: colour: unknown field (expected one of: checks, format, limits, program, robots, scenario, title, variations)",
         "t.task.json:2: variations.count: expected a whole number 0..100, got 3.5",
         "t.task.json:2: variations.parts[0].part: the scenario has no part named 'part9'",
         "t.task.json:2: variations.parts[0].xMm: expected 0 to 1000, got -1",
@@ -64,7 +64,7 @@ class TaskReaderTest {
         "t.task.json:7: checks[2].type: unknown check type \"teleport\" (expected one of: handIn, programs, runsToEnd, "
             + "partAt, nothingHeld, noneDropped, noCollision, noMotionStop, cycleTime, programUse, endState, frame)",
         "t.task.json:8: checks[3].extra: unknown field (expected one of: forbids, hidden, maxMotionLines, message, name, "
-            + "points, requires, runs, type)",
+            + "points, requires, robot, runs, type)",
         "t.task.json:8: checks[3].requires[0]: unknown feature \"goto\" (expected one of: offsetPR, toolOffsetPR, "
             + "prTarget, for, call, jmpBackward, wait, if, select)",
         "t.task.json:9: checks[4].values.R[1]: expected a number, got a boolean",
