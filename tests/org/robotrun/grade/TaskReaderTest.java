@@ -90,4 +90,53 @@ class TaskReaderTest {
   void invalidJsonSaysWhere() throws Exception {
     assertThat(read("{\"format\":1,\n\"scenario\": }")).startsWith("t.task.json:2: not valid JSON");
   }
+
+  /** A task on the two-robot example cell, written next to a copy of it. */
+  private String readCell(String json) throws Exception {
+    Files.copy(Path.of("scenarios/two-robot-handshake.json"), dir.resolve("cell2.json"));
+    Files.createDirectories(dir.resolve("programs"));
+    Files.copy(Path.of("scenarios/programs/LOADER.LS"), dir.resolve("programs/LOADER.LS"));
+    Files.copy(Path.of("scenarios/programs/UNLOADER.LS"), dir.resolve("programs/UNLOADER.LS"));
+    Path f = dir.resolve("t.task.json");
+    Files.writeString(f, json);
+    TaskLoad l = TaskReader.read(f);
+    return l instanceof TaskLoad.Failed failed ? failed.message().replace(f.toString(), "t.task.json") : "loaded";
+  }
+
+  @Test
+  void robotsAndRobotFieldsNameRobotsOfTheScenarioAndOnlyRobotChecksTakeARobot() throws Exception {
+    String msg = readCell("""
+        {"format": 1, "scenario": "cell2.json",
+         "robots": {"robot1": {"program": "X"}, "robot9": {"program": "Y"}, "robot2": {"prog": "Z"}},
+         "checks": [
+           {"name": "a", "type": "runsToEnd", "points": 1, "robot": "robot3"},
+           {"name": "b", "type": "partAt", "points": 1, "robot": "robot2", "part": "part1", "fixture": "tray",
+            "position": {"x": 0, "y": 0, "z": 10}},
+           {"name": "c", "type": "endState", "points": 1, "robot": "robot2", "values": {"DO[1]": true}}
+         ]}
+        """);
+    assertThat(msg.lines().toList()).containsExactly(
+        "t.task.json:2: robots.robot1: the first robot's program is the task's \"program\"; list only the robots after it here",
+        "t.task.json:2: robots.robot9: the scenario has no robot \"robot9\" (robots: robot1, robot2)",
+        "t.task.json:2: robots.robot2.prog: unknown field (expected one of: program)",
+        "t.task.json:2: robots.robot2.program: missing: expected a string",
+        "t.task.json:4: checks[0].robot: the scenario has no robot \"robot3\" (robots: robot1, robot2)",
+        "t.task.json:5: checks[1].robot: a partAt check looks at the whole cell; \"robot\" is for cycleTime, endState, "
+            + "frame, noMotionStop, programUse, runsToEnd checks");
+  }
+
+  @Test
+  void robotsAfterTheFirstRunTheirScenarioMainProgramUnlessTheTaskNamesAnother() throws Exception {
+    assertThat(readCell("{\"format\":1,\"scenario\":\"cell2.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\","
+        + "\"points\":1,\"robot\":\"robot2\"}]}")).isEqualTo("loaded");
+    Task t = ((TaskLoad.Loaded) TaskReader.read(dir.resolve("t.task.json"))).task();
+    assertThat(t.program()).isEqualTo("LOADER");
+    assertThat(t.otherPrograms()).containsExactly(java.util.Map.entry("robot2", "UNLOADER"));
+    assertThat(t.checks().get(0).meta().robot()).contains("robot2");
+    Files.writeString(dir.resolve("t.task.json"), "{\"format\":1,\"scenario\":\"cell2.json\",\"robots\":{\"robot2\":"
+        + "{\"program\":\"other\"}},\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\",\"points\":1}]}");
+    Task t2 = ((TaskLoad.Loaded) TaskReader.read(dir.resolve("t.task.json"))).task();
+    assertThat(t2.otherPrograms()).containsExactly(java.util.Map.entry("robot2", "OTHER"));
+    assertThat(t2.checks().get(0).meta().robot()).isEmpty();
+  }
 }
