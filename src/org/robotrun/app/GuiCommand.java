@@ -169,7 +169,8 @@ public final class GuiCommand implements Callable<Integer> {
         stage("cell and window ready");
       }
       if (taskLoaded != null) {
-        s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()), s.controller()));
+        s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()),
+            s.sim().controllers()));
       }
       try (SimulatorWindow w = s.window()) {
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
