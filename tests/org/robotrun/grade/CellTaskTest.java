@@ -94,6 +94,7 @@ class CellTaskTest {
     assertThat(HandIns.check(flat, "robot2 runs to the end").feedback()).startsWith("robot2: not run: there is no program "
         + "UNLOADER for robot2 (programs found in programs/robot2/: none); UNLOADER is among the first robot's programs "
         + "in programs/, but robot2's programs go in programs/robot2/");
+    assertThat(flat.score()).isEqualTo(10); // hand-in and programs read only
     GradeResult wrong = handIn("wrong", ws -> {
       move(ws.resolve("programs/robot2/UNLOADER.LS"), dir.resolve("unused.LS"));
       copy(ws.resolve("programs/LOADER.LS"), ws.resolve("programs/robot2/LOADER.LS"));
