@@ -70,7 +70,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision", "state", "mode");
+      "onCollision", "state", "mode", VisionJson.KEY);
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
       "io", "userAlarms");
   /** Highest UALM[i] a scenario may give a text for. */
@@ -177,13 +177,16 @@ public final class ScenarioReader {
       } else if (stateJson != null) {
         error(stateJson.line(), "state", "expected an object, got " + stateJson.describe());
       }
+      org.robotrun.world.VisionSetup vision = VisionJson.read(top, file, robots.stream().map(RobotSetup::name).toList(),
+          objects, errors);
       if (!errors.isEmpty()) {
         errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
         return new CellLoad.Failed(errors);
       }
       try {
         return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode), Optional.ofNullable(state));
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode).withVision(vision),
+            Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
         return new CellLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));

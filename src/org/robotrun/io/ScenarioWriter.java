@@ -138,6 +138,7 @@ public final class ScenarioWriter {
         number(g, "pitchDeg", Math.toDegrees(c.pitchRad()));
         g.writeEndObject();
       }
+      VisionJson.write(g, s.vision(), ScenarioWriter::number);
       if (state.isPresent()) {
         StateJson.write(g, state.get());
       }
