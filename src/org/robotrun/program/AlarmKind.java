@@ -20,7 +20,9 @@ public enum AlarmKind {
   USER_ALARM(AlarmCode.INTP_213),
   ABORTED(AlarmCode.SIMU_005),
   MOTION(AlarmCode.SIMU_011),
-  NOT_SUPPORTED(AlarmCode.SIMU_012);
+  NOT_SUPPORTED(AlarmCode.SIMU_012),
+  /** An iRVision fault; the signal carries its CVIS code. */
+  VISION(AlarmCode.CVIS_015);
 
   private final AlarmCode entry;
 
