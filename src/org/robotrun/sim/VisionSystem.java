@@ -112,6 +112,17 @@ public final class VisionSystem {
     };
   }
 
+  /**
+   * {@code VISION RUN_FIND 'process'} as the program of controller {@code c} runs it (benchmarks,
+   * the camera view): the parts found, best score first.
+   *
+   * @throws IllegalArgumentException if there is no such process
+   */
+  public List<Detection> runFind(Controller c, String process) {
+    return find(c, setup.process(process).orElseThrow(() -> new IllegalArgumentException(
+        "no vision process named '" + process + "'")));
+  }
+
   /** RUN_FIND of {@code p} for the program of controller {@code c} (its user frames). */
   List<Detection> find(Controller c, VisionSetup.Process p) {
     String key = p.name().toUpperCase(Locale.ROOT);
@@ -126,12 +137,12 @@ public final class VisionSystem {
     Transform X_RU = p.reference().inverse();
     Map<String, String> held = sim.heldParts();
     List<Detection> out = new ArrayList<>();
+    List<VisionSetup.Model> models = p.models().stream().map(m -> setup.model(m).orElseThrow()).toList();
     for (WorldObject o : sim.world().objects()) {
       if (held.containsKey(o.name())) {
         continue;
       }
-      Optional<VisionSetup.Model> model = p.models().stream().map(m -> setup.model(m).orElseThrow())
-          .filter(m -> m.matches(o)).findFirst();
+      Optional<VisionSetup.Model> model = models.stream().filter(m -> m.matches(o)).findFirst();
       if (model.isEmpty()) {
         continue;
       }
