@@ -44,7 +44,7 @@ public final class VisionJson extends JsonFieldReader {
   private static final Set<String> POSE = Set.of("x", "y", "z", "w", "p", "r");
   private static final Set<String> XYZ = Set.of("x", "y", "z");
   /** Largest image side accepted (pixels). */
-  static final int MAX_PIXELS = 16384;
+  static final int MAX_PIXELS = 8192;
 
   private VisionJson(String file) {
     super(file);

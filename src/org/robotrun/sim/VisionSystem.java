@@ -181,6 +181,83 @@ public final class VisionSystem {
     return kept;
   }
 
+  /** Colour of the outlines of found parts in a camera view. */
+  public static final DrawItem.Color FOUND_COLOR = DrawItem.Color.rgb(0.1, 0.95, 0.2);
+
+  /** The detections of the last RUN_FIND of every process that uses {@code camera}. */
+  public List<Detection> lastFoundBy(String camera) {
+    List<Detection> out = new ArrayList<>();
+    for (VisionSetup.Process p : setup.processes()) {
+      if (p.camera().equals(camera)) {
+        out.addAll(lastFound(p.name()));
+      }
+    }
+    return out;
+  }
+
+  /**
+   * {@code scene} with the found parts of {@code camera}'s processes outlined: a wire box 10 %
+   * larger than the part's box, at the pose the vision process found (not where the part is).
+   */
+  public SceneSnapshot withOutlines(SceneSnapshot scene, String camera) {
+    List<DrawItem> items = new ArrayList<>(scene.items());
+    for (Detection d : lastFoundBy(camera)) {
+      Optional<WorldObject> o = sim.world().find(d.part());
+      if (o.isEmpty()) {
+        continue;
+      }
+      var box = o.get().shape().boundingBox();
+      items.add(new DrawItem("vision/" + d.part(), new DrawShape.WireBox(new Vec3(2.2 * box.hxMm(), 2.2 * box.hyMm(),
+          2.2 * box.hzMm())), d.X_CFound().compose(box.X_LB()), FOUND_COLOR));
+    }
+    return new SceneSnapshot(scene.simTimeSec(), items, scene.floorZ());
+  }
+
+  /**
+   * A label for a found part in the camera's image: where to write it (pixels, the found origin's
+   * projection), the outline of the part's top face at its found pose (four image points, u then v),
+   * and the text (model ID, found X, Y, R in the process's user frame).
+   */
+  public record Label(double u, double v, double[] outline, String text) {}
+
+  /** Labels of the last found parts of {@code camera}'s processes, in image pixels. */
+  public List<Label> labels(VisionSetup.Camera cam) {
+    Transform X_KC = cameraPose(cam).inverse();
+    List<Label> out = new ArrayList<>();
+    int k = 0;
+    for (Detection d : lastFoundBy(cam.name())) {
+      k++;
+      Optional<WorldObject> o = sim.world().find(d.part());
+      if (o.isEmpty()) {
+        continue;
+      }
+      var box = o.get().shape().boundingBox();
+      Transform X_KB = X_KC.compose(d.X_CFound()).compose(box.X_LB());
+      double[] outline = new double[8];
+      boolean visible = true;
+      double[][] corners = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+      for (int c = 0; c < 4; c++) {
+        Vec3 p = X_KB.apply(new Vec3(corners[c][0] * box.hxMm(), corners[c][1] * box.hyMm(), box.hzMm()));
+        double[] uv = cam.project(p.x(), p.y(), p.z());
+        if (uv == null) {
+          visible = false;
+          break;
+        }
+        outline[2 * c] = uv[0];
+        outline[2 * c + 1] = uv[1];
+      }
+      Vec3 origin = X_KC.apply(d.X_CFound().translationVector());
+      double[] at = cam.project(origin.x(), origin.y(), origin.z());
+      if (!visible || at == null) {
+        continue;
+      }
+      Position.Cartesian f = d.result().found();
+      out.add(new Label(at[0], at[1], outline, String.format(Locale.ROOT, "%d: M%d X%.1f Y%.1f R%.1f", k,
+          d.result().modelId(), f.xMm(), f.yMm(), f.rDeg())));
+    }
+    return out;
+  }
+
   private static Position.Cartesian cartesian(Transform t) {
     return Position.Cartesian.of(Xyzwpr.fromTransform(t), Config.DEFAULT);
   }
