@@ -325,6 +325,12 @@ public final class GuiCommand implements Callable<Integer> {
       w.setShortcutHandler((key, mods) -> menu.onShortcut(key, mods) || bench.onShortcut(key, mods));
       w.setFocusGainedHandler(() -> ws.checkExternalEdits(menu));
     }
+    if (sim.vision().isPresent()) {
+      // Vision (issue 16): camera views in the Vision menu, Reset with a seed in the side panel.
+      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim);
+      bench.addSection(org.robotrun.ui.VisionPanel.TITLE, vision::drawContents);
+      bench.addMenus(vision);
+    }
     w.setViewClickHandler(bench::onViewClick);
     w.setViewPressHandler(bench.viewPress());
     w.setFocusLostHandler(() -> {
