@@ -116,8 +116,11 @@ public final class VisionPanel implements Workbench.MenuContributor, AutoCloseab
 
   private void drawCameraWindow(VisionSetup.Camera cam, CameraImage img) {
     float aspect = cam.widthPx() / (float) cam.heightPx();
-    ImGui.setNextWindowSize(480, 480 / aspect + 70, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowPos(380, 80, ImGuiCond.FirstUseEver);
+    // First opened over the 3D view's upper left, at most a third of the window wide.
+    float dw = ImGui.getIO().getDisplaySizeX();
+    float ww = Math.min(520, Math.max(240, dw * 0.34f));
+    ImGui.setNextWindowSize(ww, ww / aspect + 70, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowPos(dw * 0.22f, 60, ImGuiCond.FirstUseEver);
     imgui.type.ImBoolean keep = new imgui.type.ImBoolean(true);
     if (ImGui.begin("Camera " + cam.name() + "##vision", keep)) {
       float availW = Math.max(32, ImGui.getContentRegionAvailX());

@@ -178,4 +178,22 @@ class VisionSystemTest {
       assertThat(d.result().found().yMm()).isCloseTo(t.y(), offset(1e-9));
     }
   }
+
+  @Test
+  void reseedPlacesThePartsAnewClearsTheRegistersAndResetSceneKeepsTheNewPlaces() {
+    Simulation sim = VisionPickTest.cell(5);
+    Controller c = sim.controllers().get(0);
+    c.registers().vision().set(1, find(sim).get(0).result());
+    Transform before = sim.world().poseInCell("block1");
+    VisionSystem v = VisionSystem.reseed(sim, sim.vision().orElseThrow().setup(), 6);
+    assertThat(v.setup().seed()).isEqualTo(6);
+    assertThat(sim.vision()).containsSame(v);
+    assertThat(c.registers().vision().get(1)).isEmpty();
+    Transform after = sim.world().poseInCell("block1");
+    assertThat(after.distanceTo(before)).isGreaterThan(1.0);
+    // the same places as a cell built with seed 6
+    assertThat(after).isEqualTo(VisionPickTest.cell(6).world().poseInCell("block1"));
+    sim.resetScene();
+    assertThat(sim.world().poseInCell("block1")).isEqualTo(after);
+  }
 }
