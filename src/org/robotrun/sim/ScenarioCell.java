@@ -84,6 +84,7 @@ public final class ScenarioCell {
     // Parts the scenario drops at random stand where its vision seed puts them (issue 16).
     World world = PartPlacement.place(scenario.world(), scenario.vision());
     Simulation sim = new Simulation(controllers, placements, world, tools, floorZ, tickSec);
+    sim.setWiring(scenario.wiring());
     if (!scenario.vision().isEmpty()) {
       VisionSystem.attach(sim, scenario.vision());
     }
