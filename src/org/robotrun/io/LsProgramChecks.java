@@ -92,6 +92,14 @@ final class LsProgramChecks {
     if (in instanceof Instruction.Monitor mo) {
       return Optional.of(new Instruction.Call(mo.program(), List.of()));
     }
+    if (in instanceof Instruction.Move mv) {
+      // TB/TA/DB ...,CALL PROG
+      for (org.robotrun.program.Motion.Option o : mv.options()) {
+        if (o instanceof org.robotrun.program.Motion.TimedAction t && t.action() instanceof Instruction.Call c) {
+          return Optional.of(c);
+        }
+      }
+    }
     return b.filter(x -> x instanceof Instruction.Call).map(x -> (Instruction.Call) x);
   }
 

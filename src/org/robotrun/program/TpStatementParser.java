@@ -898,8 +898,8 @@ public final class TpStatementParser extends TpTokenCursor {
 
   /**
    * {@code TB t sec,action} / {@code TA ...} / {@code TIME BEFORE|AFTER ...} from token {@code at}:
-   * a {@link Motion.TimedAction} when the action is an output RobotRun runs, else {@code raw}
-   * (CALL, POINT_LOGIC and other actions stay as written and are not run).
+   * a {@link Motion.TimedAction} when the action is an output or a CALL without arguments, else
+   * {@code raw} (POINT_LOGIC, CALL with arguments and other actions stay as written and are not run).
    */
   private Motion.Option timedAction(int at, Motion.RawOption raw) {
     if (at < 0) {
@@ -931,8 +931,8 @@ public final class TpStatementParser extends TpTokenCursor {
     try {
       TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
       Instruction action = p.statement();
-      if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)
-          && Double.isFinite(amount)) {
+      if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse
+          || action instanceof Instruction.Call c && c.args().isEmpty()) && Double.isFinite(amount)) {
         return new Motion.TimedAction(when, amount, action, raw.text());
       }
     } catch (TpSyntaxError e) {
