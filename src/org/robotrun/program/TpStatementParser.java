@@ -446,6 +446,15 @@ public final class TpStatementParser extends TpTokenCursor {
             && Program.isValidName(w)) {
           yield new Instruction.MacroCall(w);
         }
+        // A macro of several words ("HAND1 OPEN"): the words alone on the line; the controller's
+        // macro table says which program it runs.
+        if (t.is(Kind.WORD) && !UNSUPPORTED.containsKey(w) && !w.startsWith("PAL") && onlyWordsFollow()) {
+          StringBuilder name = new StringBuilder(t.text());
+          while (!peek().is(Kind.EOL)) {
+            name.append(' ').append(next().text());
+          }
+          yield new Instruction.MacroCall(name.toString());
+        }
         throw unknownStatement(t);
       }
     };
