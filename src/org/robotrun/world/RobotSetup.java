@@ -70,6 +70,11 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
     return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main, macros);
   }
 
+  /** This robot with another macro table. */
+  public RobotSetup withMacros(List<Macro> table) {
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, table);
+  }
+
   /** A robot with the controller's default I/O sizes and no UALM texts. */
   public RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
       ToolIo toolIo) {
