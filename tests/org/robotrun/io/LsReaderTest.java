@@ -194,6 +194,8 @@ class LsReaderTest {
     // Not a syntax error: check has no macro table, so it names the macro as unresolved.
     assertThat(messages(r.withCallTargetsChecked(java.util.Set.of()))).contains(
         "t.ls:4: macro HAND1 OPEN: not in the macro table (a robot's \"macros\" in the scenario define it; the line alarms when it runs without one)");
+    assertThat(r.withCallTargetsChecked(java.util.Set.of()).diagnostics()).extracting(Diagnostic::kind)
+        .containsOnly(Diagnostic.Kind.REFERENCE);
     assertThat(r.diagnostics()).isEmpty();
     // kept as written, and written in the controller's layout when fresh
     assertThat(new String(LsWriter.bytes(r.program()), java.nio.charset.StandardCharsets.UTF_8))
