@@ -73,7 +73,8 @@ final class LsProgramChecks {
         } else if (!target.equalsIgnoreCase(self) && !known.test(target)) {
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
               (lines.get(i) instanceof Instruction.MacroCall ? "macro "
-                  : lines.get(i) instanceof Instruction.Monitor ? "MONITOR " : "CALL ") + target + ": no program named "
+                  : lines.get(i) instanceof Instruction.Monitor ? "MONITOR "
+                  : lines.get(i) instanceof Instruction.Run ? "RUN " : "CALL ") + target + ": no program named "
                   + target + " is known"));
         }
       }
@@ -103,6 +104,10 @@ final class LsProgramChecks {
           return Optional.of(c);
         }
       }
+    }
+    if (in instanceof Instruction.Run r) {
+      // RUN names a program as CALL does (it starts it as a task)
+      return Optional.of(new Instruction.Call(r.program(), r.args()));
     }
     return b.filter(x -> x instanceof Instruction.Call).map(x -> (Instruction.Call) x);
   }
