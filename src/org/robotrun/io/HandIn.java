@@ -32,7 +32,8 @@ import java.util.zip.ZipOutputStream;
 
 /**
  * A hand-in: one {@code .zip} of a workspace whose root holds {@code manifest.json},
- * {@code cell.json} and {@code programs/*.LS} (docs/workspace.md). The manifest names the
+ * {@code cell.json}, {@code programs/*.LS} and the other named scenarios
+ * {@code scenarios/*.json} (docs/workspace.md). The manifest names the
  * student as typed, the workspace's creation and last-change times, the RobotRun version, the
  * scenario's name and the SHA-256 of every other file in the zip.
  *
@@ -50,6 +51,8 @@ public final class HandIn {
   /** Most files inside. */
   public static final int MAX_ENTRIES = 2000;
   private static final Pattern PROGRAM_ENTRY = Pattern.compile("programs/[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}\\.(?i:ls)");
+  /** The cell editor's other named scenarios: {@code scenarios/NAME.json}. */
+  private static final Pattern SCENARIO_ENTRY = Pattern.compile(Workspace.SCENARIOS + "/" + Workspace.SCENARIO_FILE.pattern());
 
   private HandIn() {}
 
@@ -96,6 +99,17 @@ public final class HandIn {
             files.put(entry, Files.readAllBytes(f));
             FileTime t = Files.getLastModifiedTime(f);
             newest = t.compareTo(newest) > 0 ? t : newest;
+          }
+        }
+      }
+      Path scenarios = workspaceDir.resolve(Workspace.SCENARIOS);
+      if (Files.isDirectory(scenarios)) {
+        try (Stream<Path> s = Files.list(scenarios)) {
+          for (Path f : s.filter(Files::isRegularFile).sorted().toList()) {
+            String entry = Workspace.SCENARIOS + "/" + f.getFileName();
+            if (SCENARIO_ENTRY.matcher(entry).matches()) {
+              files.put(entry, Files.readAllBytes(f));
+            }
           }
         }
       }
@@ -191,12 +205,13 @@ public final class HandIn {
             throw new HandInException(where + ": more than " + MAX_ENTRIES + " entries");
           }
           String name = e.getName();
-          if (e.isDirectory() && name.equals(Workspace.PROGRAMS + "/")) {
+          if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || name.equals(Workspace.SCENARIOS + "/"))) {
             continue;
           }
-          if (!name.equals(MANIFEST) && !name.equals(Workspace.CELL) && !PROGRAM_ENTRY.matcher(name).matches()) {
+          if (!name.equals(MANIFEST) && !name.equals(Workspace.CELL) && !PROGRAM_ENTRY.matcher(name).matches()
+              && !SCENARIO_ENTRY.matcher(name).matches()) {
             throw new HandInException(where + ": unexpected entry \"" + name
-                + "\" (a hand-in holds manifest.json, cell.json and programs/NAME.LS only)");
+                + "\" (a hand-in holds manifest.json, cell.json, programs/NAME.LS and scenarios/NAME.json only)");
           }
           if (files.containsKey(name) || (name.equals(MANIFEST) && manifestBytes != null)) {
             throw new HandInException(where + ": entry \"" + name + "\" is in the zip twice");
@@ -243,6 +258,9 @@ public final class HandIn {
     }
     try {
       Files.createDirectories(into.resolve(Workspace.PROGRAMS));
+      if (files.keySet().stream().anyMatch(n -> n.startsWith(Workspace.SCENARIOS + "/"))) {
+        Files.createDirectories(into.resolve(Workspace.SCENARIOS));
+      }
       for (Map.Entry<String, byte[]> e : files.entrySet()) {
         AtomicFiles.write(into.resolve(e.getKey()), e.getValue());
       }

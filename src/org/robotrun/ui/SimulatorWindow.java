@@ -330,6 +330,18 @@ public final class SimulatorWindow implements AutoCloseable {
     }
   }
 
+  /**
+   * Makes the window ready to run again after {@link #run} ended on a close request (the next
+   * session of a scenario switch or another workspace in the same window); handlers are set anew.
+   */
+  public SimulatorWindow reopen() {
+    glfwSetWindowShouldClose(window, false);
+    afterFrame = () -> {};
+    firstFrame = () -> {};
+    lastInputNanos = System.nanoTime();
+    return this;
+  }
+
   /** Runs after every frame is on screen (layout probes, tests). */
   public void setAfterFrameHandler(Runnable handler) {
     afterFrame = handler;
