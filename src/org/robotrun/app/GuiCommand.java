@@ -311,10 +311,13 @@ public final class GuiCommand implements Callable<Integer> {
       String running = sc.name();
       ws.session.otherScenarios = () -> ed.scenarios().stream().filter(x -> !x.name().equals(running)).toList();
     }
-    // In a workspace the edited cell is saved with the workspace (autosave); "Save" also writes a scenario copy.
-    Path editedCopy = ws != null ? ws.session.workspace.folder().resolve("scenario-edited.json")
+    // In a workspace the edited cell is saved with the workspace (autosave); "Export" writes a scenario copy.
+    Path editedCopy = ws != null ? null
         : scenario == null ? null : scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json");
     CellEditorPanel editorPanel = editor == null ? null : new CellEditorPanel(editor, editedCopy);
+    if (editorPanel != null && ws != null) {
+      editorPanel.inWorkspace();
+    }
     w.setTitle((ws != null ? ws.title()
         : "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()))
         + (SoftwareGl.active(System.getenv()) ? " (software rendering)" : ""));

@@ -311,7 +311,7 @@ public final class FileMenu implements Workbench.MenuContributor {
       ImGui.inputText("File", handInPath);
       ImGui.sameLine();
       if (ImGui.button("Choose...")) {
-        if (dialogs.save("Zip archive", "zip", null, Path.of(handInPath.get()).getFileName().toString())
+        if (dialogs.save("Zip archive", "zip", null, typedFileName(handInPath.get()))
             instanceof FileDialogs.Answer.Chosen c && !c.paths().isEmpty()) {
           handInPath.set(c.paths().get(0).toString());
         }
@@ -331,7 +331,10 @@ public final class FileMenu implements Workbench.MenuContributor {
           askReplace = false;
         }
       } else if (ImGui.button("Hand in")) {
-        if (java.nio.file.Files.exists(Path.of(expandHome(handInPath.get().strip())))) {
+        if (handInPath.get().isBlank()) {
+          handInError = "File: type the name of the .zip to write (or Choose...)";
+        } else if (typedFileName(handInPath.get()) != null
+            && java.nio.file.Files.exists(Path.of(expandHome(handInPath.get().strip())))) {
           askReplace = true;
         } else {
           finishHandIn(false);
@@ -342,6 +345,16 @@ public final class FileMenu implements Workbench.MenuContributor {
         ImGui.closeCurrentPopup();
       }
       ImGui.endPopup();
+    }
+  }
+
+  /** The file-name part of a typed path, "" when it has none, null when the text is no path on this system. */
+  private static String typedFileName(String typed) {
+    try {
+      Path p = Path.of(expandHome(typed.strip())).getFileName();
+      return p == null ? "" : p.toString();
+    } catch (java.nio.file.InvalidPathException e) {
+      return null;
     }
   }
 

@@ -288,11 +288,15 @@ public final class SimulatorWindow implements AutoCloseable {
    */
   public void run(SceneSource scene, Panels panels, BooleanSupplier busy) {
     long start = System.nanoTime();
+    long firstFrameOfRun = frames;
     int[] fw = new int[1], fh = new int[1];
     boolean moreEdges = false;
     while (!glfwWindowShouldClose(window)) {
       boolean recentInput = System.nanoTime() - lastInputNanos < IDLE_AFTER_NANOS;
-      if (moreEdges || recentInput || busy.getAsBoolean()) {
+      // Dear ImGui sizes a new auto-sized window in a hidden first frame: the first few frames
+      // are drawn however slowly the start went, so nothing waits for the 5 s idle redraw.
+      boolean starting = frames - firstFrameOfRun < 4;
+      if (moreEdges || recentInput || starting || busy.getAsBoolean()) {
         glfwPollEvents();
       } else {
         glfwWaitEventsTimeout(IDLE_REDRAW_SEC);

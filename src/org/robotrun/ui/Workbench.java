@@ -241,6 +241,13 @@ public final class Workbench implements SimulatorWindow.Panels {
     float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
     float menuH = drawMenuBar();
     layout = WindowLayout.compute(dw, dh, menuH, scale, PendantPanel.naturalWidth(), state);
+    // the first-start card is docked along the bottom of the 3D view: the scene is framed above it
+    WindowLayout.Rect fullView = layout.view();
+    float card = help.welcomeDock(fullView);
+    if (card > 0) {
+      layout = new WindowLayout(layout.menuBar(), layout.sidebar(),
+          new WindowLayout.Rect(fullView.x(), fullView.y(), fullView.w(), fullView.h() - card), layout.pendant());
+    }
     frameScene(dw, dh);
     drawSidebar(layout.sidebar());
     pendantPanel.draw(layout.pendant());
@@ -253,7 +260,8 @@ public final class Workbench implements SimulatorWindow.Panels {
       handles.draw(camera, framebufferW, framebufferH, dw, dh, editorPanel.editor(), editorPanel.selected(), layout.view());
     }
     drawPromptStrip();
-    help.draw(layout.view(), task);
+    help.drawWelcome(fullView, layout.sidebar().visible() && state.taskOpen ? "" : task);
+    help.draw(layout.view());
     if (!help.welcomeOpen() && !state.welcomeSeen) {
       state.welcomeSeen = true;
       onLayoutChange.run();
@@ -270,7 +278,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     int x = Math.round(v.x() * sx), w = Math.round(v.w() * sx);
     int h = Math.round(v.h() * sy), y = framebufferH - Math.round(v.bottom() * sy);
     camera.setViewRect(x, y, w, h);
-    if (!framed && w > 0 && h > 0) {
+    if (!framed && w > 0 && h > 0 && help.welcomeMeasured()) {
       framed = true;
       List<Vector3f> pts = new ArrayList<>();
       for (DrawItem it : scene.get().items()) {
