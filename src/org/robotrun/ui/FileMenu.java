@@ -241,7 +241,7 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
     if (ImGui.beginPopupModal("Path##file", ImGuiWindowFlags.AlwaysAutoResize)) {
       Txt.wrapped(pathPrompt);
-      ImGui.setNextItemWidth(520);
+      ImGui.setNextItemWidth(ImGui.getFontSize() * 40);
       if (ImGui.isWindowAppearing()) {
         ImGui.setKeyboardFocusHere();
       }
@@ -285,7 +285,7 @@ public final class FileMenu implements Workbench.MenuContributor {
       ImGui.openPopup("RobotRun##message");
     }
     if (ImGui.beginPopupModal("RobotRun##message", ImGuiWindowFlags.AlwaysAutoResize)) {
-      ImGui.pushTextWrapPos(700);
+      ImGui.pushTextWrapPos(ImGui.getFontSize() * 54);
       ImGui.textUnformatted(messages.isEmpty() ? "" : messages.peek());
       ImGui.popTextWrapPos();
       if (ImGui.button("OK") || ImGui.isKeyPressed(GLFW_KEY_ENTER)) {
@@ -305,9 +305,9 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
     if (ImGui.beginPopupModal("Hand in", ImGuiWindowFlags.AlwaysAutoResize)) {
       ImGui.textUnformatted("Writes one .zip of this workspace (cell.json, programs/*.LS, manifest.json) for your instructor.");
-      ImGui.setNextItemWidth(400);
+      ImGui.setNextItemWidth(ImGui.getFontSize() * 31);
       ImGui.inputText("Your name", student);
-      ImGui.setNextItemWidth(400);
+      ImGui.setNextItemWidth(ImGui.getFontSize() * 31);
       ImGui.inputText("File", handInPath);
       ImGui.sameLine();
       if (ImGui.button("Choose...")) {
@@ -317,7 +317,7 @@ public final class FileMenu implements Workbench.MenuContributor {
         }
       }
       if (!handInError.isEmpty()) {
-        ImGui.pushTextWrapPos(640);
+        ImGui.pushTextWrapPos(ImGui.getFontSize() * 49);
         Txt.colored(0.95f, 0.3f, 0.3f, 1f, handInError);
         ImGui.popTextWrapPos();
       }

@@ -163,7 +163,9 @@ public final class PendantPanel {
           + "The keyboard goes back to the pendant after Enter.");
     }
     ImGui.sameLine();
-    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() - 60);
+    // room for the Send button at any UI scale
+    float send = ImGui.calcTextSize("Send").x + 4 * ImGui.getStyle().getFramePaddingX() + ImGui.getStyle().getItemSpacingX();
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() - send);
     boolean enter = ImGui.inputText("##type", typed, ImGuiInputTextFlags.EnterReturnsTrue);
     ImGui.sameLine();
     if (ImGui.button("Send", ImGui.getContentRegionAvailX(), 0) || enter) {

@@ -134,19 +134,56 @@ public final class SimulatorWindow implements AutoCloseable {
     // ImGui never writes files itself: every file goes through AtomicFiles (see WindowSettings)
     ImGui.getIO().setIniFilename(null);
     ImGui.styleColorsDark();
-    float[] sx = new float[1], sy = new float[1];
-    glfwGetWindowContentScale(window, sx, sy);
-    contentScale = Math.max(1f, Math.min(4f, Math.max(sx[0], sy[0])));
-    if (contentScale > 1.01f) {
-      // HiDPI: a font rasterised at the monitor's scale (sharp, not stretched) and sizes to match
+    contentScale = uiScale(window, System.getenv("ROBOTRUN_UI_SCALE"));
+    // Pixels per window coordinate: 2 on a macOS Retina screen (window sizes in points), else 1.
+    int[] ww = new int[1], wh = new int[1], fbw = new int[1], fbh = new int[1];
+    glfwGetWindowSize(window, ww, wh);
+    glfwGetFramebufferSize(window, fbw, fbh);
+    float pixelRatio = ww[0] > 0 ? Math.max(1f, fbw[0] / (float) ww[0]) : 1f;
+    float raster = contentScale * pixelRatio;
+    if (Math.abs(raster - 1f) > 0.01f) {
+      // HiDPI (or a forced scale): the font rasterised at the screen's pixel density (sharp, not stretched), drawn at
+      // the size the UI scale asks for in window coordinates, and the style's sizes to match
       var cfg = new imgui.ImFontConfig();
-      cfg.setSizePixels(13f * contentScale);
+      cfg.setSizePixels(13f * raster);
       ImGui.getIO().getFonts().addFontDefault(cfg);
       cfg.destroy();
-      ImGui.getStyle().scaleAllSizes(contentScale);
+      ImGui.getIO().setFontGlobalScale(1f / pixelRatio);
+      if (Math.abs(contentScale - 1f) > 0.01f) {
+        ImGui.getStyle().scaleAllSizes(contentScale);
+      }
     }
     imguiGlfw.init(window, true);
     imguiGl3.init("#version 330 core");
+  }
+
+  /**
+   * How much larger than at 96 dpi the window's text and panels are drawn, in window coordinates:
+   * {@code ROBOTRUN_UI_SCALE} when set (0.5 to 4; for a screen that reports no scale, or to try
+   * HiDPI on an ordinary one), else the monitor's content scale divided by the pixels per window
+   * coordinate (macOS counts window sizes in points, so a Retina screen's 2 is already in them).
+   */
+  static float uiScale(long window, String forced) {
+    if (forced != null && !forced.isBlank()) {
+      try {
+        float f = Float.parseFloat(forced.trim());
+        if (f >= 0.5f && f <= 4f) {
+          return f;
+        }
+      } catch (NumberFormatException e) {
+        // fall through to the message
+      }
+      System.err.println("robotrun: ROBOTRUN_UI_SCALE: expected a number from 0.5 to 4, got '" + forced
+          + "'; using the monitor's scale");
+    }
+    float[] sx = new float[1], sy = new float[1];
+    glfwGetWindowContentScale(window, sx, sy);
+    int[] ww = new int[1], wh = new int[1], fbw = new int[1], fbh = new int[1];
+    glfwGetWindowSize(window, ww, wh);
+    glfwGetFramebufferSize(window, fbw, fbh);
+    float pixelRatio = ww[0] > 0 ? Math.max(1f, fbw[0] / (float) ww[0]) : 1f;
+    float s = Math.max(sx[0], sy[0]) / pixelRatio;
+    return Math.max(1f, Math.min(4f, s));
   }
 
   /** The window size to open with: what was asked for, or what fits the primary monitor. */
@@ -161,7 +198,12 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwGetMonitorWorkarea(monitor, x, y, ww, wh);
       float[] sx = new float[1], sy = new float[1];
       glfwGetMonitorContentScale(monitor, sx, sy);
-      float s = Math.max(1f, sx[0]);
+      // macOS counts screen coordinates in points: its content scale is not applied again
+      float s = Platform.get() == Platform.MACOSX ? 1f : Math.max(1f, sx[0]);
+      String forced = System.getenv("ROBOTRUN_UI_SCALE");
+      if (forced != null && forced.trim().matches("[0-9]+(\\.[0-9]+)?")) {
+        s = Math.max(0.5f, Math.min(4f, Float.parseFloat(forced.trim())));
+      }
       if (ww[0] > 0 && wh[0] > 0) {
         // leave room for the title bar and the task bar the work area may not count
         w = Math.min(Math.round(1280 * s), ww[0]);
@@ -370,7 +412,10 @@ public final class SimulatorWindow implements AutoCloseable {
     firstFrame = handler;
   }
 
-  /** The monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one). */
+  /**
+   * The UI scale in window coordinates (1 on an ordinary screen, 2 on a 192 dpi one on Windows or
+   * Linux, 1 on a macOS Retina screen whose window coordinates are points; see {@link #uiScale}).
+   */
   public float contentScale() {
     return contentScale;
   }

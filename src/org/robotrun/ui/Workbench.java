@@ -404,7 +404,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     WindowLayout.Rect v = layout.view();
     ImGui.setNextWindowPos(v.x() + 8, v.bottom() - 8, ImGuiCond.Always, 0f, 1f);
     ImGui.setNextWindowBgAlpha(0.85f);
-    ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), 200);
+    ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), ImGui.getFontSize() * 15);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
         | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav | ImGuiWindowFlags.NoInputs)) {
       Txt.colored(1f, 0.55f, 0.45f, 1f, editorPanel.message());
