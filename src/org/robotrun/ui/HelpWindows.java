@@ -56,6 +56,12 @@ public final class HelpWindows {
 
   /** The first-start card's height last frame (display pixels); 0 before it was drawn. */
   private float welcomeHeight;
+  private WindowLayout.Rect welcomeRect = new WindowLayout.Rect(0, 0, 0, 0);
+
+  /** Where the first-start card was drawn last frame (display pixels); empty when closed (tests). */
+  public WindowLayout.Rect welcomeRect() {
+    return welcome.get() ? welcomeRect : new WindowLayout.Rect(0, 0, 0, 0);
+  }
 
   /**
    * How much of the bottom of the 3D view the first-start card takes (display pixels): it is
@@ -116,6 +122,8 @@ public final class HelpWindows {
           + "This card again: Help > First steps.");
       ImGui.popStyleColor();
       welcomeHeight = ImGui.getWindowHeight();
+      welcomeRect = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
+          ImGui.getWindowHeight());
     }
     ImGui.end();
   }
