@@ -470,14 +470,30 @@ public final class GuiCommand implements Callable<Integer> {
     w.setFirstFrameHandler(() -> System.err.println("robotrun: first frame "
         + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started"));
     long[] since = {System.nanoTime(), 0};
+    long[][] phases = {w.phaseNanos()};
+    var threads = ManagementFactory.getThreadMXBean();
+    var os = ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean o ? o : null;
+    long[] cpu = {threads.getCurrentThreadCpuTime(), os == null ? 0 : os.getProcessCpuTime()};
     w.setAfterFrameHandler(() -> {
       long now = System.nanoTime();
       if (now - since[0] >= 5_000_000_000L) {
         long n = w.frames() - since[1];
-        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s)%n", n, (now - since[0]) / 1e9,
-            n / ((now - since[0]) / 1e9));
+        StringBuilder per = new StringBuilder();
+        long[] p = w.phaseNanos();
+        for (int i = 0; i < p.length; i++) {
+          per.append(String.format(java.util.Locale.ROOT, " %s %.2f", SimulatorWindow.PHASES.get(i),
+              n == 0 ? 0 : (p[i] - phases[0][i]) / 1e6 / n));
+        }
+        long c = threads.getCurrentThreadCpuTime();
+        long pc = os == null ? 0 : os.getProcessCpuTime();
+        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s); ms per frame:%s;"
+            + " CPU per frame: window thread %.2f ms, process %.2f ms%n", n, (now - since[0]) / 1e9,
+            n / ((now - since[0]) / 1e9), per, n == 0 ? 0 : (c - cpu[0]) / 1e6 / n, n == 0 ? 0 : (pc - cpu[1]) / 1e6 / n);
         since[0] = now;
         since[1] = w.frames();
+        phases[0] = p;
+        cpu[0] = c;
+        cpu[1] = pc;
       }
     });
   }

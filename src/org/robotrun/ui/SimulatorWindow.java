@@ -313,7 +313,20 @@ public final class SimulatorWindow implements AutoCloseable {
   @FunctionalInterface
   public interface Panels {
     void draw(int framebufferWidth, int framebufferHeight);
+
+    /**
+     * Opaque rectangles (display pixels) under the panels drawn in the last {@link #draw}, filled
+     * by a clear before Dear ImGui draws over them: a panel whose own background is left out then
+     * costs nothing under a software renderer, where blending a textured background over half the
+     * window was a third of each frame.
+     */
+    default java.util.List<Fill> fills() {
+      return java.util.List.of();
+    }
   }
+
+  /** A rectangle in display pixels filled with an opaque colour (see {@link Panels#fills}). */
+  public record Fill(float x, float y, float w, float h, float r, float g, float b) {}
 
   /** Runs the event and render loop until the window is closed. */
   public void run(SceneSource scene) {
@@ -345,7 +358,9 @@ public final class SimulatorWindow implements AutoCloseable {
       }
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
+        long t0 = System.nanoTime();
         SceneSnapshot snap = scene.snapshot((System.nanoTime() - start) / 1e9);
+        long t1 = System.nanoTime();
         imguiGlfw.newFrame();
         // one queued edge per button and key per frame: a tap within one frame is not lost
         moreEdges = mouseEdges.apply((b, down) -> {
@@ -362,9 +377,19 @@ public final class SimulatorWindow implements AutoCloseable {
         // panels first: they decide the free part of the window the scene is framed in
         panels.draw(fw[0], fh[0]);
         ImGui.render();
+        long t2 = System.nanoTime();
         renderer.render(snap, camera, fw[0], fh[0]);
+        fill(panels.fills(), fw[0], fh[0]);
+        long t3 = System.nanoTime();
         imguiGl3.renderDrawData(ImGui.getDrawData());
+        long t4 = System.nanoTime();
         glfwSwapBuffers(window);
+        long t5 = System.nanoTime();
+        phaseNanos[0] += t1 - t0;
+        phaseNanos[1] += t2 - t1;
+        phaseNanos[2] += t3 - t2;
+        phaseNanos[3] += t4 - t3;
+        phaseNanos[4] += t5 - t4;
         frames++;
         if (frames == 1) {
           firstFrame.run();
@@ -386,6 +411,38 @@ public final class SimulatorWindow implements AutoCloseable {
     firstFrame = () -> {};
     lastInputNanos = System.nanoTime();
     return this;
+  }
+
+  /** Wall time spent so far in each part of a frame (ns): simulation and scene, panels, 3D scene, panels' GL, swap. */
+  private final long[] phaseNanos = new long[5];
+
+  /** The phase names of {@link #phaseNanos()}. */
+  public static final java.util.List<String> PHASES = java.util.List.of("sim", "panels", "scene", "imgui-gl", "swap");
+
+  /** A copy of the wall time spent in each phase of all frames so far (ns), in {@link #PHASES} order (frame log). */
+  public long[] phaseNanos() {
+    return phaseNanos.clone();
+  }
+
+  /** Clears each fill's rectangle to its colour (a clear is nearly free where a blended quad is not). */
+  private static void fill(java.util.List<Fill> fills, int fbW, int fbH) {
+    if (fills.isEmpty()) {
+      return;
+    }
+    float sx = fbW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
+    float sy = fbH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
+    org.lwjgl.opengl.GL11C.glEnable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
+    for (Fill f : fills) {
+      int x0 = Math.round(f.x() * sx), x1 = Math.round((f.x() + f.w()) * sx);
+      int y0 = Math.round(f.y() * sy), y1 = Math.round((f.y() + f.h()) * sy);
+      if (x1 <= x0 || y1 <= y0) {
+        continue;
+      }
+      org.lwjgl.opengl.GL11C.glScissor(x0, fbH - y1, x1 - x0, y1 - y0);
+      org.lwjgl.opengl.GL11C.glClearColor(f.r(), f.g(), f.b(), 1f);
+      org.lwjgl.opengl.GL11C.glClear(org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT);
+    }
+    org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
   }
 
   /** Runs after every frame is on screen (layout probes, tests). */

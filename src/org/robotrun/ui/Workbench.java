@@ -271,6 +271,25 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
   }
 
+  @Override
+  public List<SimulatorWindow.Fill> fills() {
+    if (layout == null) {
+      return List.of();
+    }
+    // the docked columns' backgrounds: WindowBg made opaque (the two columns never overlap the scene)
+    var bg = ImGui.getStyle().getColor(imgui.flag.ImGuiCol.WindowBg);
+    List<SimulatorWindow.Fill> out = new ArrayList<>(3);
+    for (WindowLayout.Rect r : List.of(layout.sidebar(), layout.pendant())) {
+      if (r.visible()) {
+        out.add(new SimulatorWindow.Fill(r.x(), r.y(), r.w(), r.h(), bg.x, bg.y, bg.z));
+      }
+    }
+    if (pendantPanel.lcdFill() != null) {
+      out.add(pendantPanel.lcdFill());
+    }
+    return out;
+  }
+
   /** Frames the scene in the free middle part; at the first frame, backs off until it all fits. */
   private void frameScene(float dw, float dh) {
     WindowLayout.Rect v = layout.view();
@@ -354,8 +373,11 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
     ImGui.setNextWindowPos(r.x(), r.y(), ImGuiCond.Always);
     ImGui.setNextWindowSize(r.w(), r.h(), ImGuiCond.Always);
-    if (ImGui.begin("##sidebar", ImGuiWindowFlags.NoTitleBar | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse
-        | ImGuiWindowFlags.NoBringToFrontOnFocus)) {
+    ImGui.pushStyleColor(imgui.flag.ImGuiCol.WindowBg, 0f, 0f, 0f, 0f);  // a clear underneath (fills)
+    boolean shown = ImGui.begin("##sidebar", ImGuiWindowFlags.NoTitleBar | ImGuiWindowFlags.NoMove
+        | ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoBringToFrontOnFocus);
+    ImGui.popStyleColor();
+    if (shown) {
       if (Math.abs(ImGui.getWindowWidth() - r.w()) > 0.5f) {
         state.sidebarWidth = ImGui.getWindowWidth() / scale;
         onLayoutChange.run();
