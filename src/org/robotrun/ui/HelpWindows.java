@@ -117,10 +117,8 @@ public final class HelpWindows {
         welcome.set(false);
       }
       ImGui.sameLine();
-      ImGui.pushStyleColor(imgui.flag.ImGuiCol.Text, 0.6f, 0.6f, 0.6f, 1f);
-      Txt.wrapped("Every key: Help > Key map (Ctrl+H). Hover a pendant key to see its keyboard key. "
-          + "This card again: Help > First steps.");
-      ImGui.popStyleColor();
+      Txt.disabledWrapped("Every key: Help > Key map (Ctrl+H). Hover a pendant key to see its keyboard key. "
+          + "This card again: Help > First steps.", false);
       welcomeHeight = ImGui.getWindowHeight();
       welcomeRect = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
           ImGui.getWindowHeight());
@@ -141,7 +139,9 @@ public final class HelpWindows {
       ImGui.setNextWindowPos(cx, cy, ImGuiCond.Appearing, 0.5f, 0.5f);
       ImGui.setNextWindowSizeConstraints(0, 0, Math.max(200, view.w() - 20), Math.max(150, view.h() - 20));
       if (ImGui.begin("Key map (Ctrl+H)", keyMap, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
-        Txt.disabled("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.");
+        ImGui.pushTextWrapPos(ImGui.getFontSize() * 30);
+        Txt.disabledWrapped("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.", true);
+        ImGui.popTextWrapPos();
         // the keypad keys are their own characters: one line for them below
         var map = PendantKeyboard.keyMap().stream().filter(r -> !r[0].matches("[0-9.,\\-]")).toList();
         int half = (map.size() + 1) / 2;
