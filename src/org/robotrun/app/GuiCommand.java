@@ -444,7 +444,8 @@ public final class GuiCommand implements Callable<Integer> {
           double[] q = s.controller().jointsRad();
           boolean moved = !java.util.Arrays.equals(q, prevQ[0]);
           prevQ[0] = q;
-          int lcd = s.pendant().lcd().hashCode();
+          // the LCD as drawn last frame: building the screen once more per frame cost as much as drawing it
+          int lcd = s.bench().pendantPanel().drawnLcdHash();
           boolean lcdChanged = lcd != prevLcd[0];
           prevLcd[0] = lcd;
           boolean jog = false;

@@ -127,8 +127,16 @@ public final class PendantPanel {
     return Math.max(ImGui.getFrameHeight() - 2, Math.min(ImGui.getFrameHeight() * 1.6f, left / rows));
   }
 
+  private int drawnLcdHash;
+
+  /** The hash of the LCD text drawn last (the window's idle check compares it instead of building the screen again). */
+  public int drawnLcdHash() {
+    return drawnLcdHash;
+  }
+
   private void drawLcd() {
     Lcd lcd = pendant.lcd();
+    drawnLcdHash = lcd.hashCode();
     ImGui.pushStyleColor(ImGuiCol.ChildBg, 0f, 0f, 0f, 0f);  // filled by a clear (lcdRect)
     ImGui.pushStyleColor(ImGuiCol.Text, 0.05f, 0.08f, 0.05f, 1f);
     float lineH = ImGui.getTextLineHeightWithSpacing();
