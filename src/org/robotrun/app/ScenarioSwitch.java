@@ -43,7 +43,7 @@ final class ScenarioSwitch {
     Scenario target = editor.active();
     try {
       ScenarioCell.build(target, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
-    } catch (IllegalArgumentException e) {
+    } catch (IllegalArgumentException | org.robotrun.io.FileFormatException e) {
       return "scenario '" + target.name() + "' cannot be opened: " + e.getMessage();
     }
     String created = s.workspace.state().map(SavedState::created).orElse("");
