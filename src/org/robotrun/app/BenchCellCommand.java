@@ -33,7 +33,7 @@ import picocli.CommandLine.Option;
 public final class BenchCellCommand implements Callable<Integer> {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
 
-  @Option(names = "--scenario", required = true, paramLabel = "FILE.json", description = "The scenario; it must name a mainProgram.")
+  @Option(names = "--scenario", required = true, paramLabel = "FILE.json", description = "The scenario; it must name a mainProgram (a cell of several robots: each robot's runs at once).")
   Path scenario;
 
   @Option(names = "--repeats", defaultValue = "5", description = "Measured runs with and without collisions (default: ${DEFAULT-VALUE}).")
@@ -45,7 +45,18 @@ public final class BenchCellCommand implements Callable<Integer> {
       throw new UserError("--repeats: expected 1..1000, got " + repeats);
     }
     Scenario sc = ScenarioFiles.load(scenario);
-    String program = sc.mainProgram().orElseThrow(() -> new UserError("--scenario: " + scenario + " names no mainProgram"));
+    // Every robot with a main program runs it (the first robot: its own, else the scenario's), as run does.
+    List<String> mains = new java.util.ArrayList<>();
+    List<List<Program>> own = new java.util.ArrayList<>();
+    for (int i = 0; i < sc.robots().size(); i++) {
+      var r = sc.robots().get(i);
+      mains.add(i == 0 ? r.mainProgram().or(sc::mainProgram).orElse(null) : r.mainProgram().orElse(null));
+      own.add(RunCommand.loadPrograms(r.programs()));
+    }
+    if (mains.stream().allMatch(java.util.Objects::isNull)) {
+      throw new UserError("--scenario: " + scenario + " names no mainProgram");
+    }
+    String program = String.join("+", mains.stream().filter(java.util.Objects::nonNull).toList());
     List<Program> programs = RunCommand.loadPrograms(sc.programs());
     double cycle = 0;
     long ticks = 0;
@@ -60,10 +71,17 @@ public final class BenchCellCommand implements Callable<Integer> {
           throw new UserError(scenario + ": " + e.getMessage());
         }
         sim.setCollisionChecking(on == 0);
-        Controller c = sim.controllers().get(0);
-        programs.forEach(c::saveProgram);
+        programs.forEach(sim.controllers().get(0)::saveProgram);
+        java.util.Map<Controller, String> toRun = new java.util.LinkedHashMap<>();
+        for (int i = 0; i < sim.controllers().size(); i++) {
+          Controller c = sim.controllers().get(i);
+          own.get(i).forEach(c::saveProgram);
+          if (mains.get(i) != null) {
+            toRun.put(c, mains.get(i));
+          }
+        }
         long t0 = BenchClock.CPU.nanos();
-        HeadlessRun.Result r = HeadlessRun.run(sim, c, program, 600, s -> {});
+        HeadlessRun.CellResult r = HeadlessRun.runCell(sim, toRun, 600, s -> {}, () -> false, "");
         long ns = BenchClock.CPU.nanos() - t0;
         if (r.status() != HeadlessRun.Status.FINISHED) {
           throw new UserError(program + " did not finish: " + r.alarm().map(a -> a.display()).orElse("?"), Main.EXIT_FAILED);

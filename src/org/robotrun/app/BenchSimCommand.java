@@ -40,7 +40,9 @@ import picocli.CommandLine.Option;
           + "holds on a busy machine).",
       "2) A 500 mm linear move at 100 mm/s (1 250 ticks of resolved-rate tracking) is run --repeats times; prints "
           + "the wall time per tick (best and median).",
-      "Output: collisions=on|off sim_speed_x=B median_x=M cpu_speed_x=B cpu_median_x=M ... and linear_tick_us=B median_us=M ..."
+      "--robots N runs workload 1 on a cell of N default robots 1.5 m apart, each running its own copy of it at "
+          + "the same time (collisions between every pair checked); the speed is simulated seconds of the whole cell.",
+      "Output: robots=N collisions=on|off sim_speed_x=B median_x=M cpu_speed_x=B cpu_median_x=M ... and linear_tick_us=B median_us=M ..."
     })
 public final class BenchSimCommand implements Callable<Integer> {
   /** How often BENCH60 calls PICKPLACE: 9 × 6.4 s ≈ 58 s. */
@@ -49,10 +51,20 @@ public final class BenchSimCommand implements Callable<Integer> {
   @Option(names = "--repeats", defaultValue = "5", description = "Measured runs of each workload (default: ${DEFAULT-VALUE}).")
   int repeats;
 
+  @Option(names = "--robots", defaultValue = "1", paramLabel = "N",
+      description = "Robots in the cell for workload 1, 1..4 (default: ${DEFAULT-VALUE}).")
+  int robots;
+
+  /** Distance between neighbouring robots of a --robots cell (mm): beyond both arms' reach together. */
+  static final double ROBOT_SPACING_MM = 1500;
+
   @Override
   public Integer call() throws IOException {
     if (repeats < 1 || repeats > 1000) {
       throw new UserError("--repeats: expected 1..1000, got " + repeats);
+    }
+    if (robots < 1 || robots > 4) {
+      throw new UserError("--robots: expected 1..4, got " + robots);
     }
     RobotModel model = RobotDefinitions.defaultRobot();
     Program pickPlace = example("PICKPLACE");
@@ -73,14 +85,17 @@ public final class BenchSimCommand implements Callable<Integer> {
       double simSeconds = 0;
       long ticks = 0;
       for (int k = -1; k < repeats; k++) {
-        Simulation sim = DefaultCell.simulation(model);
+        Simulation sim = cell(model, robots);
         sim.setCollisionChecking(collisions);
-        Controller c = sim.controllers().get(0);
-        c.saveProgram(pickPlace);
-        c.saveProgram(bench);
+        java.util.Map<Controller, String> programs = new java.util.LinkedHashMap<>();
+        for (Controller c : sim.controllers()) {
+          c.saveProgram(pickPlace);
+          c.saveProgram(bench);
+          programs.put(c, "BENCH60");
+        }
         long cpu0 = threads.getCurrentThreadCpuTime();
         long t0 = System.nanoTime();
-        HeadlessRun.Result r = HeadlessRun.run(sim, c, "BENCH60", 600, s -> {});
+        HeadlessRun.CellResult r = HeadlessRun.runCell(sim, programs, 600, s -> {}, () -> false, "");
         long ns = System.nanoTime() - t0;
         long cpuNs = threads.getCurrentThreadCpuTime() - cpu0;
         if (r.status() != HeadlessRun.Status.FINISHED) {
@@ -96,8 +111,8 @@ public final class BenchSimCommand implements Callable<Integer> {
       Arrays.sort(speed);
       Arrays.sort(cpuSpeed);
       System.out.printf(Locale.ROOT,
-          "collisions=%s sim_speed_x=%.0f median_x=%.0f cpu_speed_x=%.0f cpu_median_x=%.0f sim_seconds=%.3f ticks=%d repeats=%d%n",
-          collisions ? "on" : "off", speed[repeats - 1], speed[repeats / 2], cpuSpeed[repeats - 1], cpuSpeed[repeats / 2],
+          "robots=%d collisions=%s sim_speed_x=%.0f median_x=%.0f cpu_speed_x=%.0f cpu_median_x=%.0f sim_seconds=%.3f ticks=%d repeats=%d%n",
+          robots, collisions ? "on" : "off", speed[repeats - 1], speed[repeats / 2], cpuSpeed[repeats - 1], cpuSpeed[repeats / 2],
           simSeconds, ticks, repeats);
     }
 
@@ -127,6 +142,24 @@ public final class BenchSimCommand implements Callable<Integer> {
     System.out.printf(Locale.ROOT, "linear_tick_us=%.2f median_us=%.2f ticks=%d repeats=%d%n",
         ts[0], ts[ts.length / 2], linearTicks, repeats);
     return Main.EXIT_OK;
+  }
+
+  /**
+   * {@code n} default robots (as {@link DefaultCell}) in a row along the cell's y axis,
+   * {@link #ROBOT_SPACING_MM} apart, every other one turned to face the previous.
+   */
+  static Simulation cell(RobotModel model, int n) {
+    if (n == 1) {
+      return DefaultCell.simulation(model);
+    }
+    java.util.List<Controller> cs = new java.util.ArrayList<>();
+    java.util.List<Transform> X_CW = new java.util.ArrayList<>();
+    for (int i = 0; i < n; i++) {
+      cs.add(DefaultCell.controller(model, "robot" + (i + 1)));
+      Transform at = Transform.translation(0, i * ROBOT_SPACING_MM, 0);
+      X_CW.add(i % 2 == 0 ? at : at.compose(Transform.rotation(0, 0, 1, Math.PI)));
+    }
+    return new Simulation(cs, X_CW, org.robotrun.world.World.empty(), model.X_WB().z(), Simulation.DEFAULT_TICK_SEC);
   }
 
   /** A program shipped in the jar under /examples. */

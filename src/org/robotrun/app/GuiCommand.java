@@ -96,7 +96,7 @@ public final class GuiCommand implements Callable<Integer> {
    * is null when the window shows a scenario without a workspace (tests).
    */
   public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
-      CellEditor editor, WindowSettings settings, WindowCell workspace) {}
+      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots) {}
 
   @Override
   public Integer call() {
@@ -206,7 +206,11 @@ public final class GuiCommand implements Callable<Integer> {
   }
 
   /** The cell as loaded: built off the main thread while the window opens. */
-  private record Cell(Simulation sim, Scenario scenario, List<Program> programs) {}
+  private record Cell(Simulation sim, Scenario scenario, List<Program> programs, List<List<Program>> robotPrograms) {
+    Cell(Simulation sim, Scenario scenario, List<Program> programs) {
+      this(sim, scenario, programs, List.of());
+    }
+  }
 
   private static Cell loadCell(Path scenario) {
     if (scenario == null) {
@@ -215,7 +219,13 @@ public final class GuiCommand implements Callable<Integer> {
     Scenario sc = ScenarioFiles.load(scenario);
     try {
       Simulation sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
-      return new Cell(sim, sc, RunCommand.loadPrograms(sc.programs()));
+      List<Program> first = new java.util.ArrayList<>(RunCommand.loadPrograms(sc.programs()));
+      first.addAll(RunCommand.loadPrograms(sc.robots().get(0).programs()));
+      List<List<Program>> perRobot = new java.util.ArrayList<>();
+      for (var r : sc.robots()) {
+        perRobot.add(RunCommand.loadPrograms(r.programs()));
+      }
+      return new Cell(sim, sc, first, perRobot);
     } catch (IllegalArgumentException e) {
       throw new UserError(scenario + ": " + e.getMessage());
     } catch (IOException e) {
@@ -286,15 +296,30 @@ public final class GuiCommand implements Callable<Integer> {
       stage("cell built");
     }
     Controller controller = sim.controllers().get(0);
-    SimRobotControl control = new SimRobotControl(sim, controller);
-    // a fresh window is a cold start: mode T1 (the port's default, or the scenario's), override $SCR.$COLDOVRD = 10%
-    control.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
-    if (sc != null && sc.mode().isPresent()) {
-      control.setMode(org.robotrun.pendant.RobotControl.Mode.valueOf(sc.mode().get()));
+    // Every robot has its own controller port and pendant; the robot selector picks the one the
+    // window drives. A fresh window is a cold start for each: mode T1 (the port's default, or the
+    // scenario's), override $SCR.$COLDOVRD = 10%.
+    List<Pendant> pendants = new java.util.ArrayList<>();
+    for (Controller c : sim.controllers()) {
+      SimRobotControl rc = new SimRobotControl(sim, c);
+      rc.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
+      if (sc != null && sc.mode().isPresent()) {
+        rc.setMode(org.robotrun.pendant.RobotControl.Mode.valueOf(sc.mode().get()));
+      }
+      Pendant p = new Pendant(rc, new LsLineParser());
+      if (sim.controllers().size() > 1) {
+        p.setRobotLabel(c.name());
+      }
+      pendants.add(p);
     }
-    programs.forEach(control::saveProgram);
-    Pendant pendant = new Pendant(control, new LsLineParser());
-    PendantPanel pendantPanel = new PendantPanel(pendant);
+    programs.forEach(pendants.get(0).control()::saveProgram);
+    for (int i = 1; i < cell.robotPrograms().size() && i < pendants.size(); i++) {
+      cell.robotPrograms().get(i).forEach(pendants.get(i).control()::saveProgram);
+    }
+    Pendant pendant = pendants.get(0);
+    org.robotrun.ui.RobotSelector selector = new org.robotrun.ui.RobotSelector(
+        sim.controllers().stream().map(Controller::name).toList(), pendants);
+    PendantPanel pendantPanel = new PendantPanel(selector);
     CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
     CellEditor editor = null;
@@ -327,20 +352,36 @@ public final class GuiCommand implements Callable<Integer> {
     LayoutState layout = settings.load();
     Workbench bench = new Workbench(w.camera(), w.contentScale(), pendant, pendantPanel, cellPanel, editorPanel,
         new Workbench.RobotStatus() {
+          // The robot the selector has chosen.
+          private Controller selected() {
+            return sim.controllers().get(selector.selected());
+          }
+
           @Override
           public double[] pendantDeg() {
-            return Angles.toDegrees(JointConvention.kinematicToPendant(robot, controller.jointsRad()));
+            Controller c = selected();
+            return Angles.toDegrees(JointConvention.kinematicToPendant(c.model(), c.jointsRad()));
           }
 
           @Override
           public Xyzwpr flangeInWorld() {
-            return Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(robot, controller.jointsRad()));
+            Controller c = selected();
+            return Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
           }
         },
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
     // Menus of other parts of the window go into the menu bar here, left of View and Help.
-    bench.addSection(OperatorPanel.TITLE, new OperatorPanel(pendant)::drawContents);
-    PendantKeyboard keyboard = new PendantKeyboard(pendant);
+    bench.setPendantSource(selector);
+    if (selector.size() > 1) {
+      bench.addSection(org.robotrun.ui.RobotSelector.TITLE, selector::drawContents);
+    }
+    bench.addSection(OperatorPanel.TITLE, new OperatorPanel(selector)::drawContents);
+    PendantKeyboard keyboard = new PendantKeyboard(selector);
+    // Keys held on the robot left behind are let go before the pendant changes hands.
+    selector.onBeforeSwitch(() -> {
+      keyboard.releaseAll();
+      pendantPanel.releaseLatched();
+    });
     w.setKeyHandler(keyboard::onKey);
     w.setCharHandler(cp -> bench.onChar(cp) || keyboard.onChar(cp));
     w.setShortcutHandler(bench::onShortcut);
@@ -355,13 +396,16 @@ public final class GuiCommand implements Callable<Integer> {
         w.requestClose();
       });
     }
+    if (selector.size() > 1) {
+      bench.addMenus(selector);  // after File
+    }
     w.setViewClickHandler(bench::onViewClick);
     w.setViewPressHandler(bench.viewPress());
     w.setFocusLostHandler(() -> {
       keyboard.releaseAll();
       pendantPanel.releaseLatched();
     });
-    return new Session(w, bench, sim, controller, pendant, editor, settings, ws);
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector);
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
@@ -411,7 +455,7 @@ public final class GuiCommand implements Callable<Integer> {
   public static void run(Session s) {
     double[] last = {0};
     long[] appliedRevision = {s.editor() == null ? 0 : s.editor().revision()};
-    double[][] prevQ = {s.controller().jointsRad()};
+    double[][] prevQ = {allJoints(s.sim())};
     int[] prevLcd = {0};
     boolean[] dirty = {false};
     long[] lastSave = {System.nanoTime()};
@@ -441,20 +485,38 @@ public final class GuiCommand implements Callable<Integer> {
         s.bench(),
         () -> {
           // busy while the arm moves, a program runs, a jog key is on or the pendant's text changes
-          double[] q = s.controller().jointsRad();
+          // (any robot of the cell: the one not selected may be running)
+          double[] q = allJoints(s.sim());
           boolean moved = !java.util.Arrays.equals(q, prevQ[0]);
           prevQ[0] = q;
-          // the LCD as drawn last frame: building the screen once more per frame cost as much as drawing it
+          // the selected robot's LCD as drawn last frame: building the screen once more per frame
+          // cost as much as drawing it
           int lcd = s.bench().pendantPanel().drawnLcdHash();
           boolean lcdChanged = lcd != prevLcd[0];
           prevLcd[0] = lcd;
           boolean jog = false;
-          for (int a = 1; a <= 6; a++) {
-            jog |= s.controller().jogDirection(a) != 0;
+          boolean running = false;
+          for (Controller c : s.sim().controllers()) {
+            for (int a = 1; a <= 6; a++) {
+              jog |= c.jogDirection(a) != 0;
+            }
+            running |= c.interpreter().state() == Interpreter.State.RUNNING;
           }
-          return moved || lcdChanged || jog || s.controller().interpreter().state() == Interpreter.State.RUNNING;
+          return moved || lcdChanged || jog || running;
         });
     warn(s.settings().save(s.bench().layoutState()));
+  }
+
+  /** Every robot's joints, one after the other. */
+  private static double[] allJoints(Simulation sim) {
+    double[] out = new double[0];
+    for (Controller c : sim.controllers()) {
+      double[] q = c.jointsRad();
+      double[] both = java.util.Arrays.copyOf(out, out.length + q.length);
+      System.arraycopy(q, 0, both, out.length, q.length);
+      out = both;
+    }
+    return out;
   }
 
   private static void stage(String what) {

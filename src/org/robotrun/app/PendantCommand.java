@@ -33,9 +33,9 @@ import picocli.CommandLine.Spec;
     mixinStandardHelpOptions = true,
     description = {
       "Run a .keys script on the teach pendant and print the LCD as text at every SHOW.",
-      "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key (HOLD DEADMAN, HOLD SHIFT), TP ON|OFF, MODE T1|T2|AUTO, ESTOP [PANEL], RELEASE ESTOP, CYCLE START, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
+      "Script lines: a key (ENTER, F1, SHIFT+FWD, +X/J1, DOWN *3), TYPE text, HOLD key, RELEASE key (HOLD DEADMAN, HOLD SHIFT), TP ON|OFF, MODE T1|T2|AUTO, ESTOP [PANEL], RELEASE ESTOP, CYCLE START, ROBOT n|name, WAIT seconds (simulated), SHOW, and # comments. See docs/pendant.md.",
       "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10%% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
-      "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD).",
+      "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD). In a cell of several robots each has its own controller and pendant (the status line starts with its name); ROBOT 2 or ROBOT name switches to another; --program and --save concern the first robot's programs; --mode and --override set every robot's start.",
       "With --workspace DIR the workspace is opened (or created) first and everything the script changes is saved back to it when the script ends (and at each SHOW); a second RobotRun on the same workspace opens it read-only. Opening it is a cold start too (T1, 10%%).",
       "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written, 2 bad option, unreadable program or malformed script (file:line)."
     })
@@ -68,7 +68,7 @@ public final class PendantCommand implements Callable<Integer> {
 
   @Option(names = "--scenario", paramLabel = "FILE",
       description = "Scenario JSON to load first (its cell, frames, registers and programs; docs/scenario-format.md); "
-          + "the pendant drives its first robot. Default: the default cell.")
+          + "the script starts on its first robot's pendant (ROBOT 2 switches; docs/pendant.md). Default: the default cell.")
   Path scenario;
 
   @Option(names = "--workspace", paramLabel = "DIR",
@@ -119,6 +119,7 @@ public final class PendantCommand implements Callable<Integer> {
       throw new UserError("--workspace: give it alone (a workspace has its own cell)");
     }
     Simulation sim;
+    Scenario cell = null;
     if (workspace != null) {
       session = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
           m -> System.err.println("robotrun: " + m));
@@ -134,22 +135,43 @@ public final class PendantCommand implements Callable<Integer> {
         throw new UserError(scenario + ": " + e.getMessage());
       }
       programFiles.addAll(sc.programs());
+      programFiles.addAll(sc.robots().get(0).programs());
+      cell = sc;
       if (mode == null && sc.mode().isPresent()) {
         startMode = RobotControl.Mode.valueOf(sc.mode().get());
       }
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     }
-    // the pendant drives the first robot; a script starts like a cold-started controller
-    SimRobotControl control = new SimRobotControl(sim, sim.controllers().get(0));
-    control.setMode(startMode);
-    control.setOverridePct(overridePct);
+    // One pendant per robot, each like a cold-started controller's; the script starts on the first (ROBOT switches).
+    List<String> robotNames = sim.controllers().stream().map(org.robotrun.sim.Controller::name).toList();
+    List<SimRobotControl> controls = new java.util.ArrayList<>();
+    List<Pendant> pendants = new java.util.ArrayList<>();
+    for (org.robotrun.sim.Controller c : sim.controllers()) {
+      SimRobotControl rc = new SimRobotControl(sim, c);
+      rc.setMode(startMode);
+      rc.setOverridePct(overridePct);
+      controls.add(rc);
+      Pendant p = new Pendant(rc, new LsLineParser());
+      if (robotNames.size() > 1) {
+        p.setRobotLabel(c.name());
+      }
+      pendants.add(p);
+    }
+    SimRobotControl control = controls.get(0);
     programFiles.addAll(programs);
     for (Path file : programFiles) {
       control.saveProgram(readProgram(file));
     }
+    for (int i = 1; cell != null && i < cell.robots().size(); i++) {
+      for (Path file : cell.robots().get(i).programs()) {
+        controls.get(i).saveProgram(readProgram(file));
+      }
+    }
+    script.unknownRobot(keys.toString(), robotNames).ifPresent(m -> {
+      throw new UserError(m.display());
+    });
     PrintWriter out = spec.commandLine().getOut();
-    Pendant pendant = new Pendant(control, new LsLineParser());
     WallClock clock = WallClock.start(maxWallSeconds);
     WorkspaceSession ws = session;
     java.util.function.Consumer<String> show = text -> {
@@ -160,15 +182,15 @@ public final class PendantCommand implements Callable<Integer> {
     };
     int[] stopped = {0};
     if (trace == null) {
-      stopped[0] = script.run(pendant, show, clock::expired);
+      stopped[0] = script.run(pendants, robotNames, show, clock::expired);
     } else {
       try {
         org.robotrun.io.AtomicFiles.write(trace, stream -> {
           java.io.Writer w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(stream, StandardCharsets.UTF_8));
           org.robotrun.sim.TraceWriter tw = new org.robotrun.sim.TraceWriter(w, sim.controllers());
           tw.write(sim);
-          control.setAfterTick(tw::write);
-          stopped[0] = script.run(pendant, show, clock::expired);
+          controls.forEach(rc -> rc.setAfterTick(tw::write));
+          stopped[0] = script.run(pendants, robotNames, show, clock::expired);
           w.flush();
         });
       } catch (IOException e) {

@@ -48,13 +48,16 @@ import picocli.CommandLine.Option;
       "The controller runs as in AUTO mode (operator panel start, no T1 speed cap, no hold-to-run) at --override.",
       "With --scenario the cell, frames, registers and programs come from the scenario (its programs are loaded "
           + "before --programs; --program defaults to its main program); the program runs on the first robot.",
+      "A cell of several robots runs every robot's main program at once (the first robot's is --program), all robots "
+          + "in one 4 ms tick; wired outputs reach their inputs the next tick; the run ends when all have ended or at "
+          + "the first alarm on any robot. The report has one entry per robot and the cell's cycle time.",
       "With --workspace DIR|FILE.zip they come from a workspace or a hand-in (docs/workspace.md), as the window would run them.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
           + "reports it closed 0.1 s later.",
       "Collisions (robot links and tool against the floor, fixtures, parts, other robots and the arm itself) are "
           + "checked every tick; a new contact is alarm SRVO-050 (a scenario may ask for warnings instead).",
-      "Exit codes: 0 the program reached its end, 1 an alarm stopped it (or the time limit passed), 2 bad input.",
+      "Exit codes: 0 the program (every robot's) reached its end, 1 an alarm stopped one (or the time limit passed), 2 bad input.",
       "The JSON report is described in docs/run-report.md; the trace has one CSV row per tick (time, joints, TCP)."
     })
 public final class RunCommand implements Callable<Integer> {
@@ -115,6 +118,7 @@ public final class RunCommand implements Callable<Integer> {
       throw new UserError("--report and --trace name the same file " + report);
     }
     Simulation sim;
+    Scenario cell = null;
     List<Path> programFiles = new ArrayList<>();
     List<Program> fromWorkspace = new ArrayList<>();
     WorkspaceSession session = null;
@@ -133,11 +137,15 @@ public final class RunCommand implements Callable<Integer> {
       }
       sim = session.sim;
       fromWorkspace.addAll(session.workspace.programs());
+      Scenario wsCell = session.workspace.scenario();
       if (program == null) {
         String ws = workspace.toString();
-        program = session.workspace.scenario().mainProgram().orElseThrow(() -> new UserError(
-            "--program: name the program to run (the workspace " + ws + " names no main program)"));
+        program = wsCell.robots().get(0).mainProgram().or(wsCell::mainProgram).orElse(null);
+        if (program == null && wsCell.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
+          throw new UserError("--program: name the program to run (the workspace " + ws + " names no main program)");
+        }
       }
+      cell = wsCell;
     } else if (scenario != null) {
       Scenario sc = switch (ScenarioReader.read(scenario)) {
         case ScenarioLoad.Loaded l -> l.scenario();
@@ -149,9 +157,13 @@ public final class RunCommand implements Callable<Integer> {
         throw new UserError(scenario + ": " + e.getMessage());
       }
       programFiles.addAll(sc.programs());
+      programFiles.addAll(sc.robots().get(0).programs());
+      cell = sc;
       if (program == null) {
-        program = sc.mainProgram().orElseThrow(() -> new UserError(
-            "--program: name the program to run (the scenario " + scenario + " names no main program)"));
+        program = sc.robots().get(0).mainProgram().or(sc::mainProgram).orElse(null);
+        if (program == null && sc.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
+          throw new UserError("--program: name the program to run (the scenario " + scenario + " names no main program)");
+        }
       }
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
@@ -162,42 +174,76 @@ public final class RunCommand implements Callable<Integer> {
     programFiles.addAll(programs);
     List<Program> loaded = new ArrayList<>(fromWorkspace);
     loaded.addAll(loadPrograms(programFiles));
-    // Program names are upper case on the controller; accept 'pick3' for PICK3.
-    String wanted = program;
-    program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
-        .orElseThrow(() -> new UserError("--program: no program named " + wanted + " among the loaded files"
-            + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
-                + String.join(", ", loaded.stream().map(Program::name).toList()) + ")")));
     Controller c = sim.controllers().get(0);
+    // Robot 1: --program or the main program; the others: their own main programs (docs/run-report.md).
+    java.util.Map<Controller, String> toRun = new java.util.LinkedHashMap<>();
+    if (program != null) {
+      // Program names are upper case on the controller; accept 'pick3' for PICK3.
+      String wanted = program;
+      program = loaded.stream().map(Program::name).filter(n -> n.equalsIgnoreCase(wanted)).findFirst()
+          .orElseThrow(() -> new UserError("--program: no program named " + wanted + " among the loaded files"
+              + (loaded.isEmpty() ? " (give them with --programs)" : " (loaded: "
+                  + String.join(", ", loaded.stream().map(Program::name).toList()) + ")")));
+      toRun.put(c, program);
+    }
     loaded.forEach(c::saveProgram);
     c.setOverridePct(overridePct);
+    for (int i = 1; cell != null && i < cell.robots().size(); i++) {
+      var setup = cell.robots().get(i);
+      Controller other = sim.controllers().get(i);
+      if (workspace == null) {
+        loadPrograms(setup.programs()).forEach(other::saveProgram);
+      }
+      other.setOverridePct(overridePct);
+      if (setup.mainProgram().isPresent()) {
+        String main = setup.mainProgram().get();
+        if (other.program(main).isEmpty()) {
+          throw new UserError(setup.name() + ": main program " + main + " is not among its programs (loaded: "
+              + String.join(", ", other.programNames()) + ")");
+        }
+        toRun.put(other, main);
+      }
+    }
 
     WallClock clock = WallClock.start(maxWallSeconds);
     String wallReason = "stopped after --max-wall-seconds " + WallClock.format(maxWallSeconds) + " s of real time";
-    HeadlessRun.Result[] result = new HeadlessRun.Result[1];
-    if (trace != null) {
-      // Streamed to a temporary file beside the old trace and renamed at the end: a killed run
-      // leaves the old trace whole, never a truncated or partial one.
-      writeOutput("--trace", trace, out -> {
-        Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
-        TraceWriter tw = new TraceWriter(w, sim.controllers());
-        tw.write(sim);
-        result[0] = HeadlessRun.run(sim, c, program, maxSimSeconds, tw::write, clock::expired, wallReason);
-        w.flush();
-      });
-    } else {
-      Consumer<Simulation> none = s -> {};
-      result[0] = HeadlessRun.run(sim, c, program, maxSimSeconds, none, clock::expired, wallReason);
+    HeadlessRun.CellResult[] result = new HeadlessRun.CellResult[1];
+    try {
+      if (trace != null) {
+        // Streamed to a temporary file beside the old trace and renamed at the end: a killed run
+        // leaves the old trace whole, never a truncated or partial one.
+        writeOutput("--trace", trace, out -> {
+          Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
+          TraceWriter tw = new TraceWriter(w, sim.controllers());
+          tw.write(sim);
+          result[0] = HeadlessRun.runCell(sim, toRun, maxSimSeconds, tw::write, clock::expired, wallReason);
+          w.flush();
+        });
+      } else {
+        Consumer<Simulation> none = s -> {};
+        result[0] = HeadlessRun.runCell(sim, toRun, maxSimSeconds, none, clock::expired, wallReason);
+      }
+    } catch (IllegalArgumentException e) {
+      throw new UserError(e.getMessage());
     }
-    HeadlessRun.Result r = result[0];
+    HeadlessRun.CellResult r = result[0];
     if (report != null) {
-      writeOutput("--report", report, out -> out.write(RunReport.bytes(program, r, sim)));
+      writeOutput("--report", report, out -> out.write(RunReport.bytes(r, sim)));
     }
-    String summary = switch (r.status()) {
-      case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", program, r.cycleTimeSec());
-      case ALARM -> "alarm " + r.alarm().orElseThrow().display();
-    };
-    System.out.println(TerminalText.safe(summary));
+    List<String> lines = new ArrayList<>();
+    for (HeadlessRun.RobotResult rr : r.robots()) {
+      String who = r.robots().size() > 1 ? rr.robot() + ": " : "";
+      lines.add(who + switch (rr.status()) {
+        case FINISHED -> String.format(Locale.ROOT, "finished %s in %.3f s of simulated time", rr.program(), rr.cycleTimeSec());
+        case ALARM -> "alarm " + rr.alarm().orElseThrow().display();
+        case STOPPED -> String.format(Locale.ROOT, "stopped in %s at %.3f s (another robot's alarm ended the run)",
+            rr.program(), rr.cycleTimeSec());
+      });
+    }
+    if (r.robots().size() > 1) {
+      lines.add(String.format(Locale.ROOT, "cell cycle time %.3f s", r.cycleTimeSec()));
+    }
+    lines.forEach(l -> System.out.println(TerminalText.safe(l)));
     if (session != null) {
       session.close();
     }

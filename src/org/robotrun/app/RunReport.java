@@ -5,8 +5,6 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.nio.file.Path;
-import org.robotrun.io.AtomicFiles;
 import org.robotrun.math.Xyzwpr;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
@@ -28,35 +26,43 @@ final class RunReport {
 
   private RunReport() {}
 
-  /** Writes through {@link AtomicFiles}: a crash leaves the old report or the new one, never half. */
-  static void write(Path file, String program, HeadlessRun.Result result, Simulation sim) throws IOException {
-    AtomicFiles.write(file, bytes(program, result, sim));
-  }
-
   /** The report as UTF-8 JSON bytes. */
-  static byte[] bytes(String program, HeadlessRun.Result result, Simulation sim) throws IOException {
-    return JSON.writeValueAsBytes(build(program, result, sim));
+  static byte[] bytes(HeadlessRun.CellResult result, Simulation sim) throws IOException {
+    return JSON.writeValueAsBytes(build(result, sim));
   }
 
-  static ObjectNode build(String program, HeadlessRun.Result result, Simulation sim) {
+  /**
+   * The top level describes the cell (for one robot, that robot's run, as before several robots
+   * existed): {@code status} is "finished" when every robot finished, {@code alarm} the alarm
+   * that ended the run, {@code program} the first running robot's program, {@code cycleTimeSec}
+   * the cell's cycle time. Each entry of {@code robots} has its own program, status, alarm,
+   * cycle and busy time besides its state.
+   */
+  static ObjectNode build(HeadlessRun.CellResult result, Simulation sim) {
     ObjectNode root = JSON.createObjectNode();
     root.put("status", result.status() == HeadlessRun.Status.FINISHED ? "finished" : "alarm");
-    if (result.alarm().isPresent()) {
-      ControllerAlarm a = result.alarm().get();
-      ObjectNode al = root.putObject("alarm");
-      al.put("code", a.code());
-      al.put("message", a.message());
-      al.put("program", a.program());
-      al.put("line", a.line());
-    } else {
-      root.putNull("alarm");
-    }
-    root.put("program", program);
+    alarm(root, result.alarm());
+    root.put("program", result.robots().get(0).program());
     root.put("simTimeSec", round(result.simTimeSec(), 6));
     root.put("cycleTimeSec", round(result.cycleTimeSec(), 6));
     ArrayNode robots = root.putArray("robots");
     for (Controller c : sim.controllers()) {
-      robots.add(robot(c));
+      ObjectNode r = robots.addObject();
+      r.put("name", c.name());
+      HeadlessRun.RobotResult rr = result.robots().stream().filter(x -> x.robot().equals(c.name())).findFirst().orElse(null);
+      if (rr == null) {
+        r.putNull("program");
+        // No program of its own: its controller's alarm (another robot ran into it), if any.
+        r.put("status", c.hasActiveAlarm() ? "alarm" : "idle");
+        alarm(r, c.activeAlarms().stream().findFirst());
+      } else {
+        r.put("program", rr.program());
+        r.put("status", rr.status().name().toLowerCase(java.util.Locale.ROOT));
+        alarm(r, rr.alarm());
+        r.put("cycleTimeSec", round(rr.cycleTimeSec(), 6));
+        r.put("busyTimeSec", round(rr.busyTimeSec(), 6));
+      }
+      robot(r, c);
     }
     ArrayNode parts = root.putArray("parts");
     World world = sim.world();
@@ -97,9 +103,20 @@ final class RunReport {
     return root;
   }
 
-  private static ObjectNode robot(Controller c) {
-    ObjectNode r = JSON.createObjectNode();
-    r.put("name", c.name());
+  private static void alarm(ObjectNode o, java.util.Optional<ControllerAlarm> alarm) {
+    if (alarm.isPresent()) {
+      ControllerAlarm a = alarm.get();
+      ObjectNode al = o.putObject("alarm");
+      al.put("code", a.code());
+      al.put("message", a.message());
+      al.put("program", a.program());
+      al.put("line", a.line());
+    } else {
+      o.putNull("alarm");
+    }
+  }
+
+  private static void robot(ObjectNode r, Controller c) {
     ArrayNode joints = r.putArray("joints_deg");
     Position.Joint j = c.currentJoints();
     for (int i = 1; i <= 6; i++) {
@@ -157,7 +174,6 @@ final class RunReport {
       o.put("startSec", round(m.startSec(), 6));
       o.put("durationSec", round(m.durationSec(), 6));
     }
-    return r;
   }
 
   private static ObjectNode position(Position p) {

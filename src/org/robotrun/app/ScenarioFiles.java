@@ -55,8 +55,7 @@ final class ScenarioFiles {
       RobotSetup first = sc.robots().get(0);
       double[] q = JointConvention.kinematicToPendant(model(first), JointsOption.parseToKinematic(jointsOverride, model(first)));
       List<RobotSetup> robots = new ArrayList<>(sc.robots());
-      robots.set(0, new RobotSetup(first.name(), first.modelId(), first.X_CB(), first.endEffector(),
-          java.util.Arrays.stream(q).boxed().toList(), first.toolIo(), first.io(), first.userAlarms()));
+      robots.set(0, first.withJoints(java.util.Arrays.stream(q).boxed().toList()));
       s = new Scenario(sc.name(), sc.description(), robots, sc.world(), sc.programs(), sc.mainProgram(), sc.registers(),
           sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode()).withExtrasOf(sc);
     }

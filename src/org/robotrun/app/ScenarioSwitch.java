@@ -58,7 +58,7 @@ final class ScenarioSwitch {
     }
     try {
       String json = ScenarioWriter.toJson(target,
-          Optional.of(SavedState.capture(s.sim.controllers().get(0), created)), s.workspace.folder());
+          Optional.of(SavedState.captureCell(s.sim.controllers(), created)), s.workspace.folder());
       s.pinned = new WorkspaceSnapshot(json, now.programs(), Optional.of(others));
     } catch (IOException e) {
       throw new UncheckedIOException(e);  // a StringWriter does not fail

@@ -94,7 +94,6 @@ final class WindowCell {
     if (ws.readOnly()) {
       return;
     }
-    Controller c = session.sim.controllers().get(0);
     List<String> problems = new ArrayList<>();
     for (Workspace.ExternalChange ch : ws.externalChanges()) {
       if (ch.deleted()) {
@@ -102,7 +101,11 @@ final class WindowCell {
             + " is still open here and is saved again.");
         continue;
       }
-      Optional<Program> mine = ch.programName().isEmpty() ? Optional.empty() : c.program(ch.programName());
+      // A later robot's file is known as "ROBOT/NAME" (programs/ROBOT/NAME.LS).
+      Controller c = controllerOf(ch.file());
+      String name = ch.programName().contains("/") ? ch.programName().substring(ch.programName().indexOf('/') + 1)
+          : ch.programName();
+      Optional<Program> mine = name.isEmpty() ? Optional.empty() : c.program(name);
       if (mine.isPresent() && !ws.isSaved(ch.programName(), mine.get())) {
         menu.askConflict(ch.file());
         continue;
@@ -114,7 +117,18 @@ final class WindowCell {
 
   /** Loads the program in {@code file} into the controller (a message in {@code problems} when it cannot be read). */
   void takeFile(Path file, List<String> problems) {
-    session.workspace.reread(file, problems).ifPresent(p -> session.sim.controllers().get(0).saveProgram(p));
+    session.workspace.reread(file, problems).ifPresent(p -> controllerOf(file).saveProgram(p));
+  }
+
+  /** The controller whose program folder holds {@code file}: the first robot's for programs/, else the robot's own. */
+  private Controller controllerOf(Path file) {
+    Optional<String> folder = session.workspace.robotFolderOf(file);
+    for (Controller c : session.sim.controllers().subList(1, session.sim.controllers().size())) {
+      if (folder.isPresent() && Workspace.robotFolder(c.name()).equals(folder.get())) {
+        return c;
+      }
+    }
+    return session.sim.controllers().get(0);
   }
 
   /** Where a refused scenario switch is told, and how the workspace is opened again after one. */

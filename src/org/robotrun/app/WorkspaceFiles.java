@@ -31,6 +31,9 @@ final class WorkspaceFiles {
     Scenario sc = ScenarioFiles.load(scenarioFile);
     try {
       RunCommand.loadPrograms(sc.programs());  // every program must read cleanly before anything is made
+      for (var r : sc.robots()) {
+        RunCommand.loadPrograms(r.programs());
+      }
     } catch (IOException e) {
       throw new UserError(scenarioFile + ": cannot read a program (" + e.getMessage() + ")");
     }
@@ -39,14 +42,28 @@ final class WorkspaceFiles {
     }
     try {
       Files.createDirectories(dir.resolve(Workspace.PROGRAMS));
-      for (Path from : sc.programs()) {
+      List<Path> firstRobots = new ArrayList<>(sc.programs());
+      firstRobots.addAll(sc.robots().get(0).programs());
+      for (Path from : firstRobots) {
         String name = LsReader.read(from).program().name();
         AtomicFiles.write(dir.resolve(Workspace.PROGRAMS).resolve(name + ".LS"), Files.readAllBytes(from));
+      }
+      // Every other robot's programs in its own folder (Workspace.robotFolder).
+      for (int i = 1; i < sc.robots().size(); i++) {
+        Path folder = dir.resolve(Workspace.PROGRAMS).resolve(Workspace.robotFolder(sc.robots().get(i).name()));
+        Files.createDirectories(folder);
+        for (Path from : sc.robots().get(i).programs()) {
+          String name = LsReader.read(from).program().name();
+          AtomicFiles.write(folder.resolve(name + ".LS"), Files.readAllBytes(from));
+        }
       }
     } catch (IOException e) {
       throw new UserError(dir + ": cannot create the workspace (" + Workspace.describe(e) + ")", Main.EXIT_FAILED);
     }
-    Scenario cell = new Scenario(sc.name(), sc.description(), sc.robots(), sc.world(), List.of(), sc.mainProgram(),
+    // In a workspace the programs are its files: the robots keep their main programs, not the paths.
+    List<org.robotrun.world.RobotSetup> robots = sc.robots().stream().map(r -> r.withPrograms(List.of(), r.mainProgram()))
+        .toList();
+    Scenario cell = new Scenario(sc.name(), sc.description(), robots, sc.world(), List.of(), sc.mainProgram(),
         sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision()).withExtrasOf(sc);
     try (Workspace ws = Workspace.open(dir, cell)) {
       return ws.folder();
@@ -75,8 +92,18 @@ final class WorkspaceFiles {
       Files.createDirectories(to.resolve(Workspace.PROGRAMS));
       AtomicFiles.write(to.resolve(Workspace.CELL), Files.readAllBytes(from.resolve(Workspace.CELL)));
       try (Stream<Path> s = Files.list(from.resolve(Workspace.PROGRAMS))) {
-        for (Path f : s.filter(Files::isRegularFile).toList()) {
-          AtomicFiles.write(to.resolve(Workspace.PROGRAMS).resolve(f.getFileName().toString()), Files.readAllBytes(f));
+        for (Path f : s.sorted().toList()) {
+          if (Files.isRegularFile(f)) {
+            AtomicFiles.write(to.resolve(Workspace.PROGRAMS).resolve(f.getFileName().toString()), Files.readAllBytes(f));
+          } else if (Files.isDirectory(f)) {
+            // another robot's programs (programs/ROBOT/)
+            Path sub = Files.createDirectories(to.resolve(Workspace.PROGRAMS).resolve(f.getFileName().toString()));
+            try (Stream<Path> inner = Files.list(f)) {
+              for (Path g : inner.filter(Files::isRegularFile).sorted().toList()) {
+                AtomicFiles.write(sub.resolve(g.getFileName().toString()), Files.readAllBytes(g));
+              }
+            }
+          }
         }
       }
       return "";

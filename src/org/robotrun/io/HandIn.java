@@ -21,6 +21,7 @@ import java.time.temporal.ChronoUnit;
 import java.util.HexFormat;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
@@ -32,13 +33,15 @@ import java.util.zip.ZipOutputStream;
 
 /**
  * A hand-in: one {@code .zip} of a workspace whose root holds {@code manifest.json},
- * {@code cell.json}, {@code programs/*.LS} and the other named scenarios
- * {@code scenarios/*.json} (docs/workspace.md). The manifest names the
+ * {@code cell.json}, {@code programs/*.LS}, in a cell of several robots the later robots'
+ * {@code programs/ROBOT/*.LS}, and the other named scenarios {@code scenarios/*.json}
+ * (docs/workspace.md). The manifest names the
  * student as typed, the workspace's creation and last-change times, the RobotRun version, the
  * scenario's name and the SHA-256 of every other file in the zip.
  *
  * <p>Reading is defensive, since a zip comes from someone else: only those names are accepted
- * (no folders, no {@code ..}, no absolute paths), sizes are counted as the bytes arrive
+ * (no folders but one level of robot folders under {@code programs/}, no {@code ..}, no absolute
+ * paths), sizes are counted as the bytes arrive
  * (not taken from the headers), and every file must match the manifest's checksum.
  */
 public final class HandIn {
@@ -50,7 +53,11 @@ public final class HandIn {
   public static final long MAX_ENTRY_BYTES = 16L << 20;
   /** Most files inside. */
   public static final int MAX_ENTRIES = 2000;
-  private static final Pattern PROGRAM_ENTRY = Pattern.compile("programs/[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}\\.(?i:ls)");
+  /** programs/NAME.LS, or programs/ROBOT/NAME.LS for a later robot of the cell (no "..", no deeper folders). */
+  private static final Pattern PROGRAM_ENTRY = Pattern.compile(
+      "programs/(?:[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}/)?[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}\\.(?i:ls)");
+  /** The folder of a later robot's programs. */
+  private static final Pattern ROBOT_FOLDER = Pattern.compile("programs/[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}/");
   /** The cell editor's other named scenarios: {@code scenarios/NAME.json}. */
   private static final Pattern SCENARIO_ENTRY = Pattern.compile(Workspace.SCENARIOS + "/" + Workspace.SCENARIO_FILE.pattern());
 
@@ -90,16 +97,27 @@ public final class HandIn {
       newest = Files.getLastModifiedTime(cell);
       Path programs = workspaceDir.resolve(Workspace.PROGRAMS);
       if (Files.isDirectory(programs)) {
+        List<Path> found = new java.util.ArrayList<>();
         try (Stream<Path> s = Files.list(programs)) {
-          for (Path f : s.filter(Files::isRegularFile).sorted().toList()) {
-            String entry = Workspace.PROGRAMS + "/" + f.getFileName();
-            if (!PROGRAM_ENTRY.matcher(entry).matches()) {
-              continue;  // not a program (an editor's backup, a stray file)
+          for (Path f : s.sorted().toList()) {
+            if (Files.isRegularFile(f)) {
+              found.add(f);
+            } else if (Files.isDirectory(f)) {
+              // a later robot's programs (programs/ROBOT/)
+              try (Stream<Path> inner = Files.list(f)) {
+                inner.filter(Files::isRegularFile).sorted().forEach(found::add);
+              }
             }
-            files.put(entry, Files.readAllBytes(f));
-            FileTime t = Files.getLastModifiedTime(f);
-            newest = t.compareTo(newest) > 0 ? t : newest;
           }
+        }
+        for (Path f : found) {
+          String entry = Workspace.PROGRAMS + "/" + programs.relativize(f).toString().replace('\\', '/');
+          if (!PROGRAM_ENTRY.matcher(entry).matches()) {
+            continue;  // not a program (an editor's backup, a stray file)
+          }
+          files.put(entry, Files.readAllBytes(f));
+          FileTime t = Files.getLastModifiedTime(f);
+          newest = t.compareTo(newest) > 0 ? t : newest;
         }
       }
       Path scenarios = workspaceDir.resolve(Workspace.SCENARIOS);
@@ -205,13 +223,15 @@ public final class HandIn {
             throw new HandInException(where + ": more than " + MAX_ENTRIES + " entries");
           }
           String name = e.getName();
-          if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || name.equals(Workspace.SCENARIOS + "/"))) {
+          if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || ROBOT_FOLDER.matcher(name).matches()
+              || name.equals(Workspace.SCENARIOS + "/"))) {
             continue;
           }
           if (!name.equals(MANIFEST) && !name.equals(Workspace.CELL) && !PROGRAM_ENTRY.matcher(name).matches()
               && !SCENARIO_ENTRY.matcher(name).matches()) {
             throw new HandInException(where + ": unexpected entry \"" + name
-                + "\" (a hand-in holds manifest.json, cell.json, programs/NAME.LS and scenarios/NAME.json only)");
+                + "\" (a hand-in holds manifest.json, cell.json, programs/NAME.LS, programs/ROBOT/NAME.LS and"
+                + " scenarios/NAME.json only)");
           }
           if (files.containsKey(name) || (name.equals(MANIFEST) && manifestBytes != null)) {
             throw new HandInException(where + ": entry \"" + name + "\" is in the zip twice");
@@ -258,10 +278,8 @@ public final class HandIn {
     }
     try {
       Files.createDirectories(into.resolve(Workspace.PROGRAMS));
-      if (files.keySet().stream().anyMatch(n -> n.startsWith(Workspace.SCENARIOS + "/"))) {
-        Files.createDirectories(into.resolve(Workspace.SCENARIOS));
-      }
       for (Map.Entry<String, byte[]> e : files.entrySet()) {
+        Files.createDirectories(into.resolve(e.getKey()).getParent());
         AtomicFiles.write(into.resolve(e.getKey()), e.getValue());
       }
     } catch (IOException e) {

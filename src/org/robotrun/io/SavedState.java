@@ -25,6 +25,10 @@ import org.robotrun.sim.FrameTable;
  * @param outputs non-zero outputs and flags, keyed {@code "DO[3]"}, {@code "GO[1]"}, {@code "F[2]"}
  * @param comments item comments, keyed {@code "R[1]"}, {@code "PR[2]"}, {@code "UT[1]"}, {@code "UF[3]"}
  * @param created when the workspace was made (ISO-8601 UTC), may be empty
+ * @param toolFrames UT[i] as the pendant shows them, for a robot after the first (the first's are
+ *     the scenario's "frames"); empty for the first
+ * @param userFrames UF[i] likewise
+ * @param robots the state of every robot after the first, by name (a cell of several robots)
  */
 public record SavedState(
     int overridePct,
@@ -34,7 +38,10 @@ public record SavedState(
     SortedMap<Integer, Position> positionRegisters,
     SortedMap<String, Integer> outputs,
     SortedMap<String, String> comments,
-    String created) {
+    String created,
+    SortedMap<Integer, Position> toolFrames,
+    SortedMap<Integer, Position> userFrames,
+    SortedMap<String, SavedState> robots) {
 
   /** A data register's value and whether it holds an integer (FANUC keeps the two apart). */
   public record Register(double value, boolean integer) {}
@@ -45,6 +52,58 @@ public record SavedState(
     outputs = Collections.unmodifiableSortedMap(new TreeMap<>(outputs));
     comments = Collections.unmodifiableSortedMap(new TreeMap<>(comments));
     Objects.requireNonNull(created, "created");
+    toolFrames = Collections.unmodifiableSortedMap(new TreeMap<>(toolFrames));
+    userFrames = Collections.unmodifiableSortedMap(new TreeMap<>(userFrames));
+    robots = Collections.unmodifiableSortedMap(new TreeMap<>(robots));
+  }
+
+  /** One robot's state with no frames of its own and no other robots. */
+  public SavedState(int overridePct, int activeTool, int activeUser, SortedMap<Integer, Register> registers,
+      SortedMap<Integer, Position> positionRegisters, SortedMap<String, Integer> outputs, SortedMap<String, String> comments,
+      String created) {
+    this(overridePct, activeTool, activeUser, registers, positionRegisters, outputs, comments, created, new TreeMap<>(),
+        new TreeMap<>(), new TreeMap<>());
+  }
+
+  /**
+   * The state of a whole cell now: the first controller's as {@link #capture}, and every other
+   * robot's (with its tool and user frames, which the scenario does not hold) under {@code robots}.
+   */
+  public static SavedState captureCell(java.util.List<Controller> controllers, String created) {
+    SavedState first = capture(controllers.get(0), created);
+    SortedMap<String, SavedState> others = new TreeMap<>();
+    for (int i = 1; i < controllers.size(); i++) {
+      Controller c = controllers.get(i);
+      SavedState s = capture(c, "");
+      SortedMap<Integer, Position> ut = new TreeMap<>();
+      SortedMap<Integer, Position> uf = new TreeMap<>();
+      for (int n = 1; n <= FrameTable.COUNT; n++) {
+        if (!c.frames().transform(FrameKind.TOOL, n).equals(org.robotrun.math.Transform.IDENTITY)) {
+          ut.put(n, c.frame(FrameKind.TOOL, n));
+        }
+        if (!c.frames().transform(FrameKind.USER, n).equals(org.robotrun.math.Transform.IDENTITY)) {
+          uf.put(n, c.frame(FrameKind.USER, n));
+        }
+      }
+      others.put(c.name(), new SavedState(s.overridePct, s.activeTool, s.activeUser, s.registers, s.positionRegisters,
+          s.outputs, s.comments, "", ut, uf, new TreeMap<>()));
+    }
+    return new SavedState(first.overridePct, first.activeTool, first.activeUser, first.registers, first.positionRegisters,
+        first.outputs, first.comments, created, new TreeMap<>(), new TreeMap<>(), others);
+  }
+
+  /**
+   * Puts this state into a cell: the first controller gets this state, every other the state
+   * saved under its name (a robot saved under a name the cell no longer has is left out).
+   */
+  public void applyToCell(java.util.List<Controller> controllers) {
+    applyTo(controllers.get(0));
+    for (int i = 1; i < controllers.size(); i++) {
+      SavedState s = robots.get(controllers.get(i).name());
+      if (s != null) {
+        s.applyTo(controllers.get(i));
+      }
+    }
   }
 
   /** A new workspace's state: nothing saved yet but its creation time. */
@@ -104,6 +163,9 @@ public record SavedState(
    * Keys were checked when the file was read.
    */
   public void applyTo(Controller c) {
+    // Frames first: selecting a frame number is checked against the table.
+    toolFrames.forEach((n, p) -> c.setFrame(FrameKind.TOOL, n, (Position.Cartesian) p));
+    userFrames.forEach((n, p) -> c.setFrame(FrameKind.USER, n, (Position.Cartesian) p));
     if (overridePct > 0) {
       c.setOverridePct(overridePct);
     }

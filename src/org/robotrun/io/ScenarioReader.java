@@ -34,6 +34,7 @@ import org.robotrun.world.ObjectKind;
 import org.robotrun.world.Rgb;
 import org.robotrun.world.RobotSetup;
 import org.robotrun.world.Scenario;
+import org.robotrun.world.Wiring;
 import org.robotrun.world.Shape;
 import org.robotrun.world.World;
 import org.robotrun.world.WorldObject;
@@ -70,9 +71,9 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision", "state", "mode");
+      "onCollision", "state", "mode", "wiring");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
-      "io", "userAlarms");
+      "io", "userAlarms", "programs", "mainProgram");
   /** Highest UALM[i] a scenario may give a text for. */
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
@@ -160,8 +161,8 @@ public final class ScenarioReader {
       String description = string(top, "description", "", false).orElse("");
       List<RobotSetup> robots = robots(top);
       List<WorldObject> objects = objects(top);
-      List<Path> programs = programs(top);
-      Optional<String> mainProgram = mainProgram(top, programs);
+      List<Path> programs = programs(top, "");
+      Optional<String> mainProgram = mainProgram(top, "");
       TreeMap<Integer, Double> registers = registers(top);
       TreeMap<Integer, Transform> toolFrames = new TreeMap<>();
       TreeMap<Integer, Transform> userFrames = new TreeMap<>();
@@ -170,6 +171,7 @@ public final class ScenarioReader {
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
       Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
+      Wiring wiring = WiringJson.read(this, top, robots);
       SavedState state = null;
       LocatedJson stateJson = top.members().get("state");
       if (stateJson instanceof JObject so) {
@@ -183,7 +185,8 @@ public final class ScenarioReader {
       }
       try {
         return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode), Optional.ofNullable(state));
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode).withWiring(wiring),
+            Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
         return new CellLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
@@ -227,9 +230,11 @@ public final class ScenarioReader {
         TreeMap<String, Integer> ioSizes = ioSizes(r, at);
         ToolIo io = toolIo(r, at, ioSizes);
         TreeMap<Integer, String> userAlarms = userAlarms(r, at);
+        List<Path> ownPrograms = programs(r, at);
+        Optional<String> ownMain = mainProgram(r, at);
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
           out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
-              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms));
+              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain));
         }
       }
       return out;
@@ -592,14 +597,15 @@ public final class ScenarioReader {
 
     // ---- programs, registers, frames, camera ----------------------------------------------
 
-    private List<Path> programs(JObject top) {
+    /** The {@code "programs"} of the top level ({@code where} "") or of a robot ("robots[1]"). */
+    private List<Path> programs(JObject top, String where) {
       List<Path> out = new ArrayList<>();
-      JArray arr = array(top, "programs", "", false);
+      JArray arr = array(top, "programs", where, false);
       if (arr == null) {
         return out;
       }
       for (int i = 0; i < arr.items().size(); i++) {
-        String at = "programs[" + i + "]";
+        String at = join(where, "programs[" + i + "]");
         LocatedJson v = arr.items().get(i);
         if (!(v instanceof JString s)) {
           error(v.line(), at, "expected a path to a .LS file, got " + v.describe());
@@ -622,8 +628,9 @@ public final class ScenarioReader {
       return out;
     }
 
-    private Optional<String> mainProgram(JObject top, List<Path> programs) {
-      Optional<String> main = string(top, "mainProgram", "", false);
+    /** The {@code "mainProgram"} of the top level ({@code where} "") or of a robot; it must be one of the same object's programs. */
+    private Optional<String> mainProgram(JObject top, String where) {
+      Optional<String> main = string(top, "mainProgram", where, false);
       if (main.isEmpty()) {
         return main;
       }
@@ -638,7 +645,8 @@ public final class ScenarioReader {
         }
       }
       if (!listed && !workspace) {
-        error(line, "mainProgram", "'" + main.get() + "' is not one of the programs listed in \"programs\"");
+        error(line, join(where, "mainProgram"), "'" + main.get() + "' is not one of the programs listed in \""
+            + join(where, "programs") + "\"");
         return Optional.empty();
       }
       return Optional.of(main.get().toUpperCase(Locale.ROOT));

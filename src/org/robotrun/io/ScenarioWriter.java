@@ -88,6 +88,16 @@ public final class ScenarioWriter {
           }
           g.writeEndObject();
         }
+        if (!r.programs().isEmpty()) {
+          g.writeArrayFieldStart("programs");
+          for (Path p : r.programs()) {
+            g.writeString(relative(dir, p));
+          }
+          g.writeEndArray();
+        }
+        if (r.mainProgram().isPresent()) {
+          g.writeStringField("mainProgram", r.mainProgram().get());
+        }
         g.writeEndObject();
       }
       g.writeEndArray();
@@ -125,6 +135,7 @@ public final class ScenarioWriter {
       if (s.mode().isPresent()) {
         g.writeStringField("mode", s.mode().get());
       }
+      WiringJson.write(g, s.wiring());
       if (s.camera().isPresent()) {
         CameraView c = s.camera().get();
         g.writeObjectFieldStart("camera");

@@ -28,7 +28,7 @@ import org.robotrun.sim.FrameTable;
  */
 final class StateJson {
   private static final Set<String> FIELDS = Set.of(
-      "overridePct", "utool", "uframe", "registers", "positionRegisters", "outputs", "comments", "created");
+      "overridePct", "utool", "uframe", "registers", "positionRegisters", "outputs", "comments", "created", "toolFrames", "userFrames", "robots");
   private static final Set<String> CARTESIAN = Set.of("x", "y", "z", "w", "p", "r", "config");
   private static final Set<String> JOINT = Set.of("joints");
   private static final Pattern CONFIG = Pattern.compile(
@@ -40,6 +40,11 @@ final class StateJson {
 
   static void write(JsonGenerator g, SavedState s) throws IOException {
     g.writeObjectFieldStart("state");
+    writeFields(g, s);
+    g.writeEndObject();
+  }
+
+  private static void writeFields(JsonGenerator g, SavedState s) throws IOException {
     if (!s.created().isEmpty()) {
       g.writeStringField("created", s.created());
     }
@@ -99,6 +104,46 @@ final class StateJson {
       g.writeObjectFieldStart("comments");
       for (Map.Entry<String, String> e : s.comments().entrySet()) {
         g.writeStringField(e.getKey(), e.getValue());
+      }
+      g.writeEndObject();
+    }
+    positions(g, "toolFrames", s.toolFrames());
+    positions(g, "userFrames", s.userFrames());
+    if (!s.robots().isEmpty()) {
+      g.writeObjectFieldStart("robots");
+      for (Map.Entry<String, SavedState> e : s.robots().entrySet()) {
+        g.writeObjectFieldStart(e.getKey());
+        writeFields(g, e.getValue());
+        g.writeEndObject();
+      }
+      g.writeEndObject();
+    }
+  }
+
+  private static void positions(JsonGenerator g, String field, Map<Integer, Position> ps) throws IOException {
+    if (ps.isEmpty()) {
+      return;
+    }
+    g.writeObjectFieldStart(field);
+    for (Map.Entry<Integer, Position> e : ps.entrySet()) {
+      g.writeObjectFieldStart(e.getKey().toString());
+      switch (e.getValue()) {
+        case Position.Cartesian c -> {
+          number(g, "x", c.xMm());
+          number(g, "y", c.yMm());
+          number(g, "z", c.zMm());
+          number(g, "w", c.wDeg());
+          number(g, "p", c.pDeg());
+          number(g, "r", c.rDeg());
+          g.writeStringField("config", configText(c.config()));
+        }
+        case Position.Joint j -> {
+          g.writeArrayFieldStart("joints");
+          for (int k = 1; k <= 6; k++) {
+            g.writeNumber(realText(j.element(k)));
+          }
+          g.writeEndArray();
+        }
       }
       g.writeEndObject();
     }
@@ -216,10 +261,53 @@ final class StateJson {
         }
       });
     }
+    TreeMap<Integer, Position> toolFrames = frames(o, "toolFrames", counting);
+    TreeMap<Integer, Position> userFrames = frames(o, "userFrames", counting);
+    TreeMap<String, SavedState> robots = new TreeMap<>();
+    JObject robObj = object(o, "robots", counting);
+    if (robObj != null) {
+      robObj.members().forEach((name, v) -> {
+        String at = "state.robots." + name;
+        if (!(v instanceof JObject ro)) {
+          counting.add(v.line(), at, "expected an object, got " + v.describe());
+          return;
+        }
+        if (ro.members().containsKey("robots")) {
+          counting.add(ro.keyLines().get("robots"), at + ".robots", "a robot's state holds no other robots");
+          return;
+        }
+        // The same fields, their paths under this robot.
+        SavedState rs = read(ro, (line, path, message) -> counting.add(line,
+            path.startsWith("state.") ? at + path.substring("state".length()) : path, message));
+        if (rs != null) {
+          robots.put(name, rs);
+        }
+      });
+    }
     if (count[0] != 0) {
       return null;
     }
-    return new SavedState(override, utool, uframe, registers, prs, outputs, comments, created);
+    return new SavedState(override, utool, uframe, registers, prs, outputs, comments, created, toolFrames, userFrames,
+        robots);
+  }
+
+  /** UT[i] / UF[i] of a robot after the first: Cartesian positions by number 1..10. */
+  private static TreeMap<Integer, Position> frames(JObject o, String key, Errors errors) {
+    TreeMap<Integer, Position> out = new TreeMap<>();
+    JObject f = object(o, key, errors);
+    if (f != null) {
+      f.members().forEach((k, v) -> {
+        String at = "state." + key + "." + k;
+        Integer i = index(k, FrameTable.COUNT, f.keyLines().get(k), at, errors);
+        Position p = position(v, at, errors);
+        if (p instanceof Position.Joint) {
+          errors.add(v.line(), at, "expected a Cartesian frame (x, y, z, w, p, r), got joint values");
+        } else if (i != null && p != null) {
+          out.put(i, p);
+        }
+      });
+    }
+    return out;
   }
 
   private static IoKind ioKind(String table) {

@@ -59,6 +59,8 @@ public final class Workspace implements AutoCloseable {
   private final Scenario scenario;
   private final Optional<SavedState> state;
   private final List<Program> programs;
+  /** Programs of the robots after the first, by robot name (programs/ROBOT/NAME.LS). */
+  private final Map<String, List<Program>> robotPrograms = new LinkedHashMap<>();
   private final List<String> problems;
   private final boolean cellBlocked;
   /** The other named scenarios read from {@code scenarios/}, in file-name order. */
@@ -188,8 +190,34 @@ public final class Workspace implements AutoCloseable {
       }
       programs.add(p.get());
     }
+    // Every robot after the first keeps its programs in a folder of its own: programs/ROBOT/NAME.LS,
+    // known here as "ROBOT/NAME".
+    Map<String, List<Program>> perRobot = new LinkedHashMap<>();
+    for (int i = 1; i < scenario.robots().size(); i++) {
+      String robot = scenario.robots().get(i).name();
+      String folder = robotFolder(robot);
+      List<Program> own = new ArrayList<>();
+      for (Path file : programFiles(programDir.resolve(folder), problems)) {
+        Optional<Program> p = readProgram(file, problems);
+        if (p.isEmpty()) {
+          blocked.add(file);
+          continue;
+        }
+        Path first = fileOf.putIfAbsent(folder + "/" + p.get().name(), file);
+        if (first != null) {
+          problems.add(file + ":1: program " + p.get().name() + " is also in " + first.getFileName()
+              + "; this file is not loaded and is kept as it is");
+          blocked.add(file);
+          continue;
+        }
+        own.add(p.get());
+      }
+      perRobot.put(robot, own);
+    }
     Workspace ws = new Workspace(abs, channel, lock, readOnlyReason, scenario, state, programs, problems, cellBlocked);
     ws.readScenarios(problems);
+    ws.robotPrograms.putAll(perRobot);
+    perRobot.forEach((robot, ps) -> ps.forEach(p -> ws.writtenPrograms.put(robotFolder(robot) + "/" + p.name(), p)));
     ws.blocked.addAll(blocked);
     ws.fileOf.putAll(fileOf);
     for (Program p : programs) {
@@ -390,9 +418,27 @@ public final class Workspace implements AutoCloseable {
     return state;
   }
 
-  /** The programs that were read, in file-name order. */
+  /** The programs that were read, in file-name order (the first robot's). */
   public List<Program> programs() {
     return programs;
+  }
+
+  /** The programs read for robot {@code robot} (one after the first), in file-name order; empty for any other. */
+  public List<Program> programs(String robot) {
+    return robotPrograms.getOrDefault(robot, List.of());
+  }
+
+  /**
+   * The folder under {@code programs/} of a robot after the first: its name, with any character
+   * other than letters, digits, '-', '_' and '.' replaced by '_', a leading '.' or '-' prefixed
+   * with '_', at most 64 characters (as a hand-in's entry names allow).
+   */
+  public static String robotFolder(String robot) {
+    String f = robot.replaceAll("[^A-Za-z0-9._-]", "_");
+    if (f.isEmpty() || f.startsWith(".") || f.startsWith("-")) {
+      f = "_" + f;
+    }
+    return f.length() > 64 ? f.substring(0, 64) : f;
   }
 
   /** What could not be read or done while opening, each a message for the user; empty when all went well. */
@@ -454,11 +500,13 @@ public final class Workspace implements AutoCloseable {
       batch.add(Map.entry(file, LsWriter.write(e.getValue()).getBytes(StandardCharsets.UTF_8)));
       batchPrograms.add(e);
     }
-    if (!batch.isEmpty()) {
+    Set<Path> folders = new java.util.LinkedHashSet<>();
+    batch.forEach(e -> folders.add(e.getKey().getParent()));
+    for (Path folder : folders) {
       try {
-        Files.createDirectories(programDir);
+        Files.createDirectories(folder);
       } catch (IOException ex) {
-        first = failure(programDir, ex);
+        first = first == null ? failure(folder, ex) : first;
       }
     }
     for (int i = 0; i < batch.size() && first == null; i++) {
@@ -476,7 +524,9 @@ public final class Workspace implements AutoCloseable {
       touched.add(file);
     }
     if (!touched.isEmpty()) {
-      AtomicFiles.syncFolder(programDir);  // once for the whole batch, before cell.json names its results
+      for (Path folder : folders) {
+        AtomicFiles.syncFolder(folder);  // once per folder for the whole batch, before cell.json names its results
+      }
     }
     for (String name : List.copyOf(writtenPrograms.keySet())) {
       if (snap.programs().containsKey(name)) {
@@ -496,12 +546,13 @@ public final class Workspace implements AutoCloseable {
     // The other scenarios before cell.json and the removals after it: a crash in between leaves
     // a scenario twice (the file copy is dropped at open), never none.
     Map<String, String> wanted = new LinkedHashMap<>();
+    boolean scenarioFailed = false;
     if (snap.otherScenarios().isPresent()) {
       Path folder = dir.resolve(SCENARIOS);
       for (Map.Entry<String, Scenario> e : scenarioFileNames(snap.otherScenarios().get(), blockedScenarios).entrySet()) {
         String text = ScenarioWriter.toJson(e.getValue(), folder);
         wanted.put(e.getKey(), text);
-        if (first != null || text.equals(writtenScenarios.get(e.getKey()))) {
+        if (scenarioFailed || text.equals(writtenScenarios.get(e.getKey()))) {
           continue;
         }
         Path file = folder.resolve(e.getKey());
@@ -511,11 +562,13 @@ public final class Workspace implements AutoCloseable {
           writtenScenarios.put(e.getKey(), text);
           touched.add(file);
         } catch (IOException ex) {
-          first = failure(file, ex);
+          first = first == null ? failure(file, ex) : first;
+          scenarioFailed = true;
         }
       }
     }
-    if (!cellBlocked && !snap.cellJson().equals(writtenCell) && first == null) {
+    // cell.json only once the scenario it replaces is safe in scenarios/ (a switch)
+    if (!cellBlocked && !snap.cellJson().equals(writtenCell) && !scenarioFailed) {
       Path cell = dir.resolve(CELL);
       try {
         AtomicFiles.write(cell, snap.cellJson().getBytes(StandardCharsets.UTF_8));
@@ -525,7 +578,7 @@ public final class Workspace implements AutoCloseable {
         first = first == null ? failure(cell, ex) : first;
       }
     }
-    if (snap.otherScenarios().isPresent() && first == null) {
+    if (snap.otherScenarios().isPresent() && !scenarioFailed && snap.cellJson().equals(writtenCell)) {
       Path folder = dir.resolve(SCENARIOS);
       for (String file : scenarioFilesOnDisk(folder)) {
         if (wanted.containsKey(file) || blockedScenarios.contains(file)) {
@@ -606,7 +659,11 @@ public final class Workspace implements AutoCloseable {
     Path programDir = dir.resolve(PROGRAMS);
     Map<Path, String> nameOf = new HashMap<>();
     fileOf.forEach((name, file) -> nameOf.put(file, name));
-    for (Path f : programFiles(programDir, new ArrayList<>())) {
+    List<Path> watched = new ArrayList<>(programFiles(programDir, new ArrayList<>()));
+    for (int i = 1; i < scenario.robots().size(); i++) {
+      watched.addAll(programFiles(programDir.resolve(robotFolder(scenario.robots().get(i).name())), new ArrayList<>()));
+    }
+    for (Path f : watched) {
       Stamp before = stamps.get(f);
       if (before == null || !before.equals(Stamp.of(f))) {
         out.add(new ExternalChange(f, nameOf.getOrDefault(f, ""), false));
@@ -632,12 +689,23 @@ public final class Workspace implements AutoCloseable {
     stamps.put(file, Stamp.of(file));
     if (p.isPresent()) {
       blocked.remove(file);
-      fileOf.put(p.get().name(), file);
-      writtenPrograms.put(p.get().name(), p.get());
+      String key = robotFolderOf(file).map(f -> f + "/" + p.get().name()).orElse(p.get().name());
+      fileOf.put(key, file);
+      writtenPrograms.put(key, p.get());
     } else {
       blocked.add(file);
     }
     return p;
+  }
+
+  /** The robot folder ({@link #robotFolder}) a program file lies in, or empty for {@code programs/} itself (the first robot). */
+  public Optional<String> robotFolderOf(Path file) {
+    Path parent = file.toAbsolutePath().normalize().getParent();
+    Path programDir = dir.resolve(PROGRAMS);
+    if (parent == null || parent.equals(programDir) || !programDir.equals(parent.getParent())) {
+      return Optional.empty();
+    }
+    return Optional.of(parent.getFileName().toString());
   }
 
   /** Forgets a changed file's new stamp without reading it (the user chose to keep the program in the window). */

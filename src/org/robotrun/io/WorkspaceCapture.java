@@ -25,7 +25,9 @@ import org.robotrun.world.World;
  * Turns a running cell into what its workspace holds ({@link WorkspaceSnapshot}) and back. The
  * cell as a scenario is the one it was opened from with the robots' joints, the objects' poses,
  * the first robot's frames and the camera as they are now; the first controller's registers,
- * outputs, override, active frames and comments go in the {@code "state"} section.
+ * outputs, override, active frames and comments go in the {@code "state"} section, and every
+ * other robot's (with its frames) under {@code "state"."robots"}; their programs are kept in
+ * {@code programs/ROBOT/} ({@link Workspace#robotFolder}).
  *
  * <p>Capturing reads the simulation and must run on the thread that steps it; it does no I/O.
  */
@@ -46,9 +48,19 @@ public final class WorkspaceCapture {
     for (String name : first.programNames()) {
       first.program(name).ifPresent(p -> programs.put(name, p));
     }
+    // The other robots' programs, keyed "ROBOT/NAME" (programs/ROBOT/NAME.LS; Workspace.robotFolder).
+    Map<String, Program> others = new LinkedHashMap<>();
+    for (int i = 1; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
+      String folder = Workspace.robotFolder(c.name());
+      for (String name : c.programNames()) {
+        c.program(name).ifPresent(p -> others.put(folder + "/" + name, p));
+      }
+    }
     Scenario now = cellNow(base, sim, camera, mainProgram(base, first, programs));
+    programs.putAll(others);
     try {
-      String json = ScenarioWriter.toJson(now, Optional.of(SavedState.capture(first, created)), workspaceDir);
+      String json = ScenarioWriter.toJson(now, Optional.of(SavedState.captureCell(sim.controllers(), created)), workspaceDir);
       return new WorkspaceSnapshot(json, programs);
     } catch (IOException e) {
       throw new UncheckedIOException(e);  // a StringWriter does not fail
@@ -65,7 +77,7 @@ public final class WorkspaceCapture {
       for (int k = 1; k <= 6; k++) {
         rad.add(Math.toRadians(q.element(k)));
       }
-      robots.add(new RobotSetup(r.name(), r.modelId(), r.X_CB(), r.endEffector(), rad, r.toolIo(), r.io(), r.userAlarms()));
+      robots.add(r.withJoints(rad));
     }
     World world = sim.world();
     FrameTable frames = sim.controllers().get(0).frames();
@@ -99,7 +111,11 @@ public final class WorkspaceCapture {
   /** Puts a workspace's saved state and programs into a simulation built from its cell. */
   public static void restore(Workspace ws, Simulation sim) {
     Controller first = sim.controllers().get(0);
-    ws.state().ifPresent(s -> s.applyTo(first));
+    ws.state().ifPresent(s -> s.applyToCell(sim.controllers()));
     ws.programs().forEach(first::saveProgram);
+    for (int i = 1; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
+      ws.programs(c.name()).forEach(c::saveProgram);
+    }
   }
 }

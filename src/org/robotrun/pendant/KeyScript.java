@@ -25,6 +25,8 @@ import java.util.function.Consumer;
  * ESTOP / ESTOP PANEL       the pendant's / the operator panel's E-stop pressed
  * RELEASE ESTOP             both E-stops twisted out (RESET then clears the alarm)
  * CYCLE START               the operator panel's CYCLE START (AUTO, TP off)
+ * ROBOT 2 / ROBOT robot2    drive another robot of the cell (by number from 1 or by name): its
+ *                           own pendant, as the robot selector in the window
  * WAIT 2.5                  2.5 s of simulated time
  * SHOW                      print the LCD
  * </pre>
@@ -75,6 +77,9 @@ public final class KeyScript {
 
     /** CYCLE START on the operator panel. */
     record CycleStart(int line) implements Step {}
+
+    /** Switch to another robot's pendant: a number from 1 or a robot name. */
+    record SelectRobot(int line, String robot) implements Step {}
   }
 
   /** A parse failure: where and what. */
@@ -185,6 +190,12 @@ public final class KeyScript {
           }
           steps.add(new Step.CycleStart(n));
         }
+        case "ROBOT" -> {
+          if (rest.isEmpty() || rest.contains(" ")) {
+            return bad(file, n, "ROBOT needs a robot's number (from 1) or name, e.g. ROBOT 2, got '" + rest + "'");
+          }
+          steps.add(new Step.SelectRobot(n, rest));
+        }
         case "CLICK" -> {
           Optional<Key> k = Key.parse(rest);
           if (k.isEmpty()) {
@@ -234,7 +245,7 @@ public final class KeyScript {
           }
           if (k.isEmpty()) {
             return bad(file, n, "unknown key or command '" + keyText + "' (keys: F1..F5, ENTER, SHIFT+FWD, +X/J1...;"
-                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, WAIT, SHOW)");
+                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, WAIT, SHOW)");
           }
           steps.add(new Step.Tap(n, k.get(), shift, times));
         }
@@ -270,6 +281,49 @@ public final class KeyScript {
    * returns the line it stopped before, or 0 when the script ran to its end.
    */
   public int run(Pendant pendant, Consumer<String> show, java.util.function.BooleanSupplier stop) {
+    return run(List.of(pendant), List.of("robot1"), show, stop);
+  }
+
+  /**
+   * The first ROBOT line naming a robot that is not among {@code robots} (names in cell order),
+   * if any: checked before a script runs, so it stops before any key is pressed.
+   */
+  public Optional<Malformed> unknownRobot(String file, List<String> robots) {
+    for (Step s : steps) {
+      if (s instanceof Step.SelectRobot r && robotIndex(r.robot(), robots) < 0) {
+        return Optional.of(new Malformed(file, r.line(), "no robot " + r.robot() + " in this cell (robots: 1.."
+            + robots.size() + ": " + String.join(", ", robots) + ")"));
+      }
+    }
+    return Optional.empty();
+  }
+
+  private static int robotIndex(String robot, List<String> robots) {
+    for (int i = 0; i < robots.size(); i++) {
+      if (robots.get(i).equals(robot)) {
+        return i;
+      }
+    }
+    if (robot.matches("\\d{1,3}")) {
+      int k = Integer.parseInt(robot);
+      return k >= 1 && k <= robots.size() ? k - 1 : -1;
+    }
+    return -1;
+  }
+
+  /**
+   * Runs the script on a cell of several robots, each with its own pendant (in cell order, named
+   * {@code robots}); it starts on the first, and {@code ROBOT} switches. Time (WAIT) advances the
+   * whole cell whichever pendant is in hand. With several robots the SHOW header names the robot.
+   *
+   * @throws IllegalArgumentException if a ROBOT line names no robot of the cell (see {@link #unknownRobot})
+   */
+  public int run(List<Pendant> pendants, List<String> robots, Consumer<String> show, java.util.function.BooleanSupplier stop) {
+    if (pendants.size() != robots.size() || pendants.isEmpty()) {
+      throw new IllegalArgumentException("one pendant per robot: " + pendants.size() + " pendants, " + robots.size() + " robots");
+    }
+    Pendant pendant = pendants.get(0);
+    String robotName = robots.get(0);
     double timeSec = 0;
     for (Step s : steps) {
       if (stop.getAsBoolean()) {
@@ -308,8 +362,16 @@ public final class KeyScript {
         case Step.Estop e -> pendant.emergencyStop(e.fromPendant());
         case Step.ReleaseEstop r -> pendant.releaseEmergencyStop();
         case Step.CycleStart c -> pendant.cycleStart();
-        case Step.Show sh -> show.accept(String.format(Locale.ROOT, "-- SHOW (line %d, t=%.3f s) --%n%s", sh.line(),
-            timeSec, pendant.render()));
+        case Step.SelectRobot r -> {
+          int k = robotIndex(r.robot(), robots);
+          if (k < 0) {
+            throw new IllegalArgumentException("line " + r.line() + ": no robot " + r.robot() + " in this cell");
+          }
+          pendant = pendants.get(k);
+          robotName = robots.get(k);
+        }
+        case Step.Show sh -> show.accept(String.format(Locale.ROOT, "-- SHOW (line %d, t=%.3f s%s) --%n%s", sh.line(),
+            timeSec, pendants.size() > 1 ? ", " + robotName : "", pendant.render()));
       }
     }
     return 0;

@@ -873,6 +873,27 @@ public final class Pendant {
    * them.
    */
   private String statusLine() {
+    String line0 = statusFields();
+    // In a cell of several robots the status line starts with the robot this pendant drives.
+    return robotLabel.isEmpty() ? line0 : robotLabel + " " + line0;
+  }
+
+  private String robotLabel = "";
+
+  /**
+   * Names the robot this pendant drives at the start of the status line (a cell of several
+   * robots, as a multi-group pendant shows its group); empty (the default) shows none.
+   */
+  public void setRobotLabel(String label) {
+    robotLabel = java.util.Objects.requireNonNull(label, "label");
+  }
+
+  /** The robot named on the status line; empty when none is. */
+  public String robotLabel() {
+    return robotLabel;
+  }
+
+  private String statusFields() {
     ExecutionStatus st = control.status();
     String prog = st.program().isEmpty() ? selectedProgram : st.program();
     int line = st.program().isEmpty() || st.state() == ExecState.IDLE && !st.program().equals(selectedProgram)

@@ -20,7 +20,12 @@ public final class DefaultCell {
 
   /** A controller set up as described above. */
   public static Controller controller(RobotModel model) {
-    Controller c = new Controller("robot1", model, HOME);
+    return controller(model, "robot1");
+  }
+
+  /** A controller set up as described above, named {@code name}. */
+  public static Controller controller(RobotModel model, String name) {
+    Controller c = new Controller(name, model, HOME);
     c.frames().setTransform(FrameKind.TOOL, 1, Transform.translation(0, 0, POINTER_MM));
     c.frames().setComment(FrameKind.TOOL, 1, "pointer 100 mm");
     c.frames().setTransform(FrameKind.USER, 1, Transform.IDENTITY);

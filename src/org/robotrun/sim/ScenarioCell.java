@@ -80,6 +80,7 @@ public final class ScenarioCell {
       first.frames().select(FrameKind.USER, 1);
     }
     Simulation sim = new Simulation(controllers, placements, scenario.world(), tools, floorZ, tickSec);
+    sim.setWiring(scenario.wiring());
     sim.setCollisionAlarms(switch (scenario.onCollision()) {
       case ALARM -> true;
       case WARN -> false;

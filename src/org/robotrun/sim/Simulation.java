@@ -37,6 +37,7 @@ public final class Simulation {
   private boolean collisionAlarms = true;
   private boolean showBoxes;
   private final List<CollisionEvent> collisionEvents = new ArrayList<>();
+  private WiredIo wiring = WiredIo.NONE;
 
   /** Colour of bodies in contact in snapshots. */
   public static final DrawItem.Color TOUCHING = DrawItem.Color.rgb(0.9, 0.1, 0.1);
@@ -111,6 +112,8 @@ public final class Simulation {
       }
     }
     boolean toolsMoved = cell.tick(controllers, X_CF, tickSec);
+    // After every controller: a wired input sees this tick's outputs from the next tick on.
+    wiring.propagate();
     if (checkCollisions) {
       if (collisions == null) {
         collisions = new CellCollisions(controllers, X_CW, cell, floorZ);
@@ -147,6 +150,18 @@ public final class Simulation {
         }
       }
     }
+  }
+
+  /**
+   * Connects outputs to inputs between (or within) the robots, as the scenario's wiring says
+   * ({@link WiredIo}: an input follows its output from the next tick). The inputs take their
+   * outputs' values at once.
+   *
+   * @throws IllegalArgumentException if a wire names a robot or port this cell does not have
+   */
+  public void setWiring(org.robotrun.world.Wiring w) {
+    wiring = WiredIo.of(w, controllers);
+    wiring.propagate();
   }
 
   /** Turns collision checking on (the default) or off. */

@@ -55,12 +55,17 @@ public final class PendantKeyboard {
       Map.entry(GLFW_KEY_PAGE_UP, Key.OVERRIDE_UP), Map.entry(GLFW_KEY_PAGE_DOWN, Key.OVERRIDE_DOWN),
       Map.entry(GLFW_KEY_INSERT, Key.SELECT), Map.entry(GLFW_KEY_DELETE, Key.EDIT), Map.entry(GLFW_KEY_END, Key.DATA));
 
-  private final Pendant pendant;
+  private final java.util.function.Supplier<Pendant> pendantNow;
   /** Keys whose press went to the pendant and whose release has not yet. */
   private final Set<Key> down = EnumSet.noneOf(Key.class);
 
   public PendantKeyboard(Pendant pendant) {
-    this.pendant = pendant;
+    this(() -> pendant);
+  }
+
+  /** Drives whichever pendant {@code pendantNow} answers (the robot selector's choice) at each call. */
+  public PendantKeyboard(java.util.function.Supplier<Pendant> pendantNow) {
+    this.pendantNow = pendantNow;
   }
 
   /** Every pendant key that has a computer key, with that key's name, in pendant-key order. */
@@ -137,13 +142,13 @@ public final class PendantKeyboard {
       return k.isPresent();
     }
     if (action == GLFW_PRESS) {
-      if ((isLetter(glfwKey) || glfwKey == GLFW_KEY_SPACE) && pendant.entryOpen()) {
+      if ((isLetter(glfwKey) || glfwKey == GLFW_KEY_SPACE) && pendant().entryOpen()) {
         return false;  // typed text: onChar delivers it
       }
       down.add(k.get());
-      pendant.press(k.get());
+      pendant().press(k.get());
     } else if (action == GLFW_RELEASE && down.remove(k.get())) {
-      pendant.release(k.get());
+      pendant().release(k.get());
     }
     return true;
   }
@@ -154,23 +159,27 @@ public final class PendantKeyboard {
    * as keypad keys.
    */
   public boolean onChar(int codepoint) {
-    if (!pendant.entryOpen() || Character.isISOControl(codepoint)
+    if (!pendant().entryOpen() || Character.isISOControl(codepoint)
         || codepoint >= '0' && codepoint <= '9' || codepoint == '.' || codepoint == '-' || codepoint == ',') {
       return false;
     }
-    pendant.type(Character.toString(codepoint));
+    pendant().type(Character.toString(codepoint));
     return true;
   }
 
   /** Releases every key still down (the window lost the keyboard focus). */
   public void releaseAll() {
     for (Key k : down) {
-      pendant.release(k);
+      pendant().release(k);
     }
     down.clear();
   }
 
   private static boolean isLetter(int glfwKey) {
     return glfwKey >= GLFW_KEY_A && glfwKey <= GLFW_KEY_Z;
+  }
+
+  private Pendant pendant() {
+    return pendantNow.get();
   }
 }

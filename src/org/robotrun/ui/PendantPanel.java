@@ -29,7 +29,7 @@ public final class PendantPanel {
   /** Keys per row of the key block: side column, four keypad columns, two jog columns. */
   private static final int COLUMNS = 7;
 
-  private final Pendant pendant;
+  private final java.util.function.Supplier<Pendant> pendantNow;
   private final SafetySwitches switches;
   private final ImString typed = new ImString(128);
   /** Jog keys the mouse holds down. */
@@ -43,14 +43,19 @@ public final class PendantPanel {
   public record KeyRect(Key key, float x, float y, float w, float h) {}
 
   public PendantPanel(Pendant pendant) {
-    this.pendant = pendant;
-    this.switches = new SafetySwitches(pendant);
+    this(() -> pendant);
+  }
+
+  /** Drives whichever pendant {@code pendantNow} answers (the robot selector's choice) at each call. */
+  public PendantPanel(java.util.function.Supplier<Pendant> pendantNow) {
+    this.pendantNow = pendantNow;
+    this.switches = new SafetySwitches(pendantNow);
   }
 
   /** Releases every jog key the mouse holds (the window lost focus, or the panel closes). */
   public void releaseLatched() {
     for (Key k : latched) {
-      pendant.release(k);
+      pendant().release(k);
     }
     latched.clear();
   }
@@ -135,7 +140,7 @@ public final class PendantPanel {
   }
 
   private void drawLcd() {
-    Lcd lcd = pendant.lcd();
+    Lcd lcd = pendant().lcd();
     drawnLcdHash = lcd.hashCode();
     ImGui.pushStyleColor(ImGuiCol.ChildBg, 0f, 0f, 0f, 0f);  // filled by a clear (lcdRect)
     ImGui.pushStyleColor(ImGuiCol.Text, 0.05f, 0.08f, 0.05f, 1f);
@@ -201,10 +206,10 @@ public final class PendantPanel {
     if (t.isEmpty()) {
       return;
     }
-    pendant.type(t);
+    pendant().type(t);
     typed.set("");
-    if (pendant.entryOpen()) {
-      pendant.tap(Key.ENTER);
+    if (pendant().entryOpen()) {
+      pendant().tap(Key.ENTER);
     }
   }
 
@@ -255,7 +260,7 @@ public final class PendantPanel {
 
   private void key(Key k, float w, float h) {
     if (ImGui.button(legend(k) + "##" + k.name(), w, h)) {
-      pendant.tap(k);
+      pendant().tap(k);
     }
     after(k);
   }
@@ -275,7 +280,7 @@ public final class PendantPanel {
 
   /** SHIFT is down while the mouse holds one of the SHIFT buttons (never latched). */
   private void shiftKey(int id, float w, float h) {
-    boolean on = pendant.shift();
+    boolean on = pendant().shift();
     if (on) {
       ImGui.pushStyleColor(ImGuiCol.Button, 0.85f, 0.55f, 0.1f, 1f);
     }
@@ -283,10 +288,10 @@ public final class PendantPanel {
     boolean active = ImGui.isItemActive();
     if (active && shiftHeldBy < 0) {
       shiftHeldBy = id;
-      pendant.press(Key.SHIFT);
+      pendant().press(Key.SHIFT);
     } else if (!active && shiftHeldBy == id) {
       shiftHeldBy = -1;
-      pendant.release(Key.SHIFT);
+      pendant().release(Key.SHIFT);
     }
     if (on) {
       ImGui.popStyleColor();
@@ -306,12 +311,16 @@ public final class PendantPanel {
     boolean active = ImGui.isItemActive();
     ImGui.popStyleColor();
     if (active && !down) {
-      pendant.press(k);
+      pendant().press(k);
       latched.add(k);
     } else if (!active && down) {
-      pendant.release(k);
+      pendant().release(k);
       latched.remove(k);
     }
     after(k);
+  }
+
+  private Pendant pendant() {
+    return pendantNow.get();
   }
 }

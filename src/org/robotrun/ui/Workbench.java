@@ -51,6 +51,7 @@ public final class Workbench implements SimulatorWindow.Panels {
 
   private final OrbitCamera camera;
   private final Pendant pendant;
+  private Supplier<Pendant> pendantNow;
   private final PendantPanel pendantPanel;
   private final CellPanel cellPanel;
   private final CellEditorPanel editorPanel;
@@ -78,6 +79,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     this.scale = scale;
     this.pendant = pendant;
     this.pendantPanel = pendantPanel;
+    this.pendantNow = () -> pendant;
     this.cellPanel = cellPanel;
     this.editorPanel = editorPanel;
     this.robot = robot;
@@ -85,6 +87,11 @@ public final class Workbench implements SimulatorWindow.Panels {
     this.scene = scene;
     this.state = state;
     help.showWelcome(!state.welcomeSeen);
+  }
+
+  /** The pendant the window drives now (a cell of several robots: the robot selector's choice). */
+  public void setPendantSource(Supplier<Pendant> source) {
+    pendantNow = java.util.Objects.requireNonNull(source, "source");
   }
 
   /** Adds menus drawn in the main menu bar before View and Help (the File menu goes first). */
@@ -162,7 +169,7 @@ public final class Workbench implements SimulatorWindow.Panels {
 
   /** '?' toggles the key map when no pendant entry takes text. */
   public boolean onChar(int codepoint) {
-    if (codepoint == '?' && !pendant.entryOpen()) {
+    if (codepoint == '?' && !pendantNow.get().entryOpen()) {
       help.toggleKeyMap();
       return true;
     }

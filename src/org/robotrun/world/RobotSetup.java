@@ -15,17 +15,40 @@ import org.robotrun.math.Transform;
  * @param io the controller's I/O sizes that differ from its defaults, by kind ("DO" → 1024); the
  *     names and bounds are checked by the reader and the controller (program.IoRanges)
  * @param userAlarms the UALM[i] texts of the controller ($UALRM_MSG[i]), by number
+ * @param programs .LS files loaded into this robot's controller only (absolute paths; the
+ *     scenario-level programs go to the first robot)
+ * @param mainProgram the program {@code robotrun run --scenario} runs on this robot (empty: the
+ *     first robot runs the scenario's main program, another robot runs nothing)
  */
 public record RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
-    ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms) {
+    ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms,
+    List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram) {
   public RobotSetup {
     java.util.Objects.requireNonNull(toolIo, "toolIo");
+    java.util.Objects.requireNonNull(mainProgram, "mainProgram");
+    programs = programs.stream().map(p -> p.toAbsolutePath().normalize()).toList();
     io = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(io));
     userAlarms = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(userAlarms));
     initialJointsRad = List.copyOf(initialJointsRad);
     if (initialJointsRad.size() != 6) {
       throw new IllegalArgumentException("a robot needs 6 initial joint values, got " + initialJointsRad.size());
     }
+  }
+
+  /** A robot with no programs of its own. */
+  public RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
+      ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms) {
+    this(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, List.of(), java.util.Optional.empty());
+  }
+
+  /** This robot standing at other initial joints (rad, pendant convention); everything else kept. */
+  public RobotSetup withJoints(List<Double> jointsRad) {
+    return new RobotSetup(name, modelId, X_CB, endEffector, jointsRad, toolIo, io, userAlarms, programs, mainProgram);
+  }
+
+  /** This robot with other programs of its own and main program. */
+  public RobotSetup withPrograms(List<java.nio.file.Path> files, java.util.Optional<String> main) {
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main);
   }
 
   /** A robot with the controller's default I/O sizes and no UALM texts. */

@@ -29,6 +29,13 @@ class BenchCellCommandTest {
   }
 
   @Test
+  void aCellOfTwoRobotsRunsBothMainPrograms() {
+    Run r = run("bench", "cell", "--scenario", "scenarios/two-robot-handshake.json", "--repeats", "1");
+    assertThat(r.exit()).as(r.err()).isZero();
+    assertThat(r.out()).startsWith("scenario=two-robot-handshake.json program=LOADER+UNLOADER cycle_s=10.304 ");
+  }
+
+  @Test
   void scenarioWithoutMainProgramIsBadInput() {
     Run r = run("bench", "cell", "--scenario", "scenarios/empty-cell.json", "--repeats", "1");
     assertThat(r.exit()).isEqualTo(2);

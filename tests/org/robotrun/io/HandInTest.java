@@ -98,7 +98,8 @@ class HandInTest {
 
   @Test
   void pathsOutsideTheWorkspaceAreRefused(@TempDir Path tmp) throws Exception {
-    for (String evil : List.of("../escape.LS", "programs/../../escape.LS", "/etc/passwd", "programs/sub/X.LS", "C:\\x.LS", "other.txt")) {
+    for (String evil : List.of("../escape.LS", "programs/../../escape.LS", "/etc/passwd", "programs/sub/deeper/X.LS",
+        "programs/.hidden/X.LS", "programs/../x/X.LS", "C:\\x.LS", "other.txt")) {
       Map<String, byte[]> files = new LinkedHashMap<>();
       files.put("cell.json", "{}".getBytes(StandardCharsets.UTF_8));
       files.put(evil, "x".getBytes(StandardCharsets.UTF_8));

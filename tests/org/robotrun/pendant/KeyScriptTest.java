@@ -87,7 +87,7 @@ class KeyScriptTest {
   @Test
   void malformedLinesNameFileAndLine() {
     assertThat(bad("ENTER\nFROB\n")).isEqualTo("t.keys:2: unknown key or command 'FROB' (keys: F1..F5, ENTER, SHIFT+FWD, "
-        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, WAIT, SHOW)");
+        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, WAIT, SHOW)");
     assertThat(bad("WAIT soon")).isEqualTo("t.keys:1: WAIT needs seconds (e.g. WAIT 2.5), got 'soon'");
     assertThat(bad("WAIT -1")).startsWith("t.keys:1: WAIT seconds must be 0..3600");
     assertThat(bad("\n\nTYPE")).isEqualTo("t.keys:3: TYPE needs the text to type");
