@@ -68,7 +68,8 @@ final class LsProgramChecks {
         String target = call.get().program();
         if (!target.equalsIgnoreCase(self) && !known.test(target)) {
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
-              (lines.get(i) instanceof Instruction.MacroCall ? "macro " : "CALL ") + target + ": no program named "
+              (lines.get(i) instanceof Instruction.MacroCall ? "macro "
+                  : lines.get(i) instanceof Instruction.Monitor ? "MONITOR " : "CALL ") + target + ": no program named "
                   + target + " is known"));
         }
       }
@@ -84,6 +85,12 @@ final class LsProgramChecks {
     }
     if (in instanceof Instruction.MacroCall m) {
       return Optional.of(new Instruction.Call(m.name(), List.of()));
+    }
+    if (in instanceof Instruction.When w) {
+      return Optional.of(w.action());
+    }
+    if (in instanceof Instruction.Monitor mo) {
+      return Optional.of(new Instruction.Call(mo.program(), List.of()));
     }
     return b.filter(x -> x instanceof Instruction.Call).map(x -> (Instruction.Call) x);
   }

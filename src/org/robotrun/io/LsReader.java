@@ -418,10 +418,8 @@ public final class LsReader {
       if (words.length > 1) {
         String sub = words[1];
         attributes.put(Program.SUBTYPE_KEY, sub);
-        if (sub.equalsIgnoreCase("Cond")) {
-          diags.add(Diagnostic.warning(file, line,
-              "not supported: condition program (Cond sub-type, for MONITOR/WHEN): it is kept but not monitored"));
-        } else if (!sub.equalsIgnoreCase("Macro") && !sub.equalsIgnoreCase("Job") && !sub.equalsIgnoreCase("Process")) {
+        if (!sub.equalsIgnoreCase("Cond") && !sub.equalsIgnoreCase("Macro") && !sub.equalsIgnoreCase("Makro") // German listing
+            && !sub.equalsIgnoreCase("Job") && !sub.equalsIgnoreCase("Process")) {
           diags.add(Diagnostic.warning(file, line,
               "not supported: program sub-type '" + clip(sub) + "' (read as a normal program)"));
         }
@@ -501,9 +499,9 @@ public final class LsReader {
       String key = body.substring(0, eq).strip().toUpperCase(Locale.ROOT);
       String value = body.substring(eq + 1).strip();
       switch (key) {
-        case LsAttributes.COMMENT -> comment = value.length() >= 2 && value.startsWith("\"") && value.endsWith("\"")
+        case LsAttributes.COMMENT, "KOMMENTAR" -> comment = value.length() >= 2 && value.startsWith("\"") && value.endsWith("\"")
             ? value.substring(1, value.length() - 1) : value;
-        case LsAttributes.LINE_COUNT -> {
+        case LsAttributes.LINE_COUNT, "ZEILEN" -> {
           lineCountLine = line;
           try {
             declaredLineCount = Integer.parseInt(value);
@@ -528,7 +526,8 @@ public final class LsReader {
       }
       for (int i = 0; i < s.length(); i++) {
         char c = s.charAt(i);
-        if (!(Character.isLetterOrDigit(c) && c < 128) && c != '_') {
+        // German listings write keys such as "EIGN." and "PROG_GRÖßE" (any letter, and '.')
+        if (!Character.isLetterOrDigit(c) && c != '_' && c != '.') {
           return false;
         }
       }
@@ -624,6 +623,21 @@ public final class LsReader {
             in = new Instruction.CommentedOut(one.startsWith("//") ? one.substring(2).stripTrailing() : one);
           }
         }
+        int blockEnd = k;
+        while (blockEnd < end && isSubLine(lines[blockEnd], p)) {
+          blockEnd++;
+        }
+        if (blockEnd > k && blockEnd < end && lines[blockEnd].strip().startsWith("------")) {
+          // A point-logic block under a motion ("TB .10sec,P-SPS" then indented "1:  DO[3]=ON ;"
+          // lines and "------ ;"): kept with the motion's last option, written back as read.
+          int blockStart = k;
+          k = blockEnd + 1;
+          StringBuilder block = new StringBuilder();
+          for (int b = blockStart; b < k; b++) {
+            block.append('\n').append(lines[b].stripTrailing());
+          }
+          in = withBlock(in, block.toString(), line);
+        }
         instructions.add(in);
         sourceLines.add(line);
         statementStart.add(line - 1);
@@ -666,6 +680,29 @@ public final class LsReader {
       }
     }
 
+
+    /** A numbered line indented deeper than a statement whose ':' is at {@code colon}: a sub-line of its block. */
+    private static boolean isSubLine(String text, int colon) {
+      int p = skipSpaces(text, 0);
+      int d = p;
+      while (d < text.length() && text.charAt(d) >= '0' && text.charAt(d) <= '9') {
+        d++;
+      }
+      return d > p && d < text.length() && text.charAt(d) == ':' && d > colon;
+    }
+
+    /** The motion with a point-logic block attached to its last (unsupported) option. */
+    private Instruction withBlock(Instruction in, String block, int line) {
+      if (in instanceof Instruction.Move m && !m.options().isEmpty()
+          && m.options().get(m.options().size() - 1) instanceof org.robotrun.program.Motion.RawOption r) {
+        List<org.robotrun.program.Motion.Option> opts = new ArrayList<>(m.options());
+        opts.set(opts.size() - 1, new org.robotrun.program.Motion.RawOption(r.text() + block, r.what()));
+        return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts);
+      }
+      diags.add(Diagnostic.error(file, line + 1,
+          "indented sub-lines belong to a motion with a TIME BEFORE/AFTER or DISTANCE BEFORE point-logic action"));
+      return in;
+    }
 
     private static boolean isContinuation(String text) {
       int p = skipSpaces(text, 0);

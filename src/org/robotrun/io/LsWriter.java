@@ -120,7 +120,10 @@ public final class LsWriter {
   /** A /ATTR LINE_COUNT line with the real count; any other line as it is. */
   private static String lineCountFixed(String line, int count) {
     String t = line.stripLeading();
-    if (!t.regionMatches(true, 0, LsAttributes.LINE_COUNT, 0, LsAttributes.LINE_COUNT.length())) {
+    // ZEILEN: the German listing's LINE_COUNT
+    String key = t.regionMatches(true, 0, "ZEILEN", 0, 6) ? "ZEILEN" : LsAttributes.LINE_COUNT;
+    if (!t.regionMatches(true, 0, key, 0, key.length())
+        || !(t.length() > key.length() && (t.charAt(key.length()) == '=' || Character.isWhitespace(t.charAt(key.length()))))) {
       return line;
     }
     int eq = line.indexOf('=');
@@ -241,6 +244,7 @@ public final class LsWriter {
   }
 
   private static void move(Instruction.Move m, StringBuilder sb) {
+    String block = "";
     sb.append(m.type().name()).append(' ');
     target(m.target(), sb);
     if (m.circularEnd().isPresent()) {
@@ -281,10 +285,16 @@ public final class LsWriter {
         }
         case Motion.Wjnt x -> sb.append("Wjnt");
         case Motion.Inc x -> sb.append("INC");
-        case Motion.RawOption x -> sb.append(x.text());
+        case Motion.TimedAction x -> sb.append(x.text());
+        case Motion.RawOption x -> {
+          // A point-logic block kept with the last option: its sub-lines follow the motion line.
+          int nl = x.text().indexOf('\n');
+          sb.append(x.text(), 0, nl < 0 ? x.text().length() : nl);
+          block = nl < 0 ? "" : x.text().substring(nl);
+        }
       }
     }
-    sb.append("    ;\n");
+    sb.append("    ;").append(block).append('\n');
   }
 
   private static void target(Motion.Target t, StringBuilder sb) {
@@ -442,11 +452,28 @@ public final class LsWriter {
       case Instruction.OffsetCondition o -> {
         sb.append("OFFSET CONDITION ");
         item("PR", o.register(), sb);
+        if (o.userFrame().isPresent()) {
+          sb.append(",UFRAME[");
+          index(o.userFrame().get(), sb);
+          sb.append(']');
+        }
       }
       case Instruction.MacroCall c -> sb.append(c.name());
       case Instruction.SetSysVar s -> {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);
+      }
+      case Instruction.Monitor mo -> sb.append(mo.end() ? "MONITOR END " : "MONITOR ").append(mo.program());
+      case Instruction.When w -> {
+        sb.append("WHEN ");
+        expr(w.condition(), sb);
+        sb.append(',');
+        statement(w.action(), sb);
+      }
+      case Instruction.AssignString a -> {
+        item("SR", a.register(), sb);
+        sb.append('=');
+        expr(a.value(), sb);
       }
       case Instruction.UserAlarm u -> {
         sb.append("UALM[");
@@ -506,6 +533,8 @@ public final class LsWriter {
       case Expr.Timer t -> 7;
       case Expr.Arg a -> 7;
       case Expr.SysVar v -> 7;
+      case Expr.StringReg r -> 7;
+      case Expr.StringFunc f -> 7;
       case Expr.Group g -> 7;
     };
   }
@@ -543,6 +572,16 @@ public final class LsWriter {
       case Expr.Io io -> item(io.kind().name(), io.port(), sb);
       case Expr.Timer t -> item("TIMER", t.timer(), sb);
       case Expr.SysVar v -> sb.append(v.name());
+      case Expr.StringReg r -> item("SR", r.register(), sb);
+      case Expr.StringFunc f -> {
+        sb.append(f.fn().name()).append(' ');
+        for (int k = 0; k < f.args().size(); k++) {
+          if (k > 0) {
+            sb.append(',');
+          }
+          operand(f.args().get(k), strength(f.args().get(k)) < 6, sb);
+        }
+      }
       case Expr.Arg a -> {
         sb.append("AR[");
         index(a.index(), sb);

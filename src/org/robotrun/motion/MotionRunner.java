@@ -155,6 +155,20 @@ public final class MotionRunner {
     return false;
   }
 
+  /**
+   * Simulated seconds until the running move {@code tag} reaches its end point at the current
+   * override (path time left divided by the override); infinite for a queued or unknown move.
+   */
+  public double timeLeftSec(long tag) {
+    for (Segment s : active) {
+      if (s.tag == tag) {
+        double left = Math.max(0, s.profile.durationSec() - s.tSec);
+        return left / Math.max(override(), 1e-6);
+      }
+    }
+    return Double.POSITIVE_INFINITY;
+  }
+
   /** Whether a move with this tag is queued or running. */
   public boolean contains(long tag) {
     for (Segment s : active) {

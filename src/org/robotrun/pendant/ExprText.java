@@ -7,6 +7,8 @@ import org.robotrun.program.Index;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Item;
 import org.robotrun.program.LabelRef;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
 
 /**
  * Expressions and bracketed items as the pendant shows them ({@code R[1:COUNT]+1},
@@ -54,6 +56,9 @@ public final class ExprText {
       case Expr.Timer t -> item("TIMER", t.timer());
       case Expr.Arg a -> "AR[" + index(a.index()) + "]";
       case Expr.SysVar v -> v.name();
+      case Expr.StringReg r -> item("SR", r.register());
+      case Expr.StringFunc f -> f.fn().name() + " " + String.join(",", f.args().stream().map(a ->
+          a instanceof Expr.Binary ? "(" + format(a) + ")" : format(a)).toList());
       case Expr.Unary u -> u.op().symbol() + format(u.operand());
       case Expr.Binary b -> format(b.left()) + binary(b.op()) + format(b.right());
       case Expr.Group g -> "(" + format(g.inner()) + ")";
@@ -107,11 +112,19 @@ public final class ExprText {
 
   // ---- parsing -------------------------------------------------------------------------------
 
+  // Typed text is parsed by the TP grammar's one parser (program.TpStatementParser), so a field
+  // accepts exactly what a .LS line may hold; the pendant adds only its entry checks (an index
+  // outside its table, the controller's entry rules), which it refuses at once.
+
   /** Parses a typed expression ({@code R[2]+1}, {@code (DI[1]=ON AND R[3]>2)}). */
   public static Expr parse(String text) throws BadText {
-    Parser p = new Parser(text);
-    Expr e = p.expr(1);
-    p.expectEnd();
+    Expr e;
+    try {
+      e = TpStatementParser.expressionText(Objects.requireNonNull(text, "text"));
+    } catch (TpSyntaxError x) {
+      throw bad(x);
+    }
+    checkRanges(e, 0);
     // The controller's entry rules (program.EntryRules): refused here as the pendant does.
     java.util.Optional<String> refused = org.robotrun.program.EntryRules.refusal(e);
     if (refused.isPresent()) {
@@ -123,25 +136,61 @@ public final class ExprText {
 
   /** Parses {@code 5} or {@code R[2]} (an index or "n | R[i]" operand). */
   public static Index parseIndex(String text) throws BadText {
-    Parser p = new Parser(text);
-    Index i = p.index();
-    p.expectEnd();
-    return i;
+    try {
+      return TpStatementParser.indexText(Objects.requireNonNull(text, "text"));
+    } catch (TpSyntaxError x) {
+      throw bad(x);
+    }
   }
 
   /** Parses an item of the given kind: {@code R[3]}, {@code R[3:COUNT]}, or just {@code 3}. */
   public static Item parseItem(String kind, String text) throws BadText {
     String t = text.trim();
-    if (!t.isEmpty() && Character.isDigit(t.charAt(0))) {
-      Item item = new Item(parseIndex(t), "");
-      checkRange(kind, item.index());
-      return item;
+    Item item;
+    try {
+      item = !t.isEmpty() && Character.isDigit(t.charAt(0))
+          ? new Item(TpStatementParser.indexText(t), "")
+          : TpStatementParser.itemText(kind, t);
+    } catch (TpSyntaxError x) {
+      throw bad(x);
     }
-    Parser p = new Parser(t);
-    p.expectWord(kind);
-    Item item = p.bracketItem(kind);
-    p.expectEnd();
+    checkRange(kind, item.index());
     return item;
+  }
+
+  private static BadText bad(TpSyntaxError x) {
+    return new BadText("column " + x.column() + ": " + x.getMessage());
+  }
+
+  /** Every direct index in {@code e} within its table (the parser bounds the depth). */
+  private static void checkRanges(Expr e, int depth) throws BadText {
+    if (depth > org.robotrun.program.TpLimits.MAX_OPERATORS) {
+      return;
+    }
+    switch (e) {
+      case Expr.Register r -> checkRange("R", r.register().index());
+      case Expr.PosElement p -> checkRange("PR", p.register().index());
+      case Expr.Io io -> checkRange(io.kind().name(), io.port().index());
+      case Expr.Timer t -> checkRange("TIMER", t.timer().index());
+      case Expr.StringReg r -> checkRange("SR", r.register().index());
+      case Expr.StringFunc f -> {
+        for (Expr a : f.args()) {
+          checkRanges(a, depth + 1);
+        }
+      }
+      case Expr.Arg a -> {
+        if (a.index() instanceof Index.Indirect) {
+          checkRange("AR", a.index());
+        }
+      }
+      case Expr.Unary u -> checkRanges(u.operand(), depth + 1);
+      case Expr.Binary b -> {
+        checkRanges(b.left(), depth + 1);
+        checkRanges(b.right(), depth + 1);
+      }
+      case Expr.Group g -> checkRanges(g.inner(), depth + 1);
+      default -> { }
+    }
   }
 
   /** Highest index of each table (Registers' sizes), for entry checks. */
@@ -150,10 +199,10 @@ public final class ExprText {
       case "R" -> org.robotrun.program.Registers.R_COUNT;
       case "PR" -> org.robotrun.program.Registers.PR_COUNT;
       case "TIMER" -> org.robotrun.program.Registers.TIMER_COUNT;
-      case "F" -> org.robotrun.program.IoRanges.MAX_SIZE;
+      case "SR" -> org.robotrun.program.Registers.SR_COUNT;
       // The controller's I/O sizes are configured per cell; beyond them the line alarms when it runs.
-      case "DI", "DO", "RI", "RO", "GI", "GO" -> org.robotrun.program.IoRanges.MAX_SIZE;
-      default -> Integer.MAX_VALUE;
+      default -> java.util.Arrays.stream(IoKind.values()).anyMatch(k -> k.name().equals(kind))
+          ? org.robotrun.program.IoRanges.MAX_SIZE : Integer.MAX_VALUE;
     };
   }
 
@@ -168,307 +217,4 @@ public final class ExprText {
       throw new BadText(table + "[" + n + "]: index out of range (1.." + size(table) + ")");
     }
   }
-
-  private static final class Parser {
-    private final String s;
-    private int pos;
-    // The same limits as the .LS reader and writer (program.TpLimits): what is typed here reads back.
-    private int nesting;
-    private int operators;
-
-    private void deeper() throws BadText {
-      if (++nesting > org.robotrun.program.TpLimits.MAX_NESTING) {
-        throw new BadText("Expression nested too deeply: at most " + org.robotrun.program.TpLimits.MAX_NESTING
-            + " levels of parentheses and signs");
-      }
-    }
-
-    private void countOperator() throws BadText {
-      if (++operators > org.robotrun.program.TpLimits.MAX_OPERATORS) {
-        throw new BadText("Expression too long: at most " + org.robotrun.program.TpLimits.MAX_OPERATORS + " operators");
-      }
-    }
-
-    Parser(String s) {
-      this.s = Objects.requireNonNull(s, "s");
-    }
-
-    private BadText error(String expected) {
-      String found = pos >= s.length() ? "end of text" : "'" + s.substring(pos, Math.min(s.length(), pos + 8)) + "'";
-      return new BadText("column " + (pos + 1) + ": expected " + expected + ", found " + found);
-    }
-
-    private void skipSpaces() {
-      while (pos < s.length() && s.charAt(pos) == ' ') {
-        pos++;
-      }
-    }
-
-    private boolean peek(String t) {
-      skipSpaces();
-      return s.regionMatches(true, pos, t, 0, t.length());
-    }
-
-    private boolean accept(String t) {
-      if (peek(t)) {
-        pos += t.length();
-        return true;
-      }
-      return false;
-    }
-
-    private void expect(String t) throws BadText {
-      if (!accept(t)) {
-        throw error("'" + t + "'");
-      }
-    }
-
-    void expectEnd() throws BadText {
-      skipSpaces();
-      if (pos < s.length()) {
-        throw error("end of expression");
-      }
-    }
-
-    void expectWord(String w) throws BadText {
-      skipSpaces();
-      String word = peekWord();
-      if (!word.equals(w)) {
-        throw error(w + "[...]");
-      }
-      pos += word.length();
-    }
-
-    private String peekWord() {
-      skipSpaces();
-      int e = pos;
-      while (e < s.length() && (Character.isLetter(s.charAt(e)) || s.charAt(e) == '_')) {
-        e++;
-      }
-      return s.substring(pos, e).toUpperCase(Locale.ROOT);
-    }
-
-    /** Binary operators at or above {@code minPrec}, left-associative (precedence climbing). */
-    Expr expr(int minPrec) throws BadText {
-      Expr left = unary();
-      while (true) {
-        Expr.BinaryOp op = peekOperator();
-        if (op == null || op.precedence() < minPrec) {
-          return left;
-        }
-        pos += op.symbol().length();
-        countOperator();
-        Expr right = expr(op.precedence() + 1);
-        left = new Expr.Binary(op, left, right);
-      }
-    }
-
-    private Expr.BinaryOp peekOperator() {
-      skipSpaces();
-      // two-character symbols first so "<=" is not read as "<"
-      for (Expr.BinaryOp op : new Expr.BinaryOp[] {Expr.BinaryOp.LE, Expr.BinaryOp.GE, Expr.BinaryOp.NE}) {
-        if (s.startsWith(op.symbol(), pos)) {
-          return op;
-        }
-      }
-      for (Expr.BinaryOp op : Expr.BinaryOp.values()) {
-        boolean word = Character.isLetter(op.symbol().charAt(0));
-        if (word ? peekWord().equals(op.symbol()) : s.startsWith(op.symbol(), pos)) {
-          return op;
-        }
-      }
-      return null;
-    }
-
-    private Expr unary() throws BadText {
-      if (accept("-")) {
-        skipSpaces();
-        if (pos < s.length() && (Character.isDigit(s.charAt(pos)) || s.charAt(pos) == '.')) {
-          Expr n = number();
-          return switch (n) {
-            case Expr.IntConst i -> new Expr.IntConst(-i.value());
-            case Expr.RealConst r -> new Expr.RealConst(-r.value());
-            default -> new Expr.Unary(Expr.UnaryOp.MINUS, n);
-          };
-        }
-        countOperator();
-        deeper();
-        Expr operand = unary();
-        nesting--;
-        return new Expr.Unary(Expr.UnaryOp.MINUS, operand);
-      }
-      if (accept("!")) {
-        countOperator();
-        deeper();
-        Expr operand = unary();
-        nesting--;
-        return new Expr.Unary(Expr.UnaryOp.NOT, operand);
-      }
-      return primary();
-    }
-
-    private Expr primary() throws BadText {
-      skipSpaces();
-      if (pos >= s.length()) {
-        throw error("a value");
-      }
-      char c = s.charAt(pos);
-      if (c == '(') {
-        pos++;
-        deeper();
-        Expr inner = expr(1);
-        expect(")");
-        nesting--;
-        return new Expr.Group(inner);
-      }
-      if (c == '\'') {
-        int end = s.indexOf('\'', pos + 1);
-        if (end < 0) {
-          throw error("a closing quote");
-        }
-        String v = s.substring(pos + 1, end);
-        pos = end + 1;
-        return new Expr.StringConst(v);
-      }
-      if (Character.isDigit(c) || c == '.') {
-        return number();
-      }
-      if (c == '$') {
-        int e = pos + 1;
-        while (e < s.length() && (Character.isLetterOrDigit(s.charAt(e)) || s.charAt(e) == '_'
-            || (s.charAt(e) == '.' && e + 1 < s.length() && s.charAt(e + 1) == '$') || s.charAt(e) == '$')) {
-          e++;
-        }
-        String name = s.substring(pos, e);
-        java.util.Optional<String> known = org.robotrun.program.SystemVariables.supported(name);
-        if (known.isEmpty()) {
-          throw error("a system variable RobotRun runs (" + String.join(", ", org.robotrun.program.SystemVariables.SUPPORTED) + ")");
-        }
-        pos = e;
-        return new Expr.SysVar(known.get());
-      }
-      String w = peekWord();
-      switch (w) {
-        case "ON", "OFF" -> {
-          pos += w.length();
-          return new Expr.OnOff(w.equals("ON"));
-        }
-        case "R" -> {
-          pos += 1;
-          return new Expr.Register(bracketItem("R"));
-        }
-        case "PR" -> {
-          pos += 2;
-          expect("[");
-          Index i = index();
-          checkRange("PR", i);
-          expect(",");
-          int element = integer();
-          if (element < 1 || element > 6) {
-            throw error("element 1..6");
-          }
-          String comment = commentIfAny();
-          expect("]");
-          return new Expr.PosElement(new Item(i, comment), element);
-        }
-        case "TIMER" -> {
-          pos += 5;
-          return new Expr.Timer(bracketItem("TIMER"));
-        }
-        case "AR" -> {
-          pos += 2;
-          expect("[");
-          Index i = index();
-          expect("]");
-          return new Expr.Arg(i);
-        }
-        default -> {
-          for (IoKind k : IoKind.values()) {
-            if (w.equals(k.name())) {
-              pos += w.length();
-              return new Expr.Io(k, bracketItem(k.name()));
-            }
-          }
-          throw error("a number, ON/OFF, R[i], PR[i,j], DI/DO/RI/RO/GI/GO/F[i], TIMER[i], AR[i] or (");
-        }
-      }
-    }
-
-    private Expr number() throws BadText {
-      int start = pos;
-      while (pos < s.length() && (Character.isDigit(s.charAt(pos)) || s.charAt(pos) == '.')) {
-        pos++;
-      }
-      String t = s.substring(start, pos);
-      try {
-        if (t.contains(".")) {
-          double v = Double.parseDouble(t);
-          if (Double.isInfinite(v)) {
-            // hundreds of digits: the .LS reader refuses such a number, so the pendant does too
-            pos = start;
-            throw error("a number of at most 308 digits");
-          }
-          return new Expr.RealConst(v);
-        }
-        return new Expr.IntConst(Integer.parseInt(t));
-      } catch (NumberFormatException e) {
-        pos = start;
-        throw error("a number");
-      }
-    }
-
-    int integer() throws BadText {
-      skipSpaces();
-      int start = pos;
-      while (pos < s.length() && Character.isDigit(s.charAt(pos))) {
-        pos++;
-      }
-      if (start == pos) {
-        throw error("a whole number");
-      }
-      try {
-        return Integer.parseInt(s.substring(start, pos));
-      } catch (NumberFormatException e) {
-        pos = start;
-        throw error("a whole number");
-      }
-    }
-
-    /** {@code [index(:comment)]} of table {@code kind}, range-checked. */
-    Item bracketItem(String kind) throws BadText {
-      expect("[");
-      Index i = index();
-      checkRange(kind, i);
-      String comment = commentIfAny();
-      expect("]");
-      return new Item(i, comment);
-    }
-
-    private String commentIfAny() {
-      skipSpaces();
-      if (pos < s.length() && s.charAt(pos) == ':') {
-        int end = s.indexOf(']', pos);
-        end = end < 0 ? s.length() : end;
-        String c = s.substring(pos + 1, end).trim();
-        pos = end;
-        return c;
-      }
-      return "";
-    }
-
-    /** {@code n} or {@code R[n(:comment)]}. */
-    Index index() throws BadText {
-      skipSpaces();
-      if (peekWord().equals("R")) {
-        pos += 1;
-        expect("[");
-        int r = integer();
-        String comment = commentIfAny();
-        expect("]");
-        return new Index.Indirect(r, comment);
-      }
-      return new Index.Direct(integer());
-    }
-  }
-
 }

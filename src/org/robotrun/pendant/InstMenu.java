@@ -69,7 +69,10 @@ final class InstMenu {
           Template.of("PR[ ]=UTOOL[ ]", new Instruction.AssignPosReg(Item.of(1), new Instruction.FromFrame(FrameKind.TOOL, Index.of(1)))),
           Template.of("PR[ ]=PR[ ]+PR[ ]", new Instruction.AssignPosReg(Item.of(1), new Instruction.PosArithmetic(Item.of(2), true, Item.of(3)))),
           Template.of("PR[ ]=PR[ ]-PR[ ]", new Instruction.AssignPosReg(Item.of(1), new Instruction.PosArithmetic(Item.of(2), false, Item.of(3)))),
-          Template.of("PR[i,j]=...", new Instruction.AssignPosElement(Item.of(1), 1, new Expr.IntConst(0))))),
+          Template.of("PR[i,j]=...", new Instruction.AssignPosElement(Item.of(1), 1, new Expr.IntConst(0))),
+          Template.of("SR[ ]=...", new Instruction.AssignString(Item.of(1), new Expr.StringReg(Item.of(2)))),
+          Template.of("R[ ]=STRLEN SR[ ]", new Instruction.AssignRegister(Item.of(1),
+              new Expr.StringFunc(Expr.StringFn.STRLEN, java.util.List.of(new Expr.StringReg(Item.of(1)))))))),
       new Category("I/O", List.of(
           Template.of("DO[ ]=ON/OFF", new Instruction.SetIo(IoKind.DO, Item.of(1), new Expr.OnOff(true))),
           Template.of("DO[ ]=PULSE", new Instruction.Pulse(IoKind.DO, Item.of(1), OptionalDouble.empty())),
@@ -141,7 +144,12 @@ final class InstMenu {
           Template.of("SKIP CONDITION ...", new Instruction.SkipCondition(
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)))),
           Template.of("OFFSET CONDITION PR[ ]", new Instruction.OffsetCondition(Item.of(1))),
-          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")))));
+          Template.of("macro (a program run by its name)", new Instruction.MacroCall("MAIN")),
+          Template.of("MONITOR ...", new Instruction.Monitor("MAIN", false)),
+          Template.of("MONITOR END ...", new Instruction.Monitor("MAIN", true)),
+          Template.of("WHEN ...,CALL ... (condition program)", new Instruction.When(
+              new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)),
+              new Instruction.Call("MAIN", List.of()))))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

@@ -36,7 +36,15 @@ public final class TpLine {
       case Instruction.AssignRegister a -> {
         f.add(itemField("R", a.register(), i -> new Instruction.AssignRegister(i, a.value())));
         f.add(Field.fixed("="));
-        f.add(exprField(a.value(), e -> new Instruction.AssignRegister(a.register(), e)));
+        String text = ExprText.format(a.value());
+        f.add(new Field(text, Field.Edit.entry(text, t -> {
+          Expr e = value(t);
+          if (e instanceof Expr.StringConst) {
+            // as the .LS reader refuses R[1]='A'
+            throw new BadText("R[] holds a number, not a string constant: put the text in a string register SR[i]");
+          }
+          return new Instruction.AssignRegister(a.register(), e);
+        })));
       }
       case Instruction.SkipCondition s -> {
         f.add(Field.fixed("SKIP CONDITION"));
@@ -44,10 +52,29 @@ public final class TpLine {
       }
       case Instruction.OffsetCondition o -> {
         f.add(Field.fixed("OFFSET CONDITION"));
-        f.add(itemField("PR", o.register(), Instruction.OffsetCondition::new));
+        f.add(itemField("PR", o.register(), i -> new Instruction.OffsetCondition(i, o.userFrame())));
+        o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + ExprText.index(j) + "]")));
       }
       case Instruction.MacroCall c -> f.add(new Field(c.name(), Field.Edit.both(programs,
           k -> new Instruction.MacroCall(programs.get(k)), c.name(), t -> new Instruction.MacroCall(macroName(t)))));
+      case Instruction.Monitor mo -> {
+        f.add(Field.fixed(mo.end() ? "MONITOR END" : "MONITOR"));
+        f.add(new Field(mo.program(), Field.Edit.both(programs, k -> new Instruction.Monitor(programs.get(k), mo.end()),
+            mo.program(), t -> new Instruction.Monitor(macroName(t), mo.end()))));
+      }
+      case Instruction.When w -> {
+        f.add(Field.fixed("WHEN"));
+        f.add(exprField(w.condition(), e -> new Instruction.When(e, w.action())));
+        f.add(Field.fixed(",CALL"));
+        f.add(new Field(w.action().program(), Field.Edit.both(programs,
+            k -> new Instruction.When(w.condition(), new Instruction.Call(programs.get(k), List.of())),
+            w.action().program(), t -> new Instruction.When(w.condition(), new Instruction.Call(macroName(t), List.of())))));
+      }
+      case Instruction.AssignString a -> {
+        f.add(itemField("SR", a.register(), i -> new Instruction.AssignString(i, a.value())));
+        f.add(Field.fixed("="));
+        f.add(exprField(a.value(), e -> new Instruction.AssignString(a.register(), e)));
+      }
       case Instruction.SetSysVar s -> {
         f.add(Field.fixed(s.name()));
         f.add(Field.fixed("="));
@@ -294,6 +321,7 @@ public final class TpLine {
       case Motion.Wjnt x -> null;
       case Motion.Inc x -> null;
       case Motion.RawOption x -> null;
+      case Motion.TimedAction x -> null;
     };
     String initial = switch (o) {
       case Motion.OffsetPr p -> ExprText.index(p.register().index());
@@ -304,6 +332,7 @@ public final class TpLine {
       case Motion.Wjnt x -> "";
       case Motion.Inc x -> "";
       case Motion.RawOption x -> "";
+      case Motion.TimedAction x -> "";
     };
     return new Field(text, Field.Edit.both(List.of("(remove option)"), k -> withoutOption(m, at), initial, entry));
   }
@@ -318,7 +347,9 @@ public final class TpLine {
       case Motion.Skip s -> "Skip," + ExprText.label(s.label());
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";
-      case Motion.RawOption x -> x.text();
+      case Motion.TimedAction x -> x.text();
+      // A point-logic block's sub-lines are not shown on the motion's line.
+      case Motion.RawOption x -> x.text().lines().findFirst().orElse("");
     };
   }
 
@@ -493,39 +524,11 @@ public final class TpLine {
     }));
   }
 
-  /**
-   * A typed expression as the .LS reader takes it inside a statement: a string ('...') only as a
-   * whole CALL argument.
-   */
+  /** A typed expression, as the .LS reader takes it inside a statement. */
   static Expr value(String text) throws BadText {
-    Expr e = ExprText.parse(text);
-    if (hasString(e)) {
-      throw stringNotAllowed();
-    }
-    return e;
+    return ExprText.parse(text);
   }
 
-  private static BadText stringNotAllowed() {
-    return new BadText("a string ('...') is allowed only as a CALL argument");
-  }
-
-  private static boolean hasString(Expr e) {
-    return switch (e) {
-      case Expr.StringConst s -> true;
-      case Expr.Unary u -> hasString(u.operand());
-      case Expr.Binary b -> hasString(b.left()) || hasString(b.right());
-      case Expr.Group g -> hasString(g.inner());
-      case Expr.IntConst x -> false;
-      case Expr.RealConst x -> false;
-      case Expr.OnOff x -> false;
-      case Expr.Register x -> false;
-      case Expr.PosElement x -> false;
-      case Expr.Io x -> false;
-      case Expr.Timer x -> false;
-      case Expr.Arg x -> false;
-      case Expr.SysVar x -> false;
-    };
-  }
 
   /** A WAIT time: 0 or more seconds, or an expression (the reader refuses a negative constant). */
   static Expr waitTime(String text) throws BadText {
@@ -688,12 +691,7 @@ public final class TpLine {
       String inner = t.substring(open + 1, t.length() - 1).trim();
       if (!inner.isEmpty()) {
         for (String a : splitTopLevel(inner)) {
-          // a whole argument may be a string; a string inside an expression is refused
-          Expr arg = ExprText.parse(a);
-          if (!(arg instanceof Expr.StringConst) && hasString(arg)) {
-            throw stringNotAllowed();
-          }
-          args.add(arg);
+          args.add(ExprText.parse(a));
         }
       }
     }

@@ -115,8 +115,8 @@ public enum AlarmCode {
       "The motion planner refused a move for a reason it could not name more precisely.",
       "RESET, then check the target position and the frames it was taught in."),
   SIMU_012("SIMU-012", AlarmSeverity.ABORT, "Not supported in RobotRun", Source.OWN,
-      "The line is a valid controller instruction that the simulator reads and keeps but cannot run (e.g. a SKIP "
-          + "CONDITION, string functions). A controller would run it.",
+      "The line is a valid controller instruction that the simulator reads and keeps but cannot run (e.g. "
+          + "RUN, TOOL_OFFSET CONDITION, a monitor's action program that moves). A controller would run it.",
       "Leave the line out of programs you run in RobotRun, or run this part on a real controller; `robotrun check` "
           + "lists such lines."),
   RUN_001("RUN-001", AlarmSeverity.ABORT, "Time limit", Source.OWN,

@@ -80,6 +80,9 @@ final class Compiler {
       case Instruction.Label l -> "";
       case Instruction.Message msg -> "";
       case Instruction.SetSysVar s -> "";
+      case Instruction.AssignString a -> "";
+      case Instruction.When w -> "";
+      case Instruction.Monitor mo -> "MONITOR";
       case Instruction.MacroCall c -> "CALL";
       case Instruction.SkipCondition s -> "";
       case Instruction.OffsetCondition o -> "";
@@ -150,9 +153,13 @@ final class Compiler {
       case Instruction.Blank b -> new Ops.Nop();
       case Instruction.Message msg -> new Ops.MessageOp(msg.text());
       case Instruction.SetSysVar s -> new Ops.SetSysVarOp(s.name(), expr(s.value()));
+      case Instruction.Monitor mo -> new Ops.MonitorOp(mo.program(), mo.end());
+      // A WHEN line does nothing when run as a statement: it is watched through MONITOR.
+      case Instruction.When w -> new Ops.Nop();
+      case Instruction.AssignString a -> new Ops.AssignSrOp(idx(a.register().index()), expr(a.value()));
       case Instruction.MacroCall c -> call(new Instruction.Call(c.name(), java.util.List.of()));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
-      case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register());
+      case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register(), o.userFrame().map(Compiler::idx).orElse(null));
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
@@ -233,6 +240,8 @@ final class Compiler {
       case Expr.Timer t -> new Nodes.TimerRead(idx(t.timer().index()));
       case Expr.Arg a -> new Nodes.ArgRead(idx(a.index()));
       case Expr.SysVar v -> new Nodes.SysVarRead(v.name());
+      case Expr.StringReg r -> new Nodes.SrRead(idx(r.register().index()));
+      case Expr.StringFunc f -> new Nodes.StrFunc(f.fn(), f.args().stream().map(Compiler::expr).toArray(Node[]::new));
       case Expr.Unary u -> switch (u.op()) {
         case MINUS -> new Nodes.Neg(expr(u.operand()));
         case NOT -> new Nodes.Not(expr(u.operand()));

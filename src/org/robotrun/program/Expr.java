@@ -1,5 +1,6 @@
 package org.robotrun.program;
 
+import java.util.List;
 import java.util.Objects;
 
 /**
@@ -69,6 +70,44 @@ public sealed interface Expr {
   record Arg(Index index) implements Expr {
     public Arg {
       Objects.requireNonNull(index, "index");
+    }
+  }
+
+  /** {@code SR[i]}: a string register. */
+  record StringReg(Item register) implements Expr {
+    public StringReg {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /**
+   * A string register function: {@code STRLEN SR[j]} (the length), {@code SUBSTR SR[j],m,n}
+   * (n characters from the m-th), {@code FINDSTR SR[j],SR[k]} (where SR[k] starts in SR[j], 1-based,
+   * 0 when it does not occur).
+   */
+  record StringFunc(StringFn fn, List<Expr> args) implements Expr {
+    public StringFunc {
+      Objects.requireNonNull(fn, "fn");
+      args = List.copyOf(args);
+      if (args.size() != fn.arity()) {
+        throw new IllegalArgumentException(fn + " takes " + fn.arity() + " arguments, got " + args.size());
+      }
+    }
+  }
+
+  /** The string register functions of the controller. */
+  enum StringFn {
+    STRLEN(1), SUBSTR(3), FINDSTR(2);
+
+    private final int arity;
+
+    StringFn(int arity) {
+      this.arity = arity;
+    }
+
+    /** How many arguments it takes. */
+    public int arity() {
+      return arity;
     }
   }
 

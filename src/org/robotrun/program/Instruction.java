@@ -59,6 +59,17 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code SR[i]=expr}: a string register. A number is stored as its text ({@code SR[1]=R[2]}),
+   * {@code +} with a string concatenates ({@code SR[1]=SR[2]+R[3]}).
+   */
+  record AssignString(Item register, Expr value) implements Instruction {
+    public AssignString {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(value, "value");
+    }
+  }
+
   /** {@code PR[i]=source}. */
   record AssignPosReg(Item register, PosSource source) implements Instruction {
     public AssignPosReg {
@@ -332,13 +343,20 @@ public sealed interface Instruction {
   }
 
   /**
-   * {@code OFFSET CONDITION PR[i]}: the offset a motion with a plain {@code Offset} option applies
-   * (PR[i] is read when the motion starts). It stays set until the next OFFSET CONDITION or the
+   * {@code OFFSET CONDITION PR[i]} or {@code OFFSET CONDITION PR[i],UFRAME[j]}: the offset a motion
+   * with a plain {@code Offset} option applies (PR[i] is read when the motion starts; with UFRAME[j]
+   * the offset is expressed in user frame j, 0 = world, and turned into the motion's frame). It stays set until the next OFFSET CONDITION or the
    * program ends.
    */
-  record OffsetCondition(Item register) implements Instruction {
+  record OffsetCondition(Item register, Optional<Index> userFrame) implements Instruction {
     public OffsetCondition {
       Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(userFrame, "userFrame");
+    }
+
+    /** {@code OFFSET CONDITION PR[i]}: the offset in the motion's own user frame. */
+    public OffsetCondition(Item register) {
+      this(register, Optional.empty());
     }
   }
 
@@ -349,6 +367,27 @@ public sealed interface Instruction {
   record MacroCall(String name) implements Instruction {
     public MacroCall {
       Objects.requireNonNull(name, "name");
+    }
+  }
+
+  /**
+   * {@code MONITOR NAME} (starts watching the WHEN conditions of condition program NAME) or
+   * {@code MONITOR END NAME} (stops it).
+   */
+  record Monitor(String program, boolean end) implements Instruction {
+    public Monitor {
+      Objects.requireNonNull(program, "program");
+    }
+  }
+
+  /**
+   * {@code WHEN cond,CALL NAME}: a line of a condition program (sub-type Cond). While the program
+   * is monitored, the action program runs when the condition turns true.
+   */
+  record When(Expr condition, Call action) implements Instruction {
+    public When {
+      Objects.requireNonNull(condition, "condition");
+      Objects.requireNonNull(action, "action");
     }
   }
 

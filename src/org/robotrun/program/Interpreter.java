@@ -74,6 +74,8 @@ public final class Interpreter {
   Nodes.Node skipCondition;
   /** The PR of the last OFFSET CONDITION of this run, or null. */
   Item offsetCondition;
+  /** The user frame of the OFFSET CONDITION's offset, -1 for the motion's own frame. */
+  int offsetConditionFrame = -1;
 
   private final Map<String, CompiledProgram> compiled = new HashMap<>();
   private final Frame[] frames;
@@ -106,6 +108,16 @@ public final class Interpreter {
   private boolean motionHeld;
   private boolean motionBackward;
   private Ops.LabelTarget motionSkip;
+  /** TIME BEFORE actions of the motion in flight, not fired yet. */
+  private final java.util.List<Motion.TimedAction> motionBefore = new java.util.ArrayList<>(2);
+  /** TIME AFTER actions of the motion in flight, started when it is done. */
+  private final java.util.List<Motion.TimedAction> motionAfter = new java.util.ArrayList<>(2);
+  /** Condition monitors in force: condition program → its WHEN lines (condition node, action program). */
+  private final Map<String, List<Object[]>> monitors = new java.util.LinkedHashMap<>();
+  /** Action programs of monitors that fired, running beside the program. */
+  private final List<Interpreter> actions = new ArrayList<>(1);
+  /** TIME AFTER actions counting down: seconds left, and the action. */
+  private final java.util.List<Object[]> afterTimers = new java.util.ArrayList<>(2);
   private double waitRemainingSec;
   private double waitElapsedSec;
   private Ops.WaitConditionOp waitOp;
@@ -384,7 +396,23 @@ public final class Interpreter {
     if (activePulses > 0) {
       advancePulses(dtSec);
     }
+    if (!afterTimers.isEmpty()) {
+      advanceTimedActions(dtSec);
+    }
     regs.advanceTimers(dtSec);
+    if (state == State.RUNNING && !monitors.isEmpty()) {
+      try {
+        checkMonitors();
+      } catch (AlarmSignal a) {
+        return raise(a, cur.prog.name, waitKind != W_NONE ? waitLine + 1 : Math.max(1, cur.pc));
+      }
+    }
+    if (!actions.isEmpty()) {
+      Outcome failed = tickActions(dtSec);
+      if (failed != null) {
+        return failed;
+      }
+    }
     switch (state) {
       case IDLE -> {
         return Outcome.FINISHED;
@@ -496,6 +524,9 @@ public final class Interpreter {
         case W_MOTION -> {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
+              if (!motionBefore.isEmpty() && !motionHeld) {
+                fireBefore(port.timeLeftSec(motionHandle), port.distanceLeftMm(motionHandle));
+              }
               if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
                 // The skip condition turned true: the arm stops and the program goes on with the
                 // next line, without the jump (FANUC Skip,LBL[] semantics).
@@ -513,6 +544,16 @@ public final class Interpreter {
             }
             case DONE -> {
               waitKind = W_NONE;
+              // CNT: done when blending starts; TIME BEFORE actions not fired yet fire now, and
+              // TIME AFTER actions start counting (RobotRun's approximation of "after the point").
+              fireBefore(0, 0);
+              for (Motion.TimedAction t : motionAfter) {
+                afterTimers.add(new Object[] {t.amount(), t});
+              }
+              motionAfter.clear();
+              if (!afterTimers.isEmpty()) {
+                advanceTimedActions(0);
+              }
               if (motionBackward) {
                 state = State.PAUSED;
                 return Outcome.PAUSED;
@@ -594,6 +635,8 @@ public final class Interpreter {
     if (waitKind == W_MOTION) {
       port.cancel(motionHandle);
     }
+    motionBefore.clear();
+    motionAfter.clear();
     waitKind = W_NONE;
     motionHeld = false;
   }
@@ -618,6 +661,8 @@ public final class Interpreter {
     push(cp, Math.min(cursorLine - 1, cp.ops.length));
     skipCondition = null;
     offsetCondition = null;
+    offsetConditionFrame = -1;
+    monitors.clear();
     finishedProgram = null;
     state = State.RUNNING;
   }
@@ -721,6 +766,11 @@ public final class Interpreter {
         regs.r[i] = v;
         regs.rIsInteger[i] = false;
       }
+      case Nodes.STR -> {
+        // R[i]=SR[j]: the string's leading number
+        double n = Nodes.number(this, str, "R[" + i + "]=" + "a string");
+        storeR(i, n);
+      }
       default -> throw Nodes.mismatch("R[" + i + "] needs a number", kind);
     }
   }
@@ -772,6 +822,123 @@ public final class Interpreter {
     pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
   }
 
+  // ================================================================ condition monitors
+
+  /** MONITOR NAME: watches the WHEN lines of condition program NAME (again, if it fired before). */
+  void monitorStart(String name) {
+    Optional<Program> p = store.find(name);
+    if (p.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "MONITOR " + name + ": no such program");
+    }
+    List<Object[]> whens = new ArrayList<>();
+    for (Instruction in : p.get().lines()) {
+      if (in instanceof Instruction.When w) {
+        whens.add(new Object[] {Compiler.expr(w.condition()), w.action().program()});
+      }
+    }
+    if (whens.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.BAD_VALUE, "MONITOR " + name + ": the program has no WHEN line (a condition "
+          + "program holds WHEN ...,CALL ... lines)");
+    }
+    monitors.put(name, whens);
+  }
+
+  /** MONITOR END NAME. */
+  void monitorEnd(String name) {
+    monitors.remove(name);
+  }
+
+  /**
+   * Tests the WHEN conditions of the monitors in force (every tick while the program runs or
+   * waits). A monitor whose condition holds ends (it is one-shot: MONITOR starts it again) and
+   * its action program starts beside the program.
+   */
+  private void checkMonitors() {
+    for (java.util.Iterator<Map.Entry<String, List<Object[]>>> it = monitors.entrySet().iterator(); it.hasNext(); ) {
+      Map.Entry<String, List<Object[]>> e = it.next();
+      for (Object[] w : e.getValue()) {
+        if (((Nodes.Node) w[0]).bool(this, "WHEN")) {
+          it.remove();
+          startAction((String) w[1]);
+          break;
+        }
+      }
+    }
+  }
+
+  /** Starts a monitor's action program beside the program; it may not move the robot. */
+  private void startAction(String name) {
+    Optional<Program> p = store.find(name);
+    if (p.isEmpty()) {
+      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "WHEN ...,CALL " + name + ": no such program");
+    }
+    if (p.get().lines().stream().anyMatch(in -> in instanceof Instruction.Move)) {
+      throw new AlarmSignal(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: the action program " + name
+          + " of a condition monitor moves the robot");
+    }
+    Interpreter child = new Interpreter(store, regs, port, settings);
+    child.select(name);
+    child.forward();
+    actions.add(child);
+  }
+
+  /** Runs the monitors' action programs for this tick; the first alarm in one stops the program too. */
+  private Outcome tickActions(double dtSec) {
+    for (java.util.Iterator<Interpreter> it = actions.iterator(); it.hasNext(); ) {
+      Interpreter child = it.next();
+      Outcome o = child.tick(dtSec);
+      if (o instanceof Outcome.Alarmed al) {
+        it.remove();
+        Alarm a = al.alarm();
+        if (state == State.RUNNING || state == State.PAUSED) {
+          return raise(new AlarmSignal(a.kind(), a.code(), a.message()), a.program(), a.line());
+        }
+        alarm = a;
+        alarmOutcome = al;
+        state = State.ALARMED;
+        return al;
+      } else if (!child.active()) {
+        it.remove();
+      }
+    }
+    return null;
+  }
+
+  /** Fires the TIME/DISTANCE BEFORE actions whose moment has come, {@code leftSec} / {@code leftMm} before the point. */
+  private void fireBefore(double leftSec, double leftMm) {
+    for (java.util.Iterator<Motion.TimedAction> it = motionBefore.iterator(); it.hasNext(); ) {
+      Motion.TimedAction t = it.next();
+      boolean due = t.when() == Motion.When.DISTANCE_BEFORE ? leftMm <= t.amount() + 1e-6
+          : leftSec <= t.amount() + TIME_EPS_SEC;
+      if (due) {
+        it.remove();
+        runTimedAction(t);
+      }
+    }
+  }
+
+  private void advanceTimedActions(double dtSec) {
+    for (java.util.Iterator<Object[]> it = afterTimers.iterator(); it.hasNext(); ) {
+      Object[] a = it.next();
+      double left = (double) a[0] - dtSec;
+      a[0] = left;
+      if (left <= TIME_EPS_SEC) {
+        it.remove();
+        runTimedAction((Motion.TimedAction) a[1]);
+      }
+    }
+  }
+
+  /** The output of a TIME BEFORE/AFTER action (an alarm in it is the motion line's alarm). */
+  private void runTimedAction(Motion.TimedAction t) {
+    Ops.Op op = switch (t.action()) {
+      case Instruction.SetIo s -> new Ops.SetIoOp(s.kind(), new Nodes.Idx(s.port().index()), Compiler.expr(s.value()));
+      case Instruction.Pulse p -> new Ops.PulseOp(p.kind(), new Nodes.Idx(p.port().index()), p.widthSec());
+      default -> throw new IllegalStateException("timed action " + t.action());
+    };
+    op.exec(this);
+  }
+
   private void advancePulses(double dtSec) {
     for (IoKind io : PULSED) {
       double[] left = pulseLeftSec[io.ordinal()];
@@ -810,6 +977,15 @@ public final class Interpreter {
         motionHeld = false;
         motionBackward = backward;
         motionSkip = backward ? null : op.skip;
+        motionBefore.clear();
+        motionAfter.clear();
+        if (!backward) {
+          for (Motion.Option o : op.move.options()) {
+            if (o instanceof Motion.TimedAction t) {
+              (t.when() == Motion.When.TIME_AFTER ? motionAfter : motionBefore).add(t);
+            }
+          }
+        }
         haltOutcome = Outcome.WAITING_FOR_MOTION;
         yield Ops.HALT;
       }
@@ -871,7 +1047,8 @@ public final class Interpreter {
           if (offsetCondition == null) {
             throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "Offset needs an OFFSET CONDITION PR[i] before it (or write Offset,PR[i])");
           }
-          offset = Optional.of(positionRegister(offsetCondition));
+          offset = Optional.of(offsetConditionFrame < 0 ? positionRegister(offsetCondition)
+              : offsetFromFrame(positionRegister(offsetCondition), offsetConditionFrame));
         }
         case Motion.OffsetPr x -> offset = Optional.of(positionRegister(x.register()));
         case Motion.ToolOffsetPr x -> toolOffset = Optional.of(positionRegister(x.register()));
@@ -889,6 +1066,9 @@ public final class Interpreter {
         case Motion.RawOption x -> {
           // Not run yet: check reported it; the motion runs without it.
         }
+        case Motion.TimedAction x -> {
+          // Fired while the motion runs (see serviceWait).
+        }
       }
     }
     return new MotionRequest(mv.type(), target, via, speed, mv.speed().unit(), fine, cnt, offset, toolOffset, acc, wjnt,
@@ -898,6 +1078,31 @@ public final class Interpreter {
   private double registerNumber(Item register, String what) {
     int i = Nodes.check("R", new Nodes.Idx(register.index()).resolve(this), Registers.R_COUNT);
     return regs.r[i];
+  }
+
+  /**
+   * An offset expressed in user frame {@code j} (OFFSET CONDITION PR[i],UFRAME[j]) as the same
+   * displacement in the active user frame u, where the motion's target is: O_u = F_u^-1 F_j O F_j^-1 F_u
+   * (frame 0 is the world). With j = u this is the offset itself.
+   */
+  private Position offsetFromFrame(Position offset, int j) {
+    if (!(offset instanceof Position.Cartesian oc)) {
+      throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, "OFFSET CONDITION ...,UFRAME[" + j + "] needs a Cartesian PR");
+    }
+    int u = port.activeFrame(Instruction.FrameKind.USER);
+    if (u == j) {
+      return offset;
+    }
+    org.robotrun.math.Transform fj = userFrame(j);
+    org.robotrun.math.Transform fu = userFrame(u);
+    org.robotrun.math.Transform o = oc.toXyzwpr().toTransform();
+    org.robotrun.math.Transform ou = fu.inverse().compose(fj).compose(o).compose(fj.inverse()).compose(fu);
+    return Position.Cartesian.of(org.robotrun.math.Xyzwpr.fromTransform(ou), oc.config());
+  }
+
+  private org.robotrun.math.Transform userFrame(int n) {
+    return n == 0 ? org.robotrun.math.Transform.IDENTITY
+        : port.frame(Instruction.FrameKind.USER, n).toXyzwpr().toTransform();
   }
 
   private Position positionRegister(Item register) {

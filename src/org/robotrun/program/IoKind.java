@@ -1,13 +1,21 @@
 package org.robotrun.program;
 
 /**
- * Bit and group I/O plus flags, indexed from 1 up to the controller's configured size
- * ({@link IoRanges}: by default DI/DO 512, RI/RO 8, GI/GO 100, flags 200). Inputs (DI, RI, GI) are set
+ * Bit, group and analog I/O plus flags, indexed from 1 up to the controller's configured size
+ * ({@link IoRanges}: by default DI/DO 512, RI/RO 8, GI/GO 100, flags 200, SI/SO 15, AI/AO 64). Inputs (DI, RI, GI) are set
  * by the simulation (RI[1] reports the gripper closed); outputs (DO, RO, GO) and flags (F) are
  * written by programs. RO[1] drives the end effector unless a scenario maps it otherwise.
  */
 public enum IoKind {
-  DI(false, false), DO(true, false), RI(false, false), RO(true, false), GI(false, true), GO(true, true), F(true, false);
+  DI(false, false), DO(true, false), RI(false, false), RO(true, false), GI(false, true), GO(true, true), F(true, false),
+  /** Standard operator panel inputs (SOP), read-only for a program. */
+  SI(false, false),
+  /** Standard operator panel outputs (SOP): set by the controller, read by a program. */
+  SO(false, false),
+  /** Analog inputs: an integer value (the converter's digital value). */
+  AI(false, true),
+  /** Analog outputs: a program sets an integer value. */
+  AO(true, true);
 
   private final boolean writable;
   private final boolean group;
@@ -22,7 +30,7 @@ public enum IoKind {
     return writable;
   }
 
-  /** Group ports (GI, GO) carry an integer; the others ON/OFF. */
+  /** Group and analog ports (GI, GO, AI, AO) carry an integer; the others ON/OFF. */
   public boolean group() {
     return group;
   }

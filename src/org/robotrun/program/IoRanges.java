@@ -8,7 +8,7 @@ import java.util.Map;
  * is valid for 1 ≤ i ≤ {@code size(DO)}. An index beyond the range alarms when the line runs, as
  * on the controller where the port is not assigned. Defaults are those of an R-30iB with its
  * usual I/O: DI/DO 1..512, robot I/O RI/RO 1..8 (the end-effector connector), GI/GO 1..100,
- * flags F 1..200. A scenario may set other sizes per robot ({@code "io"}, docs/scenario-format.md).
+ * flags F 1..200, operator panel SI/SO 1..15, analog AI/AO 1..64. A scenario may set other sizes per robot ({@code "io"}, docs/scenario-format.md).
  */
 public final class IoRanges {
   /** The largest size RobotRun accepts for any kind. */
@@ -32,6 +32,13 @@ public final class IoRanges {
     s[IoKind.GI.ordinal()] = 100;
     s[IoKind.GO.ordinal()] = 100;
     s[IoKind.F.ordinal()] = Registers.FLAG_COUNT;
+    // The standard operator panel of an R-30iB: SI[1..15] (FAULT RESET, REMOTE, HOLD, ..., START)
+    // and SO[1..15] (CYCLE START, HOLD, FAULT LED, ...); SO[0]/SI[0] are not modelled.
+    s[IoKind.SI.ordinal()] = 15;
+    s[IoKind.SO.ordinal()] = 15;
+    // Analog ports depend on the boards fitted; RobotRun assumes 64 of each unless a scenario says otherwise.
+    s[IoKind.AI.ordinal()] = 64;
+    s[IoKind.AO.ordinal()] = 64;
     return s;
   }
 
@@ -53,7 +60,7 @@ public final class IoRanges {
     return new IoRanges(s);
   }
 
-  /** The kind named {@code name} (DI, DO, RI, RO, GI, GO, F). */
+  /** The kind named {@code name} (DI, DO, RI, RO, GI, GO, F, SI, SO, AI, AO). */
   public static IoKind kind(String name) {
     for (IoKind k : IoKind.values()) {
       if (k.name().equals(name)) {
@@ -83,7 +90,7 @@ public final class IoRanges {
   public String toString() {
     StringBuilder b = new StringBuilder("IoRanges[");
     for (IoKind k : IoKind.values()) {
-      b.append(k.name()).append('=').append(sizes[k.ordinal()]).append(k == IoKind.F ? "]" : ", ");
+      b.append(k.name()).append('=').append(sizes[k.ordinal()]).append(k.ordinal() == IoKind.values().length - 1 ? "]" : ", ");
     }
     return b.toString();
   }

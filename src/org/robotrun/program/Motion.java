@@ -130,6 +130,37 @@ public final class Motion {
   /** {@code INC}: the target is an increment from the current position. */
   public record Inc() implements Option {}
 
+  /** When a {@link TimedAction} fires. */
+  public enum When {
+    /** {@code TB t sec,...}: t seconds before the motion reaches its point. */
+    TIME_BEFORE,
+    /** {@code TA t sec,...}: t seconds after it. */
+    TIME_AFTER,
+    /** {@code DB d mm,...}: when the TCP comes within d mm (straight line) of the point. */
+    DISTANCE_BEFORE
+  }
+
+  /**
+   * {@code TB t sec,action}, {@code TA t sec,action} or {@code DB d mm,action} with an output
+   * action RobotRun runs ({@code DO[1]=ON}, {@code RO[2]=PULSE,0.5sec}, {@code GO[1]=R[3]} ...).
+   *
+   * @param amount seconds (TB, TA) or millimetres (DB)
+   * @param text the option as written ({@code "TB   .20sec,DO[1]=ON"}), so it is written back unchanged
+   */
+  public record TimedAction(When when, double amount, Instruction action, String text) implements Option {
+    public TimedAction {
+      Objects.requireNonNull(when, "when");
+      Objects.requireNonNull(action, "action");
+      Objects.requireNonNull(text, "text");
+      if (!(action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)) {
+        throw new IllegalArgumentException("a TB/TA/DB action RobotRun runs is an output: " + action);
+      }
+      if (!(amount >= 0) || Double.isInfinite(amount)) {
+        throw new IllegalArgumentException("expected 0 or more, got " + amount);
+      }
+    }
+  }
+
   /**
    * A motion option the controller has and RobotRun does not run yet ({@code TB .50sec,CALL X},
    * {@code VOFFSET,VR[1]}, {@code PTH}, {@code RTCP}): the rest of the line from the option on,

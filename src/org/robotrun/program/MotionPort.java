@@ -20,6 +20,22 @@ public interface MotionPort {
    */
   Status poll(long handle);
 
+  /**
+   * Seconds until running motion {@code handle} reaches its end point (TIME BEFORE actions fire
+   * by it); infinite when the port cannot tell, so such an action fires when the motion is done.
+   */
+  default double timeLeftSec(long handle) {
+    return Double.POSITIVE_INFINITY;
+  }
+
+  /**
+   * Straight-line distance in mm from the TCP to the end point of motion {@code handle}
+   * (DISTANCE BEFORE actions fire by it); infinite when the port cannot tell.
+   */
+  default double distanceLeftMm(long handle) {
+    return Double.POSITIVE_INFINITY;
+  }
+
   /** The reason motion {@code handle} failed, valid after {@link #poll} answered FAILED. */
   Start.Rejected failure(long handle);
 

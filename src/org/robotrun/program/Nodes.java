@@ -253,6 +253,123 @@ final class Nodes {
     }
   }
 
+  /** {@code SR[i]}. */
+  static final class SrRead extends Node {
+    final Idx idx;
+
+    SrRead(Idx idx) {
+      this.idx = idx;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      int i = check("SR", idx.resolve(m), Registers.SR_COUNT);
+      m.kind = STR;
+      m.str = m.regs.string(i);
+      return 0;
+    }
+  }
+
+  /** The text of the value just evaluated: a string as it is, a number as the controller prints it. */
+  static String text(Interpreter m, double v, String what) {
+    return switch (m.kind) {
+      case STR -> m.str;
+      case INT -> Long.toString((long) v);
+      case REAL -> realText(v);
+      default -> throw mismatch(what + " needs a string or a number", m.kind);
+    };
+  }
+
+  /**
+   * A real as text: up to six decimals, trailing zeros dropped but one decimal kept ({@code 2.5},
+   * {@code 3.0}). RobotRun's choice: we could not check the controller's exact conversion format.
+   */
+  static String realText(double v) {
+    java.math.BigDecimal b = java.math.BigDecimal.valueOf(v).setScale(6, java.math.RoundingMode.HALF_UP).stripTrailingZeros();
+    String t = b.toPlainString();
+    return t.indexOf('.') < 0 ? t + ".0" : t;
+  }
+
+  /**
+   * A string as a number (R[i]=SR[j]): its leading number ({@code "12AB"} gives 12, {@code "2.5"}
+   * gives the real 2.5); a string with no leading number alarms (type mismatch).
+   */
+  static double number(Interpreter m, String s, String what) {
+    String t = s.strip();
+    int k = 0;
+    if (k < t.length() && (t.charAt(k) == '-' || t.charAt(k) == '+')) {
+      k++;
+    }
+    int digits = k;
+    while (k < t.length() && Character.isDigit(t.charAt(k))) {
+      k++;
+    }
+    boolean real = false;
+    if (k < t.length() && t.charAt(k) == '.') {
+      real = true;
+      k++;
+      while (k < t.length() && Character.isDigit(t.charAt(k))) {
+        k++;
+      }
+    }
+    String num = t.substring(0, k);
+    if (k == digits || num.equals(".") || num.endsWith("-.") || num.endsWith("+.")) {
+      throw new AlarmSignal(AlarmKind.TYPE_MISMATCH, what + ": '" + clip(s) + "' does not start with a number");
+    }
+    double v = Double.parseDouble(num);
+    if (!real && isWhole(v)) {
+      m.kind = INT;
+    } else {
+      m.kind = REAL;
+    }
+    return finite(v);
+  }
+
+  private static String clip(String s) {
+    return s.length() <= 20 ? s : s.substring(0, 20) + "...";
+  }
+
+  /** STRLEN, SUBSTR, FINDSTR. */
+  static final class StrFunc extends Node {
+    final Expr.StringFn fn;
+    final Node[] args;
+
+    StrFunc(Expr.StringFn fn, Node[] args) {
+      this.fn = fn;
+      this.args = args;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      String s = text(m, args[0].eval(m), fn.name());
+      switch (fn) {
+        case STRLEN -> {
+          m.kind = INT;
+          return s.length();
+        }
+        case FINDSTR -> {
+          String what = text(m, args[1].eval(m), "FINDSTR");
+          // case-insensitive, 1-based, 0 when not found (HandlingTool manual, string registers, as cited)
+          int at = s.toUpperCase(java.util.Locale.ROOT).indexOf(what.toUpperCase(java.util.Locale.ROOT));
+          m.kind = INT;
+          return at + 1;
+        }
+        case SUBSTR -> {
+          int start = args[1].integer(m, "SUBSTR start");
+          int len = args[2].integer(m, "SUBSTR length");
+          if (start < 1 || len < 1 || start - 1 + len > s.length()) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, "SUBSTR from " + start + ", " + len + " characters: the string has "
+                + s.length() + " characters");
+          }
+          m.kind = STR;
+          m.str = s.substring(start - 1, start - 1 + len);
+          return 0;
+        }
+        default -> throw new IllegalStateException(fn.name());
+      }
+    }
+  }
+
   static final class Neg extends Node {
     final Node a;
 
@@ -318,8 +435,19 @@ final class Nodes {
     double eval(Interpreter m) {
       double x = a.eval(m);
       int ka = m.kind;
+      String sa = m.str;
       double y = b.eval(m);
       int kb = m.kind;
+      if (ka == STR || kb == STR) {
+        // SR[1]=SR[2]+R[3]: a string joined with a string or a number's text
+        String right = text(m, y, "'+'");
+        m.kind = ka;
+        m.str = sa;
+        String left = text(m, x, "'+'");
+        m.kind = STR;
+        m.str = left + right;
+        return 0;
+      }
       if ((ka | kb) > REAL) {
         throw mismatch("'+' needs numbers", Math.max(ka, kb));
       }

@@ -62,6 +62,50 @@ final class Ops {
     }
   }
 
+  /** {@code MONITOR NAME} / {@code MONITOR END NAME}. */
+  static final class MonitorOp extends Op {
+    final String program;
+    final boolean end;
+
+    MonitorOp(String program, boolean end) {
+      this.program = program;
+      this.end = end;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      if (end) {
+        m.monitorEnd(program);
+      } else {
+        m.monitorStart(program);
+      }
+      return NEXT;
+    }
+  }
+
+  /** {@code SR[i]=expr}: a number is stored as its text. */
+  static final class AssignSrOp extends Op {
+    final Idx idx;
+    final Node value;
+
+    AssignSrOp(Idx idx, Node value) {
+      this.idx = idx;
+      this.value = value;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      int i = Nodes.check("SR", idx.resolve(m), Registers.SR_COUNT);
+      String t = Nodes.text(m, value.eval(m), "SR[" + i + "]");
+      if (t.length() > Registers.SR_LENGTH) {
+        throw new AlarmSignal(AlarmKind.BAD_VALUE, "SR[" + i + "]: at most " + Registers.SR_LENGTH
+            + " characters, got " + t.length());
+      }
+      m.regs.setString(i, t);
+      return NEXT;
+    }
+  }
+
   /** {@code R[R[j]]=expr}. */
   static final class AssignRIndexed extends Op {
     final Idx idx;
@@ -511,14 +555,25 @@ final class Ops {
   /** OFFSET CONDITION PR[i]: remembered for the following motions with a plain Offset. */
   static final class OffsetConditionOp extends Op {
     final Item register;
+    /** The user frame the offset is expressed in, null for the motion's own frame. */
+    final Nodes.Idx userFrame;
 
-    OffsetConditionOp(Item register) {
+    OffsetConditionOp(Item register, Nodes.Idx userFrame) {
       this.register = register;
+      this.userFrame = userFrame;
     }
 
     @Override
     int exec(Interpreter m) {
       m.offsetCondition = register;
+      m.offsetConditionFrame = -1;
+      if (userFrame != null) {
+        int j = userFrame.resolve(m);
+        if (j < 0 || j > 10) {
+          throw new AlarmSignal(AlarmKind.BAD_VALUE, "OFFSET CONDITION UFRAME[" + j + "]: expected 0..10");
+        }
+        m.offsetConditionFrame = j;
+      }
       return NEXT;
     }
   }

@@ -19,10 +19,15 @@ public final class Registers {
   public static final int PR_COUNT = 100;
   public static final int FLAG_COUNT = 200;
   public static final int TIMER_COUNT = 10;
+  /** String registers SR[1..25], as on a standard R-30iB. */
+  public static final int SR_COUNT = 25;
+  /** Longest text a string register holds (the controller's 254 characters). */
+  public static final int SR_LENGTH = 254;
 
   // Package-private so the interpreter's compiled code reads them without per-access checks
   // (it validates indices itself).
   final double[] r = new double[R_COUNT + 1];
+  final String[] sr = new String[SR_COUNT + 1];
   final boolean[] rIsInteger = new boolean[R_COUNT + 1];
   final Position[] pr = new Position[PR_COUNT + 1];
   final int[][] io = new int[IoKind.values().length][];
@@ -41,6 +46,7 @@ public final class Registers {
     this.ioRanges = Objects.requireNonNull(ranges, "ranges");
     Arrays.fill(rIsInteger, true);
     Arrays.fill(pr, Position.Cartesian.ZERO);
+    Arrays.fill(sr, "");
     for (IoKind k : IoKind.values()) {
       io[k.ordinal()] = new int[ranges.size(k) + 1];
     }
@@ -95,6 +101,27 @@ public final class Registers {
     check("R", i, R_COUNT);
     r[i] = value;
     rIsInteger[i] = integer;
+  }
+
+  // ---- SR[] ----
+
+  /** SR[i] as text ("" until set). */
+  public String string(int i) {
+    check("SR", i, SR_COUNT);
+    return sr[i];
+  }
+
+  /**
+   * Sets SR[i].
+   *
+   * @throws IllegalArgumentException if the text is longer than {@link #SR_LENGTH}
+   */
+  public void setString(int i, String value) {
+    check("SR", i, SR_COUNT);
+    if (value.length() > SR_LENGTH) {
+      throw new IllegalArgumentException("SR[" + i + "]: at most " + SR_LENGTH + " characters, got " + value.length());
+    }
+    sr[i] = value;
   }
 
   // ---- PR[] ----

@@ -42,7 +42,31 @@ public final class TpLexer {
       java.util.Map.entry("ODER", "OR"),
       java.util.Map.entry("EIN", "ON"),
       java.util.Map.entry("AUS", "OFF"),
-      java.util.Map.entry("SEK", "sec"));
+      java.util.Map.entry("SEK", "sec"),
+      // Seen in real German R-30iA/R-30iB listings (public backups, see docs/tp-language.md):
+      java.util.Map.entry("LABEL", "LBL"),
+      java.util.Map.entry("AN", "ON"),
+      java.util.Map.entry("IST", "SELECT"),
+      java.util.Map.entry("STOPP", "STOP"),
+      java.util.Map.entry("TRAGLST", "PAYLOAD"),
+      java.util.Map.entry("WKZ_NUM", "UTOOL_NUM"),
+      java.util.Map.entry("BENUTZER_NUM", "UFRAME_NUM"),
+      java.util.Map.entry("BALM", "UALM"),
+      java.util.Map.entry("ZEIT", "TIME"),
+      java.util.Map.entry("WEG", "DISTANCE"),
+      java.util.Map.entry("VOR", "BEFORE"),
+      java.util.Map.entry("NACH", "AFTER"),
+      java.util.Map.entry("IRQ", "SKIP"),
+      java.util.Map.entry("BEDINGUNG", "CONDITION"),
+      java.util.Map.entry("INTERRUPT", "Skip"));
+
+  /**
+   * German names of register and I/O kinds, used only right before '[' (so the arc motion
+   * {@code A P[1] ...} stays a motion): {@code E[]} input, {@code A[]} output, {@code gE[]}/{@code gA[]}
+   * group I/O, {@code i[]} data register, as real German listings write them.
+   */
+  private static final java.util.Map<String, String> GERMAN_KINDS = java.util.Map.of(
+      "E", "DI", "A", "DO", "GE", "GI", "GA", "GO", "I", "R");
 
   /** The English keyword for a German one, else {@code word} itself (never after CALL: that is a name). */
   static String english(String word, List<TpToken> before) {
@@ -117,7 +141,18 @@ public final class TpLexer {
             || (c == '$' && text.charAt(j) == '.' && j + 1 < n && text.charAt(j + 1) == '$'))) {
           j++;
         }
-        out.add(new TpToken(Kind.WORD, english(text.substring(i, j), out), line, col));
+        String word = text.substring(i, j);
+        if (j < n && text.charAt(j) == '[' && c != '$') {
+          String kind = GERMAN_KINDS.get(word.toUpperCase(java.util.Locale.ROOT));
+          if (kind != null) {
+            word = kind;
+          }
+        } else if (j < n && text.charAt(j) == '.' && word.equalsIgnoreCase("FREIG")) {
+          // "FREIG. PREG": the German UNLOCK PREG
+          word = "UNLOCK";
+          j++;
+        }
+        out.add(new TpToken(Kind.WORD, english(word, out), line, col));
         i = j;
         continue;
       }
@@ -149,6 +184,12 @@ public final class TpLexer {
           }
         }
         case '[' -> {
+          if (i + 2 < n && text.charAt(i + 2) == ']' && (text.charAt(i + 1) == '&' || text.charAt(i + 1) == '+')) {
+            // "E[1] [&] !E[2] [+] M[3]": the German listing's AND / OR in a condition
+            out.add(new TpToken(Kind.WORD, text.charAt(i + 1) == '&' ? "AND" : "OR", line, col));
+            i += 3;
+            continue;
+          }
           boolean message = !out.isEmpty() && out.get(out.size() - 1).isWord("MESSAGE");
           out.add(new TpToken(Kind.LBRACKET, ONE_CHAR['['], line, col));
           i++;

@@ -39,6 +39,13 @@ public final class TpLimits {
         }
         yield Math.max(worst, nesting(left, depth, limit));
       }
+      case Expr.StringFunc f -> {
+        int worst = depth;
+        for (Expr a : f.args()) {
+          worst = Math.max(worst, nesting(a, depth, limit));
+        }
+        yield worst;
+      }
       default -> depth;
     };
   }

@@ -37,20 +37,14 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("OFFSET", "OFFSET CONDITION"),
       Map.entry("TOOL_OFFSET", "TOOL_OFFSET CONDITION"),
       Map.entry("RUN", "RUN (multitasking)"),
-      Map.entry("MONITOR", "MONITOR"),
       Map.entry("COL", "COL DETECT"),
       Map.entry("LOCK", "LOCK PREG"),
       Map.entry("UNLOCK", "UNLOCK PREG"),
-      Map.entry("SR", "string registers SR[]"),
       Map.entry("VR", "vision registers VR[]"),
-      Map.entry("AI", "analog input AI[]"),
-      Map.entry("AO", "analog output AO[]"),
       Map.entry("SDI", "SDI[]"),
       Map.entry("SDO", "SDO[]"),
       Map.entry("UI", "UOP input UI[]"),
       Map.entry("UO", "UOP output UO[]"),
-      Map.entry("SI", "SOP input SI[]"),
-      Map.entry("SO", "SOP output SO[]"),
       Map.entry("WI", "weld input WI[]"),
       Map.entry("WO", "weld output WO[]"),
       Map.entry("JOINT_MAX_SPEED", "JOINT_MAX_SPEED"),
@@ -79,7 +73,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("RESUME_PROG", "RESUME_PROG"),
       Map.entry("CLEAR_RESUME_PROG", "CLEAR_RESUME_PROG"),
       Map.entry("RETURN_PATH_DSBL", "RETURN_PATH_DSBL"),
-      Map.entry("WHEN", "WHEN (condition program)"),
       Map.entry("MONITOR_END", "MONITOR END"),
       Map.entry("PL", "palletizing register PL[]"),
       Map.entry("PAL", "palletizing"),
@@ -128,9 +121,6 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("COL_GUARD_ADJUST", "COL GUARD ADJUST"),
       Map.entry("REMARK", "remark"),
       Map.entry("FREE", "FREE"),
-      Map.entry("STRLEN", "string functions"),
-      Map.entry("SUBSTR", "string functions"),
-      Map.entry("FINDSTR", "string functions"),
       Map.entry("STATION", "station sync"),
       Map.entry("DIAGNOSTIC_REC", "DIAGNOSTIC"));
 
@@ -190,6 +180,8 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
       case Instruction.SetSysVar s -> s.value();
+      case Instruction.AssignString a -> a.value();
+      case Instruction.When w -> w.condition();
       case Instruction.SkipCondition s -> s.condition();
       default -> null;
     };
@@ -197,6 +189,45 @@ public final class TpStatementParser extends TpTokenCursor {
       EntryRules.refusal(checked).ifPresent(r -> p.warnings.add(r + " (a pendant refuses this entry)"));
     }
     return new Parsed(in, List.copyOf(p.warnings));
+  }
+
+  // ---- typed text (the pendant's field entry) ----------------------------------------------
+
+  /**
+   * Parses typed text as one expression, with the grammar and limits of a statement in a file
+   * (the pendant's field entry uses this, so it accepts exactly what a file may hold). A whole
+   * {@code 'string'} is a string constant (a CALL argument or a string register's value).
+   *
+   * @throws TpSyntaxError naming the column (line 1) and what was expected
+   */
+  public static Expr expressionText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Expr e = p.peek().is(Kind.STRING) && p.peek(1).is(Kind.EOL) ? new Expr.StringConst(p.next().text()) : p.expression();
+    p.expectEnd("the end of the expression");
+    return e;
+  }
+
+  /** Parses typed text as an index: {@code 5} or {@code R[2]}. */
+  public static Index indexText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Index i = p.indexValue("index");
+    p.expectEnd("the end of the index");
+    return i;
+  }
+
+  /** Parses typed text as an item of {@code kind}: {@code R[3]}, {@code R[3:COUNT]}. */
+  public static Item itemText(String kind, String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    p.expectWordNamed(kind, kind + "[i]");
+    Item item = p.item(kind);
+    p.expectEnd("the end of the item");
+    return item;
+  }
+
+  private void expectEnd(String what) {
+    if (!peek().is(Kind.EOL)) {
+      throw error("expected " + what + ", found " + peek().describe());
+    }
   }
 
   /**
@@ -262,15 +293,32 @@ public final class TpStatementParser extends TpTokenCursor {
       throw unsupported(t, "system variable assignment", true);
     }
     next();
+    IoKind io = ioKind(w);
+    if (io != null && peek().is(Kind.LBRACKET)) {
+      if (io.writable()) {
+        return ioAssignment(io);
+      }
+      if (io == IoKind.DI || io == IoKind.RI || io == IoKind.GI || io == IoKind.SI || io == IoKind.AI) {
+        throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)");
+      }
+      // SO[] (and the UOP outputs): driven by the controller itself
+      throw unsupported(t, "assigning " + w + "[] (the controller sets it)", false);
+    }
     return switch (w) {
       case "R" -> {
         Item reg = item("R");
         expect(Kind.EQ, "'=' after R[...]");
+        if (peek().is(Kind.STRING) && peek(1).is(Kind.EOL)) {
+          throw error("R[] holds a number, not a string constant: put the text in a string register SR[i]");
+        }
         yield new Instruction.AssignRegister(reg, expression());
       }
+      case "SR" -> {
+        Item reg = item("SR");
+        expect(Kind.EQ, "'=' after SR[...]");
+        yield new Instruction.AssignString(reg, expression());
+      }
       case "PR" -> positionRegisterAssignment();
-      case "DO", "RO", "GO", "F" -> ioAssignment(IoKind.valueOf(w));
-      case "DI", "RI", "GI" -> throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO or F)");
       case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
@@ -318,11 +366,36 @@ public final class TpStatementParser extends TpTokenCursor {
         next();
         next();
         Item pr = item("PR");
+        if (peek().is(Kind.COMMA) && peek(1).isWord("UFRAME") && peek(2).is(Kind.LBRACKET)) {
+          // OFFSET CONDITION PR[1],UFRAME[2]: the offset expressed in user frame 2
+          next();
+          next();
+          yield new Instruction.OffsetCondition(pr, Optional.of(index("UFRAME")));
+        }
         if (!peek().is(Kind.EOL)) {
-          // OFFSET CONDITION PR[1],UFRAME[2]: an offset in another frame
-          throw unsupported(t, "OFFSET CONDITION with a frame", false);
+          throw unsupported(t, "OFFSET CONDITION with " + TpToken.clip(peek(1).text()), false);
         }
         yield new Instruction.OffsetCondition(pr);
+      }
+      case "MONITOR" -> {
+        boolean end = peek().isWord("END") && peek(1).is(Kind.WORD);
+        if (end) {
+          next();
+        }
+        TpToken name = expectWord("a condition program name after MONITOR");
+        if (!Program.isValidName(name.text())) {
+          throw error(name, "'" + TpToken.clip(name.text()) + "' is not a program name");
+        }
+        yield new Instruction.Monitor(name.text().toUpperCase(Locale.ROOT), end);
+      }
+      case "WHEN" -> {
+        Expr cond = expression();
+        expect(Kind.COMMA, "',' then CALL after the WHEN condition");
+        if (!peek().isWord("CALL")) {
+          throw unsupported(peek(), "WHEN with an action other than CALL", false);
+        }
+        next();
+        yield new Instruction.When(cond, (Instruction.Call) call());
       }
       case "JMP" -> jump();
       case "CALL" -> call();
@@ -376,6 +449,16 @@ public final class TpStatementParser extends TpTokenCursor {
         throw unknownStatement(t);
       }
     };
+  }
+
+  /** The I/O kind named {@code w} (upper case), or null. */
+  private static IoKind ioKind(String w) {
+    for (IoKind k : IoKind.values()) {
+      if (k.name().equals(w)) {
+        return k;
+      }
+    }
+    return null;
   }
 
   private static String targetKind(String word) {
@@ -801,11 +884,61 @@ public final class TpStatementParser extends TpTokenCursor {
             }
             return new Motion.Acc(acc);
           }
+          if (w.equals("TB") || w.equals("TA") || w.equals("TIME") || w.equals("DB") || w.equals("DISTANCE")) {
+            int at = tokens.indexOf(t);
+            Motion.RawOption raw = rawOption(t, optionKind(w));
+            return timedAction(at, raw);
+          }
           return rawOption(t, optionKind(w));
         }
       }
     }
     throw error(t, "expected a motion option or the end of the statement, found " + t.describe());
+  }
+
+  /**
+   * {@code TB t sec,action} / {@code TA ...} / {@code TIME BEFORE|AFTER ...} from token {@code at}:
+   * a {@link Motion.TimedAction} when the action is an output RobotRun runs, else {@code raw}
+   * (CALL, POINT_LOGIC and other actions stay as written and are not run).
+   */
+  private Motion.Option timedAction(int at, Motion.RawOption raw) {
+    if (at < 0) {
+      return raw;
+    }
+    List<TpToken> rest = tokens.subList(at, tokens.size());
+    int k = 1;
+    Motion.When when;
+    TpToken first = rest.get(0);
+    if (first.isWord("TB") || first.isWord("TA")) {
+      when = first.isWord("TA") ? Motion.When.TIME_AFTER : Motion.When.TIME_BEFORE;
+    } else if (first.isWord("DB")) {
+      when = Motion.When.DISTANCE_BEFORE;
+    } else if (first.isWord("TIME") && (rest.get(1).isWord("BEFORE") || rest.get(1).isWord("AFTER"))) {
+      when = rest.get(1).isWord("AFTER") ? Motion.When.TIME_AFTER : Motion.When.TIME_BEFORE;
+      k = 2;
+    } else if (first.isWord("DISTANCE") && rest.get(1).isWord("BEFORE")) {
+      when = Motion.When.DISTANCE_BEFORE;
+      k = 2;
+    } else {
+      return raw;
+    }
+    String unit = when == Motion.When.DISTANCE_BEFORE ? "mm" : "sec";
+    if (rest.size() < k + 4 || !rest.get(k).is(Kind.NUMBER) || !rest.get(k + 1).isWord(unit)
+        || !rest.get(k + 2).is(Kind.COMMA)) {
+      return raw;
+    }
+    double amount = Double.parseDouble(rest.get(k).text());
+    try {
+      TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
+      Instruction action = p.statement();
+      if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)
+          && Double.isFinite(amount)) {
+        return new Motion.TimedAction(when, amount, action, raw.text());
+      }
+    } catch (TpSyntaxError e) {
+      // an action RobotRun does not run: kept as written
+    }
+    return raw;
   }
 
   private static String optionKind(String w) {
@@ -958,7 +1091,10 @@ public final class TpStatementParser extends TpTokenCursor {
         nesting--;
         return new Expr.Group(inner);
       }
-      case STRING -> throw error(t, "a string is allowed only as a CALL argument");
+      case STRING -> {
+        // a string constant: a CALL argument, a string register's value (SR[1]=SR[2]+'_A'), a comparison
+        return new Expr.StringConst(t.text());
+      }
       case WORD -> {
         String w = t.text().toUpperCase(Locale.ROOT);
         return switch (w) {
@@ -966,8 +1102,20 @@ public final class TpStatementParser extends TpTokenCursor {
           case "OFF" -> new Expr.OnOff(false);
           case "R" -> new Expr.Register(item("R"));
           case "PR" -> positionElement();
-          case "DI", "DO", "RI", "RO", "GI", "GO", "F" -> new Expr.Io(IoKind.valueOf(w), item(w));
+
           case "TIMER" -> new Expr.Timer(item("TIMER"));
+          case "SR" -> new Expr.StringReg(item("SR"));
+          case "STRLEN", "SUBSTR", "FINDSTR" -> {
+            Expr.StringFn fn = Expr.StringFn.valueOf(w);
+            List<Expr> args = new ArrayList<>(fn.arity());
+            for (int k = 0; k < fn.arity(); k++) {
+              if (k > 0) {
+                expect(Kind.COMMA, "',' (" + w + " takes " + fn.arity() + " arguments)");
+              }
+              args.add(unary());
+            }
+            yield new Expr.StringFunc(fn, args);
+          }
           case "AR" -> {
             Item a = item("AR");
             if (!a.comment().isEmpty()) {
@@ -976,6 +1124,10 @@ public final class TpStatementParser extends TpTokenCursor {
             yield new Expr.Arg(a.index());
           }
           default -> {
+            IoKind io = ioKind(w);
+            if (io != null && peek().is(Kind.LBRACKET)) {
+              yield new Expr.Io(io, item(w));
+            }
             String name = UNSUPPORTED.get(w);
             if (name != null) {
               throw unsupported(t, name + " in an expression", false);
@@ -1082,9 +1234,9 @@ public final class TpStatementParser extends TpTokenCursor {
     int size = switch (table) {
       case "R" -> Registers.R_COUNT;
       case "PR" -> Registers.PR_COUNT;
-      case "F", "DI", "DO", "RI", "RO", "GI", "GO" -> ioRanges.size(IoKind.valueOf(table));
       case "TIMER" -> Registers.TIMER_COUNT;
-      default -> 0;
+      case "SR" -> Registers.SR_COUNT;
+      default -> ioKind(table) != null ? ioRanges.size(ioKind(table)) : 0;
     };
     if (size > 0 && (n < 1 || n > size)) {
       warnings.add(table + "[" + n + "]: index out of range (expected 1.." + size + "); running this line raises an alarm");

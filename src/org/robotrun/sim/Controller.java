@@ -121,6 +121,8 @@ public final class Controller implements MotionPort {
     Start.Rejected failure;
     /** The planner's request, to plan it again from where the arm stopped. */
     MoveRequest request;
+    /** The TCP's end point in the world (DISTANCE BEFORE). */
+    Transform targetW;
     /** Stopped at once (servo alarm, E-stop) before it finished: SHIFT+FWD plans it again. */
     boolean interrupted;
 
@@ -811,6 +813,7 @@ public final class Controller implements MotionPort {
         lastTargetW = m.X_WTarget();
         MoveState state = new MoveState(request.program(), request.line(), request.fine());
         state.request = m.move();
+        state.targetW = m.X_WTarget();
         moves.put(h, state);
         runner.enqueue(m.move());
         yield new Start.Started(h);
@@ -831,6 +834,20 @@ public final class Controller implements MotionPort {
       return Status.DONE;
     }
     return Status.RUNNING;
+  }
+
+  @Override
+  public double timeLeftSec(long handle) {
+    return moves.containsKey(handle) ? runner.timeLeftSec(handle) : 0;
+  }
+
+  @Override
+  public double distanceLeftMm(long handle) {
+    MoveState m = moves.get(handle);
+    if (m == null || m.targetW == null) {
+      return 0;
+    }
+    return runner.tcpInWorld(frames.activeTool()).translationVector().distanceTo(m.targetW.translationVector());
   }
 
   @Override

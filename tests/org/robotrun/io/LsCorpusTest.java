@@ -114,6 +114,45 @@ class LsCorpusTest {
   }
 
   @Test
+  void aGermanListingAsControllersWriteItReadsAsItsEnglishListing() throws IOException {
+    // ZELLE.LS is written in the layout of real German listings (E[]/A[]/i[], AN/AUS, LABEL,
+    // IST, ZEIT VOR with a point-logic block, German /ATTR keys); ZELLE_EN.LS is its English twin.
+    Program german = LsReader.read(CORPUS.resolve("ZELLE.LS")).program();
+    Program english = LsReader.read(Path.of("tests/resources/forms/ZELLE_EN.LS")).program();
+    assertThat(german.comment()).isEqualTo(english.comment());
+    assertThat(german.positions()).isEqualTo(english.positions());
+    assertThat(german.lineCount()).isEqualTo(24);
+    for (int i = 1; i <= german.lineCount(); i++) {
+      Instruction g = german.line(i);
+      Instruction e = english.line(i);
+      if (g instanceof Instruction.Move gm && e instanceof Instruction.Move em) {
+        // an option RobotRun keeps as written keeps its German text; its kind is the same
+        assertThat(gm.options().stream().map(o -> o instanceof Motion.RawOption r ? r.what() : o).toList())
+            .as("line %d", i).isEqualTo(em.options().stream().map(o -> o instanceof Motion.RawOption r ? r.what() : o).toList());
+        assertThat(bare(gm)).as("line %d", i).isEqualTo(bare(em));
+      } else if (g instanceof Instruction.Unsupported gu && e instanceof Instruction.Unsupported eu) {
+        assertThat(gu.what()).as("line %d", i).isEqualTo(eu.what());
+      } else {
+        assertThat(g).as("line %d", i).isEqualTo(e);
+      }
+    }
+    // an edit keeps the German /ATTR and fixes its line count (ZEILEN)
+    List<Instruction> more = new ArrayList<>(german.lines());
+    more.add(new Instruction.Blank());
+    String edited = new String(LsWriter.bytes(german.withBody(more, german.positions())), StandardCharsets.UTF_8);
+    assertThat(edited).contains("ZEILEN\t\t= 25;").contains("KOMMENTAR\t= \"Zelle Greifen\";").doesNotContain("LINE_COUNT");
+    // the point-logic sub-lines stay with their motion and are written back after it
+    Instruction.Move tb = (Instruction.Move) german.line(6);
+    assertThat(((Motion.RawOption) tb.options().get(1)).text()).endsWith("\n      1:  A[3]=AN ;\n       ------ ;");
+    assertThat(LsWriter.write(german.withoutSource())).contains(
+        "   6:J P[1] 100% CNT0 ACC100 ZEIT VOR    .10sek,P-SPS    ;\n      1:  A[3]=AN ;\n       ------ ;\n   7:");
+  }
+
+  private static Instruction.Move bare(Instruction.Move m) {
+    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), List.of());
+  }
+
+  @Test
   void unsupportedFormsAreKeptAndReportedOncePerKind() throws IOException {
     LsReadResult r = LsReader.read(CORPUS.resolve("VIS_PICK.LS"));
     assertThat(r.program().lines()).filteredOn(in -> in instanceof Instruction.Unsupported).hasSize(9);

@@ -125,8 +125,16 @@ class LsRandomProgramsTest {
       case 4 -> new Expr.PosElement(item(), 1 + rnd.nextInt(6));
       case 5 -> new Expr.Io(IoKind.values()[rnd.nextInt(IoKind.values().length)], ioItem());
       case 6 -> new Expr.Timer(timer());
-      case 7 -> rnd.nextInt(3) == 0 ? new Expr.SysVar(org.robotrun.program.SystemVariables.SUPPORTED.get(rnd.nextInt(2)))
-          : new Expr.Arg(new Index.Direct(1 + rnd.nextInt(10)));
+      case 7 -> switch (rnd.nextInt(6)) {
+        case 0 -> new Expr.SysVar(org.robotrun.program.SystemVariables.SUPPORTED.get(rnd.nextInt(2)));
+        case 1 -> new Expr.StringReg(srItem());
+        case 2 -> new Expr.StringFunc(Expr.StringFn.STRLEN, java.util.List.of(new Expr.StringReg(srItem())));
+        case 3 -> new Expr.StringFunc(Expr.StringFn.SUBSTR, java.util.List.of(new Expr.StringReg(srItem()),
+            new Expr.IntConst(1 + rnd.nextInt(5)), new Expr.Register(direct())));
+        case 4 -> new Expr.StringFunc(Expr.StringFn.FINDSTR, java.util.List.of(new Expr.StringReg(srItem()),
+            new Expr.StringConst("AB" + rnd.nextInt(10))));
+        default -> new Expr.Arg(new Index.Direct(1 + rnd.nextInt(10)));
+      };
       case 8 -> new Expr.Unary(Expr.UnaryOp.values()[rnd.nextInt(2)], expr(depth - 1));
       case 9 -> new Expr.Group(expr(depth - 1));
       default -> new Expr.Binary(Expr.BinaryOp.values()[rnd.nextInt(Expr.BinaryOp.values().length)], expr(depth - 1), expr(depth - 1));
@@ -215,7 +223,7 @@ class LsRandomProgramsTest {
   }
 
   private Instruction statement() {
-    return switch (rnd.nextInt(25)) {
+    return switch (rnd.nextInt(26)) {
       case 0 -> new Instruction.AssignRegister(item(), expr(3));
       case 1 -> new Instruction.AssignPosReg(item(), switch (rnd.nextInt(6)) {
         case 0 -> new Instruction.FromPosReg(item());
@@ -249,8 +257,14 @@ class LsRandomProgramsTest {
       case 21 -> new Instruction.SetOverride(rnd.nextBoolean() ? new Expr.IntConst(1 + rnd.nextInt(100)) : new Expr.Register(direct()));
       case 22 -> new Instruction.Blank();
       case 23 -> new Instruction.SetSysVar(org.robotrun.program.SystemVariables.SUPPORTED.get(rnd.nextInt(2)), expr(1));
+      case 24 -> new Instruction.AssignString(srItem(), rnd.nextBoolean() ? new Expr.StringConst("PART_" + rnd.nextInt(100))
+          : expr(2));
       default -> new Instruction.Label(1 + nextLabel(), comment());
     };
+  }
+
+  private Item srItem() {
+    return new Item(new Index.Direct(1 + rnd.nextInt(25)), comment());
   }
 
   private int labelCounter;

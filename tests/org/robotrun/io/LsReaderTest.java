@@ -172,7 +172,7 @@ class LsReaderTest {
         "t.ls:9: expected TO or DOWNTO in FOR, found 'UNTIL'",
         "t.ls:10: not supported: RUN (multitasking) (the line alarms when it runs)",
         "t.ls:12: expected '(sec)' after the wait time, found end of line",
-        "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO or F)",
+        "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)",
         "t.ls:15: expected ';' at the end of the line",
         "t.ls:16: warning: not supported: motion option FROBNICATE (the motion runs without it)",
         "t.ls:17: CNT120: expected 0..100",
@@ -202,15 +202,54 @@ class LsReaderTest {
   }
 
   @Test
+  void timeBeforeAndAfterWithAnOutputAreRunOthersAreKept() {
+    LsReadResult r = mn(String.join("\n",
+        "   1:L P[1] 100mm/sec CNT100 TB    .20sec,DO[3:VAC]=ON    ;",
+        "   2:L P[1] 100mm/sec FINE TA   0.50sec,RO[1]=PULSE,0.3sec    ;",
+        "   3:L P[1] 100mm/sec FINE TB   0.50sec,CALL X    ;",
+        "   4:L P[1] 100mm/sec FINE TIME AFTER 1.0sec,GO[2]=R[4]    ;",
+        "   5:L P[1] 100mm/sec CNT50 DB   10.0mm,DO[5]=OFF    ;",
+        "   6:L P[1] 100mm/sec CNT50 DB   10.0mm,CALL X    ;",
+        ""));
+    assertThat(((Motion.TimedAction) ((Instruction.Move) r.program().line(5)).options().get(0)).when())
+        .isEqualTo(Motion.When.DISTANCE_BEFORE);
+    assertThat(((Instruction.Move) r.program().line(6)).options().get(0)).isInstanceOf(Motion.RawOption.class);
+    Instruction.Move m1 = (Instruction.Move) r.program().line(1);
+    assertThat(m1.options()).containsExactly(new Motion.TimedAction(Motion.When.TIME_BEFORE, 0.2,
+        new Instruction.SetIo(org.robotrun.program.IoKind.DO, org.robotrun.program.Item.of(3, "VAC"), new Expr.OnOff(true)),
+        "TB    .20sec,DO[3:VAC]=ON"));
+    Motion.TimedAction ta = (Motion.TimedAction) ((Instruction.Move) r.program().line(2)).options().get(0);
+    assertThat(ta.when()).isEqualTo(Motion.When.TIME_AFTER);
+    assertThat(ta.action()).isInstanceOf(Instruction.Pulse.class);
+    assertThat(((Instruction.Move) r.program().line(3)).options().get(0)).isInstanceOf(Motion.RawOption.class);
+    assertThat(((Instruction.Move) r.program().line(4)).options().get(0)).isInstanceOf(Motion.TimedAction.class);
+    // only the CALL action is reported (it is not run); the line comes back as written
+    assertThat(messages(r)).filteredOn(m -> m.contains("not supported")).containsExactly(
+        "t.ls:6: warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)",
+        "t.ls:9: warning: not supported: DISTANCE BEFORE (DB) (the motion runs without it)");
+    assertThat(LsWriter.write(r.program().withoutSource())).contains("   1:L P[1] 100mm/sec CNT100 TB    .20sec,DO[3:VAC]=ON    ;");
+  }
+
+  @Test
+  void offsetConditionWithAUserFrameIsReadAndWrittenBack() {
+    LsReadResult r = mn("   1:  OFFSET CONDITION PR[3:SHIFT],UFRAME[2] ;\n   2:  OFFSET CONDITION PR[3],UFRAME[R[4]] ;\n");
+    assertThat(r.diagnostics()).isEmpty();
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.OffsetCondition(org.robotrun.program.Item.of(3, "SHIFT"),
+        java.util.Optional.of(org.robotrun.program.Index.of(2))));
+    String fresh = LsWriter.write(r.program().withoutSource());
+    assertThat(fresh).contains("   1:  OFFSET CONDITION PR[3:SHIFT],UFRAME[2] ;").contains("OFFSET CONDITION PR[3],UFRAME[R[4]] ;");
+  }
+
+  @Test
   void unsupportedStatementsAreNamedNotDropped() {
     for (String[] c : new String[][] {
         {"RUN SUB1", "not supported: RUN (multitasking) (the line alarms when it runs)"},
         {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
-        {"SR[1]=R[1]", "not supported: string registers SR[] (the line alarms when it runs)"},
-        {"AO[1]=5", "not supported: analog output AO[] (the line alarms when it runs)"},
-        {"OFFSET CONDITION PR[1],UFRAME[2]", "not supported: OFFSET CONDITION with a frame (the line alarms when it runs)"},
+        {"LOCK PREG", "warning: not supported: LOCK PREG (the line is skipped when it runs)"},
+        {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
+        {"TOOL_OFFSET CONDITION PR[2]", "not supported: TOOL_OFFSET CONDITION (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},

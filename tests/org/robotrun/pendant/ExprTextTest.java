@@ -50,10 +50,27 @@ class ExprTextTest {
   }
 
   @Test
+  void theControllersConditionCountsAreEnforced() throws Exception {
+    // five conditions in a standard instruction, twenty in a mixed-logic one
+    String five = String.join(" AND ", java.util.Collections.nCopies(5, "DI[1]=ON"));
+    assertThat(ExprText.parse(five)).isInstanceOf(Expr.Binary.class);
+    assertThatThrownBy(() -> ExprText.parse(five + " AND DI[2]=ON"))
+        .hasMessageStartingWith("The controller takes at most 5 conditions joined by AND/OR");
+    String twenty = "(" + String.join(" OR ", java.util.Collections.nCopies(20, "!DI[1]")) + ")";
+    assertThat(ExprText.parse(twenty)).isInstanceOf(Expr.Group.class);
+    assertThatThrownBy(() -> ExprText.parse("(" + twenty.substring(1, twenty.length() - 1) + " AND R[1]>2)"))
+        .hasMessageContaining("at most 20 conditions in one mixed-logic instruction, this one has 21");
+    // a file holding such a line reads, with check's warning (the pendant's refusal, kind style)
+    var r = org.robotrun.io.LsReader.parse("W.LS", "/PROG  W\n/MN\n   1:  WAIT " + five + " AND DI[2]=ON    ;\n/POS\n/END\n");
+    assertThat(r.hasAnyError()).isFalse();
+    assertThat(r.diagnostics()).anyMatch(d -> d.message().contains("at most 5 conditions") && d.message().endsWith("(a pendant refuses this entry)"));
+  }
+
+  @Test
   void badTextSaysWhereAndWhat() {
-    assertThatThrownBy(() -> ExprText.parse("R[1]+")).hasMessage("column 6: expected a value, found end of text");
-    assertThatThrownBy(() -> ExprText.parse("R[1] R[2]")).hasMessageStartingWith("column 6: expected end of expression");
-    assertThatThrownBy(() -> ExprText.parse("X[1]")).hasMessageStartingWith("column 1: expected a number, ON/OFF");
+    assertThatThrownBy(() -> ExprText.parse("R[1]+")).hasMessageStartingWith("column 6: expected a value (").hasMessageEndingWith("found end of line");
+    assertThatThrownBy(() -> ExprText.parse("R[1] R[2]")).hasMessageStartingWith("column 6: expected the end of the expression");
+    assertThatThrownBy(() -> ExprText.parse("X[1]")).hasMessageStartingWith("column 1: expected a value (number, R[i]");
     assertThatThrownBy(() -> ExprText.parse("(R[1]>2")).hasMessageStartingWith("column 8: expected ')'");
   }
 

@@ -170,7 +170,7 @@ class PendantNumberEntryTest {
   void editFieldsRefuseWhatTheLsReaderRefuses() throws ExprText.BadText {
     Instruction wait = new Instruction.WaitTime(new Expr.RealConst(1));
     assertThatThrownBy(() -> type(wait, 1, "-1")).hasMessage("WAIT -1: out of range, enter 0 or more (sec) or R[i]");
-    assertThatThrownBy(() -> type(wait, 1, "1" + "0".repeat(400) + ".0")).hasMessageContaining("at most 308 digits");
+    assertThatThrownBy(() -> type(wait, 1, "1" + "0".repeat(400) + ".0")).hasMessageContaining("is too large");
     assertThat(type(wait, 1, "2.5")).isEqualTo(new Instruction.WaitTime(new Expr.RealConst(2.5)));
 
     Instruction override = new Instruction.SetOverride(new Expr.IntConst(50));
@@ -184,7 +184,8 @@ class PendantNumberEntryTest {
     assertThat(type(loop, 3, "-2")).isEqualTo(new Instruction.For(Item.of(1), new Expr.IntConst(-2), false, new Expr.IntConst(3)));
 
     Instruction assign = new Instruction.AssignRegister(Item.of(1), new Expr.IntConst(0));
-    assertThatThrownBy(() -> type(assign, 2, "'A'")).hasMessageContaining("only as a CALL argument");
+    // a string is a value since SR[] runs (SR[1]='A'), but not one R[] holds: refused as the .LS reader refuses it
+    assertThatThrownBy(() -> type(assign, 2, "'A'")).hasMessageContaining("R[] holds a number, not a string constant");
 
     Instruction pulse = new Instruction.Pulse(IoKind.DO, Item.of(1), OptionalDouble.of(0.5));
     assertThatThrownBy(() -> type(pulse, 3, "NaN")).hasMessage("Pulse width NaN: not a number, enter a number above 0");

@@ -42,7 +42,7 @@ class GoldenProgramsTest {
   private static final double TOLERANCE = 1e-6;
 
   private static final Pattern REGISTER = Pattern.compile("R\\[(\\d+)]=(-?[\\d.]+)");
-  private static final Pattern PORT = Pattern.compile("(DI|DO|RI|RO|GI|GO|F)\\[(\\d+)]=(ON|OFF|-?\\d+)");
+  private static final Pattern PORT = Pattern.compile("([A-Z]{1,2})\\[(\\d+)]=(ON|OFF|-?\\d+)");
   private static final Pattern PR_ELEMENT = Pattern.compile("PR\\[(\\d+),(\\d)]=(-?[\\d.]+)");
   private static final Pattern TIMER = Pattern.compile("TIMER\\[(\\d+)]=([\\d.]+)");
   private static final Pattern KEY = Pattern.compile("(outcome|alarm|alarm_line|motions|uframe|utool|override|message)=(.*)");

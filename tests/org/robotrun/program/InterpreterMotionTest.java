@@ -1,6 +1,7 @@
 package org.robotrun.program;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 import static org.robotrun.program.Tp.call;
 import static org.robotrun.program.Tp.comment;
 import static org.robotrun.program.Tp.joint;
@@ -326,6 +327,28 @@ class InterpreterMotionTest {
     assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
     assertThat(rig.port.requests().get(0).offset()).contains(shift);
     assertThat(rig.port.requests().get(1).offset()).isEmpty();
+  }
+
+  @Test
+  void anOffsetInAnotherUserFrameIsTurnedIntoTheMotionsFrame() {
+    // UFRAME[2] is turned 90 deg about Z: its +X is the world's +Y. The motion runs in UFRAME 0.
+    Position.Cartesian along2x = new Position.Cartesian(10, 0, 0, 0, 0, 0, Config.DEFAULT);
+    Program p = progWithPositions("OFU", 1,
+        new Instruction.OffsetCondition(Item.of(4), java.util.Optional.of(Index.of(2))),
+        lin(1, new Motion.Offset()),
+        new Instruction.OffsetCondition(Item.of(4), java.util.Optional.of(Index.of(0))),
+        lin(1, new Motion.Offset()));
+    Rig rig = new Rig(p);
+    rig.port.setFrame(Instruction.FrameKind.USER, 2, new Position.Cartesian(500, 0, 0, 0, 0, 90, Config.DEFAULT));
+    rig.regs.setPosition(4, along2x);
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    Position.Cartesian first = (Position.Cartesian) rig.port.requests().get(0).offset().orElseThrow();
+    assertThat(first.xMm()).isCloseTo(0, within(1e-9));
+    assertThat(first.yMm()).isCloseTo(10, within(1e-9));
+    assertThat(first.zMm()).isCloseTo(0, within(1e-9));
+    assertThat(first.rDeg()).isCloseTo(0, within(1e-9));
+    // in the motion's own frame (UFRAME[0] here) the offset is the PR as it is
+    assertThat(rig.port.requests().get(1).offset()).contains(along2x);
   }
 
   @Test

@@ -181,6 +181,50 @@ class ProgramMotionTest {
   }
 
   @Test
+  void timeBeforeTimeAfterAndDistanceBeforeSetTheirOutputsAtTheRightMoment() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE",
+        "L P[3:B] 100mm/sec FINE TB 1.00sec,DO[1]=ON", "L P[2:A] 100mm/sec FINE TA .50sec,DO[2]=ON",
+        "WAIT 1.00(sec)", "L P[3:B] 100mm/sec FINE DB 50.0mm,DO[3]=ON", "R[1]=1"));
+    c.run("FORMS", 1, true);
+    double doneB = -1;
+    double on1 = -1;
+    double doneA = -1;
+    double on2 = -1;
+    Vec3 at3 = null;
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+      double t = sim.timeSec();
+      int line = c.status().line();
+      if (on1 < 0 && c.registers().bit(IoKind.DO, 1)) {
+        on1 = t;
+      }
+      if (doneB < 0 && line == 4) {
+        doneB = t;
+      }
+      if (doneA < 0 && line == 5) {
+        doneA = t;
+      }
+      if (on2 < 0 && c.registers().bit(IoKind.DO, 2)) {
+        on2 = t;
+      }
+      if (at3 == null && c.registers().bit(IoKind.DO, 3)) {
+        at3 = c.tcpInWorld().position();
+      }
+    }
+    // DO[3] turns on as the TCP comes within 50 mm of B (straight line), to within one tick's travel
+    assertThat(at3).isNotNull();
+    assertThat(at3.distanceTo(B)).isCloseTo(50, org.assertj.core.data.Offset.offset(100 * sim.tickSec() + 0.01));
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.registers().number(1)).isEqualTo(1);
+    double tick = sim.tickSec();
+    // DO[1] turns on one second before the arm reaches B; DO[2] half a second after it is back at A
+    assertThat(doneB - on1).isCloseTo(1.0, org.assertj.core.data.Offset.offset(2 * tick + 0.01));
+    assertThat(on2 - doneA).isCloseTo(0.5, org.assertj.core.data.Offset.offset(2 * tick + 0.01));
+  }
+
+  @Test
   void moveToGoesToATaughtPosition() {
     Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
     Controller c = sim.controllers().get(0);
