@@ -286,7 +286,9 @@ public final class GuiCommand implements Callable<Integer> {
       cell = join(loading);
       ws = wsLoading == null ? null : join(wsLoading);
     } catch (RuntimeException e) {
-      w.close();
+      if (reuse == null) {
+        w.close();  // a reused window is the caller's to close
+      }
       throw e;
     }
     Simulation sim = cell.sim();
