@@ -378,6 +378,9 @@ public final class GuiCommand implements Callable<Integer> {
       bench.addSection(org.robotrun.ui.RobotSelector.TITLE, selector::drawContents);
     }
     bench.addSection(OperatorPanel.TITLE, new OperatorPanel(selector)::drawContents);
+    // the PLC panel follows the robot the selector chose (each robot has its own UOP)
+    bench.addSection(org.robotrun.ui.PlcPanel.TITLE,
+        new org.robotrun.ui.PlcPanel(() -> sim.controllers().get(selector.selected()))::drawContents);
     PendantKeyboard keyboard = new PendantKeyboard(selector);
     // Keys held on the robot left behind are let go before the pendant changes hands.
     selector.onBeforeSwitch(() -> {

@@ -34,6 +34,8 @@ import org.robotrun.program.Program;
 import org.robotrun.sim.Controller;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.HeadlessRun;
+import org.robotrun.sim.ProductionRun;
+import org.robotrun.world.ProductionSetup;
 import org.robotrun.sim.Simulation;
 import org.robotrun.sim.TraceWriter;
 import picocli.CommandLine.Command;
@@ -51,6 +53,9 @@ import picocli.CommandLine.Option;
       "A cell of several robots runs every robot's main program at once (the first robot's is --program), all robots "
           + "in one 4 ms tick; wired outputs reach their inputs the next tick; the run ends when all have ended or at "
           + "the first alarm on any robot. The report has one entry per robot and the cell's cycle time.",
+      "A scenario whose production setup has \"runStartsFromPlc\" is started by its PLC sequence through the UOP "
+          + "signals instead (docs/production.md): robot 1 runs what its PLC starts; the run ends when the sequence is "
+          + "done and no program runs.",
       "With --workspace DIR|FILE.zip they come from a workspace or a hand-in (docs/workspace.md), as the window would run them.",
       "Without --scenario the default cell is used: the default robot at HOME (J5 = -90 deg), UTOOL[1] a 100 mm "
           + "pointer along the flange z axis, UFRAME[1] = WORLD, both active; RO[1] closes the gripper and RI[1] "
@@ -119,6 +124,8 @@ public final class RunCommand implements Callable<Integer> {
     }
     Simulation sim;
     Scenario cell = null;
+    // a production setup may say the run starts from its PLC sequence (docs/production.md)
+    java.util.Optional<ProductionSetup.Robot> plcStart = java.util.Optional.empty();
     List<Path> programFiles = new ArrayList<>();
     List<Program> fromWorkspace = new ArrayList<>();
     WorkspaceSession session = null;
@@ -159,7 +166,8 @@ public final class RunCommand implements Callable<Integer> {
       programFiles.addAll(sc.programs());
       programFiles.addAll(sc.robots().get(0).programs());
       cell = sc;
-      if (program == null) {
+      plcStart = sc.production().of(sc.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
+      if (program == null && plcStart.isEmpty()) {
         program = sc.robots().get(0).mainProgram().or(sc::mainProgram).orElse(null);
         if (program == null && sc.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
           throw new UserError("--program: name the program to run (the scenario " + scenario + " names no main program)");
@@ -204,6 +212,13 @@ public final class RunCommand implements Callable<Integer> {
         toRun.put(other, main);
       }
     }
+    java.util.Optional<ProductionSetup.Robot> fromPlc = plcStart;
+    if (fromPlc.isPresent()) {
+      List<String> bad = ProductionRun.check(c.name(), fromPlc.get(), c);
+      if (!bad.isEmpty()) {
+        throw new UserError(scenario + ": " + String.join("; ", bad));
+      }
+    }
 
     WallClock clock = WallClock.start(maxWallSeconds);
     String wallReason = "stopped after --max-wall-seconds " + WallClock.format(maxWallSeconds) + " s of real time";
@@ -216,12 +231,14 @@ public final class RunCommand implements Callable<Integer> {
           Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
           TraceWriter tw = new TraceWriter(w, sim.controllers());
           tw.write(sim);
-          result[0] = HeadlessRun.runCell(sim, toRun, maxSimSeconds, tw::write, clock::expired, wallReason);
+          result[0] = fromPlc.isPresent() ? ProductionRun.run(sim, c, maxSimSeconds, tw::write, clock::expired, wallReason)
+              : HeadlessRun.runCell(sim, toRun, maxSimSeconds, tw::write, clock::expired, wallReason);
           w.flush();
         });
       } else {
         Consumer<Simulation> none = s -> {};
-        result[0] = HeadlessRun.runCell(sim, toRun, maxSimSeconds, none, clock::expired, wallReason);
+        result[0] = fromPlc.isPresent() ? ProductionRun.run(sim, c, maxSimSeconds, none, clock::expired, wallReason)
+            : HeadlessRun.runCell(sim, toRun, maxSimSeconds, none, clock::expired, wallReason);
       }
     } catch (IllegalArgumentException e) {
       throw new UserError(e.getMessage());

@@ -81,6 +81,75 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
+  public java.util.Map<String, String> programStates() {
+    java.util.Map<String, String> out = new java.util.TreeMap<>();
+    for (org.robotrun.sim.BgLogic.Slot s : controller.bgLogic().slots()) {
+      if (s.running()) {
+        out.put(s.program(), "BG");
+      }
+    }
+    org.robotrun.sim.ExecutionStatus main = controller.status();
+    if (main.state() == org.robotrun.sim.ExecutionStatus.State.RUNNING
+        || main.state() == org.robotrun.sim.ExecutionStatus.State.PAUSED) {
+      out.put(main.program(), main.state().name());
+    }
+    for (org.robotrun.sim.Tasks.Task t : controller.tasks().list()) {
+      out.put(t.program(), t.status().state().name());
+    }
+    return out;
+  }
+
+  @Override
+  public List<TaskInfo> tasks() {
+    List<TaskInfo> out = new java.util.ArrayList<>();
+    org.robotrun.sim.ExecutionStatus main = controller.status();
+    if (main.state() == org.robotrun.sim.ExecutionStatus.State.RUNNING
+        || main.state() == org.robotrun.sim.ExecutionStatus.State.PAUSED) {
+      out.add(new TaskInfo(main.program(), main.state().name(), main.line(), true));
+    }
+    for (org.robotrun.sim.Tasks.Task t : controller.tasks().list()) {
+      out.add(new TaskInfo(t.program(), t.status().state().name(), t.status().line(), false));
+    }
+    return out;
+  }
+
+  @Override
+  public Result pauseTask(String program, boolean pause) {
+    boolean found = pause ? controller.tasks().pause(program) : controller.tasks().resume(program);
+    return found ? Result.ok() : Result.refused(program + " is not a running task");
+  }
+
+  @Override
+  public Result abortTask(String program) {
+    return controller.tasks().abort(program) ? Result.ok() : Result.refused(program + " is not a running task");
+  }
+
+  @Override
+  public List<BgSlot> bgSlots() {
+    return controller.bgLogic().slots().stream().map(s -> new BgSlot(s.program(), s.running())).toList();
+  }
+
+  @Override
+  public Result addBg(String program) {
+    return controller.bgLogic().add(program).<Result>map(Result::refused).orElse(Result.ok());
+  }
+
+  @Override
+  public Result runBg(String program, boolean run) {
+    return controller.bgLogic().setRunning(program, run).<Result>map(Result::refused).orElse(Result.ok());
+  }
+
+  @Override
+  public Result removeBg(String program) {
+    return controller.bgLogic().remove(program) ? Result.ok() : Result.refused(program + " is not in a BG Logic slot");
+  }
+
+  @Override
+  public void tpEnableChanged(boolean on) {
+    controller.uop().setTpEnabled(on);
+  }
+
+  @Override
   public String comment(CommentTable table, int index) {
     return controller.registerComment(table.name(), index);
   }

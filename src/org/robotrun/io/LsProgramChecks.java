@@ -69,7 +69,8 @@ final class LsProgramChecks {
         if (!target.equalsIgnoreCase(self) && !known.test(target)) {
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
               (lines.get(i) instanceof Instruction.MacroCall ? "macro "
-                  : lines.get(i) instanceof Instruction.Monitor ? "MONITOR " : "CALL ") + target + ": no program named "
+                  : lines.get(i) instanceof Instruction.Monitor ? "MONITOR "
+                  : lines.get(i) instanceof Instruction.Run ? "RUN " : "CALL ") + target + ": no program named "
                   + target + " is known"));
         }
       }
@@ -91,6 +92,10 @@ final class LsProgramChecks {
     }
     if (in instanceof Instruction.Monitor mo) {
       return Optional.of(new Instruction.Call(mo.program(), List.of()));
+    }
+    if (in instanceof Instruction.Run r) {
+      // RUN names a program as CALL does (it starts it as a task)
+      return Optional.of(new Instruction.Call(r.program(), r.args()));
     }
     return b.filter(x -> x instanceof Instruction.Call).map(x -> (Instruction.Call) x);
   }

@@ -357,6 +357,13 @@ public final class LsWriter {
       case Instruction.Label l -> sb.append("LBL[").append(l.number()).append(comment(l.comment())).append(']');
       case Instruction.Jump j -> branch(j, sb);
       case Instruction.Call c -> branch(c, sb);
+      case Instruction.Run r -> {
+        sb.append("RUN ");
+        // the name and arguments as a CALL writes them
+        StringBuilder call = new StringBuilder();
+        branch(new Instruction.Call(r.program(), r.args()), call);
+        sb.append(call, "CALL ".length(), call.length());
+      }
       case Instruction.End e -> sb.append("END");
       case Instruction.Pause p -> sb.append("PAUSE");
       case Instruction.Abort a -> sb.append("ABORT");

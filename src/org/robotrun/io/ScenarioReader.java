@@ -32,6 +32,7 @@ import org.robotrun.world.ToolIo;
 import org.robotrun.world.EndEffectorType;
 import org.robotrun.world.ObjectKind;
 import org.robotrun.world.Rgb;
+import org.robotrun.world.ProductionSetup;
 import org.robotrun.world.RobotSetup;
 import org.robotrun.world.Scenario;
 import org.robotrun.world.Wiring;
@@ -71,7 +72,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision", "state", "mode", "wiring");
+      "onCollision", "state", "mode", "wiring", "production");
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
       "io", "userAlarms", "programs", "mainProgram");
   /** Highest UALM[i] a scenario may give a text for. */
@@ -172,6 +173,7 @@ public final class ScenarioReader {
           .orElse(CollisionResponse.ALARM);
       Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
       Wiring wiring = WiringJson.read(this, top, robots);
+      ProductionSetup production = ProductionJson.read(top, file, robots.stream().map(RobotSetup::name).toList(), errors::add);
       SavedState state = null;
       LocatedJson stateJson = top.members().get("state");
       if (stateJson instanceof JObject so) {
@@ -185,7 +187,8 @@ public final class ScenarioReader {
       }
       try {
         return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
-            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode).withWiring(wiring),
+            mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode).withWiring(wiring)
+                .withProduction(production),
             Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.

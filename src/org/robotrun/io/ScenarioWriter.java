@@ -149,6 +149,7 @@ public final class ScenarioWriter {
         number(g, "pitchDeg", Math.toDegrees(c.pitchRad()));
         g.writeEndObject();
       }
+      ProductionJson.write(g, s.production());
       if (state.isPresent()) {
         StateJson.write(g, state.get());
       }

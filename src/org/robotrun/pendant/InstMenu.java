@@ -149,7 +149,9 @@ final class InstMenu {
           Template.of("MONITOR END ...", new Instruction.Monitor("MAIN", true)),
           Template.of("WHEN ...,CALL ... (condition program)", new Instruction.When(
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)),
-              new Instruction.Call("MAIN", List.of()))))));
+              new Instruction.Call("MAIN", List.of()))))),
+      new Category("Multiple control", List.of(
+          Template.of("RUN program", new Instruction.Run("MAIN", List.of())))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",

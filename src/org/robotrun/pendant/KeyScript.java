@@ -25,6 +25,7 @@ import java.util.function.Consumer;
  * ESTOP / ESTOP PANEL       the pendant's / the operator panel's E-stop pressed
  * RELEASE ESTOP             both E-stops twisted out (RESET then clears the alarm)
  * CYCLE START               the operator panel's CYCLE START (AUTO, TP off)
+ * UI[6] ON / DI[3] OFF      a PLC input set (the PLC panel): UOP inputs UI[1..18] and DI[]
  * ROBOT 2 / ROBOT robot2    drive another robot of the cell (by number from 1 or by name): its
  *                           own pendant, as the robot selector in the window
  * WAIT 2.5                  2.5 s of simulated time
@@ -78,6 +79,9 @@ public final class KeyScript {
     /** CYCLE START on the operator panel. */
     record CycleStart(int line) implements Step {}
 
+    /** A PLC input set by hand: {@code UI[6] ON}, {@code DI[3] OFF} (the PLC panel). */
+    record Input(int line, org.robotrun.program.IoKind kind, int index, boolean on) implements Step {}
+
     /** Switch to another robot's pendant: a number from 1 or a robot name. */
     record SelectRobot(int line, String robot) implements Step {}
   }
@@ -103,6 +107,8 @@ public final class KeyScript {
   public static final double MAX_TOTAL_WAIT_SEC = 4 * 3600;
 
   private final List<Step> steps;
+  /** {@code UI[6] ON}: an input the PLC drives, set by hand. */
+  private static final java.util.regex.Pattern INPUT = java.util.regex.Pattern.compile("(UI|DI)\\[(\\d{1,4})\\]\\s+(ON|OFF)");
 
   private KeyScript(List<Step> steps) {
     this.steps = List.copyOf(steps);
@@ -123,6 +129,17 @@ public final class KeyScript {
       String raw = lines.get(i);
       String t = raw.strip();
       if (t.isEmpty() || t.startsWith("#")) {
+        continue;
+      }
+      java.util.regex.Matcher io = INPUT.matcher(t.toUpperCase(Locale.ROOT));
+      if (io.matches()) {
+        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(io.group(1));
+        int index = Integer.parseInt(io.group(2));
+        int size = org.robotrun.program.IoRanges.DEFAULT.size(kind);
+        if (index < 1 || index > size) {
+          return bad(file, n, kind + "[" + index + "]: index out of range (expected 1.." + size + ")");
+        }
+        steps.add(new Step.Input(n, kind, index, io.group(3).equals("ON")));
         continue;
       }
       String word = t.split("\\s+", 2)[0].toUpperCase(Locale.ROOT);
@@ -245,7 +262,8 @@ public final class KeyScript {
           }
           if (k.isEmpty()) {
             return bad(file, n, "unknown key or command '" + keyText + "' (keys: F1..F5, ENTER, SHIFT+FWD, +X/J1...;"
-                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, WAIT, SHOW)");
+                + " commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, UI[i] ON/OFF, DI[i] ON/OFF, "
+                + "WAIT, SHOW)");
           }
           steps.add(new Step.Tap(n, k.get(), shift, times));
         }
@@ -362,6 +380,7 @@ public final class KeyScript {
         case Step.Estop e -> pendant.emergencyStop(e.fromPendant());
         case Step.ReleaseEstop r -> pendant.releaseEmergencyStop();
         case Step.CycleStart c -> pendant.cycleStart();
+        case Step.Input in -> pendant.control().registers().setBit(in.kind(), in.index(), in.on());
         case Step.SelectRobot r -> {
           int k = robotIndex(r.robot(), robots);
           if (k < 0) {

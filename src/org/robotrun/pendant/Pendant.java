@@ -49,6 +49,8 @@ public final class Pendant {
   final JogFrameScreen jogFrameScreen = new JogFrameScreen();
   final AlarmScreen alarmScreen = new AlarmScreen();
   final UserScreen userScreen = new UserScreen();
+  final TaskScreen taskScreen = new TaskScreen();
+  final BgLogicScreen bgLogicScreen = new BgLogicScreen();
 
   private Screen screen = selectScreen;
   private final Deque<Screen> history = new ArrayDeque<>();
@@ -78,6 +80,7 @@ public final class Pendant {
   public Pendant(RobotControl control, LineParser lineParser) {
     this.control = Objects.requireNonNull(control, "control");
     this.lineParser = Objects.requireNonNull(lineParser, "lineParser");
+    control.tpEnableChanged(tpEnabled);
   }
 
   /** A pendant without a TP line parser. */
@@ -172,6 +175,7 @@ public final class Pendant {
       holdToRun("TP disabled");
     }
     tpEnabled = on;
+    control.tpEnableChanged(on);
     message = on ? "TP enabled" : "TP disabled";
   }
 
@@ -506,7 +510,8 @@ public final class Pendant {
   private String seenJogStop = "";
 
   private void menu() {
-    List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm", "USER");
+    List<String> items = List.of("SELECT", "EDIT", "DATA", "I/O", "SETUP Frames", "POSITION", "STATUS Alarm", "USER",
+        "SETUP BG Logic", "STATUS Program");
     choose("MENU", items, i -> {
       switch (i) {
         case 0 -> show(selectScreen);
@@ -516,7 +521,9 @@ public final class Pendant {
         case 4 -> show(frameScreen);
         case 5 -> show(posnScreen);
         case 6 -> show(alarmScreen);
-        default -> show(userScreen);
+        case 7 -> show(userScreen);
+        case 8 -> show(bgLogicScreen);
+        default -> show(taskScreen);
       }
     });
   }

@@ -350,6 +350,60 @@ public interface RobotControl {
    */
   void advance(double dtSec);
 
+  // ---- tasks and UOP (defaults: a controller without them) -------------------------------------
+
+  /**
+   * What runs now, by program: "RUNNING" or "PAUSED" for the main program and every RUN task,
+   * "BG" for a running background logic program (the SELECT screen marks them).
+   */
+  default java.util.Map<String, String> programStates() {
+    return java.util.Map.of();
+  }
+
+  /** One line of STATUS Program: a running program, its state ("RUNNING", "PAUSED") and line. */
+  record TaskInfo(String program, String state, int line, boolean main) {}
+
+  /** The main program and the RUN tasks, main first (STATUS Program). */
+  default List<TaskInfo> tasks() {
+    return List.of();
+  }
+
+  /** PAUSE (true) or resume (false) one RUN task. */
+  default Result pauseTask(String program, boolean pause) {
+    return Result.refused("this controller has no multitasking");
+  }
+
+  /** ABORT one RUN task. */
+  default Result abortTask(String program) {
+    return Result.refused("this controller has no multitasking");
+  }
+
+  /** One BG Logic slot (SETUP BG Logic). */
+  record BgSlot(String program, boolean running) {}
+
+  default List<BgSlot> bgSlots() {
+    return List.of();
+  }
+
+  /** Puts a program in the next BG Logic slot (refused with the controller's reason). */
+  default Result addBg(String program) {
+    return Result.refused("this controller has no BG Logic");
+  }
+
+  /** START (true) or STOP (false) a BG Logic slot. */
+  default Result runBg(String program, boolean run) {
+    return Result.refused("this controller has no BG Logic");
+  }
+
+  /** Removes a program from its BG Logic slot. */
+  default Result removeBg(String program) {
+    return Result.refused("this controller has no BG Logic");
+  }
+
+  /** The pendant's TP ENABLE switch changed (the controller's UOP outputs TPENBL and needs it off for CMDENBL). */
+  default void tpEnableChanged(boolean on) {
+  }
+
   /** Outcome of a command the controller may refuse. */
   sealed interface Result {
     /** Done (or started), with an optional message for the prompt line. */

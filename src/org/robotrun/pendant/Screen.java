@@ -9,7 +9,7 @@ import java.util.List;
  */
 public sealed interface Screen
     permits SelectScreen, EditScreen, PositionScreen, DataScreen, IoScreen, PosnScreen, FrameScreen, JogFrameScreen, AlarmScreen,
-        UserScreen {
+        UserScreen, TaskScreen, BgLogicScreen {
 
   /** The title row. */
   String title(Pendant p);

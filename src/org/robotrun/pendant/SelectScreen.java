@@ -16,7 +16,8 @@ final class SelectScreen implements Screen {
 
   @Override
   public String title(Pendant p) {
-    return "SELECT" + "   " + p.control().programNames().size() + " programs";
+    long running = p.control().programStates().values().stream().filter(v -> !v.equals("BG")).count();
+    return "SELECT" + "   " + p.control().programNames().size() + " programs" + (running > 1 ? "   " + running + " tasks" : "");
   }
 
   private String selected(Pendant p) {
@@ -39,10 +40,13 @@ final class SelectScreen implements Screen {
     selected(p);
     int top = Math.max(0, Math.min(cursor - Lcd.BODY_ROWS + 1, names.size() - Lcd.BODY_ROWS));
     top = Math.max(0, Math.min(top, cursor));
+    java.util.Map<String, String> states = p.control().programStates();
     for (int i = top; i < names.size() && rows.size() < Lcd.BODY_ROWS; i++) {
       Program prog = p.control().program(names.get(i)).orElseThrow();
+      // a running task, a paused one or a BG logic program is marked as on the controller's list
+      String state = states.get(prog.name());
       rows.add(String.format(Locale.ROOT, "%s%3d %-16s %4d lines  %s", i == cursor ? ">" : " ", i + 1, prog.name(),
-          prog.lineCount(), prog.comment()));
+          prog.lineCount(), state == null ? prog.comment() : "[" + state + "] " + prog.comment()));
     }
     return rows;
   }

@@ -135,6 +135,11 @@ public final class TpLine {
         f.add(Field.fixed("CALL "));
         f.add(callField(c, programs, call -> call));
       }
+      case Instruction.Run r -> {
+        f.add(Field.fixed("RUN "));
+        f.add(callField(new Instruction.Call(r.program(), r.args()), programs,
+            call -> new Instruction.Run(call.program(), call.args())));
+      }
       case Instruction.End e -> f.add(Field.fixed("END"));
       case Instruction.Pause p -> f.add(Field.fixed("PAUSE"));
       case Instruction.Abort a -> f.add(Field.fixed("ABORT"));

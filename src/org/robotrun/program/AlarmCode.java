@@ -55,6 +55,25 @@ public enum AlarmCode {
       "A value is outside what the instruction accepts: OVERRIDE outside 1..100, a frame number outside 0..10, CNT "
           + "outside 0..100, ACC outside 0..150, a speed not above 0; or arithmetic overflowed what a register holds.",
       "Change the value on the line to one inside the range the message shows."),
+  INTP_105("INTP-105", AlarmSeverity.ABORT, "Run request failed", Source.RECALLED,
+      "A program could not be started as a task: RUN (or a UOP start, RSR or PNS) named a program that is already "
+          + "running, that does not exist, or that needs motion group 1 while another task holds it (cause PROG-040).",
+      "Read the cause in the message. Wait until the other task ends (or ABORT it), give a program that only sets "
+          + "I/O and registers no motion group (DEFAULT_GROUP = *,*,*,*,*), or create the program the PLC selects."),
+  PROG_040("PROG-040", AlarmSeverity.WARN, "Already locked by other task", Source.RECALLED,
+      "The cause under INTP-105: motion group 1 is reserved by another running program, so a second program that "
+          + "moves the arm cannot start. Two tasks never move the same arm at once.",
+      "Check the running tasks (SELECT marks them; the PLC panel lists them): end the one that holds the group first, or remove "
+          + "the motion group from the program you RUN."),
+  SIMU_021("SIMU-021", AlarmSeverity.ABORT, "Motion in a task without a group", Source.OWN,
+      "A program whose motion group mask is empty (DEFAULT_GROUP = *,*,*,*,*) reached a motion statement. A "
+          + "controller does not let such a program hold motion lines at all.",
+      "Give the program motion group 1 (and run it when no other task moves the arm), or move the motion lines to "
+          + "the program that owns the arm."),
+  SRVO_037("SRVO-037", AlarmSeverity.SERVO, "IMSTP input (Group:1)", Source.RECALLED,
+      "The PLC turned the UOP input *IMSTP (UI[1], normally ON) off: an immediate stop, as an E-stop from the "
+          + "cell. The arm stopped at once and the program paused.",
+      "Turn UI[1] *IMSTP back on (on the PLC panel or in the PLC program), then FAULT RESET (UI[5]) or RESET."),
   INTP_311("INTP-311", AlarmSeverity.ABORT, "Uninitialized data is used", Source.VERIFIED,
       "The line uses a position P[n] that was never taught (the program's /POS block has no P[n]), or an Offset "
           + "with no OFFSET CONDITION set.",

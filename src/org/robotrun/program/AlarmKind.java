@@ -20,7 +20,8 @@ public enum AlarmKind {
   USER_ALARM(AlarmCode.INTP_213),
   ABORTED(AlarmCode.SIMU_005),
   MOTION(AlarmCode.SIMU_011),
-  NOT_SUPPORTED(AlarmCode.SIMU_012);
+  NOT_SUPPORTED(AlarmCode.SIMU_012),
+  RUN_FAILED(AlarmCode.INTP_105);
 
   private final AlarmCode entry;
 

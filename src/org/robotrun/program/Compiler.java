@@ -97,6 +97,7 @@ final class Compiler {
       case Instruction.Move mv -> "motion";
       case Instruction.Jump j -> "JMP";
       case Instruction.Call c -> "CALL";
+      case Instruction.Run r -> "RUN";
       case Instruction.End e -> "END";
       case Instruction.Pause p -> "PAUSE";
       case Instruction.Abort a -> "ABORT";
@@ -130,6 +131,8 @@ final class Compiler {
       case Instruction.Label l -> new Ops.Nop();
       case Instruction.Jump j -> new Ops.JumpOp(label(j.label()));
       case Instruction.Call c -> call(c);
+      case Instruction.Run r -> r.args().isEmpty() ? new Ops.RunOp(r.program())
+          : new Ops.Fail(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: RUN with arguments");
       case Instruction.End e -> new Ops.EndOp();
       case Instruction.Pause p -> new Ops.PauseOp();
       case Instruction.Abort a -> new Ops.AbortOp();

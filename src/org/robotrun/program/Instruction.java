@@ -186,6 +186,17 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code RUN NAME}: starts program NAME as a task of its own beside this one (multitasking);
+   * this program goes on at once. Arguments are read and kept as written.
+   */
+  record Run(String program, List<Expr> args) implements Instruction {
+    public Run {
+      Objects.requireNonNull(program, "program");
+      args = List.copyOf(args);
+    }
+  }
+
   /** {@code END}: return from a call; at top level ends the program. */
   record End() implements Instruction {}
 

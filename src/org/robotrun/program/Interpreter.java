@@ -132,6 +132,9 @@ public final class Interpreter {
   private final List<String> userScreen = new ArrayList<>();
   private String notice = "";
   private long executedLines;
+  private TaskPort taskPort = TaskPort.NONE;
+  /** Whether this interpreter advances the shared timers (one per controller does; other tasks do not). */
+  private boolean advancesTimers = true;
 
   /** Runs programs from {@code store} on {@code registers}, moving through {@code port}. */
   public Interpreter(ProgramStore store, Registers registers, MotionPort port, InterpreterSettings settings) {
@@ -151,6 +154,23 @@ public final class Interpreter {
   }
 
   // ================================================================ pendant-facing API
+
+  /** Where {@code RUN} sends its requests (the controller's task manager). */
+  public void setTaskPort(TaskPort port) {
+    this.taskPort = Objects.requireNonNull(port, "port");
+  }
+
+  TaskPort taskPort() {
+    return taskPort;
+  }
+
+  /**
+   * A second task of a controller shares the registers with the first, whose interpreter alone
+   * advances TIMER[] each tick (otherwise they would run twice as fast).
+   */
+  public void setAdvancesTimers(boolean on) {
+    this.advancesTimers = on;
+  }
 
   /** Selects the program SHIFT+FWD starts, with the cursor on line 1. Only when no program is active. */
   public void select(String program) {
@@ -399,7 +419,9 @@ public final class Interpreter {
     if (!afterTimers.isEmpty()) {
       advanceTimedActions(dtSec);
     }
-    regs.advanceTimers(dtSec);
+    if (advancesTimers) {
+      regs.advanceTimers(dtSec);
+    }
     if (state == State.RUNNING && !monitors.isEmpty()) {
       try {
         checkMonitors();

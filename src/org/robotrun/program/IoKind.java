@@ -15,7 +15,11 @@ public enum IoKind {
   /** Analog inputs: an integer value (the converter's digital value). */
   AI(false, true),
   /** Analog outputs: a program sets an integer value. */
-  AO(true, true);
+  AO(true, true),
+  /** UOP inputs UI[1..18] (*IMSTP, *HOLD, ... PROD_START): set by the PLC, read by programs (sim.Uop). */
+  UI(false, false),
+  /** UOP outputs UO[1..20] (CMDENBL, SYSRDY, PROGRUN ...): set by the controller, read by programs (sim.Uop). */
+  UO(false, false);
 
   private final boolean writable;
   private final boolean group;

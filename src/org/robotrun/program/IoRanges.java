@@ -39,6 +39,8 @@ public final class IoRanges {
     // Analog ports depend on the boards fitted; RobotRun assumes 64 of each unless a scenario says otherwise.
     s[IoKind.AI.ordinal()] = 64;
     s[IoKind.AO.ordinal()] = 64;
+    s[IoKind.UI.ordinal()] = 18;
+    s[IoKind.UO.ordinal()] = 20;
     return s;
   }
 
@@ -52,6 +54,9 @@ public final class IoRanges {
     for (Map.Entry<String, Integer> e : sizes.entrySet()) {
       IoKind k = kind(e.getKey());
       int n = e.getValue();
+      if (k == IoKind.UI || k == IoKind.UO) {
+        throw new IllegalArgumentException(e.getKey() + ": the UOP signals are fixed (UI 1..18, UO 1..20); they cannot be resized");
+      }
       if (n < 1 || n > MAX_SIZE) {
         throw new IllegalArgumentException(e.getKey() + ": expected a number of ports 1.." + MAX_SIZE + ", got " + n);
       }

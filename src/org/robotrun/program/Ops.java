@@ -498,6 +498,24 @@ final class Ops {
     }
   }
 
+  /** {@code RUN NAME}: asks the controller to start NAME as a task of its own; this program goes on. */
+  static final class RunOp extends Op {
+    final String program;
+
+    RunOp(String program) {
+      this.program = program;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      java.util.Optional<String> refused = m.taskPort().run(program);
+      if (refused.isPresent()) {
+        throw new AlarmSignal(AlarmKind.RUN_FAILED, refused.get());
+      }
+      return NEXT;
+    }
+  }
+
   static final class AbortOp extends Op {
     @Override
     int exec(Interpreter m) {

@@ -36,15 +36,12 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("SKIP", "SKIP CONDITION"),
       Map.entry("OFFSET", "OFFSET CONDITION"),
       Map.entry("TOOL_OFFSET", "TOOL_OFFSET CONDITION"),
-      Map.entry("RUN", "RUN (multitasking)"),
       Map.entry("COL", "COL DETECT"),
       Map.entry("LOCK", "LOCK PREG"),
       Map.entry("UNLOCK", "UNLOCK PREG"),
       Map.entry("VR", "vision registers VR[]"),
       Map.entry("SDI", "SDI[]"),
       Map.entry("SDO", "SDO[]"),
-      Map.entry("UI", "UOP input UI[]"),
-      Map.entry("UO", "UOP output UO[]"),
       Map.entry("WI", "weld input WI[]"),
       Map.entry("WO", "weld output WO[]"),
       Map.entry("JOINT_MAX_SPEED", "JOINT_MAX_SPEED"),
@@ -399,6 +396,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "JMP" -> jump();
       case "CALL" -> call();
+      case "RUN" -> run();
       case "END" -> new Instruction.End();
       case "PAUSE" -> new Instruction.Pause();
       case "ABORT" -> new Instruction.Abort();
@@ -594,6 +592,12 @@ public final class TpStatementParser extends TpTokenCursor {
       expect(Kind.RPAREN, "')' closing the CALL arguments");
     }
     return new Instruction.Call(name.text().toUpperCase(Locale.ROOT), args);
+  }
+
+  /** {@code RUN NAME[(args)]}: starts NAME as a task of its own (multitasking), read like a CALL. */
+  private Instruction run() {
+    Instruction.Call c = (Instruction.Call) call();
+    return new Instruction.Run(c.program(), c.args());
   }
 
   private Instruction.Branch branch() {

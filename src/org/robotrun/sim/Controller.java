@@ -110,6 +110,10 @@ public final class Controller implements MotionPort {
   private double runStartSec = Double.NaN;
   private double lastCycleTimeSec = Double.NaN;
   private Interpreter.State lastState = Interpreter.State.IDLE;
+  /** RUN tasks, background logic and the UOP signals (issue 15), each in its own class. */
+  private final Tasks tasks;
+  private final BgLogic bgLogic;
+  private final Uop uop;
 
   /** Bookkeeping of one started motion. */
   private static final class MoveState {
@@ -158,6 +162,10 @@ public final class Controller implements MotionPort {
     this.runner = new MotionRunner(model, limits, q0, new Events());
     this.jogger = new Jogger(model, limits);
     this.interpreter = new Interpreter(n -> Optional.ofNullable(programs.get(n)), registers, this, settings);
+    this.tasks = new Tasks(this, n -> Optional.ofNullable(programs.get(n)), settings);
+    this.bgLogic = new BgLogic(this, n -> Optional.ofNullable(programs.get(n)), settings);
+    this.uop = new Uop(this);
+    interpreter.setTaskPort(tasks::run);
   }
 
   public String name() {
@@ -178,7 +186,10 @@ public final class Controller implements MotionPort {
     if (defaultGripperIo) {
       gripper.tick(registers, dtSec);
     }
+    uop.tick(dtSec);
     Outcome o = interpreter.tick(dtSec);
+    tasks.tick(dtSec);
+    bgLogic.tick(dtSec);
     if (o instanceof Outcome.Alarmed a && a.alarm() != lastInterpreterAlarm) {
       lastInterpreterAlarm = a.alarm();
       Alarm al = a.alarm();
@@ -262,7 +273,7 @@ public final class Controller implements MotionPort {
   /** Whether a program is active (running or paused) or the arm is moving. */
   public boolean busy() {
     return interpreter.state() == Interpreter.State.RUNNING || interpreter.state() == Interpreter.State.PAUSED
-        || !runner.idle();
+        || !runner.idle() || !tasks.list().isEmpty();
   }
 
   // ================================================================ programs and data
@@ -635,12 +646,23 @@ public final class Controller implements MotionPort {
         }
       }
       case IDLE, ALARMED -> {
+        if (tasks.isRunning(programName)) {
+          return CommandResult.refused("INTP-105 Run request failed: " + programName + " is already running");
+        }
+        Optional<String> holder = tasks.groupHolder();
+        if (Tasks.usesMotionGroup(p) && holder.isPresent()) {
+          return CommandResult.refused("INTP-105 Run request failed: PROG-040 Already locked by other task ("
+              + holder.get() + " holds group 1)");
+        }
         interpreter.select(programName);
         interpreter.setCursor(line);
       }
     }
     if (interpreter.state() == Interpreter.State.PAUSED && forward) {
       replanInterrupted();
+    }
+    if (forward) {
+      tasks.resumeAll();
     }
     runner.resume();
     if (forward) {
@@ -681,6 +703,7 @@ public final class Controller implements MotionPort {
   /** HOLD: the program pauses, the arm decelerates along its path, jogging stops. */
   public void hold() {
     interpreter.hold();
+    tasks.holdAll();
     runner.hold();
     jogger.stop(jogKeys);
   }
@@ -688,6 +711,7 @@ public final class Controller implements MotionPort {
   /** FCTN ABORT: ends the program; a moving arm decelerates along its path to a stop. */
   public void abort() {
     interpreter.abort();
+    tasks.abortAll();
     if (!runner.idle()) {
       cancel(-1);
     }
@@ -760,7 +784,65 @@ public final class Controller implements MotionPort {
     addAlarm(new ControllerAlarm(code, message, active ? interpreter.currentProgram() : "",
         active ? interpreter.cursorLine() : 0, timeSec));
     interpreter.hold();
+    tasks.holdAll();
     stopMotion();
+  }
+
+  // ================================================================ tasks, BG logic, UOP (issue 15)
+
+  /** The tasks RUN started beside the main program. */
+  public Tasks tasks() {
+    return tasks;
+  }
+
+  /** Background logic (MENU > SETUP > BG Logic). */
+  public BgLogic bgLogic() {
+    return bgLogic;
+  }
+
+  /** The UOP signals (UI/UO), the PLC sequence and the reference positions. */
+  public Uop uop() {
+    return uop;
+  }
+
+  /**
+   * Applies a robot's production setup: UOP, program selection, reference positions, the PLC
+   * sequence and the BG Logic slots (whose programs are checked at their first scan: load them
+   * before the first tick).
+   */
+  public void configureProduction(org.robotrun.world.ProductionSetup.Robot setup) {
+    uop.configure(setup);
+    if (setup != null) {
+      bgLogic.setScanSec(setup.bgScanSec());
+      bgLogic.configure(setup.backgroundLogic());
+    }
+  }
+
+  /** An alarm a task or a BG program raised: shown like the main program's. */
+  void taskAlarm(Alarm al) {
+    addAlarm(new ControllerAlarm(al.code(), al.message(), al.program(), al.line(), timeSec));
+  }
+
+  /** A servo alarm from the UOP (*IMSTP): the arm stops at once, the programs pause. */
+  void raiseServoAlarm(org.robotrun.program.AlarmCode code) {
+    raiseAlarm(code.code(), code.text());
+  }
+
+  /** INTP-105 for a start from the PLC the controller refused (the programs already running go on). */
+  void raiseRunFailed(String why) {
+    addAlarm(new ControllerAlarm(org.robotrun.program.AlarmCode.INTP_105.code(), "Run request failed: " + why, "", 0,
+        timeSec));
+  }
+
+  /** Whether a SERVO-severity alarm is active (servo power off until RESET). */
+  public boolean servoOff() {
+    for (ControllerAlarm a : activeAlarms) {
+      if (org.robotrun.program.AlarmCode.of(a.code()).map(x -> x.severity() == org.robotrun.program.AlarmSeverity.SERVO)
+          .orElse(false)) {
+        return true;
+      }
+    }
+    return false;
   }
 
   private void addAlarm(ControllerAlarm a) {

@@ -49,6 +49,7 @@ public final class ScenarioCell {
         throw new IllegalArgumentException("robot " + r.name() + ": " + e.getMessage(), e);
       }
       controllers.add(c);
+      scenario.production().of(r.name()).ifPresent(c::configureProduction);
       EndEffectorGeometry tool = EndEffectorGeometry.of(r.endEffector());
       tools.add(Optional.of(new MountedTool(tool, r.toolIo())));
       boolean firstWithUt1 = controllers.size() == 1 && scenario.toolFrames().containsKey(1);

@@ -58,4 +58,25 @@ class ExampleScenariosTest {
       assertThat(p.get("pose_cell").get("z").asDouble()).isEqualTo(-90.0);
     }
   }
+
+  @Test
+  void thePlcCellStartsJobOneByPnsAndEndsAtHome(@TempDir Path dir) throws Exception {
+    Path report = dir.resolve("r.json");
+    assertThat(Main.execute("run", "--scenario", "scenarios/plc-cell.json", "--report", report.toString())).isZero();
+    JsonNode r = new ObjectMapper().readTree(report.toFile());
+    assertThat(r.get("program").asText()).isEqualTo("PNS0001");
+    JsonNode robot = r.get("robots").get(0);
+    assertThat(robot.get("registers").get("R").get("1").asInt()).isEqualTo(1);
+    // back at HOME: the HOME output (DO[10]) and ATPERCH (UO[7]) are on; the BG logic set the ready light
+    assertThat(robot.get("io").get("DO").get("10").asBoolean()).isTrue();
+    assertThat(robot.get("io").get("UO").get("7").asBoolean()).isTrue();
+    assertThat(robot.get("io").get("DO").get("13").asBoolean()).isTrue();
+    // SNO1 shows the PNS number 1
+    assertThat(robot.get("io").get("UO").get("11").asBoolean()).isTrue();
+    assertThat(robot.get("motions")).allSatisfy(m -> assertThat(m.get("program").asText()).isEqualTo("PNS0001"));
+    // the PLC, the UOP handshake and the BG logic are deterministic: a second run writes the same bytes
+    Path again = dir.resolve("r2.json");
+    assertThat(Main.execute("run", "--scenario", "scenarios/plc-cell.json", "--report", again.toString())).isZero();
+    assertThat(Files.readAllBytes(again)).isEqualTo(Files.readAllBytes(report));
+  }
 }

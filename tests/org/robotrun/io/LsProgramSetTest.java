@@ -34,6 +34,14 @@ class LsProgramSetTest {
   }
 
   @Test
+  void runTargetsAreCheckedLikeCallTargets() {
+    LsReadResult main = program("MAIN.LS", "MAIN", "RUN SUB", "RUN NOWHERE");
+    LsReadResult sub = program("SUB.LS", "SUB", "END");
+    assertThat(messages(LsProgramSet.crossCheck(List.of(main, sub), Set.of())))
+        .containsExactly("MAIN.LS:4: RUN NOWHERE: no program named NOWHERE is known");
+  }
+
+  @Test
   void aProgramDefinedTwiceIsReportedOnTheLaterFile() {
     List<LsReadResult> rs = LsProgramSet.crossCheck(
         List.of(program("a/SUB.LS", "SUB", "END"), program("b/SUB.LS", "sub", "END")), Set.of());

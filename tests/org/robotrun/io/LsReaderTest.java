@@ -170,7 +170,6 @@ class LsReaderTest {
         "t.ls:7: speed unit mm/sec does not fit a J motion: expected %, sec or msec",
         "t.ls:8: speed unit % does not fit a L motion: expected mm/sec, cm/min, inch/min, deg/sec, sec or msec",
         "t.ls:9: expected TO or DOWNTO in FOR, found 'UNTIL'",
-        "t.ls:10: not supported: RUN (multitasking) (the line alarms when it runs)",
         "t.ls:12: expected '(sec)' after the wait time, found end of line",
         "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)",
         "t.ls:15: expected ';' at the end of the line",
@@ -243,7 +242,7 @@ class LsReaderTest {
   @Test
   void unsupportedStatementsAreNamedNotDropped() {
     for (String[] c : new String[][] {
-        {"RUN SUB1", "not supported: RUN (multitasking) (the line alarms when it runs)"},
+        {"UO[1]=ON", "not supported: assigning UO[] (the controller sets it) (the line alarms when it runs)"},
         {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},

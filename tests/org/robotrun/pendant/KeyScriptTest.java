@@ -87,7 +87,9 @@ class KeyScriptTest {
   @Test
   void malformedLinesNameFileAndLine() {
     assertThat(bad("ENTER\nFROB\n")).isEqualTo("t.keys:2: unknown key or command 'FROB' (keys: F1..F5, ENTER, SHIFT+FWD, "
-        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, WAIT, SHOW)");
+        + "+X/J1...; commands: TYPE, HOLD, RELEASE, CLICK, TP, MODE, ESTOP, CYCLE START, ROBOT, UI[i] ON/OFF, DI[i] ON/OFF, "
+        + "WAIT, SHOW)");
+    assertThat(bad("UI[19] ON")).isEqualTo("t.keys:1: UI[19]: index out of range (expected 1..18)");
     assertThat(bad("WAIT soon")).isEqualTo("t.keys:1: WAIT needs seconds (e.g. WAIT 2.5), got 'soon'");
     assertThat(bad("WAIT -1")).startsWith("t.keys:1: WAIT seconds must be 0..3600");
     assertThat(bad("\n\nTYPE")).isEqualTo("t.keys:3: TYPE needs the text to type");
@@ -95,6 +97,20 @@ class KeyScriptTest {
     assertThat(bad("HOLD NOPE")).isEqualTo("t.keys:1: unknown key 'NOPE'");
     assertThat(bad("DOWN *x")).isEqualTo("t.keys:1: repeat count after * must be a whole number");
     assertThat(bad("SHOW now")).isEqualTo("t.keys:1: SHOW takes nothing after it");
+  }
+
+  @Test
+  void plcInputLinesSetTheInputOnTheController() {
+    KeyScript s = ((KeyScript.Parsed.Ok) parse("UI[6] ON\ndi[3] on\nUI[6] OFF\nUI[8] ON\n")).script();
+    assertThat(s.steps()).containsExactly(new KeyScript.Step.Input(1, org.robotrun.program.IoKind.UI, 6, true),
+        new KeyScript.Step.Input(2, org.robotrun.program.IoKind.DI, 3, true),
+        new KeyScript.Step.Input(3, org.robotrun.program.IoKind.UI, 6, false),
+        new KeyScript.Step.Input(4, org.robotrun.program.IoKind.UI, 8, true));
+    Pendant p = new Pendant(StandIn.control());
+    s.run(p, x -> {});
+    assertThat(p.control().registers().bit(org.robotrun.program.IoKind.UI, 6)).isFalse();
+    assertThat(p.control().registers().bit(org.robotrun.program.IoKind.UI, 8)).isTrue();
+    assertThat(p.control().registers().bit(org.robotrun.program.IoKind.DI, 3)).isTrue();
   }
 
   private static String bad(String text) {

@@ -1,0 +1,22 @@
+package org.robotrun.program;
+
+import java.util.Optional;
+
+/**
+ * How a program reaches the controller's task manager: {@code RUN NAME} asks it to start NAME as
+ * a task of its own (multitasking). The interpreter owns this interface so it can be tested
+ * without a controller.
+ */
+@FunctionalInterface
+public interface TaskPort {
+  /** A port with no multitasking: every RUN is refused. */
+  TaskPort NONE = program -> Optional.of("multitasking is not available here");
+
+  /**
+   * Starts {@code program} as a new task.
+   *
+   * @return empty when it started; otherwise why not, as the alarm's message names it (e.g.
+   *     "PROG-040 Already locked by other task")
+   */
+  Optional<String> run(String program);
+}

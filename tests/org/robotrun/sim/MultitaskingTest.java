@@ -1,0 +1,134 @@
+package org.robotrun.sim;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.robotrun.sim.TaskProgs.program;
+import static org.robotrun.sim.TaskProgs.steps;
+
+import org.junit.jupiter.api.Test;
+import org.robotrun.program.IoKind;
+
+/**
+ * RUN starts a task beside the main program, as on an R-30iB: tasks share registers and I/O, a
+ * task without a motion group runs while the main program moves, two tasks never hold group 1
+ * (INTP-105, cause PROG-040), and RUN of a running program fails with INTP-105.
+ */
+class MultitaskingTest {
+
+  @Test
+  void runStartsATaskThatRunsBesideTheMovingMainProgramAndSharesRegisters() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    // the task counts in R[2] while the main program waits for it and then moves
+    c.saveProgram(program("COUNT", false, "FOR R[3]=1 TO 5", "R[2]=R[2]+1", "WAIT 0.10(sec)", "ENDFOR", "DO[7]=ON"));
+    c.saveProgram(program("MAIN", true, "RUN COUNT", "R[1]=R[2]", "WAIT DO[7]=ON", "R[4]=R[2]"));
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    steps(sim, 2);
+    // RUN did not wait: the main program went on at once and sees the task's first increment at most
+    assertThat(c.registers().number(1)).isLessThanOrEqualTo(1);
+    assertThat(c.tasks().list()).extracting(Tasks.Task::program).containsExactly("COUNT");
+    assertThat(c.tasks().list().get(0).holdsMotionGroup()).isFalse();
+    steps(sim, 200);
+    // 5 x 0.1 s later the task set DO[7] and ended; the main program read the shared register
+    assertThat(c.registers().bit(IoKind.DO, 7)).isTrue();
+    assertThat(c.registers().number(4)).isEqualTo(5);
+    assertThat(c.tasks().list()).isEmpty();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.activeAlarms()).isEmpty();
+  }
+
+  @Test
+  void aSecondProgramWithGroupOneIsRefusedWithProg040() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("MOVER", true, "R[9]=1"));
+    c.saveProgram(program("MAIN", true, "RUN MOVER", "R[1]=1"));
+    c.run("MAIN", 1, true);
+    steps(sim, 3);
+    assertThat(c.activeAlarms()).hasSize(1);
+    assertThat(c.activeAlarms().get(0).code()).isEqualTo("INTP-105");
+    assertThat(c.activeAlarms().get(0).message()).contains("PROG-040 Already locked by other task").contains("MAIN");
+    assertThat(c.activeAlarms().get(0).line()).isEqualTo(1);
+    assertThat(c.registers().number(9)).isZero();
+  }
+
+  @Test
+  void aMainProgramWithoutGroupMayRunTheMotionProgram() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("MOVER", true, "R[9]=1"));
+    c.saveProgram(program("CELL", false, "RUN MOVER", "R[1]=1"));
+    c.run("CELL", 1, true);
+    steps(sim, 3);
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.registers().number(9)).isEqualTo(1);
+  }
+
+  @Test
+  void runOfAProgramThatIsAlreadyRunningAlarms() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("LOOPER", false, "LBL[1]", "WAIT 0.05(sec)", "JMP LBL[1]"));
+    c.saveProgram(program("MAIN", false, "RUN LOOPER", "RUN LOOPER"));
+    c.run("MAIN", 1, true);
+    steps(sim, 3);
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.activeAlarms().get(0).message()).contains("LOOPER is already running");
+    assertThat(c.activeAlarms().get(0).line()).isEqualTo(2);
+    // and the pendant cannot start it either
+    assertThat(c.run("LOOPER", 1, true)).isInstanceOf(CommandResult.Refused.class);
+  }
+
+  @Test
+  void aTaskWithoutGroupCannotMove() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    org.robotrun.program.Program mover = ControllerTest.jointProgram("NOGRP", "R[1]=1", new double[] {0, 0, 0, 0, -90, 0});
+    java.util.Map<String, String> attrs = new java.util.LinkedHashMap<>(mover.attributes());
+    attrs.put("DEFAULT_GROUP", "*,*,*,*,*");
+    c.saveProgram(new org.robotrun.program.Program("NOGRP", attrs, "", mover.lines(), mover.positions()));
+    c.saveProgram(program("MAIN", false, "RUN NOGRP"));
+    c.run("MAIN", 1, true);
+    steps(sim, 5);
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).contains("SIMU-021");
+  }
+
+  @Test
+  void perTaskPauseAndAbortAndHoldAndAbortOfAll() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("TICKER", false, "LBL[1]", "R[5]=R[5]+1", "WAIT 0.04(sec)", "JMP LBL[1]"));
+    c.saveProgram(program("OTHER", false, "LBL[1]", "R[6]=R[6]+1", "WAIT 0.04(sec)", "JMP LBL[1]"));
+    c.saveProgram(program("MAIN", false, "RUN TICKER", "RUN OTHER", "LBL[1]", "WAIT 0.04(sec)", "JMP LBL[1]"));
+    c.run("MAIN", 1, true);
+    steps(sim, 50);
+    double r5 = c.registers().number(5);
+    assertThat(r5).isGreaterThan(3);
+    // PAUSE of one task: it stops counting, the other goes on
+    assertThat(c.tasks().pause("TICKER")).isTrue();
+    double r6 = c.registers().number(6);
+    steps(sim, 50);
+    assertThat(c.registers().number(5)).isEqualTo(r5);
+    assertThat(c.registers().number(6)).isGreaterThan(r6);
+    assertThat(c.tasks().list().get(0).status().state()).isEqualTo(ExecutionStatus.State.PAUSED);
+    // ABORT of one task
+    assertThat(c.tasks().abort("OTHER")).isTrue();
+    assertThat(c.tasks().list()).extracting(Tasks.Task::program).containsExactly("TICKER");
+    // HOLD pauses every program; SHIFT+FWD resumes them all
+    c.hold();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.PAUSED);
+    c.run("MAIN", c.status().line(), true);
+    steps(sim, 50);
+    assertThat(c.registers().number(5)).isGreaterThan(r5);
+    // ABORT (all) ends the main program and every task
+    c.abort();
+    assertThat(c.tasks().list()).isEmpty();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+  }
+
+  @Test
+  void runIsWrittenBackAsRead() {
+    org.robotrun.program.Program p = program("MAIN", false, "RUN PICK_TASK");
+    assertThat(p.line(1)).isEqualTo(new org.robotrun.program.Instruction.Run("PICK_TASK", java.util.List.of()));
+    assertThat(org.robotrun.io.LsWriter.write(p)).contains("   1:  RUN PICK_TASK ;");
+  }
+}
