@@ -19,6 +19,7 @@ import picocli.CommandLine.Command;
       BenchGradeCommand.class,
       BenchCellCommand.class,
       BenchWorkspaceCommand.class,
+      BenchVisionCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

@@ -42,6 +42,8 @@ import picocli.CommandLine.Spec;
       "A submission is a hand-in .zip (as File > Hand in writes it), an unpacked hand-in or workspace folder "
           + "(cell.json and programs/*.LS), or a folder of .LS files. The cell (robots, fixtures, parts) always comes "
           + "from the task's scenario; a submission's cell.json adds its own frames and registers.",
+      "In a cell of several robots every robot's main program runs at once (as 'run' does); the programs of a "
+          + "robot after the first are in programs/ROBOT/*.LS, and robot checks name their robot.",
       "Submissions are graded in parallel, each in its own simulation, with the task's simulated-time and "
           + "wall-clock limits; a broken or hostile submission fails its checks and never stops the others.",
       "Exit codes: 0 every submission graded (whatever its score), 2 bad task file or options."

@@ -173,7 +173,8 @@ public final class GuiCommand implements Callable<Integer> {
           stage("cell and window ready");
         }
         if (taskLoaded != null) {
-          s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()), s.controller()));
+          s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()),
+              s.sim().controllers()));
         }
         SimulatorWindow w = s.window();
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
@@ -403,6 +404,12 @@ public final class GuiCommand implements Callable<Integer> {
     }
     if (selector.size() > 1) {
       bench.addMenus(selector);  // after File
+    }
+    if (sim.vision().isPresent()) {
+      // Vision (issue 16): camera views in the Vision menu, Reset with a seed in the side panel.
+      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim);
+      bench.addSection(org.robotrun.ui.VisionPanel.TITLE, vision::drawContents);
+      bench.addMenus(vision);
     }
     w.setViewClickHandler(bench::onViewClick);
     w.setViewPressHandler(bench.viewPress());

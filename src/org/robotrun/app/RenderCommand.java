@@ -50,6 +50,20 @@ public final class RenderCommand implements Callable<Integer> {
       description = "With --scenario: draw the collision boxes (robot links, tool, objects) as green wire frames, red where they touch.")
   boolean showBoxes;
 
+  @Option(names = "--seed", paramLabel = "N",
+      description = "With --scenario: the seed of its random part placement and vision noise (docs/vision.md). Default: the scenario's.")
+  Long seed;
+
+  @Option(names = "--vision-camera", paramLabel = "NAME",
+      description = "With --scenario: draw what this vision camera sees, at its image size (--width/--height are ignored).")
+  String visionCamera;
+
+  @Option(names = "--vision-find", paramLabel = "PROCESS",
+      description = "With --vision-camera: run VISION RUN_FIND of this process first, outline the found parts and print their found poses.")
+  String visionFind;
+
+  @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
+
   @Override
   public Integer call() {
     checkSize("--width", width);
@@ -64,6 +78,23 @@ public final class RenderCommand implements Callable<Integer> {
     if (showBoxes && scenario == null) {
       throw new UserError("--show-boxes: needs --scenario (for the robot alone use scenarios/empty-cell.json)");
     }
+    if ((seed != null || visionCamera != null) && scenario == null) {
+      throw new UserError((seed != null ? "--seed" : "--vision-camera") + ": needs --scenario");
+    }
+    if (visionFind != null && visionCamera == null) {
+      throw new UserError("--vision-find: needs --vision-camera");
+    }
+    if (visionCamera != null) {
+      Scenario sc = VisionRender.seeded(ScenarioFiles.load(scenario), seed, spec.commandLine().getErr());
+      try {
+        VisionRender.render(sc, visionCamera, visionFind, out, antialias, spec.commandLine().getOut());
+      } catch (GlUnavailableException e) {
+        throw new UserError("cannot render: " + e.getMessage(), Main.EXIT_FAILED);
+      } catch (java.io.UncheckedIOException e) {
+        throw new UserError("--out: cannot write " + out + " (" + e.getCause().getMessage() + ")");
+      }
+      return Main.EXIT_OK;
+    }
     OrbitCamera camera = new OrbitCamera();
     SceneSnapshot scene;
     if (scenario == null) {
@@ -71,7 +102,7 @@ public final class RenderCommand implements Callable<Integer> {
       double[] q = joints == null ? new double[RobotModel.DOF] : JointsOption.parseToKinematic(joints, robot);
       scene = SceneSnapshots.singleRobot(robot, q, 0);
     } else {
-      Scenario sc = ScenarioFiles.load(scenario);
+      Scenario sc = VisionRender.seeded(ScenarioFiles.load(scenario), seed, spec.commandLine().getErr());
       scene = ScenarioFiles.simulatedScene(sc, joints, showBoxes);
       sc.camera().ifPresent(v -> ScenarioFiles.applyCamera(v, camera));
     }

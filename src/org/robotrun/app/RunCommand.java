@@ -100,11 +100,25 @@ public final class RunCommand implements Callable<Integer> {
   /** Largest --max-sim-seconds: a day of simulated time (21.6 million ticks). */
   static final double MAX_SIM_SECONDS = 86_400;
 
+  @Option(names = "--seed", paramLabel = "N",
+      description = "Seed of the scenario's random part placement and vision noise (docs/vision.md). Default: the "
+          + "scenario's vision.seed. Same seed, same placement and vision results.")
+  Long seed;
+
   @Option(names = "--report", paramLabel = "out.json", description = "Write the JSON report here.")
   Path report;
 
   @Option(names = "--trace", paramLabel = "out.csv", description = "Write one CSV row per tick here.")
   Path trace;
+
+  /** A workspace's cell with the --seed placement and vision noise. */
+  private void reseed(Simulation sim) {
+    if (sim.vision().isEmpty()) {
+      System.err.println("robotrun: warning: --seed: the workspace's cell has no vision section: the seed changes nothing");
+      return;
+    }
+    org.robotrun.sim.VisionSystem.reseed(sim, sim.vision().get().setup(), seed);
+  }
 
   @Override
   public Integer call() throws IOException {
@@ -143,6 +157,9 @@ public final class RunCommand implements Callable<Integer> {
         System.err.println("robotrun: warning: " + session.problems());
       }
       sim = session.sim;
+      if (seed != null) {
+        reseed(sim);
+      }
       fromWorkspace.addAll(session.workspace.programs());
       Scenario wsCell = session.workspace.scenario();
       if (program == null) {
@@ -158,6 +175,12 @@ public final class RunCommand implements Callable<Integer> {
         case ScenarioLoad.Loaded l -> l.scenario();
         case ScenarioLoad.Failed f -> throw new UserError(f.message());
       };
+      if (seed != null) {
+        if (sc.vision().isEmpty()) {
+          System.err.println("robotrun: warning: --seed: " + scenario + " has no vision section: the seed changes nothing");
+        }
+        sc = sc.withVision(sc.vision().withSeed(seed));
+      }
       try {
         sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
       } catch (FileFormatException | IllegalArgumentException e) {
@@ -174,6 +197,9 @@ public final class RunCommand implements Callable<Integer> {
         }
       }
     } else {
+      if (seed != null) {
+        System.err.println("robotrun: warning: --seed: the default cell has no vision section: the seed changes nothing");
+      }
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
       if (program == null) {
         throw new UserError("--program: name the program to run (required without --scenario)");

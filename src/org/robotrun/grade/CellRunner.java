@@ -2,6 +2,7 @@ package org.robotrun.grade;
 
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -14,6 +15,7 @@ import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerAlarm;
 import org.robotrun.sim.HeadlessRun;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
@@ -86,16 +88,25 @@ final class CellRunner {
   }
 
   /**
-   * Runs {@code program} on the variant's cell.
+   * What a robot after the first starts with: its program to run, its programs and the R[] and
+   * PR[] of its saved state.
+   */
+  record RobotStart(String program, List<Program> programs, Map<Integer, Double> registers,
+      Map<Integer, Position> positionRegisters) {}
+
+  /**
+   * Runs {@code program} on the variant's first robot and, in a cell of several robots, each
+   * other robot's program at the same tick (as {@code robotrun run} does).
    *
    * @param positionRegisters the student's PR[] to start with (taught at the pendant)
-   *
+   * @param others robot name to what it runs, for the robots after the first (a robot not listed stays idle)
    * @param deadlineNanos {@link System#nanoTime()} after which the run is abandoned
    * @throws WallClockExceeded when the deadline passes
-   * @throws IllegalArgumentException when the cell cannot be built or the program not started
+   * @throws IllegalArgumentException when the cell cannot be built or a program not started
    */
   static RunOutcome run(Variant v, Function<String, RobotModel> models, List<Program> programs,
-      Map<Integer, Position> positionRegisters, String program, double maxSimSec, long deadlineNanos) {
+      Map<Integer, Position> positionRegisters, String program, Map<String, RobotStart> others, double maxSimSec,
+      long deadlineNanos) {
     Simulation sim = ScenarioCell.build(v.scenario(), models, Simulation.DEFAULT_TICK_SEC);
     Controller c = sim.controllers().get(0);
     programs.forEach(c::saveProgram);
@@ -103,19 +114,50 @@ final class CellRunner {
     // The student's own PRs first; the task's offset registers (where parts were found) win.
     positionRegisters.forEach((n, p) -> c.registers().setPosition(n, p));
     v.offsetRegisters().forEach((n, p) -> c.registers().setPosition(n, p));
+    Map<Controller, String> mains = new LinkedHashMap<>();
+    mains.put(c, program);
+    for (Controller o : sim.controllers().subList(1, sim.controllers().size())) {
+      RobotStart rs = others.get(o.name());
+      if (rs == null) {
+        continue;
+      }
+      rs.programs().forEach(o::saveProgram);
+      o.setOverridePct(v.overridePct());
+      rs.registers().forEach((n, x) -> {
+        if (x == Math.rint(x) && Math.abs(x) <= Integer.MAX_VALUE) {
+          o.registers().setInteger(n, (int) (double) x);
+        } else {
+          o.registers().setReal(n, x);
+        }
+      });
+      rs.positionRegisters().forEach((n, p) -> o.registers().setPosition(n, p));
+      mains.put(o, rs.program());
+    }
     Map<String, Optional<String>> startParents = new HashMap<>();
     for (WorldObject o : sim.world().objects()) {
       if (o.kind() == ObjectKind.PART) {
         startParents.put(o.name(), o.parent());
       }
     }
-    HeadlessRun.Result r = HeadlessRun.run(sim, c, program, maxSimSec, s -> {
+    HeadlessRun.CellResult r = HeadlessRun.runCell(sim, mains, maxSimSec, s -> {
       if ((s.ticks() & 63) == 0 && System.nanoTime() - deadlineNanos > 0) {
         throw new WallClockExceeded();
       }
-    });
-    return new RunOutcome(v.label(), r.status() == HeadlessRun.Status.FINISHED, r.alarm(), r.cycleTimeSec(),
+    }, () -> false, "");
+    List<RunOutcome.RobotOutcome> robots = new ArrayList<>();
+    for (Controller x : sim.controllers()) {
+      HeadlessRun.RobotResult rr = r.robots().stream().filter(y -> y.robot().equals(x.name())).findFirst().orElse(null);
+      robots.add(new RunOutcome.RobotOutcome(x.name(), rr == null ? "" : rr.program(),
+          rr == null ? Optional.empty() : Optional.of(rr.status()), rr == null ? Optional.empty() : rr.alarm(),
+          rr == null ? 0 : rr.cycleTimeSec(), x.registers(), x.frames()));
+    }
+    // One robot: as HeadlessRun.run reports it (the first robot's status and alarm, the cell's cycle time).
+    HeadlessRun.RobotResult one = r.robots().get(0);
+    boolean finished = sim.controllers().size() == 1 ? one.status() == HeadlessRun.RobotStatus.FINISHED
+        : r.status() == HeadlessRun.Status.FINISHED;
+    Optional<ControllerAlarm> alarm = sim.controllers().size() == 1 ? one.alarm() : r.alarm();
+    return new RunOutcome(v.label(), finished, alarm, r.cycleTimeSec(),
         sim.world(), Map.copyOf(sim.heldParts()), new ArrayList<>(sim.collisionEvents()), c.registers(), c.frames(),
-        sim.snapshot().scene(), startParents);
+        sim.snapshot().scene(), startParents, List.copyOf(robots));
   }
 }

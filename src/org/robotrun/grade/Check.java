@@ -31,8 +31,14 @@ public sealed interface Check {
    * @param points what the check is worth (0 = feedback only)
    * @param message for the student when it fails ("" = none beyond what was measured)
    * @param hidden not shown to students (Gradescope visibility "hidden"; not run by Check my work)
+   * @param robot the robot a robot check looks at, by name; empty: the first robot (or the whole
+   *     cell, for the checks that look at the cell: parts, collisions)
    */
-  record Meta(String name, double points, String message, boolean hidden, Runs runs) {}
+  record Meta(String name, double points, String message, boolean hidden, Runs runs, Optional<String> robot) {
+    public Meta(String name, double points, String message, boolean hidden, Runs runs) {
+      this(name, points, message, hidden, runs, Optional.empty());
+    }
+  }
 
   /** The submission is a valid hand-in zip: manifest, every file listed with its SHA-256. */
   record HandIn(Meta meta) implements Check {}

@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashSet;
 import java.util.List;
+import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -72,12 +73,13 @@ public final class Grader {
       List<CheckResult> out = checks.stream().map(c -> fail(c, why)).toList();
       return new GradeResult(sub.name(), sub.student(), out, List.of(), seconds(t0));
     }
-    Loaded loaded = loadPrograms(sub);
+    Loaded loaded = loadPrograms(sub, scenario);
     List<String> cellNotes = new ArrayList<>();
     Map<Integer, Position> positionRegisters = new TreeMap<>();
-    Scenario cell = overlay(sub, cellNotes, positionRegisters);
+    Map<String, RobotRegisters> others = new TreeMap<>();
+    Scenario cell = overlay(sub, cellNotes, positionRegisters, others);
     return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, positionRegisters,
-        checks, t0);
+        others, checks, t0);
   }
 
   /**
@@ -100,6 +102,30 @@ public final class Grader {
    */
   public GradeResult checkMyWork(List<Program> programs, Map<Integer, Transform> toolFrames,
       Map<Integer, Transform> userFrames, Map<Integer, Double> registers, Map<Integer, Position> positionRegisters) {
+    return checkMyWork(programs, toolFrames, userFrames, registers, positionRegisters, Map.of(), Map.of());
+  }
+
+  /**
+   * The R[] and PR[] a robot after the first starts with (from a workspace's saved state, or
+   * what the student has in the window).
+   */
+  public record RobotRegisters(Map<Integer, Double> registers, Map<Integer, Position> positionRegisters) {
+    public RobotRegisters {
+      registers = Map.copyOf(registers);
+      positionRegisters = Map.copyOf(positionRegisters);
+    }
+  }
+
+  /**
+   * "Check my work" in a cell of several robots: as {@link #checkMyWork(List, Map, Map, Map, Map)}
+   * for the first robot, with the programs and registers each robot after the first has now.
+   *
+   * @param otherPrograms robot name to its programs, for the robots after the first
+   * @param otherRegisters robot name to its R[] and PR[], for the robots after the first
+   */
+  public GradeResult checkMyWork(List<Program> programs, Map<Integer, Transform> toolFrames,
+      Map<Integer, Transform> userFrames, Map<Integer, Double> registers, Map<Integer, Position> positionRegisters,
+      Map<String, List<Program>> otherPrograms, Map<String, RobotRegisters> otherRegisters) {
     long t0 = System.nanoTime();
     List<Check> checks = task.checks().stream()
         .filter(c -> !c.meta().hidden() && !(c instanceof Check.HandIn)).toList();
@@ -111,8 +137,10 @@ public final class Grader {
     user.putAll(userFrames);
     Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
         scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
-    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of()), List.of(), List.of(), cell,
-        Map.copyOf(positionRegisters), checks, t0);
+    Map<String, List<Program>> others = new LinkedHashMap<>();
+    otherPrograms.forEach((r, ps) -> others.put(r, List.copyOf(ps)));
+    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of(), others), List.of(), List.of(),
+        cell, Map.copyOf(positionRegisters), Map.copyOf(otherRegisters), checks, t0);
   }
 
   /**
@@ -120,12 +148,19 @@ public final class Grader {
    *     then come from the task): shown with the hand-in and frame checks, failing neither by itself
    */
   private GradeResult gradeLoaded(String name, String student, Loaded loaded, List<String> handInProblems,
-      List<String> cellNotes, Scenario cell, Map<Integer, Position> positionRegisters, List<Check> checks, long t0) {
+      List<String> cellNotes, Scenario cell, Map<Integer, Position> positionRegisters,
+      Map<String, RobotRegisters> otherRegisters, List<Check> checks, long t0) {
     long deadline = t0 + (long) (task.limits().wallSeconds() * 1e9);
     // The runs, nominal first; a run that could not happen leaves its reason.
     List<RunOutcome> runs = new ArrayList<>();
     List<String> notRun = new ArrayList<>();
-    Optional<String> cannotRun = loaded.cannotRun(task.program());
+    Optional<String> cannotRun = loaded.cannotRun(task.program(), task.otherPrograms(), several());
+    Map<String, CellRunner.RobotStart> starts = new LinkedHashMap<>();
+    task.otherPrograms().forEach((robot, main) -> {
+      RobotRegisters rr = otherRegisters.getOrDefault(robot, new RobotRegisters(Map.of(), Map.of()));
+      starts.put(robot, new CellRunner.RobotStart(main, loaded.programsOf(robot), rr.registers(),
+          rr.positionRegisters()));
+    });
     boolean needVariations = checks.stream().anyMatch(c -> c.meta().runs() != Check.Runs.NOMINAL);
     int count = needVariations ? task.variations().count() : 0;
     if (cannotRun.isEmpty()) {
@@ -133,7 +168,7 @@ public final class Grader {
         CellRunner.Variant v = i == 0 ? CellRunner.nominal(cell, task.variations())
             : CellRunner.variation(cell, task.variations(), i);
         try {
-          runs.add(CellRunner.run(v, modelLoader, loaded.programs(), positionRegisters, task.program(),
+          runs.add(CellRunner.run(v, modelLoader, loaded.programs(), positionRegisters, task.program(), starts,
               task.limits().simSeconds(), deadline));
         } catch (CellRunner.WallClockExceeded e) {
           notRun.add(v.label() + ": stopped after " + fmt(task.limits().wallSeconds())
@@ -166,7 +201,36 @@ public final class Grader {
     }
   }
 
+  /** Whether the task's cell has several robots: robot checks then name their robot. */
+  private boolean several() {
+    return scenario.robots().size() > 1;
+  }
+
+  /** The robot a robot check looks at, by name. */
+  private String robotOf(Check c) {
+    return c.meta().robot().orElse(scenario.robots().get(0).name());
+  }
+
+  /** In a cell of several robots, a robot check's result starts with its robot's name. */
   private CheckResult evaluate(Check c, Context ctx) {
+    CheckResult r = evaluateOne(c, ctx);
+    if (!several() || !isRobotCheck(c)) {
+      return r;
+    }
+    String robot = robotOf(c);
+    String measured = r.measured();
+    int at = measured.startsWith("In the ") ? measured.indexOf(": ") + 2 : 0;
+    String named = measured.substring(0, at) + robot + ": " + measured.substring(at);
+    return new CheckResult(c, r.passed(), r.score(), named, r.failedRun(), r.focus_C());
+  }
+
+  /** The checks that look at one robot (the others look at the cell's parts, collisions, files). */
+  static boolean isRobotCheck(Check c) {
+    return c instanceof Check.RunsToEnd || c instanceof Check.NoMotionStop || c instanceof Check.CycleTime
+        || c instanceof Check.ProgramUse || c instanceof Check.EndState || c instanceof Check.Frame;
+  }
+
+  private CheckResult evaluateOne(Check c, Context ctx) {
     return switch (c) {
       case Check.HandIn h -> ctx.handInProblems().isEmpty()
           ? pass(c, "a valid hand-in: every file matches its SHA-256 in manifest.json" + ctx.notes())
@@ -174,9 +238,9 @@ public final class Grader {
       case Check.ProgramsCheck p -> ctx.loaded().programs().isEmpty() && ctx.loaded().errors().isEmpty()
           ? fail(c, "no .LS program found in the submission")
           : ctx.loaded().errors().isEmpty()
-          ? pass(c, ctx.loaded().programs().size() + " program(s) read without errors")
+          ? pass(c, programsRead(ctx.loaded()))
           : fail(c, ctx.loaded().errors().size() + " error(s):\n" + String.join("\n", limit(ctx.loaded().errors(), 20)));
-      case Check.ProgramUse u -> ProgramUse.evaluate(u, ctx.loaded().programs(), task.program())
+      case Check.ProgramUse u -> ProgramUse.evaluate(u, ctx.loaded().programsOf(robotOf(u)), mainOf(robotOf(u)))
           .map(why -> fail(c, why)).orElseGet(() -> pass(c, ProgramUse.describe(u)));
       case Check.Frame f -> frame(f, ctx);
       default -> overRuns(c, ctx);
@@ -219,12 +283,15 @@ public final class Grader {
 
   private CheckResult frame(Check.Frame f, Context ctx) {
     FrameTable frames;
+    boolean first = robotOf(f).equals(scenario.robots().get(0).name());
     if (!ctx.runs().isEmpty()) {
-      frames = ctx.runs().get(0).frames();
+      frames = ctx.runs().get(0).robot(f.meta().robot()).frames();
     } else {
       frames = new FrameTable();
-      ctx.cell().toolFrames().forEach((n, t) -> frames.setTransform(FrameKind.TOOL, n, t));
-      ctx.cell().userFrames().forEach((n, t) -> frames.setTransform(FrameKind.USER, n, t));
+      if (first) {
+        ctx.cell().toolFrames().forEach((n, t) -> frames.setTransform(FrameKind.TOOL, n, t));
+        ctx.cell().userFrames().forEach((n, t) -> frames.setTransform(FrameKind.USER, n, t));
+      }
     }
     Transform taught = frames.transform(f.tool() ? FrameKind.TOOL : FrameKind.USER, f.number());
     double d = taught.distanceTo(f.truth());
@@ -239,34 +306,102 @@ public final class Grader {
   // ---- programs and cell -------------------------------------------------------------------
 
   /** The programs that read cleanly, and every error as {@code programs/X.LS:line: message}. */
-  record Loaded(List<Program> programs, List<String> errors) {
-    Optional<String> cannotRun(String main) {
+  /**
+   * @param programs the first robot's (programs/*.LS)
+   * @param others the programs of each robot after the first (programs/ROBOT/*.LS), by robot name
+   */
+  record Loaded(List<Program> programs, List<String> errors, Map<String, List<Program>> others) {
+    Loaded(List<Program> programs, List<String> errors) {
+      this(programs, errors, Map.of());
+    }
+
+    /** A robot's programs; the first robot's for a name not among the others. */
+    List<Program> programsOf(String robot) {
+      return others.getOrDefault(robot, programs);
+    }
+
+    Optional<String> cannotRun(String main, Map<String, String> otherMains, boolean several) {
       if (!errors.isEmpty()) {
         return Optional.of("the programs have errors (see the programs check), so nothing was run");
       }
+      List<String> missing = new ArrayList<>();
       if (programs.stream().noneMatch(p -> p.name().equalsIgnoreCase(main))) {
-        return Optional.of("there is no program " + main + " (programs found: "
-            + (programs.isEmpty() ? "none" : String.join(", ", programs.stream().map(Program::name).toList())) + ")");
+        missing.add("there is no program " + main + " (programs found" + (several ? " in programs/" : "") + ": "
+            + names(programs) + ")");
       }
-      return Optional.empty();
+      otherMains.forEach((robot, m) -> {
+        List<Program> ps = others.getOrDefault(robot, List.of());
+        if (ps.stream().noneMatch(p -> p.name().equalsIgnoreCase(m))) {
+          String folder = "programs/" + org.robotrun.io.Workspace.robotFolder(robot) + "/";
+          boolean misplaced = programs.stream().anyMatch(p -> p.name().equalsIgnoreCase(m));
+          missing.add("there is no program " + m + " for " + robot + " (programs found in " + folder + ": " + names(ps)
+              + ")" + (misplaced ? "; " + m + " is among the first robot's programs in programs/, but " + robot
+              + "'s programs go in " + folder : ""));
+        }
+      });
+      return missing.isEmpty() ? Optional.empty() : Optional.of(String.join("; ", missing));
+    }
+
+    private static String names(List<Program> ps) {
+      return ps.isEmpty() ? "none" : String.join(", ", ps.stream().map(Program::name).toList());
     }
   }
 
-  private static Loaded loadPrograms(Submission sub) {
-    List<Path> files = new ArrayList<>();
+  /** The first robot's program, or the program the task runs on a robot after it. */
+  private String mainOf(String robot) {
+    return task.otherPrograms().getOrDefault(robot, task.program());
+  }
+
+  private String programsRead(Loaded l) {
+    if (!several()) {
+      return l.programs().size() + " program(s) read without errors";
+    }
+    List<String> parts = new ArrayList<>();
+    parts.add(scenario.robots().get(0).name() + ": " + l.programs().size());
+    for (int i = 1; i < scenario.robots().size(); i++) {
+      String r = scenario.robots().get(i).name();
+      parts.add(r + ": " + l.others().getOrDefault(r, List.of()).size());
+    }
+    return "program(s) read without errors (" + String.join(", ", parts) + ")";
+  }
+
+  /**
+   * The first robot's programs from the programs folder; in a cell of several robots, each other
+   * robot's from its subfolder {@code programs/ROBOT/} (as a workspace keeps them). Every robot's
+   * programs are checked on their own, as each controller holds only its own.
+   */
+  private static Loaded loadPrograms(Submission sub, Scenario scenario) {
     List<String> errors = new ArrayList<>();
-    try (DirectoryStream<Path> s = Files.newDirectoryStream(sub.programsDir())) {
+    String shown = sub.kind() == Submission.Kind.PROGRAMS ? "" : "programs/";
+    List<Program> first = loadFolder(sub.programsDir(), shown, errors);
+    Map<String, List<Program>> others = new LinkedHashMap<>();
+    for (int i = 1; i < scenario.robots().size(); i++) {
+      String robot = scenario.robots().get(i).name();
+      String folder = org.robotrun.io.Workspace.robotFolder(robot);
+      Path dir = sub.programsDir().resolve(folder);
+      others.put(robot, Files.isDirectory(dir, java.nio.file.LinkOption.NOFOLLOW_LINKS)
+          ? loadFolder(dir, shown + folder + "/", errors) : List.of());
+    }
+    return new Loaded(first, errors, others);
+  }
+
+  private static List<Program> loadFolder(Path folder, String shown, List<String> errors) {
+    List<Path> files = new ArrayList<>();
+    try (DirectoryStream<Path> s = Files.newDirectoryStream(folder)) {
       for (Path p : s) {
         if (SubmissionLoader.isLs(p.getFileName().toString()) && Files.isRegularFile(p)) {
           files.add(p);
+          if (files.size() > SubmissionLoader.Limits.DEFAULT.entries()) {
+            errors.add(shown + ": more than " + SubmissionLoader.Limits.DEFAULT.entries() + " .LS files");
+            return List.of();
+          }
         }
       }
     } catch (IOException | RuntimeException e) {
       errors.add("cannot list the programs: " + SubmissionLoader.describe(e));
     }
     files.sort(Comparator.comparing(p -> p.getFileName().toString()));
-    String prefix = sub.programsDir().toString() + java.io.File.separator;
-    String shown = sub.kind() == Submission.Kind.PROGRAMS ? "" : "programs/";
+    String prefix = folder.toString() + java.io.File.separator;
     List<LsReadResult> read = new ArrayList<>();
     for (Path f : files) {
       String name = shown + f.getFileName();
@@ -292,7 +427,7 @@ public final class Grader {
         programs.add(r.program());
       }
     }
-    return new Loaded(programs, errors);
+    return programs;
   }
 
   /**
@@ -300,7 +435,8 @@ public final class Grader {
    * the R[] and PR[] of its saved state, into {@code positionRegisters}):
    * the robots, fixtures and parts always come from the task, so nobody passes by moving the tray.
    */
-  private Scenario overlay(Submission sub, List<String> problems, Map<Integer, Position> positionRegisters) {
+  private Scenario overlay(Submission sub, List<String> problems, Map<Integer, Position> positionRegisters,
+      Map<String, RobotRegisters> others) {
     if (sub.cell().isEmpty()) {
       return scenario;
     }
@@ -313,6 +449,12 @@ public final class Grader {
         l.state().ifPresent(st -> {
           st.registers().forEach((n, r) -> stateRegisters.put(n, r.value()));
           positionRegisters.putAll(st.positionRegisters());
+          // Each other robot's saved R[] and PR[] (state.robots), for the robots of the task's cell.
+          st.robots().forEach((robot, rs) -> {
+            Map<Integer, Double> r = new TreeMap<>();
+            rs.registers().forEach((n, x) -> r.put(n, x.value()));
+            others.put(robot, new RobotRegisters(r, rs.positionRegisters()));
+          });
         });
       }
       case CellLoad.Failed f -> {

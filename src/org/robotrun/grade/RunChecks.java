@@ -38,7 +38,7 @@ final class RunChecks {
       case Check.NothingHeld n -> nothingHeld(run);
       case Check.NoneDropped n -> noneDropped(run);
       case Check.NoCollision n -> noCollision(n, run);
-      case Check.NoMotionStop n -> run.alarm().filter(a -> MOTION_STOPS.contains(a.code()))
+      case Check.NoMotionStop n -> run.robot(n.meta().robot()).alarm().filter(a -> MOTION_STOPS.contains(a.code()))
           .map(a -> Eval.of(false, "the motion stopped: " + alarm(a)))
           .orElseGet(() -> Eval.of(true, "no joint-limit, reach or singularity stop"));
       case Check.CycleTime t -> cycleTime(t, run);
@@ -50,15 +50,36 @@ final class RunChecks {
     };
   }
 
+  /**
+   * Why a robot of a cell of several has no result of its own: it had nothing to run, or it was
+   * stopped by another robot's alarm; empty when it ran to its end or stopped with its own alarm.
+   */
+  private static Optional<String> notItsOwn(RunOutcome.RobotOutcome robot, RunOutcome run) {
+    if (robot.status().isEmpty()) {
+      return Optional.of(robot.robot() + " had no program to run");
+    }
+    if (robot.status().get() == org.robotrun.sim.HeadlessRun.RobotStatus.STOPPED) {
+      return Optional.of("the program was stopped when the cell stopped" + run.robots().stream()
+          .filter(o -> o.alarm().isPresent()).findFirst().map(o -> " on " + o.robot() + "'s " + alarm(o.alarm().get()))
+          .orElse(""));
+    }
+    return Optional.empty();
+  }
+
   private static Eval runsToEnd(Check.RunsToEnd r, RunOutcome run) {
+    RunOutcome.RobotOutcome robot = run.robot(r.meta().robot());
+    Optional<String> not = notItsOwn(robot, run);
+    if (not.isPresent()) {
+      return Eval.of(false, not.get());
+    }
     if (r.alarm().isPresent()) {
       String want = r.alarm().get();
-      return run.alarm().map(a -> Eval.of(a.code().equalsIgnoreCase(want), "the program stopped with " + alarm(a)
+      return robot.alarm().map(a -> Eval.of(a.code().equalsIgnoreCase(want), "the program stopped with " + alarm(a)
               + (a.code().equalsIgnoreCase(want) ? "" : " (expected " + want + ")")))
           .orElseGet(() -> Eval.of(false, "the program ran to its end; expected it to stop with alarm " + want));
     }
-    return run.alarm().map(a -> Eval.of(false, "the program stopped with " + alarm(a)))
-        .orElseGet(() -> Eval.of(true, String.format(Locale.ROOT, "the program ran to its end in %.2f s", run.cycleTimeSec())));
+    return robot.alarm().map(a -> Eval.of(false, "the program stopped with " + alarm(a)))
+        .orElseGet(() -> Eval.of(true, String.format(Locale.ROOT, "the program ran to its end in %.2f s", robot.cycleTimeSec())));
   }
 
   private static Eval partAt(Check.PartAt p, RunOutcome run) {
@@ -139,12 +160,15 @@ final class RunChecks {
   }
 
   private static Eval cycleTime(Check.CycleTime t, RunOutcome run) {
-    if (!run.finished()) {
+    RunOutcome.RobotOutcome robot = run.robot(t.meta().robot());
+    Optional<String> not = notItsOwn(robot, run);
+    if (!robot.finished()) {
       return Eval.of(false, "the program did not reach its end, so it has no cycle time"
-          + run.alarm().map(a -> " (" + alarm(a) + ")").orElse(""));
+          + not.or(() -> robot.alarm().map(ControllerAlarm::display).map(a -> "alarm " + a)).map(a -> " (" + a + ")")
+              .orElse(""));
     }
-    return Eval.of(run.cycleTimeSec() <= t.maxSec(), String.format(Locale.ROOT, "cycle time %.2f s (allowed %s s)",
-        run.cycleTimeSec(), Grader.fmt(t.maxSec())));
+    return Eval.of(robot.cycleTimeSec() <= t.maxSec(), String.format(Locale.ROOT, "cycle time %.2f s (allowed %s s)",
+        robot.cycleTimeSec(), Grader.fmt(t.maxSec())));
   }
 
   private static Eval endState(Check.EndState s, RunOutcome run) {
@@ -154,7 +178,7 @@ final class RunChecks {
       String key = e.getKey();
       String table = key.substring(0, key.indexOf('['));
       int i = Integer.parseInt(key.substring(key.indexOf('[') + 1, key.length() - 1));
-      Registers regs = run.registers();
+      Registers regs = run.robot(s.meta().robot()).registers();
       boolean bit = !table.equals("R") && !table.startsWith("G");
       double v;
       try {

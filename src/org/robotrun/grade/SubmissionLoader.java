@@ -117,7 +117,7 @@ public final class SubmissionLoader {
     Map<String, String> hashes = new LinkedHashMap<>();
     List<String> problems = new ArrayList<>();
     long total = 0;
-    try (java.util.stream.Stream<Path> s = Files.walk(dir, 2)) {
+    try (java.util.stream.Stream<Path> s = Files.walk(dir, 3)) {
       for (Iterator<Path> it = s.iterator(); it.hasNext(); ) {
         Path p = it.next();
         if (!Files.isRegularFile(p, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
@@ -197,7 +197,9 @@ public final class SubmissionLoader {
           continue;
         }
         hashes.put(entry, sha256(bytes));
-        if (entry.equals("cell.json") || entry.startsWith("programs/") && entry.indexOf('/', 9) < 0 && isLs(entry)) {
+        // programs/X.LS (the first robot's) and programs/ROBOT/X.LS (a robot after the first).
+        if (entry.equals("cell.json") || entry.startsWith("programs/") && isLs(entry)
+            && entry.chars().filter(ch -> ch == '/').count() <= 2) {
           keep.put(entry, bytes);
         }
       }
@@ -214,6 +216,7 @@ public final class SubmissionLoader {
     // Written only once the whole zip has passed: a hostile zip costs no disk writes.
     Files.createDirectories(temp.resolve("programs"));
     for (Map.Entry<String, byte[]> e : keep.entrySet()) {
+      Files.createDirectories(temp.resolve(e.getKey()).getParent());
       AtomicFiles.write(temp.resolve(e.getKey()), e.getValue());
     }
     List<String> problems = new ArrayList<>();

@@ -2,6 +2,7 @@ package org.robotrun.grade;
 
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 
 /**
@@ -15,11 +16,20 @@ import java.util.Optional;
  * @param limits per-run simulated-time and per-submission wall-clock limits
  * @param variations the seeded variations (count 0: none)
  * @param checks in the order they are reported
+ * @param otherPrograms in a cell of several robots: the program each robot after the first runs,
+ *     by robot name in scenario order (a robot not listed does not run); empty for one robot
  */
 public record Task(String file, String title, Path scenario, String program, Limits limits, Variations variations,
-    List<Check> checks) {
+    List<Check> checks, Map<String, String> otherPrograms) {
   public Task {
     checks = List.copyOf(checks);
+    otherPrograms = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(otherPrograms));
+  }
+
+  /** A task for a one-robot cell (or one that runs only the first robot). */
+  public Task(String file, String title, Path scenario, String program, Limits limits, Variations variations,
+      List<Check> checks) {
+    this(file, title, scenario, program, limits, variations, checks, Map.of());
   }
 
   /** Total points of all checks. */

@@ -50,7 +50,11 @@ public final class TaskReader {
   public static final int MAX_VARIATIONS = 100;
 
   private static final Set<String> TOP = Set.of(
-      "format", "title", "scenario", "program", "limits", "variations", "checks");
+      "format", "title", "scenario", "program", "robots", "limits", "variations", "checks");
+  private static final Set<String> ROBOT = Set.of("program");
+  /** The check types that look at one robot (the others look at the whole cell). */
+  private static final Set<String> ROBOT_TYPES = Set.of("runsToEnd", "noMotionStop", "cycleTime", "programUse",
+      "endState", "frame");
   private static final Set<String> LIMITS = Set.of("simSeconds", "wallSeconds");
   private static final Set<String> VARIATIONS = Set.of("count", "seed", "overridePct", "parts");
   private static final Set<String> OVERRIDE = Set.of("min", "max");
@@ -137,10 +141,14 @@ public final class TaskReader {
       String title = string(top, "title", "", false).orElse("");
       Scenario scenario = scenario(top);
       String program = string(top, "program", "", false).map(s -> s.toUpperCase(Locale.ROOT))
-          .or(() -> scenario == null ? Optional.empty() : scenario.mainProgram()).orElse(null);
+          // As robotrun run: the first robot's own mainProgram, else the scenario's.
+          .or(() -> scenario == null || scenario.robots().isEmpty() ? Optional.empty() : scenario.robots().get(0).mainProgram())
+          .or(() -> scenario == null ? Optional.empty() : scenario.mainProgram())
+          .map(s -> s.toUpperCase(Locale.ROOT)).orElse(null);
       if (program == null && scenario != null) {
         error(top.line(), "program", "missing: name the program to run (the scenario names no main program)");
       }
+      Map<String, String> others = robots(top, scenario, program);
       Task.Limits limits = limits(top);
       Task.Variations variations = variations(top, scenario);
       List<Check> checks = checks(top, scenario);
@@ -148,7 +156,8 @@ public final class TaskReader {
         return new TaskLoad.Failed(errors);
       }
       Path scenarioFile = dir.resolve(((JString) top.members().get("scenario")).value()).normalize();
-      return new TaskLoad.Loaded(new Task(file, title, scenarioFile, program, limits, variations, checks), scenario);
+      return new TaskLoad.Loaded(new Task(file, title, scenarioFile, program, limits, variations, checks, others),
+          scenario);
     }
 
     private Scenario scenario(JObject top) {
@@ -175,6 +184,44 @@ public final class TaskReader {
           yield null;
         }
       };
+    }
+
+    /**
+     * The program of each robot after the first: {@code robots.NAME.program}, else that robot's
+     * {@code mainProgram} in the scenario; a robot with neither does not run. The first robot's
+     * is {@code program}.
+     */
+    private Map<String, String> robots(JObject top, Scenario scenario, String program) {
+      JObject o = member(top, "robots", "", null, false);
+      Map<String, String> given = new LinkedHashMap<>();
+      if (o != null && scenario != null) {
+        List<String> names = scenario.robots().stream().map(r -> r.name()).toList();
+        for (Map.Entry<String, LocatedJson> e : o.members().entrySet()) {
+          String at = "robots." + e.getKey();
+          int line = o.keyLines().get(e.getKey());
+          if (!names.contains(e.getKey())) {
+            error(line, at, "the scenario has no robot \"" + e.getKey() + "\" (robots: " + String.join(", ", names) + ")");
+            continue;
+          }
+          if (e.getKey().equals(names.get(0))) {
+            error(line, at, "the first robot's program is the task's \"program\"; list only the robots after it here");
+            continue;
+          }
+          JObject r = object(e.getValue(), at, ROBOT);
+          if (r != null) {
+            string(r, "program", at, true).ifPresent(p -> given.put(e.getKey(), p.toUpperCase(Locale.ROOT)));
+          }
+        }
+      }
+      Map<String, String> out = new LinkedHashMap<>();
+      if (scenario != null) {
+        for (int i = 1; i < scenario.robots().size(); i++) {
+          var r = scenario.robots().get(i);
+          Optional<String> p = Optional.ofNullable(given.get(r.name())).or(r::mainProgram);
+          p.ifPresent(x -> out.put(r.name(), x.toUpperCase(Locale.ROOT)));
+        }
+      }
+      return out;
     }
 
     private Task.Limits limits(JObject top) {
@@ -268,6 +315,10 @@ public final class TaskReader {
         }
         Set<String> allowed = new HashSet<>(COMMON);
         allowed.addAll(extra);
+        if (ROBOT_TYPES.contains(type.get()) || o.members().containsKey("robot")) {
+          // A cell-wide check given a robot gets its own message below, not "unknown field".
+          allowed.add("robot");
+        }
         object(o, at, allowed);
         Optional<String> name = string(o, "name", at, true);
         name.ifPresent(n -> {
@@ -285,7 +336,19 @@ public final class TaskReader {
         boolean hidden = bool(o, "hidden", at).orElse(false);
         Check.Runs runs = string(o, "runs", at, false).map(s -> runs(s, o.members().get("runs").line(), at))
             .orElse(Check.Runs.NOMINAL);
-        Check.Meta meta = new Check.Meta(name.orElse(""), points, message, hidden, runs);
+        Optional<String> robot = string(o, "robot", at, false);
+        if (robot.isPresent() && scenario != null) {
+          int line = o.members().get("robot").line();
+          List<String> robots = scenario.robots().stream().map(r -> r.name()).toList();
+          if (!ROBOT_TYPES.contains(type.get())) {
+            error(line, at + ".robot", "a " + type.get() + " check looks at the whole cell; \"robot\" is for "
+                + String.join(", ", ROBOT_TYPES.stream().sorted().toList()) + " checks");
+          } else if (!robots.contains(robot.get())) {
+            error(line, at + ".robot", "the scenario has no robot \"" + robot.get() + "\" (robots: "
+                + String.join(", ", robots) + ")");
+          }
+        }
+        Check.Meta meta = new Check.Meta(name.orElse(""), points, message, hidden, runs, robot);
         Check c = check(type.get(), meta, o, at, scenario);
         if (c != null) {
           out.add(c);

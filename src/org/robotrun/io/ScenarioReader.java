@@ -72,7 +72,7 @@ public final class ScenarioReader {
 
   private static final Set<String> TOP = Set.of(
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
-      "onCollision", "state", "mode", "wiring", "production");
+      "onCollision", "state", "mode", "wiring", "production", VisionJson.KEY);
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
       "io", "userAlarms", "programs", "mainProgram");
   /** Highest UALM[i] a scenario may give a text for. */
@@ -181,6 +181,8 @@ public final class ScenarioReader {
       } else if (stateJson != null) {
         error(stateJson.line(), "state", "expected an object, got " + stateJson.describe());
       }
+      org.robotrun.world.VisionSetup vision = VisionJson.read(top, file, robots.stream().map(RobotSetup::name).toList(),
+          objects, errors);
       if (!errors.isEmpty()) {
         errors.sort((a, b) -> Integer.compare(a.line(), b.line()));
         return new CellLoad.Failed(errors);
@@ -188,7 +190,8 @@ public final class ScenarioReader {
       try {
         return new CellLoad.Loaded(new Scenario(title, description, robots, new World(objects), programs,
             mainProgram, registers, toolFrames, userFrames, camera, onCollision, mode).withWiring(wiring)
-                .withProduction(production),
+                .withProduction(production)
+                .withVision(vision),
             Optional.ofNullable(state));
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.

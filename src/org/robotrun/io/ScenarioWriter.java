@@ -150,6 +150,7 @@ public final class ScenarioWriter {
         g.writeEndObject();
       }
       ProductionJson.write(g, s.production());
+      VisionJson.write(g, s.vision(), ScenarioWriter::number);
       if (state.isPresent()) {
         StateJson.write(g, state.get());
       }

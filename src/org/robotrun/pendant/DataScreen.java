@@ -9,16 +9,20 @@ import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Position;
 import org.robotrun.program.Registers;
+import org.robotrun.program.VisionRegisters;
+import org.robotrun.program.VisionResult;
 
 /**
  * DATA: numeric registers (value and comment), position registers (summary; DETAIL for
- * components and Cartesian/joint form; RECORD, CLEAR) and flags. [TYPE] switches tables.
+ * components and Cartesian/joint form; RECORD, CLEAR), flags and vision registers (list; DETAIL
+ * for the fields iRVision shows: MODELID, ENC, OFFSET, FOUND_POS, MES). [TYPE] switches tables.
  */
 final class DataScreen implements Screen {
   enum Table {
     REGISTERS("Numeric Registers", Registers.R_COUNT),
     POSITION_REGISTERS("Position Registers", Registers.PR_COUNT),
-    FLAGS("Flags", Registers.FLAG_COUNT);
+    FLAGS("Flags", Registers.FLAG_COUNT),
+    VISION_REGISTERS("Vision Reg", VisionRegisters.COUNT);
 
     final String title;
     final int size;
@@ -33,6 +37,8 @@ final class DataScreen implements Screen {
   private final int[] cursor = new int[Table.values().length];
   /** Column on a register row: 0 comment, 1 value. */
   private int column = 1;
+  /** Vision registers: the DETAIL page of the register under the cursor instead of the list. */
+  private boolean visionDetail;
 
   private int index() {
     return cursor[table.ordinal()] + 1;
@@ -45,6 +51,9 @@ final class DataScreen implements Screen {
 
   @Override
   public List<String> body(Pendant p) {
+    if (table == Table.VISION_REGISTERS && visionDetail) {
+      return visionDetail(p.control().registers().vision(), index());
+    }
     List<String> rows = new ArrayList<>();
     int cur = cursor[table.ordinal()];
     int top = Math.max(0, Math.min(cur - Lcd.BODY_ROWS / 2, table.size - Lcd.BODY_ROWS));
@@ -66,6 +75,8 @@ final class DataScreen implements Screen {
               summary(regs.position(n)));
         }
         case FLAGS -> m + String.format(Locale.ROOT, "F[%3d]  %s", n, regs.bit(IoKind.F, n) ? "ON" : "OFF");
+        case VISION_REGISTERS -> m + String.format(Locale.ROOT, "VR[%2d] %s", n, regs.vision().get(n)
+            .map(r -> "MODELID %d  %s".formatted(r.modelId(), summary(r.offset()))).orElse("(empty)"));
       });
     }
     return rows;
@@ -84,12 +95,37 @@ final class DataScreen implements Screen {
     };
   }
 
+  /** The DETAIL page of VR[n], fields as iRVision names them. */
+  static List<String> visionDetail(VisionRegisters vr, int n) {
+    List<String> rows = new ArrayList<>();
+    rows.add(String.format(Locale.ROOT, "VR[%d]", n));
+    Optional<VisionResult> r = vr.get(n);
+    if (r.isEmpty()) {
+      rows.add("  (empty: no VISION GET_OFFSET has filled it)");
+      return rows;
+    }
+    VisionResult v = r.get();
+    rows.add("  WORKID:      0");
+    rows.add("  TYPE:        Fixed frame offset   UF: " + v.userFrame());
+    rows.add("  MODELID:     " + v.modelId());
+    rows.add("  ENC:         0");
+    rows.add("  OFFSET:      " + summary(v.offset()));
+    rows.add("  FOUND_POS[1] " + summary(v.found()));
+    rows.add(String.format(Locale.ROOT, "  MES[1]:      %.1f (score)", v.score()));
+    rows.add("  PROCESS:     " + v.process());
+    return rows;
+  }
+
   @Override
   public List<String> functionKeys(Pendant p) {
+    if (table == Table.VISION_REGISTERS) {
+      return visionDetail ? List.of("[TYPE]", "PREV", "NEXT", "LIST", "") : List.of("[TYPE]", "", "", "DETAIL", "");
+    }
     return switch (table) {
       case REGISTERS -> List.of("[TYPE]", "", "", "", "");
       case POSITION_REGISTERS -> List.of("[TYPE]", "DETAIL", "RECORD", "CLEAR", "");
       case FLAGS -> List.of("[TYPE]", "", "", "ON", "OFF");
+      case VISION_REGISTERS -> throw new IllegalStateException("handled above");
     };
   }
 
@@ -102,8 +138,10 @@ final class DataScreen implements Screen {
       case DOWN -> cursor[t] = Math.min(table.size - 1, cursor[t] + (p.shift() ? Lcd.BODY_ROWS : 1));
       case LEFT -> column = 0;
       case RIGHT -> column = 1;
-      case F1 -> p.choose("TYPE", List.of(Table.REGISTERS.title, Table.POSITION_REGISTERS.title, Table.FLAGS.title),
-          i -> table = Table.values()[i]);
+      case F1 -> p.choose("TYPE", java.util.Arrays.stream(Table.values()).map(x -> x.title).toList(), i -> {
+        table = Table.values()[i];
+        visionDetail = false;
+      });
       case ITEM -> p.entry("Item number:", "", false, s -> {
         Optional<Integer> n = Pendant.parseInt(s, 1, table.size);
         if (n.isEmpty()) {
@@ -115,9 +153,14 @@ final class DataScreen implements Screen {
       case F2 -> {
         if (table == Table.POSITION_REGISTERS) {
           PositionScreen.openRegister(p, index());
+        } else if (table == Table.VISION_REGISTERS && visionDetail) {
+          cursor[t] = Math.max(0, cursor[t] - 1);
         }
       }
       case F3 -> {
+        if (table == Table.VISION_REGISTERS && visionDetail) {
+          cursor[t] = Math.min(table.size - 1, cursor[t] + 1);
+        }
         if (table == Table.POSITION_REGISTERS) {
           if (!p.shift()) {
             p.message("RECORD: hold SHIFT and press F3");
@@ -132,6 +175,10 @@ final class DataScreen implements Screen {
       }
       case F4, F5 -> {
         int n = index();
+        if (table == Table.VISION_REGISTERS && k == Key.F4) {
+          visionDetail = !visionDetail;
+          return;
+        }
         if (table == Table.FLAGS) {
           regs.setBit(IoKind.F, n, k == Key.F4);
         } else if (table == Table.POSITION_REGISTERS && k == Key.F4) {
@@ -157,6 +204,11 @@ final class DataScreen implements Screen {
 
   private void edit(Pendant p, String typed) {
     int n = index();
+    if (table == Table.VISION_REGISTERS) {
+      // Vision registers are written by VISION GET_OFFSET only; ENTER opens the detail page.
+      visionDetail = true;
+      return;
+    }
     if (table == Table.FLAGS) {
       boolean on = !p.control().registers().bit(IoKind.F, n);
       p.control().registers().setBit(IoKind.F, n, on);

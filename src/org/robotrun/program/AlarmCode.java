@@ -92,6 +92,26 @@ public enum AlarmCode {
           + "joints would have to turn infinitely fast.",
       "RESET, then tilt the tool a little at that point so J5 stays away from 0, or use a joint move (J) there."),
 
+  // ---- vision (iRVision) ----------------------------------------------------------------------
+  // The CVIS family is the controller's; these numbers could not be checked against its alarm manual
+  // (Source.ASSUMED, docs/alarms.md and docs/vision.md say so).
+  CVIS_015("CVIS-015", AlarmSeverity.ABORT, "Vision process not found", Source.ASSUMED,
+      "VISION RUN_FIND, GET_OFFSET or GET_NFOUND names a vision process the cell does not have.",
+      "Check the name between the quotes against the scenario's vision.processes (names are not case-sensitive)."),
+  CVIS_016("CVIS-016", AlarmSeverity.ABORT, "Invalid vision register index", Source.ASSUMED,
+      "A vision register index is outside VR[1..10].",
+      "Use a vision register 1..10 (and check the R[] that holds an indirect index)."),
+  CVIS_017("CVIS-017", AlarmSeverity.ABORT, "Vision register is empty", Source.ASSUMED,
+      "PR[i]=VR[j].OFFSET, R[i]=VR[j].MODELID or VOFFSET,VR[j] reads a vision register no GET_OFFSET has filled.",
+      "Run VISION RUN_FIND, then VISION GET_OFFSET into that VR (with its JMP for nothing found) before using it."),
+  CVIS_018("CVIS-018", AlarmSeverity.ABORT, "Vision process has not run", Source.ASSUMED,
+      "VISION GET_OFFSET or GET_NFOUND asks a vision process for results before any VISION RUN_FIND of it.",
+      "Put VISION RUN_FIND 'NAME' before the GET_OFFSET / GET_NFOUND of the same process."),
+  CVIS_019("CVIS-019", AlarmSeverity.ABORT, "Vision offset frame mismatch", Source.ASSUMED,
+      "VOFFSET,VR[i] moves to a position taught in another user frame than the vision process's offset frame.",
+      "Teach the position in the vision process's user frame (UFRAME_NUM=n before the motion), or change the "
+          + "process's userFrame in the scenario."),
+
   // ---- RobotRun's own (no controller code fits, or none could be verified) --------------------
   SIMU_001("SIMU-001", AlarmSeverity.ABORT, "Divide by zero", Source.OWN,
       "The line divides by zero ('/', DIV or MOD with a zero divisor). (A controller raises an INTP alarm here; its "
@@ -153,6 +173,11 @@ public enum AlarmCode {
     VERIFIED,
     /** The controller's code as the R-30iB alarm code manual gives it, from memory; no copy could be checked here. */
     RECALLED,
+    /**
+     * A code of the controller's family (CVIS) chosen for the fault; the number could not be checked
+     * against the controller's alarm manual here (docs/alarms.md lists these as assumed).
+     */
+    ASSUMED,
     /**
    * RobotRun's own alarm ({@code SIMU-nnn}; {@code RUN-nnn} for the headless runner): no
    * controller code fits or none could be verified.

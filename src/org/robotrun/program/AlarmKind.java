@@ -21,7 +21,9 @@ public enum AlarmKind {
   ABORTED(AlarmCode.SIMU_005),
   MOTION(AlarmCode.SIMU_011),
   NOT_SUPPORTED(AlarmCode.SIMU_012),
-  RUN_FAILED(AlarmCode.INTP_105);
+  RUN_FAILED(AlarmCode.INTP_105),
+  /** An iRVision fault; the signal carries its CVIS code. */
+  VISION(AlarmCode.CVIS_015);
 
   private final AlarmCode entry;
 

@@ -166,6 +166,8 @@ final class Compiler {
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
+      case Instruction.Unsupported u when VisionStatement.runs(u.text()) ->
+          VisionOps.of(VisionStatement.parse(u.text()).orElseThrow(), this::label);
       case Instruction.Unsupported u -> u.runnable() ? new Ops.Nop()
           : new Ops.Fail(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: " + u.what());
     };

@@ -429,7 +429,9 @@ public sealed interface Instruction {
   /**
    * A statement the controller has and RobotRun does not run yet ({@code SKIP CONDITION},
    * {@code RUN}, {@code VISION RUN_FIND}, {@code COL DETECT ON} ...): kept as written so it is
-   * written back unchanged, and reported once per kind as {@code not supported: what}.
+   * written back unchanged, and reported once per kind as {@code not supported: what}. The
+   * iRVision forms {@link VisionStatement} reads from {@code text} are the exception: they run
+   * (compiled from the text) and are not reported.
    *
    * @param text the statement as written, without line number and closing {@code ;}
    * @param what the kind, as the message names it ({@code "SKIP CONDITION"})

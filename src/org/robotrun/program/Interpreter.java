@@ -67,6 +67,8 @@ public final class Interpreter {
   final ProgramStore store;
   final Registers regs;
   final MotionPort port;
+  /** The vision system ({@link VisionPort#NONE} until a cell with vision sets one). */
+  VisionPort vision = VisionPort.NONE;
   final InterpreterSettings settings;
   /** $WAITTMOUT in seconds: starts at the setting, a program may change it (global, as on the controller). */
   double waitTimeoutSec;
@@ -154,6 +156,16 @@ public final class Interpreter {
   }
 
   // ================================================================ pendant-facing API
+
+  /** The vision system VISION RUN_FIND reaches ({@link VisionPort#NONE} when the cell has none). */
+  public VisionPort visionPort() {
+    return vision;
+  }
+
+  /** Connects the vision system VISION RUN_FIND reaches. */
+  public void setVisionPort(VisionPort port) {
+    this.vision = Objects.requireNonNull(port, "port");
+  }
 
   /** Where {@code RUN} sends its requests (the controller's task manager). */
   public void setTaskPort(TaskPort port) {
@@ -1063,6 +1075,7 @@ public final class Interpreter {
     int acc = 100;
     boolean wjnt = false;
     boolean inc = false;
+    Nodes.Idx voffset = null;
     for (Motion.Option o : mv.options()) {
       switch (o) {
         case Motion.Offset x -> {
@@ -1086,12 +1099,18 @@ public final class Interpreter {
         case Motion.Wjnt x -> wjnt = true;
         case Motion.Inc x -> inc = true;
         case Motion.RawOption x -> {
-          // Not run yet: check reported it; the motion runs without it.
+          // VOFFSET,VR[i] runs (below); other raw options are not run yet: check reported them.
+          voffset = VisionStatement.voffset(x.text()).map(Nodes.Idx::new).orElse(voffset);
         }
         case Motion.TimedAction x -> {
           // Fired while the motion runs (see serviceWait).
         }
       }
+    }
+    if (voffset != null) {
+      Nodes.Idx vr = voffset;
+      target = VisionOps.offset(this, vr, target);
+      via = via.map(v -> VisionOps.offset(this, vr, v));
     }
     return new MotionRequest(mv.type(), target, via, speed, mv.speed().unit(), fine, cnt, offset, toolOffset, acc, wjnt,
         inc, false, cur.prog.name, lineIndex + 1);

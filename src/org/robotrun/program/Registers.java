@@ -31,6 +31,7 @@ public final class Registers {
   final boolean[] rIsInteger = new boolean[R_COUNT + 1];
   final Position[] pr = new Position[PR_COUNT + 1];
   final int[][] io = new int[IoKind.values().length][];
+  private final VisionRegisters vision = new VisionRegisters();
   private final double[] timerSec = new double[TIMER_COUNT + 1];
   private final boolean[] timerRunning = new boolean[TIMER_COUNT + 1];
 
@@ -53,6 +54,11 @@ public final class Registers {
   }
 
   /** The I/O sizes this controller has. */
+  /** Vision registers VR[1..10] and the vision processes' pending results. */
+  public VisionRegisters vision() {
+    return vision;
+  }
+
   public IoRanges ioRanges() {
     return ioRanges;
   }

@@ -74,6 +74,39 @@ public final class HeadlessRenderer implements AutoCloseable {
     }
   }
 
+  /**
+   * Draws the scene through any camera ({@link SceneRenderer#render(SceneSnapshot, org.joml.Matrix4f,
+   * org.joml.Vector3f, int, int)}) and writes it as a PNG, as {@link #renderPng(SceneSnapshot, OrbitCamera, Path)}.
+   */
+  public void renderPng(SceneSnapshot scene, org.joml.Matrix4f viewProj, org.joml.Vector3f eye, Path out) {
+    target.bind();
+    renderer.render(scene, viewProj, eye, target.width(), target.height());
+    writePng(out);
+  }
+
+  /** Draws the scene through any camera and waits until the GPU is done (benchmarks). */
+  public void renderFrame(SceneSnapshot scene, org.joml.Matrix4f viewProj, org.joml.Vector3f eye) {
+    target.bind();
+    renderer.render(scene, viewProj, eye, target.width(), target.height());
+    target.resolve();
+    org.lwjgl.opengl.GL33C.glFinish();
+  }
+
+  private void writePng(Path out) {
+    ByteBuffer px = target.readRgbTopDown();
+    byte[] png;
+    try {
+      png = encodePng(px, target.width(), target.height());
+    } finally {
+      MemoryUtil.memFree(px);
+    }
+    try {
+      org.robotrun.io.AtomicFiles.write(out, png);
+    } catch (java.io.IOException e) {
+      throw new java.io.UncheckedIOException(e);
+    }
+  }
+
   /** PNG bytes of tightly packed RGB pixels, top row first (stb_image_write, to memory). */
   static byte[] encodePng(ByteBuffer rgb, int width, int height) {
     java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream(width * height);

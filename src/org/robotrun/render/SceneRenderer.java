@@ -66,6 +66,28 @@ public final class SceneRenderer implements AutoCloseable {
 
   /** Renders into the currently bound framebuffer of the given size (pixels). */
   public void render(SceneSnapshot scene, OrbitCamera camera, int width, int height) {
+    draw(scene, camera.viewProjection(width, height), camera.eye(), camera.viewRect(width, height), width, height);
+    gizmo.draw(solid, axisBar, camera, width, height, gizmoEdges);
+    if (antiAliasing == AntiAliasing.FXAA) {
+      // Two rectangles, not their union: the corner and the robot are usually far apart.
+      fxaa.apply(edges, width, height);
+      fxaa.apply(gizmoEdges, width, height);
+    }
+  }
+
+  /**
+   * Renders the scene as seen through any camera (a vision camera): {@code viewProj} maps the cell
+   * (mm) to clip space, {@code eye} is the camera's position; the whole framebuffer, no orientation
+   * triad.
+   */
+  public void render(SceneSnapshot scene, Matrix4f viewProj, Vector3f eye, int width, int height) {
+    draw(scene, viewProj, eye, new int[] {0, 0, width, height}, width, height);
+    if (antiAliasing == AntiAliasing.FXAA) {
+      fxaa.apply(edges, width, height);
+    }
+  }
+
+  private void draw(SceneSnapshot scene, Matrix4f cameraViewProj, Vector3f eye, int[] view, int width, int height) {
     boolean smooth = antiAliasing == AntiAliasing.FXAA;
     edges.reset(width, height);
     gizmoEdges.reset(width, height);
@@ -75,7 +97,6 @@ public final class SceneRenderer implements AutoCloseable {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     // Draw only where the scene is framed: the window's panels cover the rest, and on a
     // software renderer every pixel of floor under them would cost as much as a visible one.
-    int[] view = camera.viewRect(width, height);
     boolean partial = view[2] < width || view[3] < height;
     if (partial) {
       glEnable(GL_SCISSOR_TEST);
@@ -84,8 +105,7 @@ public final class SceneRenderer implements AutoCloseable {
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
-    viewProj.set(camera.viewProjection(width, height));
-    Vector3f eye = camera.eye();
+    viewProj.set(cameraViewProj);
     float floorZ = (float) scene.floorZ();
 
     try (MemoryStack stack = MemoryStack.stackPush()) {
@@ -124,12 +144,6 @@ public final class SceneRenderer implements AutoCloseable {
     }
     if (partial) {
       glDisable(GL_SCISSOR_TEST);
-    }
-    gizmo.draw(solid, axisBar, camera, width, height, gizmoEdges);
-    if (smooth) {
-      // Two rectangles, not their union: the corner and the robot are usually far apart.
-      fxaa.apply(edges, width, height);
-      fxaa.apply(gizmoEdges, width, height);
     }
   }
 

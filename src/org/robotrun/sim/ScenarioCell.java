@@ -13,7 +13,9 @@ import org.robotrun.program.Position;
 import org.robotrun.robot.RobotModel;
 import org.robotrun.world.EndEffectorGeometry;
 import org.robotrun.world.RobotSetup;
+import org.robotrun.world.PartPlacement;
 import org.robotrun.world.Scenario;
+import org.robotrun.world.World;
 
 /**
  * Builds a {@link Simulation} from a loaded {@link Scenario}: one controller per robot at its
@@ -80,8 +82,13 @@ public final class ScenarioCell {
     if (scenario.userFrames().containsKey(1)) {
       first.frames().select(FrameKind.USER, 1);
     }
-    Simulation sim = new Simulation(controllers, placements, scenario.world(), tools, floorZ, tickSec);
+    // Parts the scenario drops at random stand where its vision seed puts them (issue 16).
+    World world = PartPlacement.place(scenario.world(), scenario.vision());
+    Simulation sim = new Simulation(controllers, placements, world, tools, floorZ, tickSec);
     sim.setWiring(scenario.wiring());
+    if (!scenario.vision().isEmpty()) {
+      VisionSystem.attach(sim, scenario.vision());
+    }
     sim.setCollisionAlarms(switch (scenario.onCollision()) {
       case ALARM -> true;
       case WARN -> false;

@@ -37,6 +37,7 @@ public final class Simulation {
   private boolean collisionAlarms = true;
   private boolean showBoxes;
   private final List<CollisionEvent> collisionEvents = new ArrayList<>();
+  private VisionSystem vision;
   private WiredIo wiring = WiredIo.NONE;
 
   /** Colour of bodies in contact in snapshots. */
@@ -246,6 +247,15 @@ public final class Simulation {
   /** Each robot's WORLD frame in the cell, in controller order. */
   public List<Transform> robotPlacements() {
     return X_CW;
+  }
+
+  /** The cell's vision system, when its scenario has one. */
+  public Optional<VisionSystem> vision() {
+    return Optional.ofNullable(vision);
+  }
+
+  void setVision(VisionSystem v) {
+    vision = v;
   }
 
   /** The fixtures and parts, as they stand now. */

@@ -28,16 +28,25 @@ import org.robotrun.sim.FrameTable;
  */
 public final class CheckWorkPanel implements Workbench.MenuContributor {
   private final Grader grader;
-  private final Controller controller;
+  private final List<Controller> controllers;
   private CompletableFuture<GradeResult> running;
   private GradeResult last;
   private String error = "";
   private final ImBoolean open = new ImBoolean(false);
 
-  /** @param controller the window's first robot: its programs, frames and registers are checked */
-  public CheckWorkPanel(Grader grader, Controller controller) {
+  /**
+   * @param controllers the window's robots, first robot first: the first robot's programs, frames
+   *     and registers are checked, and in a cell of several robots each other robot's programs and
+   *     registers (matched by name with the task's robots)
+   */
+  public CheckWorkPanel(Grader grader, List<Controller> controllers) {
     this.grader = grader;
-    this.controller = controller;
+    this.controllers = List.copyOf(controllers);
+  }
+
+  /** @param controller the window's only robot */
+  public CheckWorkPanel(Grader grader, Controller controller) {
+    this(grader, List.of(controller));
   }
 
   /** The Check menu (on the GUI thread, which owns the controller). */
@@ -102,8 +111,8 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
 
   /** Copies what the student has now (on this thread) and grades the copy on another. */
   private void start() {
-    List<Program> programs = controller.programNames().stream()
-        .map(n -> controller.program(n).orElseThrow()).toList();
+    Controller controller = controllers.get(0);
+    List<Program> programs = programsOf(controller);
     FrameTable frames = controller.frames();
     Map<Integer, Transform> tool = new HashMap<>();
     Map<Integer, Transform> user = new HashMap<>();
@@ -120,7 +129,34 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
     for (int i = 1; i <= Registers.PR_COUNT; i++) {
       positions.put(i, regs.position(i));
     }
-    running = CompletableFuture.supplyAsync(() -> grader.checkMyWork(programs, tool, user, registers, positions));
+    Map<String, List<Program>> otherPrograms = new HashMap<>();
+    Map<String, Grader.RobotRegisters> otherRegisters = new HashMap<>();
+    for (Controller c : controllers.subList(1, controllers.size())) {
+      otherPrograms.put(c.name(), programsOf(c));
+      otherRegisters.put(c.name(), new Grader.RobotRegisters(numbers(c.registers()), positions(c.registers())));
+    }
+    running = CompletableFuture.supplyAsync(() -> grader.checkMyWork(programs, tool, user, registers, positions,
+        otherPrograms, otherRegisters));
+  }
+
+  private static List<Program> programsOf(Controller c) {
+    return c.programNames().stream().map(n -> c.program(n).orElseThrow()).toList();
+  }
+
+  private static Map<Integer, Double> numbers(Registers regs) {
+    Map<Integer, Double> out = new HashMap<>();
+    for (int i = 1; i <= Registers.R_COUNT; i++) {
+      out.put(i, regs.number(i));
+    }
+    return out;
+  }
+
+  private static Map<Integer, Position> positions(Registers regs) {
+    Map<Integer, Position> out = new HashMap<>();
+    for (int i = 1; i <= Registers.PR_COUNT; i++) {
+      out.put(i, regs.position(i));
+    }
+    return out;
   }
 
   private static String fmt(double d) {

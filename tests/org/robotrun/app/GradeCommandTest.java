@@ -109,4 +109,21 @@ class GradeCommandTest {
     assertThat(r.exit()).isZero();
     assertThat(r.out()).doesNotContain("\u001b").startsWith("evil\\e[2Jname: 100 of 105 points");
   }
+
+  @Test
+  void aTwoRobotFolderRunsBothRobotsAndEveryRobotCheckNamesItsRobot(@TempDir Path dir) throws Exception {
+    Path sub = dir.resolve("cell-folder");
+    Files.createDirectories(sub.resolve("robot2"));
+    Files.copy(Path.of("scenarios/programs/LOADER.LS"), sub.resolve("LOADER.LS"));
+    Files.copy(Path.of("scenarios/programs/UNLOADER.LS"), sub.resolve("robot2/UNLOADER.LS"));
+    Path out = dir.resolve("out");
+    Run r = run("grade", "--task", "scenarios/tasks/two-robot-handshake.task.json", "--out", out.toString(),
+        "--no-pictures", sub.toString());
+    assertThat(r.exit()).as(r.err()).isZero();
+    assertThat(r.out()).contains("cell-folder: 95 of 100 points\n")
+        .contains("  PASS 10/10 robot2 runs to the end\n       robot2: the program ran to its end in 10.30 s\n")
+        .contains("  PASS 5/5 robot2 handshake outputs\n       robot2: DO[1] = ON, R[1] = 3\n");
+    JsonNode json = new ObjectMapper().readTree(out.resolve("cell-folder/results.json").toFile());
+    assertThat(json.get("tests").get(3).get("output").asText()).startsWith("robot2: the program ran to its end");
+  }
 }

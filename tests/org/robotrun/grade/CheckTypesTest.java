@@ -52,7 +52,7 @@ class CheckTypesTest {
     assertThat(r.checks().get(0).passed()).isTrue();
     assertThat(r.checks().get(0).feedback()).isEqualTo("UF[1] is 0.00 mm and 0.00 deg from the true frame (allowed 1 mm, 1 deg)"
         + "\nnote: cell.json:2: bogus: unknown field (expected one of: camera, description, format, frames, mainProgram, "
-        + "mode, name, objects, onCollision, production, programs, registers, robots, state, wiring) (so the task's frames and registers were used)");
+        + "mode, name, objects, onCollision, production, programs, registers, robots, state, vision, wiring) (so the task's frames and registers were used)");
   }
 
   @Test

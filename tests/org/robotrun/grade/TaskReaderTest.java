@@ -54,7 +54,7 @@ class TaskReaderTest {
          ]}
         """);
     assertThat(msg.lines().toList()).containsExactly(
-        "t.task.json:1: colour: unknown field (expected one of: checks, format, limits, program, scenario, title, variations)",
+        "t.task.json:1: colour: unknown field (expected one of: checks, format, limits, program, robots, scenario, title, variations)",
         "t.task.json:2: variations.count: expected a whole number 0..100, got 3.5",
         "t.task.json:2: variations.parts[0].part: the scenario has no part named 'part9'",
         "t.task.json:2: variations.parts[0].xMm: expected 0 to 1000, got -1",
@@ -64,7 +64,7 @@ class TaskReaderTest {
         "t.task.json:7: checks[2].type: unknown check type \"teleport\" (expected one of: handIn, programs, runsToEnd, "
             + "partAt, nothingHeld, noneDropped, noCollision, noMotionStop, cycleTime, programUse, endState, frame)",
         "t.task.json:8: checks[3].extra: unknown field (expected one of: forbids, hidden, maxMotionLines, message, name, "
-            + "points, requires, runs, type)",
+            + "points, requires, robot, runs, type)",
         "t.task.json:8: checks[3].requires[0]: unknown feature \"goto\" (expected one of: offsetPR, toolOffsetPR, "
             + "prTarget, for, call, jmpBackward, wait, if, select)",
         "t.task.json:9: checks[4].values.R[1]: expected a number, got a boolean",
@@ -89,5 +89,54 @@ class TaskReaderTest {
   @Test
   void invalidJsonSaysWhere() throws Exception {
     assertThat(read("{\"format\":1,\n\"scenario\": }")).startsWith("t.task.json:2: not valid JSON");
+  }
+
+  /** A task on the two-robot example cell, written next to a copy of it. */
+  private String readCell(String json) throws Exception {
+    Files.copy(Path.of("scenarios/two-robot-handshake.json"), dir.resolve("cell2.json"));
+    Files.createDirectories(dir.resolve("programs"));
+    Files.copy(Path.of("scenarios/programs/LOADER.LS"), dir.resolve("programs/LOADER.LS"));
+    Files.copy(Path.of("scenarios/programs/UNLOADER.LS"), dir.resolve("programs/UNLOADER.LS"));
+    Path f = dir.resolve("t.task.json");
+    Files.writeString(f, json);
+    TaskLoad l = TaskReader.read(f);
+    return l instanceof TaskLoad.Failed failed ? failed.message().replace(f.toString(), "t.task.json") : "loaded";
+  }
+
+  @Test
+  void robotsAndRobotFieldsNameRobotsOfTheScenarioAndOnlyRobotChecksTakeARobot() throws Exception {
+    String msg = readCell("""
+        {"format": 1, "scenario": "cell2.json",
+         "robots": {"robot1": {"program": "X"}, "robot9": {"program": "Y"}, "robot2": {"prog": "Z"}},
+         "checks": [
+           {"name": "a", "type": "runsToEnd", "points": 1, "robot": "robot3"},
+           {"name": "b", "type": "partAt", "points": 1, "robot": "robot2", "part": "part1", "fixture": "tray",
+            "position": {"x": 0, "y": 0, "z": 10}},
+           {"name": "c", "type": "endState", "points": 1, "robot": "robot2", "values": {"DO[1]": true}}
+         ]}
+        """);
+    assertThat(msg.lines().toList()).containsExactly(
+        "t.task.json:2: robots.robot1: the first robot's program is the task's \"program\"; list only the robots after it here",
+        "t.task.json:2: robots.robot9: the scenario has no robot \"robot9\" (robots: robot1, robot2)",
+        "t.task.json:2: robots.robot2.prog: unknown field (expected one of: program)",
+        "t.task.json:2: robots.robot2.program: missing: expected a string",
+        "t.task.json:4: checks[0].robot: the scenario has no robot \"robot3\" (robots: robot1, robot2)",
+        "t.task.json:5: checks[1].robot: a partAt check looks at the whole cell; \"robot\" is for cycleTime, endState, "
+            + "frame, noMotionStop, programUse, runsToEnd checks");
+  }
+
+  @Test
+  void robotsAfterTheFirstRunTheirScenarioMainProgramUnlessTheTaskNamesAnother() throws Exception {
+    assertThat(readCell("{\"format\":1,\"scenario\":\"cell2.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\","
+        + "\"points\":1,\"robot\":\"robot2\"}]}")).isEqualTo("loaded");
+    Task t = ((TaskLoad.Loaded) TaskReader.read(dir.resolve("t.task.json"))).task();
+    assertThat(t.program()).isEqualTo("LOADER");
+    assertThat(t.otherPrograms()).containsExactly(java.util.Map.entry("robot2", "UNLOADER"));
+    assertThat(t.checks().get(0).meta().robot()).contains("robot2");
+    Files.writeString(dir.resolve("t.task.json"), "{\"format\":1,\"scenario\":\"cell2.json\",\"robots\":{\"robot2\":"
+        + "{\"program\":\"other\"}},\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\",\"points\":1}]}");
+    Task t2 = ((TaskLoad.Loaded) TaskReader.read(dir.resolve("t.task.json"))).task();
+    assertThat(t2.otherPrograms()).containsExactly(java.util.Map.entry("robot2", "OTHER"));
+    assertThat(t2.checks().get(0).meta().robot()).isEmpty();
   }
 }
