@@ -96,6 +96,21 @@ public final class Autosave implements AutoCloseable {
   }
 
   private static boolean sameReferences(WorkspaceSnapshot a, WorkspaceSnapshot b) {
+    if (a.otherScenarios().isPresent() != b.otherScenarios().isPresent()) {
+      return false;
+    }
+    if (a.otherScenarios().isPresent()) {
+      var x = a.otherScenarios().get();
+      var y = b.otherScenarios().get();
+      if (x.size() != y.size()) {
+        return false;
+      }
+      for (int i = 0; i < x.size(); i++) {
+        if (x.get(i) != y.get(i)) {
+          return false;
+        }
+      }
+    }
     if (a.programs().size() != b.programs().size()) {
       return false;
     }
