@@ -900,7 +900,7 @@ public final class Interpreter {
       for (Object[] w : e.getValue()) {
         if (((Nodes.Node) w[0]).bool(this, "WHEN")) {
           it.remove();
-          startAction((String) w[1], "WHEN ...,CALL " + w[1], "of a condition monitor");
+          startAction((String) w[1], "WHEN ...,CALL " + w[1], "of a condition monitor", false);
           break;
         }
       }
@@ -914,10 +914,16 @@ public final class Interpreter {
    * @param what the calling form, for the alarm when the program does not exist
    * @param role how the program was started, for the alarm when it moves
    */
-  private Interpreter startAction(String name, String what, String role) {
+  private Interpreter startAction(String name, String what, String role, boolean groupless) {
     Optional<Program> p = store.find(name);
     if (p.isEmpty()) {
       throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, what + ": no such program");
+    }
+    if (groupless && p.get().usesMotionGroup()) {
+      // The controller refuses it at the moment of the call (INTP-129), whether or not PROG moves.
+      throw new AlarmSignal(AlarmKind.CALL_GROUP, what + ": " + name + " has motion group 1 (DEFAULT_GROUP = "
+          + p.get().attributes().getOrDefault("DEFAULT_GROUP", "1,*,*,*,*").strip()
+          + "); a program " + role + " needs DEFAULT_GROUP = *,*,*,*,*");
     }
     if (p.get().lines().stream().anyMatch(in -> in instanceof Instruction.Move)) {
       throw new AlarmSignal(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: the action program " + name
@@ -988,7 +994,7 @@ public final class Interpreter {
       case Instruction.Pulse p -> new Ops.PulseOp(p.kind(), new Nodes.Idx(p.port().index()), p.widthSec());
       case Instruction.Call c -> {
         Interpreter child = startAction(c.program(), t.when().label() + " ...,CALL " + c.program(),
-            "called by " + t.when().label());
+            "called by " + t.when().label(), true);
         // The program starts at the computed moment: its lines up to its first wait run now.
         Outcome o = child.tick(0);
         if (o instanceof Outcome.Alarmed al) {
