@@ -161,9 +161,12 @@ public final class Autosave implements AutoCloseable {
     return status;
   }
 
-  /** Saves what is left, waits for it (up to 10 s), stops the writer thread. */
+  /** Saves what is left, waits for it (up to 10 s), stops the writer thread. Closing again does nothing. */
   @Override
   public void close() {
+    if (writer.isShutdown()) {
+      return;
+    }
     if (!workspace.readOnly()) {
       saveNow(10_000);
     }
