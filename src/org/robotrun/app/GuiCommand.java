@@ -160,21 +160,25 @@ public final class GuiCommand implements Callable<Integer> {
       next = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
     }
     String problem = "";
-    // File ▸ Open workspace ends one window and starts the next on the other folder.
-    while (next != null) {
-      Path[] switchTo = {null};
-      Session s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forWorkspace(next));
-      // Programs opened from the file manager join the workspace's list (the first window only).
-      extraPrograms.forEach(s.controller()::saveProgram);
-      extraPrograms = List.of();
-      if (log) {
-        stage("cell and window ready");
-      }
-      if (taskLoaded != null) {
-        s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()),
-            s.sim().controllers()));
-      }
-      try (SimulatorWindow w = s.window()) {
+    // File ▸ Open workspace and a scenario switch end one session and start the next on the
+    // folder in the same window.
+    SimulatorWindow window = null;
+    try {
+      while (next != null) {
+        Path[] switchTo = {null};
+        Session s = openWorkspace(next, dirs, switchTo, width, height, WindowSettings.forWorkspace(next), window);
+        window = s.window();
+        // Programs opened from the file manager join the workspace's list (the first window only).
+        extraPrograms.forEach(s.controller()::saveProgram);
+        extraPrograms = List.of();
+        if (log) {
+          stage("cell and window ready");
+        }
+        if (taskLoaded != null) {
+          s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()),
+              s.sim().controllers()));
+        }
+        SimulatorWindow w = s.window();
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
           logFrames(w);
         }
@@ -186,13 +190,17 @@ public final class GuiCommand implements Callable<Integer> {
           });
         }
         run(s);
+        if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
+          // for the window test: what the pendant showed when the window closed
+          System.out.println(s.pendant().render());
+        }
+        problem = s.workspace().closeAndReport();
+        next = switchTo[0];
       }
-      if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
-        // for the window test: what the pendant showed when the window closed
-        System.out.println(s.pendant().render());
+    } finally {
+      if (window != null) {
+        window.close();
       }
-      problem = s.workspace().closeAndReport();
-      next = switchTo[0];
     }
     if (!problem.isEmpty()) {
       throw new UserError(problem, Main.EXIT_FAILED);
@@ -241,7 +249,7 @@ public final class GuiCommand implements Callable<Integer> {
 
   /** Builds the cell of a scenario (no workspace: nothing is saved), the pendant and the window (not yet running). */
   public static Session open(Path scenario, int width, int height, WindowSettings settings) {
-    return open(scenario, null, null, null, width, height, settings);
+    return open(scenario, null, null, null, width, height, settings, null);
   }
 
   /**
@@ -249,12 +257,14 @@ public final class GuiCommand implements Callable<Integer> {
    * the File menu, outside edits, the close guard. A File-menu switch to another workspace puts
    * its folder in {@code switchTo[0]} and closes the window.
    */
-  static Session openWorkspace(Path dir, UserDirs dirs, Path[] switchTo, int width, int height, WindowSettings settings) {
-    return open(null, dir, dirs, switchTo, width, height, settings);
+  static Session openWorkspace(Path dir, UserDirs dirs, Path[] switchTo, int width, int height, WindowSettings settings,
+      SimulatorWindow reuse) {
+    return open(null, dir, dirs, switchTo, width, height, settings, reuse);
   }
 
+  /** @param reuse the window of the session before (another workspace, a scenario switch), or null for a new one */
   private static Session open(Path scenario, Path workspaceDir, UserDirs dirs, Path[] switchTo, int width, int height,
-      WindowSettings settings) {
+      WindowSettings settings, SimulatorWindow reuse) {
     // The cell loads (JSON, robot model, programs) on another thread while GLFW, OpenGL and
     // ImGui start on this one: the two together are most of the time to the first frame.
     java.util.List<String> early = new java.util.concurrent.CopyOnWriteArrayList<>();
@@ -267,7 +277,7 @@ public final class GuiCommand implements Callable<Integer> {
         : java.util.concurrent.CompletableFuture.supplyAsync(() -> loadCell(scenario));
     SimulatorWindow w;
     try {
-      w = new SimulatorWindow("RobotRun", width, height);
+      w = reuse != null ? reuse.reopen() : new SimulatorWindow("RobotRun", width, height);
     } catch (GlUnavailableException e) {
       join(loading);  // a bad scenario is reported as such, even without a display
       throw e;
@@ -279,7 +289,9 @@ public final class GuiCommand implements Callable<Integer> {
       cell = join(loading);
       ws = wsLoading == null ? null : join(wsLoading);
     } catch (RuntimeException e) {
-      w.close();
+      if (reuse == null) {
+        w.close();  // a reused window is the caller's to close
+      }
       throw e;
     }
     Simulation sim = cell.sim();
@@ -315,11 +327,27 @@ public final class GuiCommand implements Callable<Integer> {
     PendantPanel pendantPanel = new PendantPanel(selector);
     CellPanel cellPanel = new CellPanel(sim);
     RobotModel robot = controller.model();
-    CellEditor editor = sc == null ? null : new CellEditor(sc, GuiCommand::loadStl);
-    // In a workspace the edited cell is saved with the workspace (autosave); "Save" also writes a scenario copy.
-    Path editedCopy = ws != null ? ws.session.workspace.folder().resolve("scenario-edited.json")
+    CellEditor editor = null;
+    if (sc != null) {
+      // A workspace's other named scenarios (scenarios/NAME.json) follow the active one in the list.
+      List<Scenario> all = new java.util.ArrayList<>(List.of(sc));
+      if (ws != null) {
+        all.addAll(ws.session.workspace.otherScenarios());
+      }
+      editor = new CellEditor(all, 0, GuiCommand::loadStl);
+    }
+    if (ws != null && editor != null) {
+      CellEditor ed = editor;
+      String running = sc.name();
+      ws.session.otherScenarios = () -> ed.scenarios().stream().filter(x -> !x.name().equals(running)).toList();
+    }
+    // In a workspace the edited cell is saved with the workspace (autosave); "Export" writes a scenario copy.
+    Path editedCopy = ws != null ? null
         : scenario == null ? null : scenario.toAbsolutePath().resolveSibling(stem(scenario) + "-edited.json");
     CellEditorPanel editorPanel = editor == null ? null : new CellEditorPanel(editor, editedCopy);
+    if (editorPanel != null && ws != null) {
+      editorPanel.inWorkspace();
+    }
     w.setTitle((ws != null ? ws.title()
         : "RobotRun — " + (sc != null && !sc.name().isBlank() ? sc.name() : robot.displayName()))
         + (SoftwareGl.active(System.getenv()) ? " (software rendering)" : ""));
@@ -371,6 +399,10 @@ public final class GuiCommand implements Callable<Integer> {
       bench.addMenus(menu);
       w.setShortcutHandler((key, mods) -> menu.onShortcut(key, mods) || bench.onShortcut(key, mods));
       w.setFocusGainedHandler(() -> ws.checkExternalEdits(menu));
+      ws.onSwitch(menu::tell, () -> {
+        switchTo[0] = ws.session.workspace.folder();
+        w.requestClose();
+      });
     }
     if (selector.size() > 1) {
       bench.addMenus(selector);  // after File
@@ -451,7 +483,11 @@ public final class GuiCommand implements Callable<Integer> {
           }
           if (s.editor() != null && s.editor().revision() != appliedRevision[0]) {
             appliedRevision[0] = s.editor().revision();
-            s.sim().replaceWorld(s.editor().world());
+            if (s.workspace() != null && ScenarioSwitch.wanted(s.workspace().session, s.editor())) {
+              s.workspace().switchScenario(s.editor(), cameraView(s.window().camera()));
+            } else {
+              s.sim().replaceWorld(s.editor().world());
+            }
           }
           if (dirty[0] && System.nanoTime() - lastSave[0] > 1_000_000_000L) {
             dirty[0] = false;
@@ -467,7 +503,9 @@ public final class GuiCommand implements Callable<Integer> {
           double[] q = allJoints(s.sim());
           boolean moved = !java.util.Arrays.equals(q, prevQ[0]);
           prevQ[0] = q;
-          int lcd = s.robots().get().lcd().hashCode();
+          // the selected robot's LCD as drawn last frame: building the screen once more per frame
+          // cost as much as drawing it
+          int lcd = s.bench().pendantPanel().drawnLcdHash();
           boolean lcdChanged = lcd != prevLcd[0];
           prevLcd[0] = lcd;
           boolean jog = false;
@@ -509,14 +547,30 @@ public final class GuiCommand implements Callable<Integer> {
     w.setFirstFrameHandler(() -> System.err.println("robotrun: first frame "
         + (System.currentTimeMillis() - jvmStart) + " ms after the JVM started"));
     long[] since = {System.nanoTime(), 0};
+    long[][] phases = {w.phaseNanos()};
+    var threads = ManagementFactory.getThreadMXBean();
+    var os = ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean o ? o : null;
+    long[] cpu = {threads.getCurrentThreadCpuTime(), os == null ? 0 : os.getProcessCpuTime()};
     w.setAfterFrameHandler(() -> {
       long now = System.nanoTime();
       if (now - since[0] >= 5_000_000_000L) {
         long n = w.frames() - since[1];
-        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s)%n", n, (now - since[0]) / 1e9,
-            n / ((now - since[0]) / 1e9));
+        StringBuilder per = new StringBuilder();
+        long[] p = w.phaseNanos();
+        for (int i = 0; i < p.length; i++) {
+          per.append(String.format(java.util.Locale.ROOT, " %s %.2f", SimulatorWindow.PHASES.get(i),
+              n == 0 ? 0 : (p[i] - phases[0][i]) / 1e6 / n));
+        }
+        long c = threads.getCurrentThreadCpuTime();
+        long pc = os == null ? 0 : os.getProcessCpuTime();
+        System.err.printf(java.util.Locale.ROOT, "robotrun: %d frames in %.1f s (%.1f frames/s); ms per frame:%s;"
+            + " CPU per frame: window thread %.2f ms, process %.2f ms%n", n, (now - since[0]) / 1e9,
+            n / ((now - since[0]) / 1e9), per, n == 0 ? 0 : (c - cpu[0]) / 1e6 / n, n == 0 ? 0 : (pc - cpu[1]) / 1e6 / n);
         since[0] = now;
         since[1] = w.frames();
+        phases[0] = p;
+        cpu[0] = c;
+        cpu[1] = pc;
       }
     });
   }

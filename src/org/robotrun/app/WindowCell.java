@@ -25,6 +25,8 @@ final class WindowCell {
   private final Queue<String> reports;
 
   private final String name;
+  private java.util.function.Consumer<String> tell = m -> {};
+  private Runnable reopen = () -> {};
 
   private WindowCell(WorkspaceSession session, Queue<String> reports, String name) {
     this.session = session;
@@ -128,6 +130,32 @@ final class WindowCell {
       }
     }
     return session.sim.controllers().get(0);
+  }
+
+  /** Where a refused scenario switch is told, and how the workspace is opened again after one. */
+  void onSwitch(java.util.function.Consumer<String> tell, Runnable reopen) {
+    this.tell = tell;
+    this.reopen = reopen;
+  }
+
+  /**
+   * The cell editor made another scenario active: pin the workspace's content after the switch
+   * and open the workspace again; when the chosen scenario cannot run, undo the choice and say why.
+   */
+  void switchScenario(org.robotrun.world.CellEditor editor, Optional<CameraView> camera) {
+    if (session.workspace.readOnly()) {
+      editor.undo();
+      tell.accept("This workspace is read-only (" + session.workspace.readOnlyReason()
+          + "): its scenarios can be looked at in the list but not switched.");
+      return;
+    }
+    String why = ScenarioSwitch.prepare(session, editor, camera);
+    if (!why.isEmpty()) {
+      editor.undo();
+      tell.accept(why);
+      return;
+    }
+    reopen.run();
   }
 
   void close() {

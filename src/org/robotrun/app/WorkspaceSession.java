@@ -40,6 +40,10 @@ final class WorkspaceSession implements AutoCloseable {
   final Simulation sim;
   final Autosave autosave;
   private final Path unpackedZip;
+  /** The other named scenarios to save (the window's cell editor); null: {@code scenarios/} is left as it is. */
+  volatile Supplier<List<Scenario>> otherScenarios;
+  /** When set, what every later save writes instead of the running cell (a scenario switch in progress). */
+  volatile org.robotrun.io.WorkspaceSnapshot pinned;
 
   private WorkspaceSession(Workspace workspace, Simulation sim, Autosave autosave, Path unpackedZip) {
     this.workspace = workspace;
@@ -92,9 +96,18 @@ final class WorkspaceSession implements AutoCloseable {
     }
     WorkspaceCapture.restore(ws, sim);
     String created = ws.state().map(s -> s.created()).orElse("");
-    Autosave autosave = new Autosave(ws,
-        () -> WorkspaceCapture.capture(ws.scenario(), sim, camera.get(), created, ws.folder()), report);
-    return new WorkspaceSession(ws, sim, autosave, unpacked);
+    WorkspaceSession[] self = {null};
+    Autosave autosave = new Autosave(ws, () -> {
+      WorkspaceSession s = self[0];
+      if (s.pinned != null) {
+        return s.pinned;
+      }
+      var snap = WorkspaceCapture.capture(ws.scenario(), sim, camera.get(), created, ws.folder());
+      Supplier<List<Scenario>> others = s.otherScenarios;
+      return others == null ? snap : snap.withOtherScenarios(others.get());
+    }, report);
+    self[0] = new WorkspaceSession(ws, sim, autosave, unpacked);
+    return self[0];
   }
 
   /**

@@ -96,6 +96,21 @@ public final class Autosave implements AutoCloseable {
   }
 
   private static boolean sameReferences(WorkspaceSnapshot a, WorkspaceSnapshot b) {
+    if (a.otherScenarios().isPresent() != b.otherScenarios().isPresent()) {
+      return false;
+    }
+    if (a.otherScenarios().isPresent()) {
+      var x = a.otherScenarios().get();
+      var y = b.otherScenarios().get();
+      if (x.size() != y.size()) {
+        return false;
+      }
+      for (int i = 0; i < x.size(); i++) {
+        if (x.get(i) != y.get(i)) {
+          return false;
+        }
+      }
+    }
     if (a.programs().size() != b.programs().size()) {
       return false;
     }
@@ -146,9 +161,12 @@ public final class Autosave implements AutoCloseable {
     return status;
   }
 
-  /** Saves what is left, waits for it (up to 10 s), stops the writer thread. */
+  /** Saves what is left, waits for it (up to 10 s), stops the writer thread. Closing again does nothing. */
   @Override
   public void close() {
+    if (writer.isShutdown()) {
+      return;
+    }
     if (!workspace.readOnly()) {
       saveNow(10_000);
     }

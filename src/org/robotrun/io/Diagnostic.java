@@ -79,7 +79,7 @@ public record Diagnostic(String file, int line, int column, Severity severity, K
       return Kind.RANGE;
     }
     if (message.contains("no program named") || message.contains("is not defined") || message.contains("/POS has no")
-        || message.contains("is also defined in")) {
+        || message.contains("is also defined in") || message.contains("not in the macro table")) {
       return Kind.REFERENCE;
     }
     return severity == Severity.ERROR ? Kind.SYNTAX : Kind.STYLE;

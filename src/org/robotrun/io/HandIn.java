@@ -33,8 +33,9 @@ import java.util.zip.ZipOutputStream;
 
 /**
  * A hand-in: one {@code .zip} of a workspace whose root holds {@code manifest.json},
- * {@code cell.json}, {@code programs/*.LS} and, in a cell of several robots, the later robots'
- * {@code programs/ROBOT/*.LS} (docs/workspace.md). The manifest names the
+ * {@code cell.json}, {@code programs/*.LS}, in a cell of several robots the later robots'
+ * {@code programs/ROBOT/*.LS}, and the other named scenarios {@code scenarios/*.json}
+ * (docs/workspace.md). The manifest names the
  * student as typed, the workspace's creation and last-change times, the RobotRun version, the
  * scenario's name and the SHA-256 of every other file in the zip.
  *
@@ -57,6 +58,8 @@ public final class HandIn {
       "programs/(?:[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}/)?[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}\\.(?i:ls)");
   /** The folder of a later robot's programs. */
   private static final Pattern ROBOT_FOLDER = Pattern.compile("programs/[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}/");
+  /** The cell editor's other named scenarios: {@code scenarios/NAME.json}. */
+  private static final Pattern SCENARIO_ENTRY = Pattern.compile(Workspace.SCENARIOS + "/" + Workspace.SCENARIO_FILE.pattern());
 
   private HandIn() {}
 
@@ -115,6 +118,17 @@ public final class HandIn {
           files.put(entry, BoundedFiles.read(f, LsReader.MAX_FILE_BYTES, ".LS programs"));
           FileTime t = Files.getLastModifiedTime(f);
           newest = t.compareTo(newest) > 0 ? t : newest;
+        }
+      }
+      Path scenarios = workspaceDir.resolve(Workspace.SCENARIOS);
+      if (Files.isDirectory(scenarios)) {
+        try (Stream<Path> s = Files.list(scenarios)) {
+          for (Path f : s.filter(Files::isRegularFile).sorted().toList()) {
+            String entry = Workspace.SCENARIOS + "/" + f.getFileName();
+            if (SCENARIO_ENTRY.matcher(entry).matches()) {
+              files.put(entry, Files.readAllBytes(f));
+            }
+          }
         }
       }
     } catch (IOException e) {
@@ -214,12 +228,15 @@ public final class HandIn {
             throw new HandInException(where + ": more than " + MAX_ENTRIES + " entries");
           }
           String name = e.getName();
-          if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || ROBOT_FOLDER.matcher(name).matches())) {
+          if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || ROBOT_FOLDER.matcher(name).matches()
+              || name.equals(Workspace.SCENARIOS + "/"))) {
             continue;
           }
-          if (!name.equals(MANIFEST) && !name.equals(Workspace.CELL) && !PROGRAM_ENTRY.matcher(name).matches()) {
+          if (!name.equals(MANIFEST) && !name.equals(Workspace.CELL) && !PROGRAM_ENTRY.matcher(name).matches()
+              && !SCENARIO_ENTRY.matcher(name).matches()) {
             throw new HandInException(where + ": unexpected entry \"" + name
-                + "\" (a hand-in holds manifest.json, cell.json, programs/NAME.LS and programs/ROBOT/NAME.LS only)");
+                + "\" (a hand-in holds manifest.json, cell.json, programs/NAME.LS, programs/ROBOT/NAME.LS and"
+                + " scenarios/NAME.json only)");
           }
           if (files.containsKey(name) || (name.equals(MANIFEST) && manifestBytes != null)) {
             throw new HandInException(where + ": entry \"" + name + "\" is in the zip twice");

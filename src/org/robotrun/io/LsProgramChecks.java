@@ -66,7 +66,11 @@ final class LsProgramChecks {
       Optional<Instruction.Call> call = callIn(lines.get(i));
       if (call.isPresent()) {
         String target = call.get().program();
-        if (!target.equalsIgnoreCase(self) && !known.test(target)) {
+        if (lines.get(i) instanceof Instruction.MacroCall && target.contains(" ")) {
+          // A macro of several words names no program: the controller's macro table says what it runs.
+          out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1), "macro " + target + ": not in the macro table (a "
+              + "robot's \"macros\" in the scenario define it; the line alarms when it runs without one)"));
+        } else if (!target.equalsIgnoreCase(self) && !known.test(target)) {
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1),
               (lines.get(i) instanceof Instruction.MacroCall ? "macro "
                   : lines.get(i) instanceof Instruction.Monitor ? "MONITOR "
@@ -92,6 +96,14 @@ final class LsProgramChecks {
     }
     if (in instanceof Instruction.Monitor mo) {
       return Optional.of(new Instruction.Call(mo.program(), List.of()));
+    }
+    if (in instanceof Instruction.Move mv) {
+      // TB/TA/DB ...,CALL PROG
+      for (org.robotrun.program.Motion.Option o : mv.options()) {
+        if (o instanceof org.robotrun.program.Motion.TimedAction t && t.action() instanceof Instruction.Call c) {
+          return Optional.of(c);
+        }
+      }
     }
     if (in instanceof Instruction.Run r) {
       // RUN names a program as CALL does (it starts it as a task)

@@ -29,6 +29,7 @@ import org.robotrun.sim.FrameTable;
  *     the scenario's "frames"); empty for the first
  * @param userFrames UF[i] likewise
  * @param robots the state of every robot after the first, by name (a cell of several robots)
+ * @param stringRegisters SR[i] that are not empty text, by index
  */
 public record SavedState(
     int overridePct,
@@ -41,7 +42,8 @@ public record SavedState(
     String created,
     SortedMap<Integer, Position> toolFrames,
     SortedMap<Integer, Position> userFrames,
-    SortedMap<String, SavedState> robots) {
+    SortedMap<String, SavedState> robots,
+    SortedMap<Integer, String> stringRegisters) {
 
   /** A data register's value and whether it holds an integer (FANUC keeps the two apart). */
   public record Register(double value, boolean integer) {}
@@ -55,6 +57,16 @@ public record SavedState(
     toolFrames = Collections.unmodifiableSortedMap(new TreeMap<>(toolFrames));
     userFrames = Collections.unmodifiableSortedMap(new TreeMap<>(userFrames));
     robots = Collections.unmodifiableSortedMap(new TreeMap<>(robots));
+    stringRegisters = Collections.unmodifiableSortedMap(new TreeMap<>(stringRegisters));
+  }
+
+  /** A state with no SR[] values. */
+  public SavedState(int overridePct, int activeTool, int activeUser, SortedMap<Integer, Register> registers,
+      SortedMap<Integer, Position> positionRegisters, SortedMap<String, Integer> outputs, SortedMap<String, String> comments,
+      String created, SortedMap<Integer, Position> toolFrames, SortedMap<Integer, Position> userFrames,
+      SortedMap<String, SavedState> robots) {
+    this(overridePct, activeTool, activeUser, registers, positionRegisters, outputs, comments, created, toolFrames,
+        userFrames, robots, new TreeMap<>());
   }
 
   /** One robot's state with no frames of its own and no other robots. */
@@ -86,10 +98,10 @@ public record SavedState(
         }
       }
       others.put(c.name(), new SavedState(s.overridePct, s.activeTool, s.activeUser, s.registers, s.positionRegisters,
-          s.outputs, s.comments, "", ut, uf, new TreeMap<>()));
+          s.outputs, s.comments, "", ut, uf, new TreeMap<>(), s.stringRegisters));
     }
     return new SavedState(first.overridePct, first.activeTool, first.activeUser, first.registers, first.positionRegisters,
-        first.outputs, first.comments, created, new TreeMap<>(), new TreeMap<>(), others);
+        first.outputs, first.comments, created, new TreeMap<>(), new TreeMap<>(), others, first.stringRegisters);
   }
 
   /**
@@ -148,8 +160,14 @@ public record SavedState(
       putComment(comments, "UT[" + i + "]", c.frames().comment(FrameKind.TOOL, i));
       putComment(comments, "UF[" + i + "]", c.frames().comment(FrameKind.USER, i));
     }
+    SortedMap<Integer, String> sr = new TreeMap<>();
+    for (int i = 1; i <= Registers.SR_COUNT; i++) {
+      if (!regs.string(i).isEmpty()) {
+        sr.put(i, regs.string(i));
+      }
+    }
     return new SavedState(c.overridePct(), c.frames().active(FrameKind.TOOL), c.frames().active(FrameKind.USER),
-        r, pr, out, comments, created);
+        r, pr, out, comments, created, new TreeMap<>(), new TreeMap<>(), new TreeMap<>(), sr);
   }
 
   private static void putComment(Map<String, String> comments, String key, String text) {
@@ -177,6 +195,7 @@ public record SavedState(
     }
     registers.forEach((i, v) -> c.registers().set(i, v.value(), v.integer()));
     positionRegisters.forEach(c.registers()::setPosition);
+    stringRegisters.forEach(c.registers()::setString);
     outputs.forEach((key, v) -> {
       Item item = Item.parse(key);
       IoKind kind = IoKind.valueOf(item.table());

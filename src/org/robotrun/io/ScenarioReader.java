@@ -74,7 +74,7 @@ public final class ScenarioReader {
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
       "onCollision", "state", "mode", "wiring", "production", VisionJson.KEY);
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
-      "io", "userAlarms", "programs", "mainProgram");
+      "io", "userAlarms", "programs", "mainProgram", "macros");
   /** Highest UALM[i] a scenario may give a text for. */
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
@@ -238,9 +238,10 @@ public final class ScenarioReader {
         TreeMap<Integer, String> userAlarms = userAlarms(r, at);
         List<Path> ownPrograms = programs(r, at);
         Optional<String> ownMain = mainProgram(r, at);
+        List<RobotSetup.Macro> macros = macros(r, at);
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
           out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
-              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain));
+              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros));
         }
       }
       return out;
@@ -273,6 +274,53 @@ public final class ScenarioReader {
         out.put(e.getKey(), (int) n.value());
       }
       return ok ? out : null;
+    }
+
+    /**
+     * The robot's {@code "macros"}: the macro table, {@code [{"name": "HAND1 OPEN", "program": "HOPEN"}, ...]}.
+     * A name is one or more words of letters, digits and '_' (the words a TP line holds), unique in
+     * the table whatever the case; the program is a program name.
+     */
+    private List<RobotSetup.Macro> macros(JObject r, String at) {
+      List<RobotSetup.Macro> out = new ArrayList<>();
+      JArray arr = array(r, "macros", at, false);
+      if (arr == null) {
+        return out;
+      }
+      java.util.Set<String> seen = new java.util.HashSet<>();
+      for (int i = 0; i < arr.items().size(); i++) {
+        String path = join(at, "macros[" + i + "]");
+        LocatedJson v = arr.items().get(i);
+        if (!(v instanceof JObject m)) {
+          error(v.line(), path, "expected {\"name\": \"HAND1 OPEN\", \"program\": \"HOPEN\"}, got " + v.describe());
+          continue;
+        }
+        for (String key : m.members().keySet()) {
+          if (!key.equals("name") && !key.equals("program")) {
+            error(m.keyLines().get(key), path + "." + key, "unknown field (expected name, program)");
+          }
+        }
+        Optional<String> name = string(m, "name", path, true);
+        Optional<String> program = string(m, "program", path, true);
+        boolean ok = name.isPresent() && program.isPresent();
+        if (name.isPresent() && !name.get().matches("[A-Za-z0-9_]+( [A-Za-z0-9_]+)*")) {
+          error(m.members().get("name").line(), path + ".name", "expected a macro name: words of letters, digits and '_' "
+              + "separated by one space (\"HAND1 OPEN\"), got \"" + name.get() + "\"");
+          ok = false;
+        } else if (name.isPresent() && !seen.add(name.get().toUpperCase(Locale.ROOT))) {
+          error(m.members().get("name").line(), path + ".name", "macro \"" + name.get() + "\" is already in the table");
+          ok = false;
+        }
+        if (program.isPresent() && !org.robotrun.program.Program.isValidName(program.get().toUpperCase(Locale.ROOT))) {
+          error(m.members().get("program").line(), path + ".program", "expected a program name (letters, digits, '_'), got \""
+              + program.get() + "\"");
+          ok = false;
+        }
+        if (ok) {
+          out.add(new RobotSetup.Macro(name.get(), program.get().toUpperCase(Locale.ROOT)));
+        }
+      }
+      return out;
     }
 
     /** The robot's {@code "userAlarms"}: UALM[i] texts by number. */

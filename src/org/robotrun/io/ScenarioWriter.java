@@ -157,6 +157,16 @@ public final class ScenarioWriter {
         if (r.mainProgram().isPresent()) {
           g.writeStringField("mainProgram", r.mainProgram().get());
         }
+        if (!r.macros().isEmpty()) {
+          g.writeArrayFieldStart("macros");
+          for (org.robotrun.world.RobotSetup.Macro m : r.macros()) {
+            g.writeStartObject();
+            g.writeStringField("name", m.name());
+            g.writeStringField("program", m.program());
+            g.writeEndObject();
+          }
+          g.writeEndArray();
+        }
         g.writeEndObject();
       }
       g.writeEndArray();

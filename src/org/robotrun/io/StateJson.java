@@ -28,7 +28,7 @@ import org.robotrun.sim.FrameTable;
  */
 final class StateJson {
   private static final Set<String> FIELDS = Set.of(
-      "overridePct", "utool", "uframe", "registers", "positionRegisters", "outputs", "comments", "created", "toolFrames", "userFrames", "robots");
+      "overridePct", "utool", "uframe", "registers", "positionRegisters", "outputs", "comments", "created", "toolFrames", "userFrames", "robots", "stringRegisters");
   private static final Set<String> CARTESIAN = Set.of("x", "y", "z", "w", "p", "r", "config");
   private static final Set<String> JOINT = Set.of("joints");
   private static final Pattern CONFIG = Pattern.compile(
@@ -64,6 +64,13 @@ final class StateJson {
         SavedState.Register r = e.getValue();
         // A real keeps a fraction in the file ("3.0"), so that it comes back as a real.
         g.writeNumber(r.integer() ? Long.toString((long) r.value()) : realText(r.value()));
+      }
+      g.writeEndObject();
+    }
+    if (!s.stringRegisters().isEmpty()) {
+      g.writeObjectFieldStart("stringRegisters");
+      for (Map.Entry<Integer, String> e : s.stringRegisters().entrySet()) {
+        g.writeStringField(e.getKey().toString(), e.getValue());
       }
       g.writeEndObject();
     }
@@ -210,6 +217,21 @@ final class StateJson {
         }
       });
     }
+    TreeMap<Integer, String> strings = new TreeMap<>();
+    JObject srObj = object(o, "stringRegisters", counting);
+    if (srObj != null) {
+      srObj.members().forEach((key, v) -> {
+        String at = "state.stringRegisters." + key;
+        Integer i = index(key, Registers.SR_COUNT, srObj.keyLines().get(key), at, counting);
+        if (!(v instanceof JString t)) {
+          counting.add(v.line(), at, "expected text, got " + v.describe());
+        } else if (t.value().length() > Registers.SR_LENGTH) {
+          counting.add(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.value().length());
+        } else if (i != null) {
+          strings.put(i, t.value());
+        }
+      });
+    }
     TreeMap<Integer, Position> prs = new TreeMap<>();
     JObject prObj = object(o, "positionRegisters", counting);
     if (prObj != null) {
@@ -288,7 +310,7 @@ final class StateJson {
       return null;
     }
     return new SavedState(override, utool, uframe, registers, prs, outputs, comments, created, toolFrames, userFrames,
-        robots);
+        robots, strings);
   }
 
   /** UT[i] / UF[i] of a robot after the first: Cartesian positions by number 1..10. */

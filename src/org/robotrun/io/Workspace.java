@@ -44,6 +44,10 @@ import org.robotrun.world.Scenario;
 public final class Workspace implements AutoCloseable {
   public static final String CELL = "cell.json";
   public static final String PROGRAMS = "programs";
+  /** The folder of the cell editor's other named scenarios, one {@code NAME.json} each (the active one is {@code cell.json}). */
+  public static final String SCENARIOS = "scenarios";
+  /** What a scenario file in {@link #SCENARIOS} may be called (also what a hand-in accepts). */
+  public static final java.util.regex.Pattern SCENARIO_FILE = java.util.regex.Pattern.compile("[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}\\.json");
   public static final String LOCK = ".robotrun.lock";
   /** Largest program file read (the .LS reader has no use for more). */
   public static final long MAX_PROGRAM_BYTES = 8L << 20;
@@ -59,6 +63,12 @@ public final class Workspace implements AutoCloseable {
   private final Map<String, List<Program>> robotPrograms = new LinkedHashMap<>();
   private final List<String> problems;
   private final boolean cellBlocked;
+  /** The other named scenarios read from {@code scenarios/}, in file-name order. */
+  private List<Scenario> otherScenarios = List.of();
+  /** Scenario files that could not be read (or repeat a name): never written over or deleted. */
+  private final Set<String> blockedScenarios = ConcurrentHashMap.newKeySet();
+  /** Scenario file name → the text it holds as last read or written here. */
+  private final Map<String, String> writtenScenarios = new ConcurrentHashMap<>();
   /** Program files that could not be read: never written over or deleted. */
   private final Set<Path> blocked = ConcurrentHashMap.newKeySet();
   /** Program name → its file (as loaded, or programs/NAME.LS once written). */
@@ -89,7 +99,7 @@ public final class Workspace implements AutoCloseable {
     this.scenario = scenario;
     this.state = state;
     this.programs = List.copyOf(programs);
-    this.problems = List.copyOf(problems);
+    this.problems = java.util.Collections.unmodifiableList(problems);  // open() adds the scenarios' before returning
     this.cellBlocked = cellBlocked;
   }
 
@@ -205,6 +215,7 @@ public final class Workspace implements AutoCloseable {
       perRobot.put(robot, own);
     }
     Workspace ws = new Workspace(abs, channel, lock, readOnlyReason, scenario, state, programs, problems, cellBlocked);
+    ws.readScenarios(problems);
     ws.robotPrograms.putAll(perRobot);
     perRobot.forEach((robot, ps) -> ps.forEach(p -> ws.writtenPrograms.put(robotFolder(robot) + "/" + p.name(), p)));
     ws.blocked.addAll(blocked);
@@ -225,6 +236,97 @@ public final class Workspace implements AutoCloseable {
       // stamps only serve to notice outside edits
     }
     return ws;
+  }
+
+  /**
+   * Reads {@code scenarios/*.json}. A file that cannot be read, or names a scenario another file
+   * already has, is reported and kept as it is. A file naming the active scenario is what an
+   * interrupted switch left (the same scenario is in {@code cell.json}): not loaded, and removed
+   * at the next save.
+   */
+  private void readScenarios(List<String> problems) {
+    Path folder = dir.resolve(SCENARIOS);
+    if (!Files.isDirectory(folder)) {
+      return;
+    }
+    List<Path> files;
+    try (Stream<Path> s = Files.list(folder)) {
+      files = s.filter(f -> f.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".json"))
+          .filter(Files::isRegularFile).sorted().toList();
+    } catch (IOException e) {
+      problems.add(folder + ": cannot list the scenarios (" + describe(e) + ")");
+      return;
+    }
+    List<Scenario> out = new ArrayList<>();
+    Map<String, Path> names = new HashMap<>();
+    for (Path f : files) {
+      String file = f.getFileName().toString();
+      if (!SCENARIO_FILE.matcher(file).matches()) {
+        problems.add(f + ": not loaded: a scenario file name is letters, digits, '_', '.' and '-' ending in .json"
+            + " (at most 69 characters); the file is kept as it is");
+        blockedScenarios.add(file);
+        continue;
+      }
+      switch (ScenarioReader.readCell(f)) {
+        case CellLoad.Failed failed -> {
+          problems.add(failed.message() + "\n" + f + " is kept as it is and not loaded; fix it and open the workspace again.");
+          blockedScenarios.add(file);
+        }
+        case CellLoad.Loaded l -> {
+          Scenario sc = l.scenario().name().isBlank() ? renamed(l.scenario(), file.substring(0, file.length() - 5))
+              : l.scenario();
+          if (!cellBlocked && sc.name().equals(scenario.name())) {
+            continue;  // left by an interrupted switch: cell.json holds this scenario
+          }
+          Path first = names.putIfAbsent(sc.name(), f);
+          if (first != null) {
+            problems.add(f + ": scenario '" + sc.name() + "' is also in " + first.getFileName()
+                + "; this file is not loaded and is kept as it is");
+            blockedScenarios.add(file);
+            continue;
+          }
+          try {
+            writtenScenarios.put(file, Files.readString(f, StandardCharsets.UTF_8));
+          } catch (IOException e) {
+            // then the next save writes it again
+          }
+          out.add(sc);
+        }
+      }
+    }
+    otherScenarios = List.copyOf(out);
+  }
+
+  /** {@code s} under another name. */
+  static Scenario renamed(Scenario s, String name) {
+    return new Scenario(name, s.description(), s.robots(), s.world(), s.programs(), s.mainProgram(), s.registers(),
+        s.toolFrames(), s.userFrames(), s.camera(), s.onCollision(), s.mode()).withExtrasOf(s);
+  }
+
+  /**
+   * The file each scenario is saved in: its name with every character other than letters,
+   * digits, '_', '.' and '-' made '_' (so any name gives a file name every system accepts), a
+   * number added when two names give the same file (letter case ignored, as on Windows and
+   * macOS) or a file that could not be read has it.
+   */
+  public static Map<String, Scenario> scenarioFileNames(List<Scenario> scenarios, Set<String> taken) {
+    Map<String, Scenario> out = new LinkedHashMap<>();
+    Set<String> used = new java.util.HashSet<>();
+    taken.forEach(t -> used.add(t.toLowerCase(Locale.ROOT)));
+    for (Scenario s : scenarios) {
+      String stem = s.name().isBlank() ? "unnamed" : s.name().strip().replaceAll("[^A-Za-z0-9_.\\-]", "_");
+      if (!Character.isLetterOrDigit(stem.charAt(0)) && stem.charAt(0) != '_') {
+        stem = "_" + stem;
+      }
+      stem = stem.length() > 60 ? stem.substring(0, 60) : stem;
+      String file = stem + ".json";
+      for (int n = 2; used.contains(file.toLowerCase(Locale.ROOT)); n++) {
+        file = stem + "-" + n + ".json";
+      }
+      used.add(file.toLowerCase(Locale.ROOT));
+      out.put(file, s);
+    }
+    return out;
   }
 
   private static void create(Path abs, Scenario newCell) throws IOException, WorkspaceException {
@@ -304,6 +406,11 @@ public final class Workspace implements AutoCloseable {
   /** The cell: from {@code cell.json}, or the new-workspace cell when that file could not be read. */
   public Scenario scenario() {
     return scenario;
+  }
+
+  /** The other named scenarios (the cell editor's list besides the active one), from {@code scenarios/}. */
+  public List<Scenario> otherScenarios() {
+    return otherScenarios;
   }
 
   /** The controller state saved in {@code cell.json}, if any. */
@@ -436,7 +543,32 @@ public final class Workspace implements AutoCloseable {
         first = first == null ? failure(file, ex) : first;
       }
     }
-    if (!cellBlocked && !snap.cellJson().equals(writtenCell)) {
+    // The other scenarios before cell.json and the removals after it: a crash in between leaves
+    // a scenario twice (the file copy is dropped at open), never none.
+    Map<String, String> wanted = new LinkedHashMap<>();
+    boolean scenarioFailed = false;
+    if (snap.otherScenarios().isPresent()) {
+      Path folder = dir.resolve(SCENARIOS);
+      for (Map.Entry<String, Scenario> e : scenarioFileNames(snap.otherScenarios().get(), blockedScenarios).entrySet()) {
+        String text = ScenarioWriter.toJson(e.getValue(), folder);
+        wanted.put(e.getKey(), text);
+        if (scenarioFailed || text.equals(writtenScenarios.get(e.getKey()))) {
+          continue;
+        }
+        Path file = folder.resolve(e.getKey());
+        try {
+          Files.createDirectories(folder);
+          AtomicFiles.write(file, text.getBytes(StandardCharsets.UTF_8));
+          writtenScenarios.put(e.getKey(), text);
+          touched.add(file);
+        } catch (IOException ex) {
+          first = first == null ? failure(file, ex) : first;
+          scenarioFailed = true;
+        }
+      }
+    }
+    // cell.json only once the scenario it replaces is safe in scenarios/ (a switch)
+    if (!cellBlocked && !snap.cellJson().equals(writtenCell) && !scenarioFailed) {
       Path cell = dir.resolve(CELL);
       try {
         AtomicFiles.write(cell, ScenarioWriter.readableBytes(snap.cellJson(), cell));
@@ -446,10 +578,37 @@ public final class Workspace implements AutoCloseable {
         first = first == null ? failure(cell, ex) : first;
       }
     }
+    if (snap.otherScenarios().isPresent() && !scenarioFailed && snap.cellJson().equals(writtenCell)) {
+      Path folder = dir.resolve(SCENARIOS);
+      for (String file : scenarioFilesOnDisk(folder)) {
+        if (wanted.containsKey(file) || blockedScenarios.contains(file)) {
+          continue;
+        }
+        try {
+          Files.deleteIfExists(folder.resolve(file));
+          writtenScenarios.remove(file);
+          touched.add(folder.resolve(file));
+        } catch (IOException ex) {
+          first = first == null ? failure(folder.resolve(file), ex) : first;
+        }
+      }
+    }
     if (first != null) {
       throw first;
     }
     return touched;
+  }
+
+  /** The .json files in {@code scenarios/} (none when the folder is missing or cannot be listed). */
+  private static List<String> scenarioFilesOnDisk(Path folder) {
+    if (!Files.isDirectory(folder)) {
+      return List.of();
+    }
+    try (Stream<Path> s = Files.list(folder)) {
+      return s.map(p -> p.getFileName().toString()).filter(n -> n.toLowerCase(Locale.ROOT).endsWith(".json")).sorted().toList();
+    } catch (IOException e) {
+      return List.of();
+    }
   }
 
   /** Marks {@code cellJson} as what {@code cell.json} holds (read at open), so it is not rewritten needlessly. */

@@ -93,7 +93,7 @@ public final class WorkspaceCapture {
       }
     }
     return new Scenario(base.name(), base.description(), robots, world, List.of(), main, new TreeMap<>(), tools, users,
-        camera.isPresent() ? camera : base.camera(), base.onCollision()).withExtrasOf(base);
+        camera.isPresent() ? camera : base.camera(), base.onCollision(), base.mode()).withExtrasOf(base);
   }
 
   /** The program {@code run --workspace} runs: the cell's main program while it exists, else the only one, else the one last run. */

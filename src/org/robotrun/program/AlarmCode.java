@@ -60,6 +60,11 @@ public enum AlarmCode {
           + "running, that does not exist, or that needs motion group 1 while another task holds it (cause PROG-040).",
       "Read the cause in the message. Wait until the other task ends (or ABORT it), give a program that only sets "
           + "I/O and registers no motion group (DEFAULT_GROUP = *,*,*,*,*), or create the program the PLC selects."),
+  INTP_129("INTP-129", AlarmSeverity.ABORT, "Cannot use motion group for call", Source.RECALLED,
+      "A TIME BEFORE, TIME AFTER or DISTANCE BEFORE option CALLs a program that has a motion group: a program "
+          + "called this way runs beside the motion and may not hold the arm.",
+      "Give the called program no motion group (DEFAULT_GROUP = *,*,*,*,* on its DETAIL screen), or move "
+          + "its motion lines back into the main program."),
   PROG_040("PROG-040", AlarmSeverity.WARN, "Already locked by other task", Source.RECALLED,
       "The cause under INTP-105: motion group 1 is reserved by another running program, so a second program that "
           + "moves the arm cannot start. Two tasks never move the same arm at once.",

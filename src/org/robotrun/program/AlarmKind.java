@@ -22,6 +22,8 @@ public enum AlarmKind {
   MOTION(AlarmCode.SIMU_011),
   NOT_SUPPORTED(AlarmCode.SIMU_012),
   RUN_FAILED(AlarmCode.INTP_105),
+  /** A TIME/DISTANCE BEFORE/AFTER CALL of a program with a motion group. */
+  CALL_GROUP(AlarmCode.INTP_129),
   /** An iRVision fault; the signal carries its CVIS code. */
   VISION(AlarmCode.CVIS_015);
 

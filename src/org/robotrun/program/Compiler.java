@@ -160,7 +160,7 @@ final class Compiler {
       // A WHEN line does nothing when run as a statement: it is watched through MONITOR.
       case Instruction.When w -> new Ops.Nop();
       case Instruction.AssignString a -> new Ops.AssignSrOp(idx(a.register().index()), expr(a.value()));
-      case Instruction.MacroCall c -> call(new Instruction.Call(c.name(), java.util.List.of()));
+      case Instruction.MacroCall c -> new Ops.MacroOp(c.name());
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
       case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register(), o.userFrame().map(Compiler::idx).orElse(null));
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));

@@ -429,7 +429,14 @@ public final class Interpreter {
       advancePulses(dtSec);
     }
     if (!afterTimers.isEmpty()) {
-      advanceTimedActions(dtSec);
+      try {
+        advanceTimedActions(dtSec);
+      } catch (AlarmSignal a) {
+        if (state == State.RUNNING || state == State.PAUSED) {
+          return raise(a, cur.prog.name, Math.max(1, cur.pc));
+        }
+        throw a;
+      }
     }
     if (advancesTimers) {
       regs.advanceTimers(dtSec);
@@ -893,27 +900,40 @@ public final class Interpreter {
       for (Object[] w : e.getValue()) {
         if (((Nodes.Node) w[0]).bool(this, "WHEN")) {
           it.remove();
-          startAction((String) w[1]);
+          startAction((String) w[1], "WHEN ...,CALL " + w[1], "of a condition monitor", false);
           break;
         }
       }
     }
   }
 
-  /** Starts a monitor's action program beside the program; it may not move the robot. */
-  private void startAction(String name) {
+  /**
+   * Starts an action program (of a condition monitor, or called by a TIME/DISTANCE BEFORE/AFTER
+   * option) beside the program; it may not move the robot.
+   *
+   * @param what the calling form, for the alarm when the program does not exist
+   * @param role how the program was started, for the alarm when it moves
+   */
+  private Interpreter startAction(String name, String what, String role, boolean groupless) {
     Optional<Program> p = store.find(name);
     if (p.isEmpty()) {
-      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "WHEN ...,CALL " + name + ": no such program");
+      throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, what + ": no such program");
+    }
+    if (groupless && p.get().usesMotionGroup()) {
+      // The controller refuses it at the moment of the call (INTP-129), whether or not PROG moves.
+      throw new AlarmSignal(AlarmKind.CALL_GROUP, what + ": " + name + " has motion group 1 (DEFAULT_GROUP = "
+          + p.get().attributes().getOrDefault("DEFAULT_GROUP", "1,*,*,*,*").strip()
+          + "); a program " + role + " needs DEFAULT_GROUP = *,*,*,*,*");
     }
     if (p.get().lines().stream().anyMatch(in -> in instanceof Instruction.Move)) {
       throw new AlarmSignal(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: the action program " + name
-          + " of a condition monitor moves the robot");
+          + " " + role + " moves the robot");
     }
     Interpreter child = new Interpreter(store, regs, port, settings);
     child.select(name);
     child.forward();
     actions.add(child);
+    return child;
   }
 
   /** Runs the monitors' action programs for this tick; the first alarm in one stops the program too. */
@@ -963,14 +983,31 @@ public final class Interpreter {
     }
   }
 
-  /** The output of a TIME BEFORE/AFTER action (an alarm in it is the motion line's alarm). */
+  /**
+   * The action of a TIME BEFORE/AFTER or DISTANCE BEFORE option (an alarm in it is the motion
+   * line's alarm): an output, or a CALL whose program starts now beside the program, as the
+   * controller runs it (in parallel with the motion; it may not move the robot).
+   */
   private void runTimedAction(Motion.TimedAction t) {
     Ops.Op op = switch (t.action()) {
       case Instruction.SetIo s -> new Ops.SetIoOp(s.kind(), new Nodes.Idx(s.port().index()), Compiler.expr(s.value()));
       case Instruction.Pulse p -> new Ops.PulseOp(p.kind(), new Nodes.Idx(p.port().index()), p.widthSec());
+      case Instruction.Call c -> {
+        Interpreter child = startAction(c.program(), t.when().label() + " ...,CALL " + c.program(),
+            "called by " + t.when().label(), true);
+        // The program starts at the computed moment: its lines up to its first wait run now.
+        Outcome o = child.tick(0);
+        if (o instanceof Outcome.Alarmed al) {
+          actions.remove(child);
+          throw new AlarmSignal(al.alarm().kind(), al.alarm().code(), al.alarm().message());
+        }
+        yield null;
+      }
       default -> throw new IllegalStateException("timed action " + t.action());
     };
-    op.exec(this);
+    if (op != null) {
+      op.exec(this);
+    }
   }
 
   private void advancePulses(double dtSec) {

@@ -12,9 +12,16 @@ import java.util.Map;
  * @param defaultPulseSec pulse width of {@code DO[i]=PULSE} without a width ($DEFPULSE)
  * @param userAlarmMessages UALM[i] texts ($UALRM_MSG[i]); missing ones show "UALM[i]"
  * @param ioRanges the controller's I/O index ranges (its registers are made with them)
+ * @param macros the controller's macro table (MENU &gt; SETUP &gt; Macro): macro name in upper case
+ *     with single spaces ("HAND1 OPEN") to the program it runs
  */
 public record InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth, double waitTimeoutSec,
-    double defaultPulseSec, Map<Integer, String> userAlarmMessages, IoRanges ioRanges) {
+    double defaultPulseSec, Map<Integer, String> userAlarmMessages, IoRanges ioRanges, Map<String, String> macros) {
+
+  public InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth, double waitTimeoutSec,
+      double defaultPulseSec, Map<Integer, String> userAlarmMessages, IoRanges ioRanges) {
+    this(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages, ioRanges, Map.of());
+  }
 
   public InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth, double waitTimeoutSec,
       double defaultPulseSec, Map<Integer, String> userAlarmMessages) {
@@ -30,6 +37,20 @@ public record InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth
     }
     userAlarmMessages = Map.copyOf(userAlarmMessages);
     java.util.Objects.requireNonNull(ioRanges, "ioRanges");
+    Map<String, String> m = new java.util.LinkedHashMap<>();
+    macros.forEach((k, v) -> m.put(macroKey(k), v));
+    macros = java.util.Collections.unmodifiableMap(m);
+  }
+
+  /** A macro name as the table keys it: upper case, words separated by one space. */
+  public static String macroKey(String name) {
+    return String.join(" ", name.trim().toUpperCase(java.util.Locale.ROOT).split("\\s+"));
+  }
+
+  /** These settings with the macro table {@code table} (macro name to program). */
+  public InterpreterSettings withMacros(Map<String, String> table) {
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec,
+        userAlarmMessages, ioRanges, table);
   }
 
   /** 100 000 lines per tick, depth 32, $WAITTMOUT 30 s, $DEFPULSE 0.4 s, no UALM texts, default I/O ranges. */
@@ -38,19 +59,19 @@ public record InterpreterSettings(int instructionBudgetPerTick, int maxCallDepth
   }
 
   public InterpreterSettings withBudget(int budget) {
-    return new InterpreterSettings(budget, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages, ioRanges);
+    return new InterpreterSettings(budget, maxCallDepth, waitTimeoutSec, defaultPulseSec, userAlarmMessages, ioRanges, macros);
   }
 
   public InterpreterSettings withWaitTimeoutSec(double seconds) {
-    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, seconds, defaultPulseSec, userAlarmMessages, ioRanges);
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, seconds, defaultPulseSec, userAlarmMessages, ioRanges, macros);
   }
 
   public InterpreterSettings withUserAlarmMessages(Map<Integer, String> messages) {
-    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, messages, ioRanges);
+    return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec, messages, ioRanges, macros);
   }
 
   public InterpreterSettings withIoRanges(IoRanges ranges) {
     return new InterpreterSettings(instructionBudgetPerTick, maxCallDepth, waitTimeoutSec, defaultPulseSec,
-        userAlarmMessages, ranges);
+        userAlarmMessages, ranges, macros);
   }
 }

@@ -137,12 +137,18 @@ public final class Motion {
     /** {@code TA t sec,...}: t seconds after it. */
     TIME_AFTER,
     /** {@code DB d mm,...}: when the TCP comes within d mm (straight line) of the point. */
-    DISTANCE_BEFORE
+    DISTANCE_BEFORE;
+
+    /** The option as a controller names it in alarms ({@code "TIME BEFORE"}). */
+    public String label() {
+      return name().replace('_', ' ');
+    }
   }
 
   /**
-   * {@code TB t sec,action}, {@code TA t sec,action} or {@code DB d mm,action} with an output
-   * action RobotRun runs ({@code DO[1]=ON}, {@code RO[2]=PULSE,0.5sec}, {@code GO[1]=R[3]} ...).
+   * {@code TB t sec,action}, {@code TA t sec,action} or {@code DB d mm,action} with an action
+   * RobotRun runs: an output ({@code DO[1]=ON}, {@code RO[2]=PULSE,0.5sec}, {@code GO[1]=R[3]} ...)
+   * or {@code CALL PROG} (no arguments), whose program runs beside the motion.
    *
    * @param amount seconds (TB, TA) or millimetres (DB)
    * @param text the option as written ({@code "TB   .20sec,DO[1]=ON"}), so it is written back unchanged
@@ -152,8 +158,10 @@ public final class Motion {
       Objects.requireNonNull(when, "when");
       Objects.requireNonNull(action, "action");
       Objects.requireNonNull(text, "text");
-      if (!(action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)) {
-        throw new IllegalArgumentException("a TB/TA/DB action RobotRun runs is an output: " + action);
+      if (!(action instanceof Instruction.SetIo || action instanceof Instruction.Pulse
+          || action instanceof Instruction.Call c && c.args().isEmpty())) {
+        throw new IllegalArgumentException("a TB/TA/DB action RobotRun runs is an output or a CALL without arguments: "
+            + action);
       }
       if (!(amount >= 0) || Double.isInfinite(amount)) {
         throw new IllegalArgumentException("expected 0 or more, got " + amount);

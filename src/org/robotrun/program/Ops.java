@@ -190,6 +190,32 @@ final class Ops {
     }
   }
 
+  /**
+   * A macro line: runs as a CALL of the program the macro table names; a one-word macro the
+   * table does not hold runs the program of its own name (RobotRun's default table).
+   */
+  static final class MacroOp extends Op {
+    final String name;
+
+    MacroOp(String name) {
+      this.name = name;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      String key = InterpreterSettings.macroKey(name);
+      String program = m.settings.macros().get(key);
+      if (program == null) {
+        if (key.contains(" ")) {
+          throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "macro " + key + ": not in the macro table");
+        }
+        program = name;
+      }
+      m.call(program, new Node[0], m.cur.pc);
+      return NEXT;
+    }
+  }
+
   static final class IfOp extends Op {
     final Node condition;
     final BranchOp branch;

@@ -48,6 +48,14 @@ public record Program(String name, Map<String, String> attributes, String commen
     }
   }
 
+  /**
+   * Whether this program holds motion group 1: its group mask ({@code DEFAULT_GROUP} in /ATTR)
+   * starts with 1; a program with no mask has group 1, as a program created on the pendant does.
+   */
+  public boolean usesMotionGroup() {
+    return attributes.getOrDefault("DEFAULT_GROUP", "1,*,*,*,*").strip().startsWith("1");
+  }
+
   /** A program with no attributes, comment or positions (tests, new programs). */
   public static Program of(String name, List<Instruction> lines) {
     return new Program(name, Map.of(), "", lines, Map.of());

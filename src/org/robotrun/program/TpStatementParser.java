@@ -444,6 +444,15 @@ public final class TpStatementParser extends TpTokenCursor {
             && Program.isValidName(w)) {
           yield new Instruction.MacroCall(w);
         }
+        // A macro of several words ("HAND1 OPEN"): the words alone on the line; the controller's
+        // macro table says which program it runs.
+        if (t.is(Kind.WORD) && !UNSUPPORTED.containsKey(w) && !w.startsWith("PAL") && onlyWordsFollow()) {
+          StringBuilder name = new StringBuilder(t.text());
+          while (!peek().is(Kind.EOL)) {
+            name.append(' ').append(next().text());
+          }
+          yield new Instruction.MacroCall(name.toString());
+        }
         throw unknownStatement(t);
       }
     };
@@ -902,8 +911,8 @@ public final class TpStatementParser extends TpTokenCursor {
 
   /**
    * {@code TB t sec,action} / {@code TA ...} / {@code TIME BEFORE|AFTER ...} from token {@code at}:
-   * a {@link Motion.TimedAction} when the action is an output RobotRun runs, else {@code raw}
-   * (CALL, POINT_LOGIC and other actions stay as written and are not run).
+   * a {@link Motion.TimedAction} when the action is an output or a CALL without arguments, else
+   * {@code raw} (POINT_LOGIC, CALL with arguments and other actions stay as written and are not run).
    */
   private Motion.Option timedAction(int at, Motion.RawOption raw) {
     if (at < 0) {
@@ -935,8 +944,8 @@ public final class TpStatementParser extends TpTokenCursor {
     try {
       TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
       Instruction action = p.statement();
-      if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse)
-          && Double.isFinite(amount)) {
+      if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse
+          || action instanceof Instruction.Call c && c.args().isEmpty()) && Double.isFinite(amount)) {
         return new Motion.TimedAction(when, amount, action, raw.text());
       }
     } catch (TpSyntaxError e) {

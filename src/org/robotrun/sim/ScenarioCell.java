@@ -46,7 +46,7 @@ public final class ScenarioCell {
       Controller c;
       try {
         c = new Controller(r.name(), model, start, InterpreterSettings.defaults()
-            .withIoRanges(IoRanges.of(r.io())).withUserAlarmMessages(r.userAlarms()));
+            .withIoRanges(IoRanges.of(r.io())).withUserAlarmMessages(r.userAlarms()).withMacros(macroTable(r)));
       } catch (IllegalArgumentException e) {
         throw new IllegalArgumentException("robot " + r.name() + ": " + e.getMessage(), e);
       }
@@ -94,5 +94,12 @@ public final class ScenarioCell {
       case WARN -> false;
     });
     return sim;
+  }
+
+  /** The robot's macro table as the interpreter reads it (macro name to program). */
+  private static java.util.Map<String, String> macroTable(org.robotrun.world.RobotSetup r) {
+    java.util.Map<String, String> table = new java.util.LinkedHashMap<>();
+    r.macros().forEach(m -> table.put(m.name(), m.program()));
+    return table;
   }
 }

@@ -75,8 +75,7 @@ public final class Tasks {
 
   /** Whether {@code p} has motion group 1 in its group mask (DEFAULT_GROUP; "1,*,*,*,*" when absent). */
   public static boolean usesMotionGroup(Program p) {
-    String mask = p.attributes().getOrDefault("DEFAULT_GROUP", "1,*,*,*,*").strip();
-    return mask.startsWith("1");
+    return p.usesMotionGroup();
   }
 
   /**

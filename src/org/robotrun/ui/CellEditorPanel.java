@@ -45,9 +45,21 @@ public final class CellEditorPanel {
   private boolean messageIsError;
   private long shownRevision = -1;
 
+  /** Whether edits are saved with a workspace (then the file row only exports a copy). */
+  private boolean inWorkspace;
+
   public CellEditorPanel(CellEditor editor, Path saveTo) {
     this.editor = editor;
     savePath.set(saveTo == null ? "" : saveTo.toString());
+  }
+
+  /**
+   * The editor of a workspace: every edit and the other scenarios are saved with it (autosave),
+   * switching scenario opens the chosen one, and the file row exports a copy.
+   */
+  public CellEditorPanel inWorkspace() {
+    inWorkspace = true;
+    return this;
   }
 
   /** A file dialog for STL files (the workspace engineer's lwjgl-nfd); without one a path field is shown. */
@@ -165,13 +177,17 @@ public final class CellEditorPanel {
     var scenarios = editor.scenarios();
     Txt.disabled("Scenario");
     ImGui.setNextItemWidth(-1);
-    if (ImGui.beginCombo("##scenario", editor.active().name().isBlank() ? "(unnamed)" : editor.active().name())) {
+    if (ImGui.beginCombo("##scenario", shown(editor.active().name()))) {
       for (int i = 0; i < scenarios.size(); i++) {
-        if (ImGui.selectable(scenarios.get(i).name() + "##sc" + i, i == editor.activeIndex())) {
+        if (ImGui.selectable(shown(scenarios.get(i).name()) + "##sc" + i, i == editor.activeIndex())) {
           report(editor.activate(i));
         }
       }
       ImGui.endCombo();
+    }
+    if (inWorkspace && ImGui.isItemHovered()) {
+      Txt.tooltip("Choosing another scenario opens it: its robots, frames, parts, camera and task replace the cell"
+          + " (this one is kept as it is now). Your programs stay.");
     }
     ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.55f);
     boolean enter = ImGui.inputTextWithHint("##newsc", "new scenario name", newScenario, ImGuiInputTextFlags.EnterReturnsTrue);
@@ -184,6 +200,10 @@ public final class CellEditorPanel {
     if (ImGui.button("Delete##scenario")) {
       report(editor.deleteActiveScenario());
     }
+  }
+
+  private static String shown(String name) {
+    return name.isBlank() ? "(unnamed)" : name;
   }
 
   private void drawStl() {
@@ -208,7 +228,11 @@ public final class CellEditorPanel {
       if (p.isEmpty()) {
         report(new Result.Refused("STL file: type the path of a .stl file first"));
       } else {
-        addAndSelect(editor.addMesh(Path.of(p), scale()));
+        try {
+          addAndSelect(editor.addMesh(Path.of(p), scale()));
+        } catch (java.nio.file.InvalidPathException e) {
+          report(new Result.Refused("STL file: not a file name ('" + e.getInput() + "': " + e.getReason() + ")"));
+        }
       }
     }
   }
@@ -368,13 +392,22 @@ public final class CellEditorPanel {
 
   /** Saves the active scenario as a scenario file (until the workspace saves the cell with it). */
   private void drawSave() {
-    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.65f);
-    ImGui.inputTextWithHint("##save", "save as FILE.rrcell", savePath);
-    ImGui.sameLine();
-    if (ImGui.button("Save")) {
-      report(save(Path.of(savePath.get().trim())));
+    if (inWorkspace) {
+      Txt.disabled("Edits are saved with the workspace.");
     }
-    remember("Save");
+    String button = inWorkspace ? "Export" : "Save";
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() * 0.65f);
+    ImGui.inputTextWithHint("##save", inWorkspace ? "export a copy as FILE.rrcell" : "save as FILE.rrcell", savePath);
+    ImGui.sameLine();
+    if (ImGui.button(button)) {
+      try {
+        report(save(Path.of(savePath.get().trim())));
+      } catch (java.nio.file.InvalidPathException e) {
+        report(new Result.Refused((inWorkspace ? "export as" : "save as") + ": not a file name ('" + e.getInput()
+            + "': " + e.getReason() + ")"));
+      }
+    }
+    remember(button);
   }
 
   /** Writes the active scenario to {@code file} (scenario format 1, through AtomicFiles). */

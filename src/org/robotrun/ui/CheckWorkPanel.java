@@ -71,7 +71,7 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
 
   private void draw() {
     ImGui.setNextWindowPos(ImGui.getIO().getDisplaySizeX() * 0.25f, 60, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowSize(520, ImGui.getIO().getDisplaySizeY() * 0.7f, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowSize(ImGui.getFontSize() * 40, ImGui.getIO().getDisplaySizeY() * 0.7f, ImGuiCond.FirstUseEver);
     ImGui.setNextWindowBgAlpha(0.95f);
     if (ImGui.begin("Check my work", open, ImGuiWindowFlags.NoCollapse)) {
       ImGui.pushTextWrapPos(0);

@@ -241,7 +241,7 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
     if (ImGui.beginPopupModal("Path##file", ImGuiWindowFlags.AlwaysAutoResize)) {
       Txt.wrapped(pathPrompt);
-      ImGui.setNextItemWidth(520);
+      ImGui.setNextItemWidth(ImGui.getFontSize() * 40);
       if (ImGui.isWindowAppearing()) {
         ImGui.setKeyboardFocusHere();
       }
@@ -285,7 +285,7 @@ public final class FileMenu implements Workbench.MenuContributor {
       ImGui.openPopup("RobotRun##message");
     }
     if (ImGui.beginPopupModal("RobotRun##message", ImGuiWindowFlags.AlwaysAutoResize)) {
-      ImGui.pushTextWrapPos(700);
+      ImGui.pushTextWrapPos(ImGui.getFontSize() * 54);
       ImGui.textUnformatted(messages.isEmpty() ? "" : messages.peek());
       ImGui.popTextWrapPos();
       if (ImGui.button("OK") || ImGui.isKeyPressed(GLFW_KEY_ENTER)) {
@@ -305,19 +305,19 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
     if (ImGui.beginPopupModal("Hand in", ImGuiWindowFlags.AlwaysAutoResize)) {
       ImGui.textUnformatted("Writes one .zip of this workspace (cell.json, programs/*.LS, manifest.json) for your instructor.");
-      ImGui.setNextItemWidth(400);
+      ImGui.setNextItemWidth(ImGui.getFontSize() * 31);
       ImGui.inputText("Your name", student);
-      ImGui.setNextItemWidth(400);
+      ImGui.setNextItemWidth(ImGui.getFontSize() * 31);
       ImGui.inputText("File", handInPath);
       ImGui.sameLine();
       if (ImGui.button("Choose...")) {
-        if (dialogs.save("Zip archive", "zip", null, Path.of(handInPath.get()).getFileName().toString())
+        if (dialogs.save("Zip archive", "zip", null, typedFileName(handInPath.get()))
             instanceof FileDialogs.Answer.Chosen c && !c.paths().isEmpty()) {
           handInPath.set(c.paths().get(0).toString());
         }
       }
       if (!handInError.isEmpty()) {
-        ImGui.pushTextWrapPos(640);
+        ImGui.pushTextWrapPos(ImGui.getFontSize() * 49);
         Txt.colored(0.95f, 0.3f, 0.3f, 1f, handInError);
         ImGui.popTextWrapPos();
       }
@@ -331,7 +331,10 @@ public final class FileMenu implements Workbench.MenuContributor {
           askReplace = false;
         }
       } else if (ImGui.button("Hand in")) {
-        if (java.nio.file.Files.exists(Path.of(expandHome(handInPath.get().strip())))) {
+        if (handInPath.get().isBlank()) {
+          handInError = "File: type the name of the .zip to write (or Choose...)";
+        } else if (typedFileName(handInPath.get()) != null
+            && java.nio.file.Files.exists(Path.of(expandHome(handInPath.get().strip())))) {
           askReplace = true;
         } else {
           finishHandIn(false);
@@ -342,6 +345,16 @@ public final class FileMenu implements Workbench.MenuContributor {
         ImGui.closeCurrentPopup();
       }
       ImGui.endPopup();
+    }
+  }
+
+  /** The file-name part of a typed path, "" when it has none, null when the text is no path on this system. */
+  private static String typedFileName(String typed) {
+    try {
+      Path p = Path.of(expandHome(typed.strip())).getFileName();
+      return p == null ? "" : p.toString();
+    } catch (java.nio.file.InvalidPathException e) {
+      return null;
     }
   }
 

@@ -8,8 +8,8 @@ import imgui.type.ImBoolean;
 
 /**
  * The window's on-screen help: the key map overlay (Ctrl+H or ?; F1 stays the pendant's F1),
- * the first-start card with the three things to know, and where the user guide is. Drawn over
- * the 3D view, centred in it.
+ * the first-start card with the three things to know (docked along the bottom of the 3D view, so
+ * it never hides the robot), and where the user guide is (centred in the 3D view).
  */
 public final class HelpWindows {
   /** Where the guides are: shipped beside the program and in the source tree. */
@@ -54,48 +54,94 @@ public final class HelpWindows {
     }
   }
 
+  /** The first-start card's height last frame (display pixels); 0 before it was drawn. */
+  private float welcomeHeight;
+  private WindowLayout.Rect welcomeRect = new WindowLayout.Rect(0, 0, 0, 0);
+
+  /** Where the first-start card was drawn last frame (display pixels); empty when closed (tests). */
+  public WindowLayout.Rect welcomeRect() {
+    return welcome.get() ? welcomeRect : new WindowLayout.Rect(0, 0, 0, 0);
+  }
+
   /**
-   * Draws whichever help windows are open, centred in the 3D view.
-   *
-   * @param task the scenario's exercise text ("" when it has none)
+   * How much of the bottom of the 3D view the first-start card takes (display pixels): it is
+   * docked there, so the camera frames the robot above it and the card never hides the arm.
    */
-  public void draw(WindowLayout.Rect view, String task) {
-    float cx = view.x() + view.w() / 2, cy = view.y() + view.h() / 2;
-    if (welcome.get()) {
-      ImGui.setNextWindowPos(cx, cy, ImGuiCond.Appearing, 0.5f, 0.5f);
-      ImGui.setNextWindowSizeConstraints(0, 0, Math.max(200, view.w() - 20), Math.max(150, view.h() - 20));
-      if (ImGui.begin("First steps", welcome, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
-        ImGui.pushTextWrapPos(ImGui.getFontSize() * 34);
-        if (!task.isBlank()) {
-          Txt.colored(0.95f, 0.8f, 0.35f, 1f, "Your task");
-          Txt.wrapped(task);
-          ImGui.separator();
-        }
-        Txt.colored(0.95f, 0.8f, 0.35f, 1f, "1. TP ENABLE, DEADMAN, SHIFT");
-        Txt.wrapped("As on a real teach pendant the robot only moves with TP ENABLE on and the DEADMAN and "
-            + "SHIFT held: click DEADMAN above the LCD (or hold Space) and hold Shift. Letting the DEADMAN go is "
-            + "alarm SRVO-003 (hold it, then RESET = F12). The cell starts in T1 (at most 250 mm/s) at 10% override.");
-        Txt.colored(0.95f, 0.8f, 0.35f, 1f, "2. Jogging");
-        Txt.wrapped("With the DEADMAN held, hold Shift and Q W E R T Y to move +J1..+J6 (or +X +Y +Z +W +P +R), "
-            + "A S D F G H for the minus direction. F7 (COORD) switches JOINT / JGFRM / WORLD / TOOL / USER. "
-            + "Page Up / Page Down change the speed override.");
-        Txt.colored(0.95f, 0.8f, 0.35f, 1f, "3. Your first program");
-        Txt.wrapped("SELECT (Insert) -> F1 CREATE, type a name, Enter. Then jog and press Shift+F1 "
-            + "(POINT) to record each position. Shift+F9 (FWD) runs it while you keep Shift held (T1 hold-to-run).");
-        ImGui.separator();
-        Txt.disabled("Every key: Help > Key map (Ctrl+H).  Hover a pendant key to see its keyboard key.");
-        ImGui.popTextWrapPos();
-        if (ImGui.button("Got it")) {
-          welcome.set(false);
-        }
-      }
-      ImGui.end();
+  public float welcomeDock(WindowLayout.Rect view) {
+    if (!welcome.get() || !view.visible()) {
+      return 0;
     }
+    // before the first draw: about nine lines of text
+    float h = welcomeHeight > 0 ? welcomeHeight : ImGui.getFontSize() * 11;
+    return Math.min(h, view.h() * 0.45f);
+  }
+
+  /** Whether the card's height is known (or it is closed): the camera frames the scene once it is. */
+  public boolean welcomeMeasured() {
+    return !welcome.get() || welcomeHeight > 0;
+  }
+
+  /**
+   * Draws the first-start card docked along the bottom of {@code view} (the 3D view before the
+   * card took its part): the three things to know side by side, and the task when there is one
+   * and the left column does not show it.
+   */
+  public void drawWelcome(WindowLayout.Rect view, String task) {
+    if (!welcome.get() || !view.visible()) {
+      return;
+    }
+    ImGui.setNextWindowPos(view.x(), view.bottom(), ImGuiCond.Always, 0f, 1f);
+    ImGui.setNextWindowSizeConstraints(view.w(), 0, view.w(), view.h() * 0.45f);
+    ImGui.setNextWindowBgAlpha(0.96f);
+    if (ImGui.begin("First steps##card", welcome, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse
+        | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoSavedSettings)) {
+      boolean hasTask = !task.isBlank();
+      int columns = hasTask && view.w() > ImGui.getFontSize() * 44 ? 4 : 3;
+      if (ImGui.beginTable("steps", columns, ImGuiTableFlags.SizingStretchSame | ImGuiTableFlags.BordersInnerV)) {
+        ImGui.tableNextRow();
+        if (columns == 4) {
+          step("Your task", task);
+        }
+        step("1. DEADMAN + SHIFT", "The robot moves only with TP ENABLE on, the DEADMAN held (Space, or click it above "
+            + "the LCD) and Shift held. Letting the DEADMAN go is SRVO-003: hold it, then RESET (F12).");
+        step("2. Jog", "Hold Space and Shift, then Q W E R T Y: +J1..+J6 (+X +Y +Z +W +P +R); A S D F G H: minus. "
+            + "F7 COORD changes the frame; Page Up / Down the speed.");
+        step("3. A program", "SELECT (Insert), F1 CREATE, type a name, Enter. Jog, then Shift+F1 POINT records a "
+            + "position. Shift+F9 FWD runs it while Shift is held.");
+        ImGui.endTable();
+      }
+      if (hasTask && columns == 3) {
+        Txt.wrapped("Your task: " + task);
+      }
+      if (ImGui.button("Got it")) {
+        welcome.set(false);
+      }
+      ImGui.sameLine();
+      Txt.disabledWrapped("Every key: Help > Key map (Ctrl+H). Hover a pendant key to see its keyboard key. "
+          + "This card again: Help > First steps.", false);
+      welcomeHeight = ImGui.getWindowHeight();
+      welcomeRect = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
+          ImGui.getWindowHeight());
+    }
+    ImGui.end();
+  }
+
+  private static void step(String title, String text) {
+    ImGui.tableNextColumn();
+    Txt.colored(0.95f, 0.8f, 0.35f, 1f, title);
+    Txt.wrapped(text);
+  }
+
+  /** Draws the other help windows that are open (key map, guides), centred in the 3D view. */
+  public void draw(WindowLayout.Rect view) {
+    float cx = view.x() + view.w() / 2, cy = view.y() + view.h() / 2;
     if (keyMap.get()) {
       ImGui.setNextWindowPos(cx, cy, ImGuiCond.Appearing, 0.5f, 0.5f);
       ImGui.setNextWindowSizeConstraints(0, 0, Math.max(200, view.w() - 20), Math.max(150, view.h() - 20));
       if (ImGui.begin("Key map (Ctrl+H)", keyMap, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse)) {
-        Txt.disabled("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.");
+        ImGui.pushTextWrapPos(ImGui.getFontSize() * 30);
+        Txt.disabledWrapped("Keys act while held, as on the pendant. Space is the DEADMAN, Shift is SHIFT.", true);
+        ImGui.popTextWrapPos();
         // the keypad keys are their own characters: one line for them below
         var map = PendantKeyboard.keyMap().stream().filter(r -> !r[0].matches("[0-9.,\\-]")).toList();
         int half = (map.size() + 1) / 2;

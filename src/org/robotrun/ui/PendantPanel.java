@@ -82,17 +82,29 @@ public final class PendantPanel {
     return w;
   }
 
+  private SimulatorWindow.Fill lcdRect;
+
+  /** The LCD's background drawn last frame (a clear under the panel), or null. */
+  public SimulatorWindow.Fill lcdFill() {
+    return lcdRect;
+  }
+
   /** Draws the pendant filling {@code r}. */
   public void draw(WindowLayout.Rect r) {
     drawnKeys.clear();
+    lcdRect = null;
     if (!r.visible()) {
       return;
     }
     ImGui.setNextWindowPos(r.x(), r.y(), ImGuiCond.Always);
     ImGui.setNextWindowSize(r.w(), r.h(), ImGuiCond.Always);
     requestedWidth = r.w();
-    if (ImGui.begin(TITLE, ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove
-        | ImGuiWindowFlags.NoBringToFrontOnFocus | ImGuiWindowFlags.NoTitleBar)) {
+    // the background is a clear (SimulatorWindow.Panels#fills), not a blended quad
+    ImGui.pushStyleColor(ImGuiCol.WindowBg, 0f, 0f, 0f, 0f);
+    boolean open = ImGui.begin(TITLE, ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoMove
+        | ImGuiWindowFlags.NoBringToFrontOnFocus | ImGuiWindowFlags.NoTitleBar);
+    ImGui.popStyleColor();
+    if (open) {
       if (Math.abs(ImGui.getWindowWidth() - requestedWidth) > 0.5f) {
         userWidth = ImGui.getWindowWidth();
       }
@@ -120,12 +132,22 @@ public final class PendantPanel {
     return Math.max(ImGui.getFrameHeight() - 2, Math.min(ImGui.getFrameHeight() * 1.6f, left / rows));
   }
 
+  private int drawnLcdHash;
+
+  /** The hash of the LCD text drawn last (the window's idle check compares it instead of building the screen again). */
+  public int drawnLcdHash() {
+    return drawnLcdHash;
+  }
+
   private void drawLcd() {
     Lcd lcd = pendant().lcd();
-    ImGui.pushStyleColor(ImGuiCol.ChildBg, LCD_BG_R, LCD_BG_G, LCD_BG_B, 1f);
+    drawnLcdHash = lcd.hashCode();
+    ImGui.pushStyleColor(ImGuiCol.ChildBg, 0f, 0f, 0f, 0f);  // filled by a clear (lcdRect)
     ImGui.pushStyleColor(ImGuiCol.Text, 0.05f, 0.08f, 0.05f, 1f);
     float lineH = ImGui.getTextLineHeightWithSpacing();
     ImGui.beginChild("lcd", 0, lineH * Lcd.HEIGHT + 10, true, ImGuiWindowFlags.NoScrollbar);
+    lcdRect = new SimulatorWindow.Fill(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
+        ImGui.getWindowHeight(), LCD_BG_R, LCD_BG_G, LCD_BG_B);
     for (int i = 0; i < Lcd.HEIGHT; i++) {
       String row = lcd.row(i);
       if (i == 1 && !row.isBlank()) {
@@ -168,7 +190,9 @@ public final class PendantPanel {
           + "The keyboard goes back to the pendant after Enter.");
     }
     ImGui.sameLine();
-    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() - 60);
+    // room for the Send button at any UI scale
+    float send = ImGui.calcTextSize("Send").x + 4 * ImGui.getStyle().getFramePaddingX() + ImGui.getStyle().getItemSpacingX();
+    ImGui.setNextItemWidth(ImGui.getContentRegionAvailX() - send);
     boolean enter = ImGui.inputText("##type", typed, ImGuiInputTextFlags.EnterReturnsTrue);
     ImGui.sameLine();
     if (ImGui.button("Send", ImGui.getContentRegionAvailX(), 0) || enter) {

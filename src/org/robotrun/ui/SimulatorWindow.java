@@ -134,19 +134,56 @@ public final class SimulatorWindow implements AutoCloseable {
     // ImGui never writes files itself: every file goes through AtomicFiles (see WindowSettings)
     ImGui.getIO().setIniFilename(null);
     ImGui.styleColorsDark();
-    float[] sx = new float[1], sy = new float[1];
-    glfwGetWindowContentScale(window, sx, sy);
-    contentScale = Math.max(1f, Math.min(4f, Math.max(sx[0], sy[0])));
-    if (contentScale > 1.01f) {
-      // HiDPI: a font rasterised at the monitor's scale (sharp, not stretched) and sizes to match
+    contentScale = uiScale(window, System.getenv("ROBOTRUN_UI_SCALE"));
+    // Pixels per window coordinate: 2 on a macOS Retina screen (window sizes in points), else 1.
+    int[] ww = new int[1], wh = new int[1], fbw = new int[1], fbh = new int[1];
+    glfwGetWindowSize(window, ww, wh);
+    glfwGetFramebufferSize(window, fbw, fbh);
+    float pixelRatio = ww[0] > 0 ? Math.max(1f, fbw[0] / (float) ww[0]) : 1f;
+    float raster = contentScale * pixelRatio;
+    if (Math.abs(raster - 1f) > 0.01f) {
+      // HiDPI (or a forced scale): the font rasterised at the screen's pixel density (sharp, not stretched), drawn at
+      // the size the UI scale asks for in window coordinates, and the style's sizes to match
       var cfg = new imgui.ImFontConfig();
-      cfg.setSizePixels(13f * contentScale);
+      cfg.setSizePixels(13f * raster);
       ImGui.getIO().getFonts().addFontDefault(cfg);
       cfg.destroy();
-      ImGui.getStyle().scaleAllSizes(contentScale);
+      ImGui.getIO().setFontGlobalScale(1f / pixelRatio);
+      if (Math.abs(contentScale - 1f) > 0.01f) {
+        ImGui.getStyle().scaleAllSizes(contentScale);
+      }
     }
     imguiGlfw.init(window, true);
     imguiGl3.init("#version 330 core");
+  }
+
+  /**
+   * How much larger than at 96 dpi the window's text and panels are drawn, in window coordinates:
+   * {@code ROBOTRUN_UI_SCALE} when set (0.5 to 4; for a screen that reports no scale, or to try
+   * HiDPI on an ordinary one), else the monitor's content scale divided by the pixels per window
+   * coordinate (macOS counts window sizes in points, so a Retina screen's 2 is already in them).
+   */
+  static float uiScale(long window, String forced) {
+    if (forced != null && !forced.isBlank()) {
+      try {
+        float f = Float.parseFloat(forced.trim());
+        if (f >= 0.5f && f <= 4f) {
+          return f;
+        }
+      } catch (NumberFormatException e) {
+        // fall through to the message
+      }
+      System.err.println("robotrun: ROBOTRUN_UI_SCALE: expected a number from 0.5 to 4, got '" + forced
+          + "'; using the monitor's scale");
+    }
+    float[] sx = new float[1], sy = new float[1];
+    glfwGetWindowContentScale(window, sx, sy);
+    int[] ww = new int[1], wh = new int[1], fbw = new int[1], fbh = new int[1];
+    glfwGetWindowSize(window, ww, wh);
+    glfwGetFramebufferSize(window, fbw, fbh);
+    float pixelRatio = ww[0] > 0 ? Math.max(1f, fbw[0] / (float) ww[0]) : 1f;
+    float s = Math.max(sx[0], sy[0]) / pixelRatio;
+    return Math.max(1f, Math.min(4f, s));
   }
 
   /** The window size to open with: what was asked for, or what fits the primary monitor. */
@@ -161,7 +198,12 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwGetMonitorWorkarea(monitor, x, y, ww, wh);
       float[] sx = new float[1], sy = new float[1];
       glfwGetMonitorContentScale(monitor, sx, sy);
-      float s = Math.max(1f, sx[0]);
+      // macOS counts screen coordinates in points: its content scale is not applied again
+      float s = Platform.get() == Platform.MACOSX ? 1f : Math.max(1f, sx[0]);
+      String forced = System.getenv("ROBOTRUN_UI_SCALE");
+      if (forced != null && forced.trim().matches("[0-9]+(\\.[0-9]+)?")) {
+        s = Math.max(0.5f, Math.min(4f, Float.parseFloat(forced.trim())));
+      }
       if (ww[0] > 0 && wh[0] > 0) {
         // leave room for the title bar and the task bar the work area may not count
         w = Math.min(Math.round(1280 * s), ww[0]);
@@ -271,7 +313,20 @@ public final class SimulatorWindow implements AutoCloseable {
   @FunctionalInterface
   public interface Panels {
     void draw(int framebufferWidth, int framebufferHeight);
+
+    /**
+     * Opaque rectangles (display pixels) under the panels drawn in the last {@link #draw}, filled
+     * by a clear before Dear ImGui draws over them: a panel whose own background is left out then
+     * costs nothing under a software renderer, where blending a textured background over half the
+     * window was a third of each frame.
+     */
+    default java.util.List<Fill> fills() {
+      return java.util.List.of();
+    }
   }
+
+  /** A rectangle in display pixels filled with an opaque colour (see {@link Panels#fills}). */
+  public record Fill(float x, float y, float w, float h, float r, float g, float b) {}
 
   /** Runs the event and render loop until the window is closed. */
   public void run(SceneSource scene) {
@@ -288,18 +343,24 @@ public final class SimulatorWindow implements AutoCloseable {
    */
   public void run(SceneSource scene, Panels panels, BooleanSupplier busy) {
     long start = System.nanoTime();
+    long firstFrameOfRun = frames;
     int[] fw = new int[1], fh = new int[1];
     boolean moreEdges = false;
     while (!glfwWindowShouldClose(window)) {
       boolean recentInput = System.nanoTime() - lastInputNanos < IDLE_AFTER_NANOS;
-      if (moreEdges || recentInput || busy.getAsBoolean()) {
+      // Dear ImGui sizes a new auto-sized window in a hidden first frame: the first few frames
+      // are drawn however slowly the start went, so nothing waits for the 5 s idle redraw.
+      boolean starting = frames - firstFrameOfRun < 4;
+      if (moreEdges || recentInput || starting || busy.getAsBoolean()) {
         glfwPollEvents();
       } else {
         glfwWaitEventsTimeout(IDLE_REDRAW_SEC);
       }
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
+        long t0 = System.nanoTime();
         SceneSnapshot snap = scene.snapshot((System.nanoTime() - start) / 1e9);
+        long t1 = System.nanoTime();
         imguiGlfw.newFrame();
         // one queued edge per button and key per frame: a tap within one frame is not lost
         moreEdges = mouseEdges.apply((b, down) -> {
@@ -316,9 +377,19 @@ public final class SimulatorWindow implements AutoCloseable {
         // panels first: they decide the free part of the window the scene is framed in
         panels.draw(fw[0], fh[0]);
         ImGui.render();
+        long t2 = System.nanoTime();
         renderer.render(snap, camera, fw[0], fh[0]);
+        fill(panels.fills(), fw[0], fh[0]);
+        long t3 = System.nanoTime();
         imguiGl3.renderDrawData(ImGui.getDrawData());
+        long t4 = System.nanoTime();
         glfwSwapBuffers(window);
+        long t5 = System.nanoTime();
+        phaseNanos[0] += t1 - t0;
+        phaseNanos[1] += t2 - t1;
+        phaseNanos[2] += t3 - t2;
+        phaseNanos[3] += t4 - t3;
+        phaseNanos[4] += t5 - t4;
         frames++;
         if (frames == 1) {
           firstFrame.run();
@@ -328,6 +399,50 @@ public final class SimulatorWindow implements AutoCloseable {
         glfwWaitEventsTimeout(0.1);
       }
     }
+  }
+
+  /**
+   * Makes the window ready to run again after {@link #run} ended on a close request (the next
+   * session of a scenario switch or another workspace in the same window); handlers are set anew.
+   */
+  public SimulatorWindow reopen() {
+    glfwSetWindowShouldClose(window, false);
+    afterFrame = () -> {};
+    firstFrame = () -> {};
+    lastInputNanos = System.nanoTime();
+    return this;
+  }
+
+  /** Wall time spent so far in each part of a frame (ns): simulation and scene, panels, 3D scene, panels' GL, swap. */
+  private final long[] phaseNanos = new long[5];
+
+  /** The phase names of {@link #phaseNanos()}. */
+  public static final java.util.List<String> PHASES = java.util.List.of("sim", "panels", "scene", "imgui-gl", "swap");
+
+  /** A copy of the wall time spent in each phase of all frames so far (ns), in {@link #PHASES} order (frame log). */
+  public long[] phaseNanos() {
+    return phaseNanos.clone();
+  }
+
+  /** Clears each fill's rectangle to its colour (a clear is nearly free where a blended quad is not). */
+  private static void fill(java.util.List<Fill> fills, int fbW, int fbH) {
+    if (fills.isEmpty()) {
+      return;
+    }
+    float sx = fbW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
+    float sy = fbH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
+    org.lwjgl.opengl.GL11C.glEnable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
+    for (Fill f : fills) {
+      int x0 = Math.round(f.x() * sx), x1 = Math.round((f.x() + f.w()) * sx);
+      int y0 = Math.round(f.y() * sy), y1 = Math.round((f.y() + f.h()) * sy);
+      if (x1 <= x0 || y1 <= y0) {
+        continue;
+      }
+      org.lwjgl.opengl.GL11C.glScissor(x0, fbH - y1, x1 - x0, y1 - y0);
+      org.lwjgl.opengl.GL11C.glClearColor(f.r(), f.g(), f.b(), 1f);
+      org.lwjgl.opengl.GL11C.glClear(org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT);
+    }
+    org.lwjgl.opengl.GL11C.glDisable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
   }
 
   /** Runs after every frame is on screen (layout probes, tests). */
@@ -354,7 +469,10 @@ public final class SimulatorWindow implements AutoCloseable {
     firstFrame = handler;
   }
 
-  /** The monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one). */
+  /**
+   * The UI scale in window coordinates (1 on an ordinary screen, 2 on a 192 dpi one on Windows or
+   * Linux, 1 on a macOS Retina screen whose window coordinates are points; see {@link #uiScale}).
+   */
   public float contentScale() {
     return contentScale;
   }

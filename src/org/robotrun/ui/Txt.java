@@ -20,6 +20,18 @@ public final class Txt {
     ImGui.popTextWrapPos();
   }
 
+  /** In the style's dimmed text colour, wrapped at the window's edge (or the wrap position pushed last when {@code keepWrap}). */
+  public static void disabledWrapped(String text, boolean keepWrap) {
+    imgui.ImVec4 c = ImGui.getStyle().getColor(ImGuiCol.TextDisabled);
+    ImGui.pushStyleColor(ImGuiCol.Text, c.x, c.y, c.z, c.w);
+    if (keepWrap) {
+      ImGui.textUnformatted(text);
+    } else {
+      wrapped(text);
+    }
+    ImGui.popStyleColor();
+  }
+
   /** In the style's dimmed text colour. */
   public static void disabled(String text) {
     imgui.ImVec4 c = ImGui.getStyle().getColor(ImGuiCol.TextDisabled);

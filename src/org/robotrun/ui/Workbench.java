@@ -248,6 +248,13 @@ public final class Workbench implements SimulatorWindow.Panels {
     float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
     float menuH = drawMenuBar();
     layout = WindowLayout.compute(dw, dh, menuH, scale, PendantPanel.naturalWidth(), state);
+    // the first-start card is docked along the bottom of the 3D view: the scene is framed above it
+    WindowLayout.Rect fullView = layout.view();
+    float card = help.welcomeDock(fullView);
+    if (card > 0) {
+      layout = new WindowLayout(layout.menuBar(), layout.sidebar(),
+          new WindowLayout.Rect(fullView.x(), fullView.y(), fullView.w(), fullView.h() - card), layout.pendant());
+    }
     frameScene(dw, dh);
     drawSidebar(layout.sidebar());
     pendantPanel.draw(layout.pendant());
@@ -260,7 +267,8 @@ public final class Workbench implements SimulatorWindow.Panels {
       handles.draw(camera, framebufferW, framebufferH, dw, dh, editorPanel.editor(), editorPanel.selected(), layout.view());
     }
     drawPromptStrip();
-    help.draw(layout.view(), task);
+    help.drawWelcome(fullView, layout.sidebar().visible() && state.taskOpen ? "" : task);
+    help.draw(layout.view());
     if (!help.welcomeOpen() && !state.welcomeSeen) {
       state.welcomeSeen = true;
       onLayoutChange.run();
@@ -270,6 +278,25 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
   }
 
+  @Override
+  public List<SimulatorWindow.Fill> fills() {
+    if (layout == null) {
+      return List.of();
+    }
+    // the docked columns' backgrounds: WindowBg made opaque (the two columns never overlap the scene)
+    var bg = ImGui.getStyle().getColor(imgui.flag.ImGuiCol.WindowBg);
+    List<SimulatorWindow.Fill> out = new ArrayList<>(3);
+    for (WindowLayout.Rect r : List.of(layout.sidebar(), layout.pendant())) {
+      if (r.visible()) {
+        out.add(new SimulatorWindow.Fill(r.x(), r.y(), r.w(), r.h(), bg.x, bg.y, bg.z));
+      }
+    }
+    if (pendantPanel.lcdFill() != null) {
+      out.add(pendantPanel.lcdFill());
+    }
+    return out;
+  }
+
   /** Frames the scene in the free middle part; at the first frame, backs off until it all fits. */
   private void frameScene(float dw, float dh) {
     WindowLayout.Rect v = layout.view();
@@ -277,7 +304,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     int x = Math.round(v.x() * sx), w = Math.round(v.w() * sx);
     int h = Math.round(v.h() * sy), y = framebufferH - Math.round(v.bottom() * sy);
     camera.setViewRect(x, y, w, h);
-    if (!framed && w > 0 && h > 0) {
+    if (!framed && w > 0 && h > 0 && help.welcomeMeasured()) {
       framed = true;
       List<Vector3f> pts = new ArrayList<>();
       for (DrawItem it : scene.get().items()) {
@@ -353,8 +380,11 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
     ImGui.setNextWindowPos(r.x(), r.y(), ImGuiCond.Always);
     ImGui.setNextWindowSize(r.w(), r.h(), ImGuiCond.Always);
-    if (ImGui.begin("##sidebar", ImGuiWindowFlags.NoTitleBar | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoCollapse
-        | ImGuiWindowFlags.NoBringToFrontOnFocus)) {
+    ImGui.pushStyleColor(imgui.flag.ImGuiCol.WindowBg, 0f, 0f, 0f, 0f);  // a clear underneath (fills)
+    boolean shown = ImGui.begin("##sidebar", ImGuiWindowFlags.NoTitleBar | ImGuiWindowFlags.NoMove
+        | ImGuiWindowFlags.NoCollapse | ImGuiWindowFlags.NoBringToFrontOnFocus);
+    ImGui.popStyleColor();
+    if (shown) {
       if (Math.abs(ImGui.getWindowWidth() - r.w()) > 0.5f) {
         state.sidebarWidth = ImGui.getWindowWidth() / scale;
         onLayoutChange.run();
@@ -403,7 +433,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     WindowLayout.Rect v = layout.view();
     ImGui.setNextWindowPos(v.x() + 8, v.bottom() - 8, ImGuiCond.Always, 0f, 1f);
     ImGui.setNextWindowBgAlpha(0.85f);
-    ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), 200);
+    ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), ImGui.getFontSize() * 15);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
         | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav | ImGuiWindowFlags.NoInputs)) {
       Txt.colored(1f, 0.55f, 0.45f, 1f, editorPanel.message());

@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import org.robotrun.math.Transform;
+import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
 
 /**
@@ -217,9 +218,43 @@ public final class CellEditor {
   }
 
   private Result addObject(String name, Shape shape) {
-    WorldObject o = WorldObject.of(name, ObjectKind.PART, shape, new Rgb(0xd9, 0x6b, 0x2b), Transform.IDENTITY, Optional.empty());
-    return apply(withWorld(append(o)), "added " + name);
+    Transform at = freeSpot(shape);
+    WorldObject o = WorldObject.of(name, ObjectKind.PART, shape, new Rgb(0xd9, 0x6b, 0x2b), at, Optional.empty());
+    Xyzwpr p = Xyzwpr.fromTransform(at);
+    return apply(withWorld(append(o)), "added " + name + " at X " + fmt(p.x()) + " Y " + fmt(p.y()) + " Z " + fmt(p.z()));
   }
+
+  /**
+   * Where a new object goes: standing on the floor (the first robot's base height) in front of
+   * or beside the first robot, at least {@link #CLEAR_OF_ROBOT_MM} from every robot's base axis
+   * and touching no object; the first such spot of a few rings around the robot. At the cell
+   * origin it would stand inside the robot's base and stop it with a collision alarm at once.
+   */
+  private Transform freeSpot(Shape shape) {
+    Vec3 base = active().robots().get(0).X_CB().translationVector();
+    double up = shape instanceof Shape.Box b ? b.heightMm() / 2 : shape instanceof Shape.Cylinder c ? c.heightMm() / 2 : 0;
+    World w = world();
+    for (double radius : new double[] {550, 750, 950, 1200}) {
+      for (double deg : new double[] {0, -35, 35, -70, 70, -110, 110, 180}) {
+        double x = base.x() + radius * Math.cos(Math.toRadians(deg));
+        double y = base.y() + radius * Math.sin(Math.toRadians(deg));
+        Transform t = Transform.translation(Math.rint(x), Math.rint(y), Math.rint(base.z() + up));
+        var box = shape.collisionBox(t);
+        boolean clear = w.objects().stream().noneMatch(o -> w.collisionBox(o.name()).overlaps(box))
+            && active().robots().stream().allMatch(r -> {
+              Vec3 rb = r.X_CB().translationVector();
+              return Math.hypot(rb.x() - t.translationVector().x(), rb.y() - t.translationVector().y()) >= CLEAR_OF_ROBOT_MM;
+            });
+        if (clear) {
+          return t;
+        }
+      }
+    }
+    return Transform.translation(base.x() + 550, base.y(), base.z() + up);
+  }
+
+  /** How far from a robot's base axis a new object stands at least (mm). */
+  static final double CLEAR_OF_ROBOT_MM = 450;
 
   /** A copy of {@code object} named "NAME_copy" (numbered if taken), 100 mm along +Y. */
   public Result duplicate(String object) {

@@ -19,11 +19,30 @@ import org.robotrun.math.Transform;
  *     scenario-level programs go to the first robot)
  * @param mainProgram the program {@code robotrun run --scenario} runs on this robot (empty: the
  *     first robot runs the scenario's main program, another robot runs nothing)
+ * @param macros the controller's macro table (MENU &gt; SETUP &gt; Macro), in its order: each
+ *     macro name and the program it runs
  */
 public record RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
     ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms,
-    List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram) {
+    List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram, List<Macro> macros) {
+
+  /** One row of the macro table: a macro name ("HAND1 OPEN") and the program it runs ("HOPEN"). */
+  public record Macro(String name, String program) {
+    public Macro {
+      java.util.Objects.requireNonNull(name, "name");
+      java.util.Objects.requireNonNull(program, "program");
+    }
+  }
+
+  /** A robot with an empty macro table. */
+  public RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
+      ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms,
+      List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram) {
+    this(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, List.of());
+  }
+
   public RobotSetup {
+    macros = List.copyOf(macros);
     java.util.Objects.requireNonNull(toolIo, "toolIo");
     java.util.Objects.requireNonNull(mainProgram, "mainProgram");
     programs = programs.stream().map(p -> p.toAbsolutePath().normalize()).toList();
@@ -43,12 +62,17 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
 
   /** This robot standing at other initial joints (rad, pendant convention); everything else kept. */
   public RobotSetup withJoints(List<Double> jointsRad) {
-    return new RobotSetup(name, modelId, X_CB, endEffector, jointsRad, toolIo, io, userAlarms, programs, mainProgram);
+    return new RobotSetup(name, modelId, X_CB, endEffector, jointsRad, toolIo, io, userAlarms, programs, mainProgram, macros);
   }
 
   /** This robot with other programs of its own and main program. */
   public RobotSetup withPrograms(List<java.nio.file.Path> files, java.util.Optional<String> main) {
-    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main);
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main, macros);
+  }
+
+  /** This robot with another macro table. */
+  public RobotSetup withMacros(List<Macro> table) {
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, table);
   }
 
   /** A robot with the controller's default I/O sizes and no UALM texts. */

@@ -30,6 +30,7 @@ class CellWorkspaceTest {
       assertThat(one.programNames()).containsExactly("LOADER");
       assertThat(two.programNames()).containsExactly("UNLOADER");
       two.registers().setInteger(5, 42);
+      two.registers().setString(3, "robot2 text");
       two.registers().setPosition(3, new Position.Joint(1, -2, 3, -4, 5, -6));
       two.registers().setBit(IoKind.DO, 7, true);
       two.setRegisterComment("R", 5, "parts out");
@@ -55,6 +56,8 @@ class CellWorkspaceTest {
       assertThat(two.programNames()).containsExactly("SHARED");
       assertThat(two.registers().number(5)).isEqualTo(42);
       assertThat(one.registers().number(5)).isEqualTo(1);
+      assertThat(two.registers().string(3)).isEqualTo("robot2 text");
+      assertThat(one.registers().string(3)).as("SR[] are per controller").isEmpty();
       assertThat(two.registers().position(3)).isEqualTo(new Position.Joint(1, -2, 3, -4, 5, -6));
       assertThat(two.registers().bit(IoKind.DO, 7)).isTrue();
       assertThat(one.registers().bit(IoKind.DO, 7)).isFalse();

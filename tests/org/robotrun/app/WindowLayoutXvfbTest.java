@@ -30,13 +30,17 @@ class WindowLayoutXvfbTest {
 
   /** One window run serves both tests: starting a JVM on an X server is the slow part. */
   private static List<String> lines;
+  /** The same at a UI scale of 2 (ROBOTRUN_UI_SCALE, as a HiDPI screen's content scale would give). */
+  private static List<String> scaled;
   private static Path dir;
 
   @BeforeAll
   static void runTheWindowOnce(@TempDir Path tmp) throws Exception {
     needsXvfb();
     dir = tmp;
-    lines = probe(tmp, "1024x640", "1366x768", "1920x1080", "1024x640", "1920x1080", "--add-box");
+    lines = probe(tmp.resolve("1"), Map.of(), "1920x1080", "1024x640", "1366x768", "1920x1080", "1024x640", "1920x1080",
+        "--add-box");
+    scaled = probe(tmp.resolve("2"), Map.of("ROBOTRUN_UI_SCALE", "2"), "2800x1600", "2048x1280", "2732x1536");
   }
 
   static void needsXvfb() {
@@ -58,7 +62,9 @@ class WindowLayoutXvfbTest {
     return false;
   }
 
-  private static List<String> probe(Path tmp, String... args) throws IOException, InterruptedException {
+  private static List<String> probe(Path tmp, Map<String, String> env, String screen, String... args)
+      throws IOException, InterruptedException {
+    Files.createDirectories(tmp);
     Path out = tmp.resolve("probe.txt");
     Path scenario = Path.of("scenarios/pick-and-place.json").toAbsolutePath();
     Path copy = tmp.resolve("pick-and-place.json");
@@ -69,12 +75,15 @@ class WindowLayoutXvfbTest {
         Files.copy(p, tmp.resolve("programs").resolve(p.getFileName()));
       }
     }
-    List<String> cmd = new ArrayList<>(List.of("xvfb-run", "-a", "-s", "-screen 0 1920x1080x24",
+    List<String> cmd = new ArrayList<>(List.of("xvfb-run", "-a", "-s", "-screen 0 " + screen + "x24",
         Path.of(System.getProperty("java.home"), "bin", "java").toString(), "--enable-native-access=ALL-UNNAMED",
         "-cp", System.getProperty("java.class.path"), WindowProbe.class.getName(),
         out.toString(), copy.toString(), tmp.resolve("config").toString()));
     cmd.addAll(List.of(args));
-    Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(tmp.resolve("log.txt").toFile()).start();
+    ProcessBuilder pb = new ProcessBuilder(cmd);
+    pb.environment().remove("ROBOTRUN_UI_SCALE");
+    pb.environment().putAll(env);
+    Process p = pb.redirectErrorStream(true).redirectOutput(tmp.resolve("log.txt").toFile()).start();
     if (!p.waitFor(120, TimeUnit.SECONDS)) {
       p.destroyForcibly();
       throw new AssertionError("the window probe did not finish in 120 s: " + Files.readString(tmp.resolve("log.txt")));
@@ -115,6 +124,26 @@ class WindowLayoutXvfbTest {
   void atEverySizeThePendantFitsAndNoPanelCoversTheRobot() {
     var recorded = sizes(lines);
     assertThat(recorded).hasSize(5);
+    checkLayouts(recorded);
+    // the first-start card is open at start (a fresh settings folder), docked under the view
+    double[] card = recorded.get(0).get("card");
+    double[] view = recorded.get(0).get("view");
+    assertThat(card[2]).as("first-start card width").isPositive();
+    assertThat(card[1]).as("card starts where the view ends").isGreaterThanOrEqualTo(view[1] + view[3] - TOLERANCE_PX);
+  }
+
+  @Test
+  void atUiScaleTwoEverythingFitsAndIsTwiceAsLarge() {
+    var recorded = sizes(scaled);
+    assertThat(recorded).hasSize(2);
+    checkLayouts(recorded);
+    // same window in half the pixels per unit: the pendant's natural width doubles with the font
+    double one = sizes(lines).get(2).get("pendant")[2];
+    double two = recorded.get(1).get("pendant")[2];
+    assertThat(two).as("pendant width at scale 2 vs 1").isBetween(1.8 * one, 2.2 * one);
+  }
+
+  private static void checkLayouts(List<Map<String, double[]>> recorded) {
     for (Map<String, double[]> s : recorded) {
       double[] size = s.get("size");
       double w = size[0], h = size[1];
@@ -145,13 +174,17 @@ class WindowLayoutXvfbTest {
       assertThat(side[0] + side[2]).as("side column ends where the view starts").isLessThanOrEqualTo(view[0] + TOLERANCE_PX);
       assertThat(view[0] + view[2]).as("view ends where the pendant starts").isLessThanOrEqualTo(pendant[0] + TOLERANCE_PX);
       assertThat(view[2]).as("3D view width").isGreaterThanOrEqualTo(0.35 * w - 1);
+      double[] card = s.get("card");
+      boolean overlaps = card[2] > 0 && card[0] < robot[0] + robot[2] && robot[0] < card[0] + card[2]
+          && card[1] < robot[1] + robot[3] && robot[1] < card[1] + card[3];
+      assertThat(overlaps).as("first-start card " + java.util.Arrays.toString(card) + " covers the robot" + at).isFalse();
     }
   }
 
   @Test
   void aBoxAddedByClicksIsInTheSavedScenario() throws IOException {
     assertThat(lines).contains("objects table,tray,part1,part2,part3,box1");
-    Path saved = dir.resolve("pick-and-place-edited.json");
+    Path saved = dir.resolve("1").resolve("pick-and-place-edited.json");
     assertThat(saved).exists();
     String json = Files.readString(saved);
     assertThat(json).contains("\"name\" : \"box1\"").contains("\"shape\" : \"box\"");

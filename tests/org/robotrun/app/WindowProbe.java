@@ -126,6 +126,7 @@ public final class WindowProbe {
     lines.add(rect("sidebar", l.sidebar()));
     lines.add(rect("view", l.view()));
     lines.add(rect("pendant", l.pendant()));
+    lines.add(rect("card", s.bench().help().welcomeRect()));
     for (PendantPanel.KeyRect k : s.bench().pendantPanel().drawnKeys()) {
       lines.add(String.format(Locale.ROOT, "key %s %.1f %.1f %.1f %.1f", k.key().name(), k.x(), k.y(), k.w(), k.h()));
     }

@@ -46,6 +46,8 @@ class WorkspaceRoundTripTest {
       c.registers().setInteger(5, 42);
       c.registers().setReal(6, 3.0);
       c.registers().setReal(7, -1.25);
+      c.registers().setString(2, "Part \"A\" ok");
+      c.registers().setString(25, "x".repeat(254));
       c.registers().setPosition(3, new Position.Cartesian(10, 20, 30, 1, 2, 3, new Config(true, false, false, 1, 0, -1)));
       c.registers().setPosition(4, new Position.Joint(1, -2, 3, -4, 5, -6));
       c.registers().setBit(IoKind.DO, 7, true);
@@ -79,6 +81,9 @@ class WorkspaceRoundTripTest {
       assertThat(c.registers().number(6)).isEqualTo(3.0);
       assertThat(c.registers().isInteger(6)).as("R[6] stays a real").isFalse();
       assertThat(c.registers().number(7)).isEqualTo(-1.25);
+      assertThat(c.registers().string(2)).isEqualTo("Part \"A\" ok");
+      assertThat(c.registers().string(25)).isEqualTo("x".repeat(254));
+      assertThat(c.registers().string(1)).isEmpty();
       assertThat(c.registers().position(3)).isEqualTo(new Position.Cartesian(10, 20, 30, 1, 2, 3, new Config(true, false, false, 1, 0, -1)));
       assertThat(c.registers().position(4)).isEqualTo(new Position.Joint(1, -2, 3, -4, 5, -6));
       assertThat(c.registers().bit(IoKind.DO, 7)).isTrue();

@@ -195,4 +195,21 @@ class ExampleTaskTest {
     assertThat(HandIns.failed(r)).isEmpty();
     assertThat(r.student()).isEqualTo("Grace Hopper");
   }
+
+  @Test
+  void aHandInWithTheCellEditorsOtherScenariosStillScoresFullMarks() throws Exception {
+    // scenarios/NAME.json (the cell editor's other scenarios) ride along in the hand-in; grading ignores them
+    Path ws = dir.resolve("ws-ref2");
+    Files.createDirectories(ws.resolve("programs"));
+    Files.createDirectories(ws.resolve("scenarios"));
+    Files.copy(SUBMISSIONS.resolve("reference/cell.json"), ws.resolve("cell.json"));
+    Files.copy(SUBMISSIONS.resolve("reference/programs/PICKPLACE.LS"), ws.resolve("programs/PICKPLACE.LS"));
+    Files.copy(Path.of("scenarios/empty-cell.json"), ws.resolve("scenarios/practice.json"));
+    Path zip = dir.resolve("handin2.zip");
+    var m = org.robotrun.io.HandIn.write(ws, zip, "Grace Hopper", "0.1.0-SNAPSHOT", false);
+    assertThat(m.files()).containsKey("scenarios/practice.json");
+    GradeResult r = Grading.gradeOne(grader, new SubmissionLoader(), zip, true);
+    assertThat(HandIns.failed(r)).isEmpty();
+    assertThat(r.student()).isEqualTo("Grace Hopper");
+  }
 }

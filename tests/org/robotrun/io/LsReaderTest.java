@@ -185,6 +185,24 @@ class LsReaderTest {
   }
 
   @Test
+  void aMacroOfSeveralWordsIsReadAndCheckedAgainstTheMacroTable() {
+    String text = "   1:  HAND1 OPEN ;\n   2:  Grip  Close    ;\n";
+    LsReadResult r = mn(text);
+    assertThat(r.program().line(1)).isEqualTo(new Instruction.MacroCall("HAND1 OPEN"));
+    assertThat(r.program().line(2)).isEqualTo(new Instruction.MacroCall("Grip Close"));
+    // Not a syntax error: check has no macro table, so it names the macro as unresolved.
+    assertThat(messages(r.withCallTargetsChecked(java.util.Set.of()))).contains(
+        "t.ls:4: macro HAND1 OPEN: not in the macro table (a robot's \"macros\" in the scenario define it; the line alarms when it runs without one)");
+    assertThat(r.withCallTargetsChecked(java.util.Set.of()).diagnostics()).extracting(Diagnostic::kind)
+        .containsOnly(Diagnostic.Kind.REFERENCE);
+    assertThat(r.diagnostics()).isEmpty();
+    // kept as written, and written in the controller's layout when fresh
+    assertThat(new String(LsWriter.bytes(r.program()), java.nio.charset.StandardCharsets.UTF_8))
+        .isEqualTo(HEAD + text + TAIL);
+    assertThat(LsWriter.write(r.program().withoutSource())).contains("   1:  HAND1 OPEN ;").contains("   2:  Grip Close ;");
+  }
+
+  @Test
   void aOneWordMacroIsACallOfTheProgramOfThatName() {
     LsReadResult r = mn("   1:  open_hand ;\n");
     assertThat(r.diagnostics()).isEmpty();
@@ -209,10 +227,14 @@ class LsReaderTest {
         "   4:L P[1] 100mm/sec FINE TIME AFTER 1.0sec,GO[2]=R[4]    ;",
         "   5:L P[1] 100mm/sec CNT50 DB   10.0mm,DO[5]=OFF    ;",
         "   6:L P[1] 100mm/sec CNT50 DB   10.0mm,CALL X    ;",
+        "   7:L P[1] 100mm/sec CNT50 DB   10.0mm,CALL X(1)    ;",
         ""));
     assertThat(((Motion.TimedAction) ((Instruction.Move) r.program().line(5)).options().get(0)).when())
         .isEqualTo(Motion.When.DISTANCE_BEFORE);
-    assertThat(((Instruction.Move) r.program().line(6)).options().get(0)).isInstanceOf(Motion.RawOption.class);
+    // A CALL without arguments runs (its program beside the motion); with arguments it is kept as written.
+    assertThat(((Instruction.Move) r.program().line(6)).options().get(0)).isEqualTo(new Motion.TimedAction(
+        Motion.When.DISTANCE_BEFORE, 10, new Instruction.Call("X", java.util.List.of()), "DB   10.0mm,CALL X"));
+    assertThat(((Instruction.Move) r.program().line(7)).options().get(0)).isInstanceOf(Motion.RawOption.class);
     Instruction.Move m1 = (Instruction.Move) r.program().line(1);
     assertThat(m1.options()).containsExactly(new Motion.TimedAction(Motion.When.TIME_BEFORE, 0.2,
         new Instruction.SetIo(org.robotrun.program.IoKind.DO, org.robotrun.program.Item.of(3, "VAC"), new Expr.OnOff(true)),
@@ -220,12 +242,11 @@ class LsReaderTest {
     Motion.TimedAction ta = (Motion.TimedAction) ((Instruction.Move) r.program().line(2)).options().get(0);
     assertThat(ta.when()).isEqualTo(Motion.When.TIME_AFTER);
     assertThat(ta.action()).isInstanceOf(Instruction.Pulse.class);
-    assertThat(((Instruction.Move) r.program().line(3)).options().get(0)).isInstanceOf(Motion.RawOption.class);
+    assertThat(((Instruction.Move) r.program().line(3)).options().get(0)).isInstanceOf(Motion.TimedAction.class);
     assertThat(((Instruction.Move) r.program().line(4)).options().get(0)).isInstanceOf(Motion.TimedAction.class);
-    // only the CALL action is reported (it is not run); the line comes back as written
+    // only the CALL with arguments is reported (it is not run); the line comes back as written
     assertThat(messages(r)).filteredOn(m -> m.contains("not supported")).containsExactly(
-        "t.ls:6: warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)",
-        "t.ls:9: warning: not supported: DISTANCE BEFORE (DB) (the motion runs without it)");
+        "t.ls:10: warning: not supported: DISTANCE BEFORE (DB) (the motion runs without it)");
     assertThat(LsWriter.write(r.program().withoutSource())).contains("   1:L P[1] 100mm/sec CNT100 TB    .20sec,DO[3:VAC]=ON    ;");
   }
 
@@ -250,11 +271,10 @@ class LsReaderTest {
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
         {"TOOL_OFFSET CONDITION PR[2]", "not supported: TOOL_OFFSET CONDITION (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
-        {"L P[1] 100mm/sec FINE TB .50sec,CALL X", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
+        {"L P[1] 100mm/sec FINE TB .50sec,CALL X(1)", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},
-        {"HAND1 OPEN", "not supported: macro call HAND1 (the line alarms when it runs)"},
         {"FROBNICATE=3", "unknown statement 'FROBNICATE': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement"}}) {
       LsReadResult r = mn("   1:  " + c[0] + " ;\n");
       assertThat(messages(r)).as(c[0]).contains("t.ls:4: " + c[1]);

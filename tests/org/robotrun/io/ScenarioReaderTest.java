@@ -146,6 +146,37 @@ class ScenarioReaderTest {
   }
 
   @Test
+  void theMacroTableIsReadInItsOrderAndWrittenBackByteForByte() throws Exception {
+    String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\", \"macros\": [{\"name\": \"HAND1 OPEN\", \"program\": \"hopen\"},"
+            + " {\"name\": \"GRIP CLOSE\", \"program\": \"GCLOSE\"}, {\"name\": \"ALARM_RESET\", \"program\": \"RESET1\"}],");
+    Path file = write("macros.json", text);
+    Scenario s = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario();
+    assertThat(s.robots().getFirst().macros()).containsExactly(new org.robotrun.world.RobotSetup.Macro("HAND1 OPEN", "HOPEN"),
+        new org.robotrun.world.RobotSetup.Macro("GRIP CLOSE", "GCLOSE"), new org.robotrun.world.RobotSetup.Macro("ALARM_RESET", "RESET1"));
+    ScenarioWriter.write(s, file);
+    byte[] first = Files.readAllBytes(file);
+    Scenario again = ((ScenarioLoad.Loaded) ScenarioReader.read(file)).scenario();
+    assertThat(again.robots().getFirst().macros()).isEqualTo(s.robots().getFirst().macros());
+    ScenarioWriter.write(again, file);
+    assertThat(Files.readAllBytes(file)).isEqualTo(first);
+  }
+
+  @Test
+  void badMacroRowsAreNamedWithTheirPathAndLine() throws Exception {
+    String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
+        "\"endEffector\": \"gripper\",\n \"macros\": [{\"name\": \"HAND1  OPEN\", \"program\": \"HOPEN\"},\n"
+            + " {\"name\": \"X\", \"program\": \"1BAD\"},\n {\"name\": \"x\", \"program\": \"P\", \"key\": 1},\n 5],");
+    List<ScenarioError> errors = ((ScenarioLoad.Failed) ScenarioReader.read(write("bad-macros.json", text))).errors();
+    assertThat(errors).extracting(ScenarioError::path).containsExactlyInAnyOrder("robots[0].macros[0].name",
+        "robots[0].macros[1].program", "robots[0].macros[2].key", "robots[0].macros[2].name", "robots[0].macros[3]");
+    assertThat(errors).extracting(ScenarioError::message).anySatisfy(m -> assertThat(m).contains("already in the table"))
+        .anySatisfy(m -> assertThat(m).contains("separated by one space"));
+    assertThat(errors).filteredOn(e -> e.path().equals("robots[0].macros[1].program")).singleElement()
+        .satisfies(e -> assertThat(e.line()).isEqualTo(lineOf(text, "1BAD")));
+  }
+
+  @Test
   void badIoSizesAreNamedWithTheirLine() throws Exception {
     String text = withObjects(TABLE).replace("\"endEffector\": \"gripper\",",
         "\"endEffector\": \"gripper\",\n \"io\": {\"XO\": 8,\n \"DI\": 5000},");

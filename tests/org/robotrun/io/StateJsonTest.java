@@ -21,6 +21,7 @@ class StateJsonTest {
             "positionRegisters": {"1": {"x": 1, "y": 2, "z": 3, "config": "Q U T, 0, 0, 0"}, "2": {"joints": [1, 2]}},
             "outputs": {"DI[1]": 1, "DO[2]": 3, "GO[1]": 7},
             "comments": {"Q[1]": "x"},
+            "stringRegisters": {"26": "x", "3": 4, "4": "ok"},
             "colour": 1
           }
         }
@@ -31,7 +32,8 @@ class StateJsonTest {
     assertThat(message).contains("state.overridePct").contains("state.utool").contains("state.registers.0")
         .contains("state.registers.2").contains("state.positionRegisters.1.config").doesNotContain("state.positionRegisters.1.w")
         .contains("state.positionRegisters.2.joints").contains("state.outputs.DI[1]").contains("state.outputs.DO[2]")
-        .contains("state.comments.Q[1]").contains("state.colour").doesNotContain("state.outputs.GO[1]");
+        .contains("state.comments.Q[1]")
+        .contains("state.stringRegisters.26").contains("state.stringRegisters.3").doesNotContain("state.stringRegisters.4").contains("state.colour").doesNotContain("state.outputs.GO[1]");
     // A plain scenario read checks the section too (and ignores it when it is good).
     assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Failed.class);
   }

@@ -41,6 +41,20 @@ class WorkspaceFaultsTest {
   }
 
   @Test
+  void closingAnAutosaveTwiceSavesOnceAndDoesNotThrow(@TempDir Path tmp) throws Exception {
+    Path dir = tmp.resolve("ws");
+    try (Workspace ws = Workspace.open(dir, cell())) {
+      WorkspaceSnapshot snap = snapshot(ws, program("TWICE", 3));
+      List<String> reports = new ArrayList<>();
+      Autosave autosave = new Autosave(ws, () -> snap, reports::add);
+      autosave.close();
+      assertThat(dir.resolve("programs/TWICE.LS")).exists();
+      autosave.close();  // the window closes it on Quit and again when the session ends
+      assertThat(reports).noneMatch(r -> r.contains("NOT SAVED"));
+    }
+  }
+
+  @Test
   void anUnreadableProgramIsReportedWithItsLineAndNeverWrittenOver(@TempDir Path tmp) throws Exception {
     Path dir = tmp.resolve("ws");
     Workspace.open(dir, cell()).close();

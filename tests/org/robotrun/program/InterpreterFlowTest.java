@@ -398,6 +398,30 @@ class InterpreterFlowTest {
   }
 
   @Test
+  void aMacroRunsTheProgramTheMacroTableNames() {
+    Program main = prog("MAIN", new Instruction.MacroCall("HAND1 OPEN"), new Instruction.MacroCall("OPEN_HAND"),
+        Tp.setR(3, num(3)));
+    Rig rig = new Rig(InterpreterSettings.defaults().withMacros(Map.of("hand1  open", "HOPEN")), 0.1, main,
+        prog("HOPEN", Tp.setR(1, num(1))), prog("OPEN_HAND", Tp.setR(2, num(2))));
+    assertThat(rig.run()).isEqualTo(Outcome.FINISHED);
+    // the table's program for a name of several words (any case, any spacing); a one-word macro
+    // the table does not hold runs the program of its own name
+    assertThat(rig.regs.number(1)).isEqualTo(1);
+    assertThat(rig.regs.number(2)).isEqualTo(2);
+    assertThat(rig.regs.number(3)).isEqualTo(3);
+  }
+
+  @Test
+  void aMacroOfSeveralWordsNotInTheTableAlarms() {
+    Rig rig = new Rig(prog("MAIN", Tp.setR(1, num(1)), new Instruction.MacroCall("GRIP CLOSE"), Tp.setR(2, num(2))));
+    Alarm a = rig.alarm(rig.run());
+    assertThat(a.kind()).isEqualTo(AlarmKind.UNKNOWN_PROGRAM);
+    assertThat(a.line()).isEqualTo(2);
+    assertThat(a.message()).contains("GRIP CLOSE").contains("not in the macro table");
+    assertThat(rig.regs.number(2)).isZero();
+  }
+
+  @Test
   void userAlarmTextComesFromTheSettings() {
     Rig rig = new Rig(InterpreterSettings.defaults().withUserAlarmMessages(Map.of(3, "Part missing")), 0.1,
         prog("U", new Instruction.UserAlarm(Index.of(3))));

@@ -224,6 +224,110 @@ class ProgramMotionTest {
     assertThat(on2 - doneA).isCloseTo(0.5, org.assertj.core.data.Offset.offset(2 * tick + 0.01));
   }
 
+  /** A program with no positions, named {@code name}. */
+  static Program plain(String name, String... lines) {
+    return plainWithAttr(name, "", lines);
+  }
+
+  /** A program with no positions and no motion group, as TIME BEFORE/AFTER and DISTANCE BEFORE may CALL. */
+  static Program groupless(String name, String... lines) {
+    return plainWithAttr(name, "DEFAULT_GROUP\t= *,*,*,*,*;\n", lines);
+  }
+
+  private static Program plainWithAttr(String name, String attr, String... lines) {
+    StringBuilder sb = new StringBuilder("/PROG  " + name + "\n/ATTR\n" + attr + "/MN\n");
+    for (int i = 0; i < lines.length; i++) {
+      sb.append(String.format("%4d:  %s ;%n", i + 1, lines[i]));
+    }
+    sb.append("/POS\n/END\n");
+    LsReadResult r = LsReader.parse(name + ".LS", sb.toString());
+    assertThat(r.hasAnyError()).as(r.diagnostics().toString()).isFalse();
+    return r.program();
+  }
+
+  @Test
+  void timeBeforeTimeAfterAndDistanceBeforeCallTheirProgramBesideTheMotion() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    // SIGNAL sets DO[R[9]], waits 0.3 s (the motion goes on meanwhile, not delayed), then counts in R[8].
+    c.saveProgram(groupless("SIGNAL", "DO[R[9]]=ON", "WAIT .30(sec)", "R[8]=R[8]+1"));
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE", "R[9]=1",
+        "L P[3:B] 100mm/sec FINE TB 1.00sec,CALL SIGNAL", "R[9]=2", "L P[2:A] 100mm/sec FINE TA .50sec,CALL SIGNAL",
+        "WAIT 1.00(sec)", "R[9]=3", "L P[3:B] 100mm/sec FINE DB 50.0mm,CALL SIGNAL", "WAIT .50(sec)", "R[1]=1"));
+    c.run("FORMS", 1, true);
+    double doneB = -1;
+    double on1 = -1;
+    double doneA = -1;
+    double on2 = -1;
+    Vec3 at3 = null;
+    boolean overlapped = false;
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+      double t = sim.timeSec();
+      int line = c.status().line();
+      if (on1 < 0 && c.registers().bit(IoKind.DO, 1)) {
+        on1 = t;
+      }
+      // The called program's WAIT ran while the motion went on: SIGNAL was done before B was reached.
+      if (doneB < 0 && line >= 5) {
+        doneB = t;
+        overlapped = c.registers().number(8) == 1;
+      }
+      if (doneA < 0 && line == 7) {
+        doneA = t;
+      }
+      if (on2 < 0 && c.registers().bit(IoKind.DO, 2)) {
+        on2 = t;
+      }
+      if (at3 == null && c.registers().bit(IoKind.DO, 3)) {
+        at3 = c.tcpInWorld().position();
+      }
+    }
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.registers().number(1)).isEqualTo(1);
+    assertThat(c.registers().number(8)).as("SIGNAL ran to its end three times").isEqualTo(3);
+    double tick = sim.tickSec();
+    assertThat(doneB - on1).isCloseTo(1.0, org.assertj.core.data.Offset.offset(2 * tick + 0.01));
+    assertThat(overlapped).isTrue();
+    assertThat(on2 - doneA).isCloseTo(0.5, org.assertj.core.data.Offset.offset(2 * tick + 0.01));
+    assertThat(at3).isNotNull();
+    assertThat(at3.distanceTo(B)).isCloseTo(50, org.assertj.core.data.Offset.offset(100 * tick + 0.01));
+  }
+
+  @Test
+  void aProgramCalledByTimeBeforeMustHaveNoMotionGroup() {
+    // INTP-129 (the controller refuses the CALL when the called program has a motion group, moving or not).
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(plain("SIGNAL", "DO[1]=ON"));
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE TB .50sec,CALL SIGNAL", "R[1]=1"));
+    c.run("FORMS", 1, true);
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.activeAlarms()).singleElement().satisfies(a -> {
+      assertThat(a.code()).isEqualTo("INTP-129");
+      assertThat(a.message()).contains("SIGNAL has motion group 1");
+    });
+    assertThat(c.registers().bit(IoKind.DO, 1)).as("SIGNAL never ran").isFalse();
+    assertThat(c.registers().number(1)).isZero();
+  }
+
+  @Test
+  void aProgramCalledByTimeBeforeMayNotMove() {
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    // A program without a motion group that still holds a motion line (the controller's editor would not let it).
+    c.saveProgram(groupless("MOVER", "J PR[1] 100% FINE"));
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE TB .50sec,CALL MOVER"));
+    c.run("FORMS", 1, true);
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.activeAlarms()).singleElement().satisfies(a -> assertThat(a.message())
+        .contains("MOVER called by TIME BEFORE moves the robot"));
+  }
+
   @Test
   void moveToGoesToATaughtPosition() {
     Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);

@@ -35,6 +35,32 @@ class TwoRobotCellTest {
   }
 
   @Test
+  void eachRobotRunsItsMacrosThroughItsOwnMacroTable() {
+    RobotSetup r1 = new RobotSetup("robot1", "lrmate200id", Transform.translation(0, 0, -330), EndEffectorType.GRIPPER, HOME)
+        .withMacros(List.of(new RobotSetup.Macro("HAND1 OPEN", "HOPEN")));
+    RobotSetup r2 = new RobotSetup("robot2", "lrmate200id", Transform.translation(900, 0, -330), EndEffectorType.GRIPPER, HOME);
+    Scenario sc = new Scenario("two", "", List.of(r1, r2), World.empty(), List.of(), Optional.empty(), new TreeMap<>(),
+        new TreeMap<>(), new TreeMap<>(), Optional.empty());
+    Simulation sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+    for (Controller c : sim.controllers()) {
+      c.saveProgram(ProgramMotionTest.plain("HOPEN", "R[1]=7"));
+      c.saveProgram(ProgramMotionTest.plain("MAIN", "HAND1 OPEN", "R[2]=1"));
+      c.run("MAIN", 1, true);
+    }
+    for (int i = 0; i < 100 && (sim.controllers().get(0).busy() || sim.controllers().get(1).busy()); i++) {
+      sim.step();
+    }
+    Controller a = sim.controllers().get(0);
+    Controller b = sim.controllers().get(1);
+    assertThat(a.activeAlarms()).isEmpty();
+    assertThat(a.registers().number(1)).isEqualTo(7);
+    assertThat(a.registers().number(2)).isEqualTo(1);
+    // robot2 has no such macro in its table
+    assertThat(b.activeAlarms()).singleElement().satisfies(al -> assertThat(al.message()).contains("not in the macro table"));
+    assertThat(b.registers().number(1)).isZero();
+  }
+
+  @Test
   void aWiredInputSeesItsOutputFromTheNextTickInBothDirections() {
     Simulation sim = cell();
     Controller a = sim.controllers().get(0);

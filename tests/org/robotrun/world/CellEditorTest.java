@@ -39,6 +39,29 @@ class CellEditorTest {
   }
 
   @Test
+  void aNewObjectStandsClearOfTheRobotAndOfEveryOtherObject() {
+    // at the cell origin it would stand inside the robot's base (an instant collision alarm)
+    for (int i = 0; i < 6; i++) {
+      assertThat(i % 2 == 0 ? ed.addBox() : ed.addCylinder()).isInstanceOf(Result.Done.class);
+    }
+    World w = ed.world();
+    for (WorldObject o : w.objects()) {
+      if (o.name().equals("table")) {
+        continue;
+      }
+      var p = o.startPose().translationVector();
+      assertThat(Math.hypot(p.x(), p.y())).as(o.name() + " from the robot's axis").isGreaterThanOrEqualTo(450);
+      assertThat(p.z()).as(o.name() + " stands on the floor").isEqualTo(50);
+      for (WorldObject other : w.objects()) {
+        if (other != o) {
+          assertThat(w.collisionBox(o.name()).overlaps(w.collisionBox(other.name()))).as(o.name() + " vs " + other.name())
+              .isFalse();
+        }
+      }
+    }
+  }
+
+  @Test
   void addedBoxesGetFreeNamesAndAreParts() {
     assertThat(ed.addBox()).isInstanceOf(Result.Done.class);
     assertThat(ed.addBox()).isInstanceOf(Result.Done.class);
