@@ -67,7 +67,7 @@ final class WorkspaceFiles {
     List<org.robotrun.world.RobotSetup> robots = sc.robots().stream().map(r -> r.withPrograms(List.of(), r.mainProgram()))
         .toList();
     Scenario cell = new Scenario(sc.name(), sc.description(), robots, sc.world(), List.of(), sc.mainProgram(),
-        sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision()).withExtrasOf(sc);
+        sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode()).withExtrasOf(sc);
     try (Workspace ws = Workspace.open(dir, cell)) {
       return ws.folder();
     } catch (WorkspaceException e) {

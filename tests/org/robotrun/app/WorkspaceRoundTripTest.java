@@ -26,6 +26,18 @@ class WorkspaceRoundTripTest {
   private static final double MM = 1e-6;  // tolerance for lengths (mm) and angles (deg) written with 15 digits
 
   @Test
+  void aWorkspaceMadeFromAScenarioKeepsItsModeSwitch(@TempDir Path tmp) throws Exception {
+    // An AUTO exercise opened with --scenario must open in AUTO (the copy into the workspace dropped the mode).
+    String text = Files.readString(Path.of("scenarios/pick-and-place.json"));
+    assertThat(text).doesNotContain("\"mode\"");
+    Path sc = tmp.resolve("auto.json");
+    Files.writeString(sc, text.replaceFirst("\\{", "{\"mode\": \"AUTO\", ")
+        .replace("\"programs/", "\"" + Path.of("scenarios").toAbsolutePath() + "/programs/"));
+    Path dir = WorkspaceFiles.createFromScenario(sc, tmp.resolve("ws"));
+    assertThat(Files.readString(dir.resolve("cell.json"))).containsPattern("\"mode\"\\s*:\\s*\"AUTO\"");
+  }
+
+  @Test
   void everyPieceOfStateSurvivesSaveAndOpen(@TempDir Path tmp) {
     Path dir = WorkspaceFiles.createFromScenario(Path.of("scenarios/pick-and-place.json"), tmp.resolve("ws"));
     CameraView view = new CameraView(new Vec3(100, -50, 200), 1800, Math.toRadians(30), Math.toRadians(25));
