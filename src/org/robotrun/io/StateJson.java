@@ -74,32 +74,7 @@ final class StateJson {
       }
       g.writeEndObject();
     }
-    if (!s.positionRegisters().isEmpty()) {
-      g.writeObjectFieldStart("positionRegisters");
-      for (Map.Entry<Integer, Position> e : s.positionRegisters().entrySet()) {
-        g.writeObjectFieldStart(e.getKey().toString());
-        switch (e.getValue()) {
-          case Position.Cartesian c -> {
-            number(g, "x", c.xMm());
-            number(g, "y", c.yMm());
-            number(g, "z", c.zMm());
-            number(g, "w", c.wDeg());
-            number(g, "p", c.pDeg());
-            number(g, "r", c.rDeg());
-            g.writeStringField("config", configText(c.config()));
-          }
-          case Position.Joint j -> {
-            g.writeArrayFieldStart("joints");
-            for (int k = 1; k <= 6; k++) {
-              g.writeNumber(realText(j.element(k)));
-            }
-            g.writeEndArray();
-          }
-        }
-        g.writeEndObject();
-      }
-      g.writeEndObject();
-    }
+    positions(g, "positionRegisters", s.positionRegisters());
     if (!s.outputs().isEmpty()) {
       g.writeObjectFieldStart("outputs");
       for (Map.Entry<String, Integer> e : s.outputs().entrySet()) {
