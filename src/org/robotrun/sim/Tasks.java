@@ -174,17 +174,23 @@ public final class Tasks {
 
   /** Runs every task one tick; a task that ended is removed; a task's alarm is raised on the controller and ends it. */
   void tick(double dtSec) {
-    Iterator<Task> it = tasks.iterator();
-    while (it.hasNext()) {
-      Task t = it.next();
+    // By index over the tasks there were at the start of the tick: a task's RUN adds one (it starts next tick).
+    int n = tasks.size();
+    int i = 0;
+    while (i < n) {
+      Task t = tasks.get(i);
       Outcome o = t.interpreter.tick(dtSec);
       if (o instanceof Outcome.Alarmed a) {
         Alarm al = a.alarm();
         controller.taskAlarm(al);
         t.interpreter.abort();
-        it.remove();
+        tasks.remove(i);
+        n--;
       } else if (t.interpreter.state() == Interpreter.State.IDLE) {
-        it.remove();
+        tasks.remove(i);
+        n--;
+      } else {
+        i++;
       }
     }
   }

@@ -37,6 +37,23 @@ class MultitaskingTest {
   }
 
   @Test
+  void aTaskMayRunAnotherTask() {
+    // The task list grows while the tasks are being stepped (it threw ConcurrentModificationException).
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("SECOND", false, "R[6]=R[6]+1", "WAIT 0.05(sec)", "R[7]=1"));
+    c.saveProgram(program("FIRST", false, "RUN SECOND", "R[5]=1"));
+    c.saveProgram(program("MAIN", false, "RUN FIRST", "WAIT R[7]=1", "R[8]=1"));
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    steps(sim, 100);
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.registers().number(5)).isEqualTo(1);
+    assertThat(c.registers().number(6)).isEqualTo(1);
+    assertThat(c.registers().number(8)).isEqualTo(1);
+    assertThat(c.tasks().list()).isEmpty();
+  }
+
+  @Test
   void aSecondProgramWithGroupOneIsRefusedWithProg040() {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
