@@ -435,7 +435,8 @@ public final class Interpreter {
         if (state == State.RUNNING || state == State.PAUSED) {
           return raise(a, cur.prog.name, Math.max(1, cur.pc));
         }
-        throw a;
+        // Already stopped by an alarm: the pending action is dropped, never thrown out of the tick.
+        afterTimers.clear();
       }
     }
     if (advancesTimers) {
@@ -662,6 +663,14 @@ public final class Interpreter {
   }
 
   private void deactivate(String program, int line) {
+    // What the program started ends with it: pending TIME AFTER actions, its condition monitors,
+    // and the action programs they called (an abort or END never leaves one firing later).
+    afterTimers.clear();
+    monitors.clear();
+    for (Interpreter child : actions) {
+      child.abort();
+    }
+    actions.clear();
     for (int i = 0; i < depth; i++) {
       frames[i].prog = null;
     }
@@ -930,6 +939,7 @@ public final class Interpreter {
           + " " + role + " moves the robot");
     }
     Interpreter child = new Interpreter(store, regs, port, settings);
+    child.setAdvancesTimers(false);  // TIMER[] advance once per tick, in the program that started it
     child.select(name);
     child.forward();
     actions.add(child);

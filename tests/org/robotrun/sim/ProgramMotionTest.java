@@ -295,6 +295,23 @@ class ProgramMotionTest {
   }
 
   @Test
+  void aTimeAfterActionPendingWhenTheProgramEndsIsDroppedNotThrownLater() {
+    // The action would alarm (no such program); before, it fired after END and its alarm escaped the tick.
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE TA 1.00sec,CALL NOSUCH"));
+    c.run("FORMS", 1, true);
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+    }
+    for (int i = 0; i < 500; i++) {  // 2 s more: past the moment the action was due
+      sim.step();
+    }
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+  }
+
+  @Test
   void aProgramCalledByTimeBeforeMustHaveNoMotionGroup() {
     // INTP-129 (the controller refuses the CALL when the called program has a motion group, moving or not).
     Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
