@@ -26,6 +26,7 @@ import org.robotrun.world.ProductionSetup.PlcStep;
 import org.robotrun.world.ProductionSetup.ReferencePosition;
 import org.robotrun.world.ProductionSetup.Selection;
 import org.robotrun.world.ProductionSetup.Signal;
+import org.robotrun.world.RobotSetup;
 
 /**
  * The scenario's {@code "production"} section (docs/scenario-format.md, "Production start"):
@@ -42,6 +43,9 @@ public final class ProductionJson extends JsonFieldReader {
   /** Highest program number a PNS/RSR name can carry (four digits). */
   static final int MAX_PROGRAM_NUMBER = 9999;
 
+  /** The I/O sizes of the robot whose section is being read. */
+  private IoRanges ranges = IoRanges.DEFAULT;
+
   private ProductionJson(String file) {
     super(file);
   }
@@ -49,17 +53,19 @@ public final class ProductionJson extends JsonFieldReader {
   /**
    * Reads {@code top.production}, if present.
    *
-   * @param robotNames the scenario's robots (a setup for another name is an error)
+   * @param robots the scenario's robots (a setup for another name is an error; signal indexes are
+   *     checked against that robot's I/O sizes)
    * @param errors where each problem goes
    */
-  static ProductionSetup read(JObject top, String file, List<String> robotNames, Consumer<ScenarioError> errors) {
+  static ProductionSetup read(JObject top, String file, List<RobotSetup> robots, Consumer<ScenarioError> errors) {
     ProductionJson r = new ProductionJson(file);
-    ProductionSetup out = r.section(top, robotNames);
+    ProductionSetup out = r.section(top, robots);
     r.errors.forEach(errors);
     return out;
   }
 
-  private ProductionSetup section(JObject top, List<String> robotNames) {
+  private ProductionSetup section(JObject top, List<RobotSetup> setups) {
+    List<String> robotNames = setups.stream().map(RobotSetup::name).toList();
     JObject p = member(top, "production", "", null, false);
     if (p == null) {
       return ProductionSetup.NONE;
@@ -74,6 +80,12 @@ public final class ProductionJson extends JsonFieldReader {
       }
       JObject o = object(e.getValue(), at, ROBOT);
       if (o != null) {
+        RobotSetup setup = setups.get(robotNames.indexOf(e.getKey()));
+        try {
+          ranges = IoRanges.of(setup.io());
+        } catch (IllegalArgumentException bad) {
+          ranges = IoRanges.DEFAULT;  // the robot's "io" has its own error
+        }
         ProductionSetup.Robot robot = robot(o, at);
         if (robot != null) {
           robots.put(e.getKey(), robot);
@@ -297,7 +309,7 @@ public final class ProductionJson extends JsonFieldReader {
       return null;
     }
     int i = Integer.parseInt(m.group(2));
-    int size = IoRanges.DEFAULT.size(kind);
+    int size = ranges.size(kind);
     if (i < 1 || i > size) {
       error(line, path, kind + "[" + i + "]: index out of range (expected 1.." + size + ")");
       return null;

@@ -173,7 +173,7 @@ public final class ScenarioReader {
           .orElse(CollisionResponse.ALARM);
       Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
       Wiring wiring = WiringJson.read(this, top, robots);
-      ProductionSetup production = ProductionJson.read(top, file, robots.stream().map(RobotSetup::name).toList(), errors::add);
+      ProductionSetup production = ProductionJson.read(top, file, robots, errors::add);
       SavedState state = null;
       LocatedJson stateJson = top.members().get("state");
       if (stateJson instanceof JObject so) {

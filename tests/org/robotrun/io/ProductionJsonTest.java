@@ -75,6 +75,32 @@ class ProductionJsonTest {
   }
 
   @Test
+  void plcSignalsAreCheckedAgainstTheRobotsOwnIoSizes() throws Exception {
+    // DI[20] on a robot with 16 DI: refused at load (it used to pass and fail inside a simulation tick).
+    ScenarioLoad l = load("""
+        {
+          "format": 1,
+          "robots": [{"name": "robot1", "model": "lrmate200id", "io": {"DI": 16}}],
+          "production": {"robot1": {"plc": [{"set": {"DI[20]": true}}]}}
+        }
+        """);
+    assertThat(l).isInstanceOf(ScenarioLoad.Failed.class);
+    assertThat(((ScenarioLoad.Failed) l).errors()).filteredOn(x -> x.path().endsWith("DI[20]")).singleElement().satisfies(x -> {
+      assertThat(x.path()).isEqualTo("production.robot1.plc[0].set.DI[20]");
+      assertThat(x.message()).contains("DI[20]").contains("1..16");
+    });
+    // and the robot's larger range is allowed where the default would refuse it
+    ScenarioLoad big = load("""
+        {
+          "format": 1,
+          "robots": [{"name": "robot1", "model": "lrmate200id", "io": {"DI": 1024}}],
+          "production": {"robot1": {"plc": [{"set": {"DI[700]": true}}]}}
+        }
+        """);
+    assertThat(big).isInstanceOf(ScenarioLoad.Loaded.class);
+  }
+
+  @Test
   void noSectionIsNone() throws Exception {
     ScenarioLoad l = load("""
         {"format": 1, "robots": [{"name": "robot1", "model": "lrmate200id"}]}
