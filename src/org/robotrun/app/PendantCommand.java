@@ -171,6 +171,9 @@ public final class PendantCommand implements Callable<Integer> {
     script.unknownRobot(keys.toString(), robotNames).ifPresent(m -> {
       throw new UserError(m.display());
     });
+    script.inputOutOfRange(keys.toString(), robotNames, pendants).ifPresent(m -> {
+      throw new UserError(m.display());
+    });
     PrintWriter out = spec.commandLine().getOut();
     WallClock clock = WallClock.start(maxWallSeconds);
     WorkspaceSession ws = session;

@@ -316,6 +316,27 @@ public final class KeyScript {
     return Optional.empty();
   }
 
+  /**
+   * The first {@code UI[i]}/{@code DI[i]} line whose index the robot it drives (the one the ROBOT lines
+   * before it select) does not have, checked before any key is pressed; the parse checked only the
+   * controller's default sizes. Call after {@link #unknownRobot} found nothing.
+   */
+  public Optional<Malformed> inputOutOfRange(String file, List<String> robots, List<Pendant> pendants) {
+    int k = 0;
+    for (Step s : steps) {
+      if (s instanceof Step.SelectRobot r) {
+        k = Math.max(0, robotIndex(r.robot(), robots));
+      } else if (s instanceof Step.Input in) {
+        int size = pendants.get(k).control().registers().ioSize(in.kind());
+        if (in.index() > size) {
+          return Optional.of(new Malformed(file, in.line(), in.kind() + "[" + in.index() + "]: index out of range (expected 1.."
+              + size + (robots.size() > 1 ? " on " + robots.get(k) : " on this robot") + ")"));
+        }
+      }
+    }
+    return Optional.empty();
+  }
+
   private static int robotIndex(String robot, List<String> robots) {
     for (int i = 0; i < robots.size(); i++) {
       if (robots.get(i).equals(robot)) {

@@ -88,6 +88,20 @@ class PendantCommandTest {
   }
 
   @Test
+  void anInputLineBeyondTheRobotsIoIsExit2BeforeAnyKey(@TempDir Path dir) throws Exception {
+    // DI[20] passes the default sizes (512) but this robot has 16 DI: it threw inside the run.
+    Path sc = dir.resolve("small.json");
+    Files.writeString(sc, "{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\", "
+        + "\"io\": {\"DI\": 16}}]}");
+    Path keys = dir.resolve("k.keys");
+    Files.writeString(keys, "SHOW\nDI[16] ON\nDI[20] ON\nSHOW\n");
+    Run r = run("pendant", "--scenario", sc.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).isEqualTo(2);
+    assertThat(r.err()).contains("k.keys:3").contains("DI[20]").contains("1..16");
+    assertThat(r.out()).doesNotContain("SHOW");
+  }
+
+  @Test
   void scenarioCellsLoad(@TempDir Path dir) throws Exception {
     Path keys = dir.resolve("k.keys");
     Files.writeString(keys, "POSN\nSHOW\nMENU\n5\nSHOW\n");
