@@ -221,6 +221,7 @@ public final class ScenarioReader {
       if (arr.items().isEmpty()) {
         error(arr.line(), "robots", "expected at least one robot");
       }
+      Map<String, String> folders = new java.util.HashMap<>();
       for (int i = 0; i < arr.items().size(); i++) {
         String at = "robots[" + i + "]";
         JObject r = object(arr.items().get(i), at, ROBOT);
@@ -228,7 +229,16 @@ public final class ScenarioReader {
           continue;
         }
         String robotName = string(r, "name", at, false).orElse("robot" + (i + 1));
-        defineName(robotName, at + ".name", r.keyLines().getOrDefault("name", r.line()));
+        int nameLine = r.keyLines().getOrDefault("name", r.line());
+        defineName(robotName, at + ".name", nameLine);
+        // Each robot after the first keeps its programs in programs/FOLDER/ of a workspace or hand-in
+        // (Workspace.robotFolder): two names that give one folder (on any file system) would mix them.
+        String folder = Workspace.robotFolder(robotName).toLowerCase(java.util.Locale.ROOT);
+        String clash = folders.putIfAbsent(folder, robotName);
+        if (clash != null && !clash.equals(robotName)) {
+          error(nameLine, at + ".name", "robot names '" + clash + "' and '" + robotName
+              + "' would share one programs folder in a workspace; give the robots names that differ in letters or digits");
+        }
         Optional<RobotModel> model = string(r, "model", at, true).flatMap(m -> model(m, r, at));
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);

@@ -78,6 +78,26 @@ class WiringJsonTest {
   }
 
   @Test
+  void twoRobotNamesThatGiveOneProgramsFolderAreRefused() throws Exception {
+    // "arm 1" and "ARM_1" both become programs/arm_1/ on a case-insensitive disk: their programs would mix.
+    String text = """
+        {
+          "format": 1,
+          "robots": [
+            {"name": "first", "model": "lrmate200id"},
+            {"name": "arm 1", "model": "lrmate200id", "basePose": {"x": 900, "y": 0, "z": 0, "w": 0, "p": 0, "r": 0}},
+            {"name": "ARM_1", "model": "lrmate200id", "basePose": {"x": 0, "y": 900, "z": 0, "w": 0, "p": 0, "r": 0}}
+          ],
+          "objects": []
+        }
+        """;
+    ScenarioError e = onlyError(text);
+    assertThat(e.path()).isEqualTo("robots[2].name");
+    assertThat(e.line()).isEqualTo(lineOf(text, "ARM_1"));
+    assertThat(e.message()).contains("'arm 1'").contains("'ARM_1'").contains("programs folder");
+  }
+
+  @Test
   void anUnknownRobotIsNamedWithItsLine() throws Exception {
     String text = cell("""
             {"from": "loader.DO[1]", "to": "unloader.DI[1]"},
