@@ -126,7 +126,7 @@ public final class HandIn {
           for (Path f : s.filter(Files::isRegularFile).sorted().toList()) {
             String entry = Workspace.SCENARIOS + "/" + f.getFileName();
             if (SCENARIO_ENTRY.matcher(entry).matches()) {
-              files.put(entry, Files.readAllBytes(f));
+              files.put(entry, BoundedFiles.read(f, ScenarioReader.MAX_FILE_BYTES, "scenario files"));
             }
           }
         }

@@ -286,7 +286,7 @@ public final class Workspace implements AutoCloseable {
             continue;
           }
           try {
-            writtenScenarios.put(file, Files.readString(f, StandardCharsets.UTF_8));
+            writtenScenarios.put(file, BoundedFiles.readUtf8(f, ScenarioReader.MAX_FILE_BYTES, "scenario files"));
           } catch (IOException e) {
             // then the next save writes it again
           }
@@ -558,7 +558,8 @@ public final class Workspace implements AutoCloseable {
         Path file = folder.resolve(e.getKey());
         try {
           Files.createDirectories(folder);
-          AtomicFiles.write(file, text.getBytes(StandardCharsets.UTF_8));
+          // never a scenario file RobotRun cannot read back (the same guard as cell.json below)
+          AtomicFiles.write(file, ScenarioWriter.readableBytes(text, file));
           writtenScenarios.put(e.getKey(), text);
           touched.add(file);
         } catch (IOException ex) {
