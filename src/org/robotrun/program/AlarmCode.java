@@ -236,6 +236,10 @@ public enum AlarmCode {
 
   /** The row for {@code code} ("INTP-224"), if the table has one. */
   public static Optional<AlarmCode> of(String code) {
-    return Arrays.stream(values()).filter(a -> a.code.equals(code)).findFirst();
+    return Optional.ofNullable(BY_CODE.get(code));
   }
+
+  /** Rows by code: {@link #of} is asked every tick (servo-off alarms decide the UOP outputs). */
+  private static final java.util.Map<String, AlarmCode> BY_CODE = Arrays.stream(values())
+      .collect(java.util.stream.Collectors.toUnmodifiableMap(AlarmCode::code, a -> a));
 }

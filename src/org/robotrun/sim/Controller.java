@@ -273,7 +273,7 @@ public final class Controller implements MotionPort {
   /** Whether a program is active (running or paused) or the arm is moving. */
   public boolean busy() {
     return interpreter.state() == Interpreter.State.RUNNING || interpreter.state() == Interpreter.State.PAUSED
-        || !runner.idle() || !tasks.list().isEmpty();
+        || !runner.idle() || !tasks.isEmpty();
   }
 
   // ================================================================ programs and data

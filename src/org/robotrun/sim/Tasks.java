@@ -162,6 +162,11 @@ public final class Tasks {
     return false;
   }
 
+  /** Whether no task runs (no copy, unlike {@link #list}: asked every tick). */
+  public boolean isEmpty() {
+    return tasks.isEmpty();
+  }
+
   /** Whether a task is paused. */
   public boolean anyPaused() {
     for (Task t : tasks) {
