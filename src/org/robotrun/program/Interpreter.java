@@ -930,9 +930,8 @@ public final class Interpreter {
     }
     if (groupless && p.get().usesMotionGroup()) {
       // The controller refuses it at the moment of the call (INTP-129), whether or not PROG moves.
-      throw new AlarmSignal(AlarmKind.CALL_GROUP, what + ": " + name + " has motion group 1 (DEFAULT_GROUP = "
-          + p.get().attributes().getOrDefault("DEFAULT_GROUP", "1,*,*,*,*").strip()
-          + "); a program " + role + " needs DEFAULT_GROUP = *,*,*,*,*");
+      throw new AlarmSignal(AlarmKind.CALL_GROUP, what + ": " + name + " has motion group 1; a program " + role
+          + " needs DEFAULT_GROUP = *,*,*,*,*");
     }
     if (p.get().lines().stream().anyMatch(in -> in instanceof Instruction.Move)) {
       throw new AlarmSignal(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: the action program " + name

@@ -67,7 +67,7 @@ public final class BgLogic {
    * allowed in background logic".
    */
   public static Optional<String> refusal(Program p) {
-    if (Tasks.usesMotionGroup(p)) {
+    if (p.usesMotionGroup()) {
       return Optional.of(p.name() + " has motion group 1: a BG program needs DEFAULT_GROUP = *,*,*,*,*");
     }
     for (int i = 1; i <= p.lineCount(); i++) {

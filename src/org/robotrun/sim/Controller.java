@@ -650,7 +650,7 @@ public final class Controller implements MotionPort {
           return CommandResult.refused("INTP-105 Run request failed: " + programName + " is already running");
         }
         Optional<String> holder = tasks.groupHolder();
-        if (Tasks.usesMotionGroup(p) && holder.isPresent()) {
+        if (p.usesMotionGroup() && holder.isPresent()) {
           return CommandResult.refused("INTP-105 Run request failed: PROG-040 Already locked by other task ("
               + holder.get() + " holds group 1)");
         }

@@ -73,11 +73,6 @@ public final class Tasks {
     this.settings = settings;
   }
 
-  /** Whether {@code p} has motion group 1 in its group mask (DEFAULT_GROUP; "1,*,*,*,*" when absent). */
-  public static boolean usesMotionGroup(Program p) {
-    return p.usesMotionGroup();
-  }
-
   /**
    * RUN {@code program}: starts it as a task. Empty when it started, else the cause the INTP-105
    * alarm names.
@@ -90,7 +85,7 @@ public final class Tasks {
     if (isRunning(program)) {
       return Optional.of(program + " is already running");
     }
-    boolean motion = usesMotionGroup(p.get());
+    boolean motion = p.get().usesMotionGroup();
     if (motion && groupHolder().isPresent()) {
       return Optional.of("PROG-040 Already locked by other task (" + groupHolder().get() + " holds group 1)");
     }
@@ -127,7 +122,7 @@ public final class Tasks {
 
   private boolean mainHoldsGroup(Interpreter main) {
     for (String n : controller.programNames()) {
-      if (main.isActive(n) && store.find(n).map(Tasks::usesMotionGroup).orElse(false)) {
+      if (main.isActive(n) && store.find(n).map(Program::usesMotionGroup).orElse(false)) {
         return true;
       }
     }
