@@ -227,6 +227,7 @@ public final class BgLogic {
     if (sinceScanSec + 1e-9 < scanSec) {
       return;
     }
+    double sinceLastScanSec = sinceScanSec;  // what the slots' PULSE outputs count down by
     sinceScanSec = 0;
     scans++;
     for (Slot s : slots) {
@@ -244,7 +245,7 @@ public final class BgLogic {
       in.select(s.program);
       in.setCursor(1);
       in.forward();
-      Outcome o = in.tick(0);
+      Outcome o = in.tick(sinceLastScanSec);
       if (o instanceof Outcome.Alarmed a) {
         Alarm al = a.alarm();
         controller.taskAlarm(al);

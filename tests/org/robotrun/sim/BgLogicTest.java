@@ -39,6 +39,21 @@ class BgLogicTest {
   }
 
   @Test
+  void aPulseSetByABgProgramEndsAfterItsWidth() {
+    // The BG interpreter was stepped with no time, so its PULSE never switched the output off.
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("BGPULSE", false, "IF R[1]<>1,JMP LBL[1]", "DO[3]=PULSE,0.2sec", "R[1]=0", "LBL[1]"));
+    c.registers().setInteger(1, 1);
+    assertThat(c.bgLogic().add("BGPULSE")).isEmpty();
+    steps(sim, 25);  // 0.1 s
+    assertThat(c.registers().bit(IoKind.DO, 3)).isTrue();
+    steps(sim, 75);  // 0.4 s in all
+    assertThat(c.registers().bit(IoKind.DO, 3)).isFalse();
+    assertThat(c.activeAlarms()).isEmpty();
+  }
+
+  @Test
   void theScanPeriodIsSetPerController() {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
