@@ -80,7 +80,8 @@ public final class Uop {
   private final double[] ackLeftSec = new double[8];
   private final Deque<String> rsrQueue = new ArrayDeque<>();
   private boolean imstpLatched;
-  private int overrideBeforeFence = -1;
+  /** *SFSPD is off (the safety fence is open): the override is held at or below the fence limit. */
+  private boolean fenceOpen;
   private double simSec;
   /** PLC sequence: current step, seconds since its condition held (NaN: not yet). */
   private int plcStep;
@@ -226,13 +227,16 @@ public final class Uop {
       c.hold();
     }
     if (!ui(SFSPD)) {
-      if (overrideBeforeFence < 0) {
-        overrideBeforeFence = c.overridePct();
+      if (!fenceOpen) {
+        fenceOpen = true;
         c.hold();
-        c.setOverridePct(Math.min(c.overridePct(), FENCE_OVERRIDE_PCT));
       }
-    } else if (overrideBeforeFence >= 0) {
-      overrideBeforeFence = -1;
+      // while the fence is open the override stays at most the fence limit (raising it is clamped back)
+      if (c.overridePct() > FENCE_OVERRIDE_PCT) {
+        c.setOverridePct(FENCE_OVERRIDE_PCT);
+      }
+    } else {
+      fenceOpen = false;
     }
     if (rose(FAULT_RESET)) {
       c.reset();

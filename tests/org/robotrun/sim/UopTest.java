@@ -64,6 +64,26 @@ class UopTest {
   }
 
   @Test
+  void anOpenFenceKeepsTheOverrideAtItsLimitUntilSfspdReturns() {
+    // *SFSPD off: the override is clamped to the fence limit and cannot be raised while it stays off.
+    Simulation sim = ControllerTest.cell();
+    Controller c = cell(sim, setup(Selection.PNS, NO_RSR, List.of()));
+    Uop u = c.uop();
+    c.setOverridePct(100);
+    u.setUi(Uop.SFSPD, false);
+    sim.step();
+    assertThat(c.overridePct()).isEqualTo(Uop.FENCE_OVERRIDE_PCT);
+    c.setOverridePct(80);  // the operator tries to speed up with the fence open
+    sim.step();
+    assertThat(c.overridePct()).isEqualTo(Uop.FENCE_OVERRIDE_PCT);
+    u.setUi(Uop.SFSPD, true);
+    sim.step();
+    c.setOverridePct(80);
+    sim.step();
+    assertThat(c.overridePct()).isEqualTo(80);
+  }
+
+  @Test
   void pnsSelectsOnTheStrobeAndProdStartRunsOnItsFallingEdge() {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
