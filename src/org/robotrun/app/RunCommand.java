@@ -162,7 +162,8 @@ public final class RunCommand implements Callable<Integer> {
       }
       fromWorkspace.addAll(session.workspace.programs());
       Scenario wsCell = session.workspace.scenario();
-      if (program == null) {
+      plcStart = wsCell.production().of(wsCell.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
+      if (program == null && plcStart.isEmpty()) {
         String ws = workspace.toString();
         program = wsCell.robots().get(0).mainProgram().or(wsCell::mainProgram).orElse(null);
         if (program == null && wsCell.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
@@ -204,6 +205,10 @@ public final class RunCommand implements Callable<Integer> {
       if (program == null) {
         throw new UserError("--program: name the program to run (required without --scenario)");
       }
+    }
+    if (plcStart.isPresent() && program != null) {
+      System.err.println("robotrun: warning: --program " + TerminalText.safe(program) + " is not used: the cell starts "
+          + "from its PLC sequence (runStartsFromPlc, docs/production.md), which selects the program");
     }
     programFiles.addAll(programs);
     List<Program> loaded = new ArrayList<>(fromWorkspace);

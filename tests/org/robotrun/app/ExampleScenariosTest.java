@@ -79,4 +79,15 @@ class ExampleScenariosTest {
     assertThat(Main.execute("run", "--scenario", "scenarios/plc-cell.json", "--report", again.toString())).isZero();
     assertThat(Files.readAllBytes(again)).isEqualTo(Files.readAllBytes(report));
   }
+
+  @Test
+  void aWorkspaceMadeFromThePlcCellAlsoStartsFromItsPlc(@TempDir Path dir) throws Exception {
+    // run --workspace ignored runStartsFromPlc (it asked for --program, the scenario did not)
+    Path ws = WorkspaceFiles.createFromScenario(Path.of("scenarios/plc-cell.json"), dir.resolve("ws"));
+    Path report = dir.resolve("r.json");
+    assertThat(Main.execute("run", "--workspace", ws.toString(), "--report", report.toString())).isZero();
+    JsonNode r = new ObjectMapper().readTree(report.toFile());
+    assertThat(r.get("program").asText()).isEqualTo("PNS0001");
+    assertThat(r.get("robots").get(0).get("io").get("DO").get("10").asBoolean()).isTrue();
+  }
 }
