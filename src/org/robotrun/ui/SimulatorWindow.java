@@ -157,6 +157,19 @@ public final class SimulatorWindow implements AutoCloseable {
     imguiGl3.init("#version 330 core");
   }
 
+  /** ROBOTRUN_UI_SCALE's value when it is a number from 0.5 to 4; empty otherwise (unset, blank, garbage). */
+  static java.util.Optional<Float> forcedUiScale(String forced) {
+    if (forced == null || forced.isBlank()) {
+      return java.util.Optional.empty();
+    }
+    try {
+      float f = Float.parseFloat(forced.trim());
+      return f >= 0.5f && f <= 4f ? java.util.Optional.of(f) : java.util.Optional.empty();
+    } catch (NumberFormatException e) {
+      return java.util.Optional.empty();
+    }
+  }
+
   /**
    * How much larger than at 96 dpi the window's text and panels are drawn, in window coordinates:
    * {@code ROBOTRUN_UI_SCALE} when set (0.5 to 4; for a screen that reports no scale, or to try
@@ -165,16 +178,12 @@ public final class SimulatorWindow implements AutoCloseable {
    */
   static float uiScale(long window, String forced) {
     if (forced != null && !forced.isBlank()) {
-      try {
-        float f = Float.parseFloat(forced.trim());
-        if (f >= 0.5f && f <= 4f) {
-          return f;
-        }
-      } catch (NumberFormatException e) {
-        // fall through to the message
+      java.util.Optional<Float> f = forcedUiScale(forced);
+      if (f.isPresent()) {
+        return f.get();
       }
-      System.err.println("robotrun: ROBOTRUN_UI_SCALE: expected a number from 0.5 to 4, got '" + forced
-          + "'; using the monitor's scale");
+      System.err.println("robotrun: ROBOTRUN_UI_SCALE: expected a number from 0.5 to 4, got '"
+          + org.robotrun.io.TerminalText.safe(forced) + "'; using the monitor's scale");
     }
     float[] sx = new float[1], sy = new float[1];
     glfwGetWindowContentScale(window, sx, sy);
@@ -200,10 +209,7 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwGetMonitorContentScale(monitor, sx, sy);
       // macOS counts screen coordinates in points: its content scale is not applied again
       float s = Platform.get() == Platform.MACOSX ? 1f : Math.max(1f, sx[0]);
-      String forced = System.getenv("ROBOTRUN_UI_SCALE");
-      if (forced != null && forced.trim().matches("[0-9]+(\\.[0-9]+)?")) {
-        s = Math.max(0.5f, Math.min(4f, Float.parseFloat(forced.trim())));
-      }
+      s = forcedUiScale(System.getenv("ROBOTRUN_UI_SCALE")).orElse(s);
       if (ww[0] > 0 && wh[0] > 0) {
         // leave room for the title bar and the task bar the work area may not count
         w = Math.min(Math.round(1280 * s), ww[0]);
