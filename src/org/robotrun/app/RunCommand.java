@@ -122,6 +122,19 @@ public final class RunCommand implements Callable<Integer> {
 
   @Override
   public Integer call() throws IOException {
+    try {
+      return runCommand();
+    } finally {
+      if (openSession != null) {
+        openSession.close();  // the hand-in's temporary copy goes, whatever happened
+      }
+    }
+  }
+
+  /** The workspace this run opened, closed by {@link #call} whatever happens. */
+  private WorkspaceSession openSession;
+
+  private Integer runCommand() throws IOException {
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
     }
@@ -148,6 +161,7 @@ public final class RunCommand implements Callable<Integer> {
         throw new UserError("--workspace and --scenario: give one of them (a workspace has its own cell)");
       }
       session = WorkspaceSession.open(workspace, true, java.util.Optional::empty, m -> {});
+      openSession = session;
       if (session.workspace.cellBlocked()) {
         String why = session.problems();
         session.close();

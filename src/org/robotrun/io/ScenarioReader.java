@@ -106,10 +106,24 @@ public final class ScenarioReader {
    * listed in {@code "programs"}.
    */
   public static CellLoad readCell(Path file) {
-    return readCell(file, true);
+    return readCell(file, true, false);
+  }
+
+  /**
+   * Loads a hand-in's {@code cell.json} (or another cell file of a hand-in) as
+   * {@link #readCell(Path)} does, with every file it names (meshes, programs) read only from
+   * inside the file's own folder: a path that leaves it, or a link out of it, is an error naming
+   * the field (a hand-in must not make the grader read its machine's files).
+   */
+  public static CellLoad readHandInCell(Path file) {
+    return readCell(file, true, true);
   }
 
   private static CellLoad readCell(Path file, boolean workspace) {
+    return readCell(file, workspace, false);
+  }
+
+  private static CellLoad readCell(Path file, boolean workspace, boolean confined) {
     String name = file.toString();
     String text;
     try {
@@ -120,7 +134,9 @@ public final class ScenarioReader {
       return fail(name, e.line(), e.reason());
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
-    return new Session(name, dir, workspace).read(text);
+    Session session = new Session(name, dir, workspace);
+    session.confined = confined;
+    return session.read(text);
   }
 
   private static CellLoad fail(String file, int line, String message) {
@@ -135,6 +151,8 @@ public final class ScenarioReader {
     private final Map<String, String> definedAt = new HashMap<>();
 
     private final boolean workspace;
+    /** Whether the files named must lie inside {@link #dir} (a hand-in's cell). */
+    private boolean confined;
 
     Session(String file, Path dir, boolean workspace) {
       super(file);
@@ -718,12 +736,29 @@ public final class ScenarioReader {
 
     /** {@code rel} against the scenario's folder, or null with an error when it is not a path. */
     private Path resolve(String rel, int line, String path) {
+      Path p;
       try {
-        return dir.resolve(rel).normalize();
+        p = dir.resolve(rel).normalize();
       } catch (InvalidPathException e) {
         error(line, path, "not a valid path: \"" + rel + "\"");
         return null;
       }
+      if (confined && (!p.startsWith(dir) || throughLink(p))) {
+        error(line, path, "\"" + TerminalText.safe(rel.length() > 100 ? rel.substring(0, 100) + "..." : rel)
+            + "\" is outside the hand-in: a hand-in's files are read only from inside it");
+        return null;
+      }
+      return p;
+    }
+
+    /** Whether a folder or file on the way from {@link #dir} to {@code p} is a symbolic link. */
+    private boolean throughLink(Path p) {
+      for (Path q = p; q != null && q.startsWith(dir) && !q.equals(dir); q = q.getParent()) {
+        if (Files.isSymbolicLink(q)) {
+          return true;
+        }
+      }
+      return false;
     }
 
     private static String programName(String path) {

@@ -63,6 +63,8 @@ public final class Workspace implements AutoCloseable {
   private final Map<String, List<Program>> robotPrograms = new LinkedHashMap<>();
   private final List<String> problems;
   private final boolean cellBlocked;
+  /** Opened from a hand-in: the files its cells name are read only from inside it. */
+  private boolean handIn;
   /** The other named scenarios read from {@code scenarios/}, in file-name order. */
   private List<Scenario> otherScenarios = List.of();
   /** Scenario files that could not be read (or repeat a name): never written over or deleted. */
@@ -119,6 +121,19 @@ public final class Workspace implements AutoCloseable {
    * taken and nothing is ever written (a hand-in being run, a second look).
    */
   public static Workspace open(Path dir, Scenario newCell, boolean readOnly) throws WorkspaceException {
+    return open(dir, newCell, readOnly, false);
+  }
+
+  /**
+   * Opens an unpacked hand-in read-only: as {@link #open(Path, Scenario, boolean)}, but the cell
+   * files may name meshes and programs only inside the hand-in
+   * ({@link ScenarioReader#readHandInCell}).
+   */
+  public static Workspace openHandIn(Path dir, Scenario newCell) throws WorkspaceException {
+    return open(dir, newCell, true, true);
+  }
+
+  private static Workspace open(Path dir, Scenario newCell, boolean readOnly, boolean handIn) throws WorkspaceException {
     Path abs = dir.toAbsolutePath().normalize();
     Path cell = abs.resolve(CELL);
     try {
@@ -160,7 +175,7 @@ public final class Workspace implements AutoCloseable {
     Scenario scenario = newCell;
     Optional<SavedState> state = Optional.empty();
     boolean cellBlocked = false;
-    switch (ScenarioReader.readCell(cell)) {
+    switch (handIn ? ScenarioReader.readHandInCell(cell) : ScenarioReader.readCell(cell)) {
       case CellLoad.Loaded l -> {
         scenario = l.scenario();
         state = l.state();
@@ -215,6 +230,7 @@ public final class Workspace implements AutoCloseable {
       perRobot.put(robot, own);
     }
     Workspace ws = new Workspace(abs, channel, lock, readOnlyReason, scenario, state, programs, problems, cellBlocked);
+    ws.handIn = handIn;
     ws.readScenarios(problems);
     ws.robotPrograms.putAll(perRobot);
     perRobot.forEach((robot, ps) -> ps.forEach(p -> ws.writtenPrograms.put(robotFolder(robot) + "/" + p.name(), p)));
@@ -267,7 +283,7 @@ public final class Workspace implements AutoCloseable {
         blockedScenarios.add(file);
         continue;
       }
-      switch (ScenarioReader.readCell(f)) {
+      switch (handIn ? ScenarioReader.readHandInCell(f) : ScenarioReader.readCell(f)) {
         case CellLoad.Failed failed -> {
           problems.add(failed.message() + "\n" + f + " is kept as it is and not loaded; fix it and open the workspace again.");
           blockedScenarios.add(file);
