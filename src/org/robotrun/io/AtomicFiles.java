@@ -115,6 +115,15 @@ public final class AtomicFiles {
           : e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
       throw new IOException(abs + ": cannot create a file in " + dir + " (" + why + ")");
     }
+    // An empty file fits on a full disk: a block written and forced does not.
+    try (FileChannel ch = FileChannel.open(probe, StandardOpenOption.WRITE)) {
+      ch.write(java.nio.ByteBuffer.allocate(4096));
+      ch.force(true);
+    } catch (IOException e) {
+      Files.deleteIfExists(probe);
+      String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+      throw new IOException(abs + ": cannot write in " + dir + " (" + why + ")");
+    }
     Files.deleteIfExists(probe);
   }
 
