@@ -53,6 +53,13 @@ public final class ScenarioReader {
   /** The format this reader understands. */
   public static final int FORMAT = 1;
 
+  /** Longest name of a robot or an object (a robot's is also its programs folder's, docs/workspace.md). */
+  public static final int MAX_NAME_LENGTH = 64;
+  /** Longest macro name (the controller's macro table holds up to 36 characters). */
+  public static final int MAX_MACRO_NAME = 36;
+  /** Longest scenario name (a window title, a hand-in's manifest). */
+  public static final int MAX_SCENARIO_NAME = 200;
+
   /** Largest scenario file accepted (meshes are separate files). */
   public static final long MAX_FILE_BYTES = 16L << 20;
   /** Largest position coordinate or size, in mm (the bound every position entry shares). */
@@ -177,6 +184,10 @@ public final class ScenarioReader {
       }
       checkFormat(top);
       String title = string(top, "name", "", false).orElse("");
+      if (title.length() > MAX_SCENARIO_NAME) {
+        error(top.keyLines().getOrDefault("name", top.line()), "name", "a scenario name is at most " + MAX_SCENARIO_NAME
+            + " characters, got " + title.length());
+      }
       String description = string(top, "description", "", false).orElse("");
       List<RobotSetup> robots = robots(top);
       List<WorldObject> objects = objects(top);
@@ -257,6 +268,11 @@ public final class ScenarioReader {
           error(nameLine, at + ".name", "robot names '" + clash + "' and '" + robotName
               + "' would share one programs folder in a workspace; give the robots names that differ in letters or digits");
         }
+        if (i > 0 && folder.endsWith(".ls")) {
+          // programs/LOADER.LS/ would stand where the first robot's program LOADER.LS is saved: every save would fail
+          error(nameLine, at + ".name", "robot name '" + robotName + "' ends in .LS: its programs folder programs/"
+              + Workspace.robotFolder(robotName) + "/ would collide with a program file; give the robot another name");
+        }
         Optional<RobotModel> model = string(r, "model", at, true).flatMap(m -> model(m, r, at));
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
@@ -331,7 +347,11 @@ public final class ScenarioReader {
         Optional<String> name = string(m, "name", path, true);
         Optional<String> program = string(m, "program", path, true);
         boolean ok = name.isPresent() && program.isPresent();
-        if (name.isPresent() && !name.get().matches("[A-Za-z0-9_]+( [A-Za-z0-9_]+)*")) {
+        if (name.isPresent() && name.get().length() > MAX_MACRO_NAME) {
+          error(m.members().get("name").line(), path + ".name", "a macro name is at most " + MAX_MACRO_NAME
+              + " characters, got " + name.get().length());
+          ok = false;
+        } else if (name.isPresent() && !isMacroName(name.get())) {
           error(m.members().get("name").line(), path + ".name", "expected a macro name: words of letters, digits and '_' "
               + "separated by one space (\"HAND1 OPEN\"), got \"" + name.get() + "\"");
           ok = false;
@@ -349,6 +369,14 @@ public final class ScenarioReader {
         }
       }
       return out;
+    }
+
+    /** Words of letters, digits and '_' separated by one space, checked without a regular expression (no recursion). */
+    private static boolean isMacroName(String n) {
+      if (n.isEmpty() || n.startsWith(" ") || n.endsWith(" ") || n.contains("  ")) {
+        return false;
+      }
+      return n.chars().allMatch(c -> c == ' ' || c == '_' || c < 128 && Character.isLetterOrDigit(c));
     }
 
     /** The robot's {@code "userAlarms"}: UALM[i] texts by number. */
@@ -830,6 +858,10 @@ public final class ScenarioReader {
     // ---- typed access that records errors ---------------------------------------------------
 
     private void defineName(String name, String path, int line) {
+      if (name.length() > MAX_NAME_LENGTH) {
+        error(line, path, "a name is at most " + MAX_NAME_LENGTH + " characters, got " + name.length());
+        return;
+      }
       String first = definedAt.putIfAbsent(name, path + " (line " + line + ")");
       if (first != null) {
         error(line, path, "duplicate name '" + name + "': already used by " + first.replace(".name", ""));

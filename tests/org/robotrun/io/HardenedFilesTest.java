@@ -132,4 +132,50 @@ class HardenedFilesTest {
       assertThat(e).as(n).isNotEmpty();
     }
   }
+
+  // ---- issue 26: names and recursive structures are bounded, never a StackOverflowError ----
+
+  @Test
+  void aMacroNameOfThousandsOfWordsIsOneErrorNotAStackOverflow() throws Exception {
+    String words = String.join(" ", java.util.Collections.nCopies(5000, "W"));
+    List<ScenarioError> e = errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\","
+        + " \"macros\": [{\"name\": \"" + words + "\", \"program\": \"P\"}]}]}");
+    assertThat(e).extracting(ScenarioError::path, ScenarioError::message).containsExactly(org.assertj.core.groups.Tuple.tuple(
+        "robots[0].macros[0].name", "a macro name is at most 36 characters, got 9999"));
+    // as a workspace's cell.json (run --workspace, pendant --workspace, grade read it this way)
+    Path cell = Files.writeString(dir.resolve("cell.json"), "{\"format\": 1, \"robots\": [{\"name\": \"robot1\","
+        + " \"model\": \"lrmate200id\", \"macros\": [{\"name\": \"" + words.replace(" ", "_") + "\", \"program\": \"P\"}]}]}");
+    assertThat(ScenarioReader.readCell(cell)).isInstanceOf(CellLoad.Failed.class);
+    // a good name of several words still reads
+    Path good = Files.writeString(dir.resolve("good.json"), "{\"format\": 1, \"robots\": [{\"name\": \"robot1\","
+        + " \"model\": \"lrmate200id\", \"macros\": [{\"name\": \"HAND1 OPEN\", \"program\": \"HOPEN\"}]}]}");
+    assertThat(ScenarioReader.read(good)).isInstanceOf(ScenarioLoad.Loaded.class);
+    assertThat(errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\","
+        + " \"macros\": [{\"name\": \"HAND1  OPEN\", \"program\": \"P\"}]}]}")).extracting(ScenarioError::message)
+        .singleElement().asString().startsWith("expected a macro name");
+  }
+
+  @Test
+  void everyNameIsBoundedAndARobotCannotNameAProgramFile() throws Exception {
+    String longName = "R".repeat(100_000);
+    assertThat(errors("{\"format\": 1, \"robots\": [{\"name\": \"" + longName + "\", \"model\": \"lrmate200id\"}]}"))
+        .extracting(ScenarioError::message).containsExactly("a name is at most 64 characters, got 100000");
+    assertThat(errors(HEAD + box(longName, "") + "]}")).extracting(ScenarioError::message)
+        .containsExactly("a name is at most 64 characters, got 100000");
+    assertThat(errors("{\"format\": 1, \"name\": \"" + "W ".repeat(50_000) + "\", \"robots\": [{\"name\": \"r\","
+        + " \"model\": \"lrmate200id\"}]}")).extracting(ScenarioError::message)
+        .containsExactly("a scenario name is at most 200 characters, got 100000");
+    List<ScenarioError> e = errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\"},\n"
+        + " {\"name\": \"LOADER.LS\", \"model\": \"lrmate200id\", \"basePose\": {\"x\": 1500, \"y\": 0, \"z\": 0}}]}");
+    assertThat(e).extracting(ScenarioError::line, ScenarioError::path).containsExactly(
+        org.assertj.core.groups.Tuple.tuple(2, "robots[1].name"));
+    assertThat(e.get(0).message()).contains("programs folder programs/LOADER.LS/ would collide with a program file");
+  }
+
+  @Test
+  void deeplyNestedJsonIsOneErrorNotAStackOverflow() throws Exception {
+    List<ScenarioError> e = errors("{\"format\": 1, \"name\": " + "[".repeat(200_000) + "]".repeat(200_000) + "}");
+    assertThat(e).hasSize(1);
+    assertThat(e.get(0).message()).contains("nesting depth");
+  }
 }
