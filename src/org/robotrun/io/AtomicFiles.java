@@ -139,6 +139,14 @@ public final class AtomicFiles {
     }
   }
 
+  /** The temporary files {@link #write} makes: {@code .NAME.0123456789ab.tmp}. */
+  private static final java.util.regex.Pattern TEMPORARY = java.util.regex.Pattern.compile("\\..{1,60}\\.[0-9a-f]{12}\\.tmp");
+
+  /** Whether {@code fileName} is one of the temporary files this class makes (a crash may leave one). */
+  public static boolean isTemporaryName(String fileName) {
+    return fileName.length() <= 80 && TEMPORARY.matcher(fileName).matches();
+  }
+
   /** Creates an empty, unique temporary file beside the target, with umask permissions. */
   private static Path createUniqueTemp(Path dir, String name) throws IOException {
     String base = name.length() > 60 ? name.substring(0, 60) : name;

@@ -178,4 +178,28 @@ class HardenedFilesTest {
     assertThat(e).hasSize(1);
     assertThat(e.get(0).message()).contains("nesting depth");
   }
+
+  @Test
+  void staleTemporaryFilesOfAKilledSaveAreRemovedByTheWorkspacesWriterOnly() throws Exception {
+    Path ws = dir.resolve("ws");
+    var cell = ((ScenarioLoad.Loaded) ScenarioReader.read(Path.of("scenarios/empty-cell.json"))).scenario();
+    Workspace.open(ws, cell).close();
+    Path stale = Files.writeString(ws.resolve("programs/.MAIN.LS.0123456789ab.tmp"), "half a program");
+    Path staleCell = Files.writeString(ws.resolve(".cell.json.a1b2c3d4e5f6.tmp"), "{");
+    Path fresh = Files.writeString(ws.resolve("programs/.PICK.LS.ffffffffffff.tmp"), "being written now");
+    Path mine = Files.writeString(ws.resolve("programs/.notes.tmp"), "not RobotRun's");
+    java.nio.file.attribute.FileTime old = java.nio.file.attribute.FileTime.from(java.time.Instant.now().minusSeconds(3600));
+    for (Path p : List.of(stale, staleCell, mine)) {
+      Files.setLastModifiedTime(p, old);
+    }
+    Workspace.open(ws, cell, true).close();  // a reader leaves them
+    assertThat(stale).exists();
+    try (Workspace w = Workspace.open(ws, cell)) {
+      assertThat(w.readOnly()).isFalse();
+    }
+    assertThat(stale).doesNotExist();
+    assertThat(staleCell).doesNotExist();
+    assertThat(fresh).exists();
+    assertThat(mine).exists();
+  }
 }
