@@ -197,8 +197,12 @@ public final class PendantCommand implements Callable<Integer> {
           stopped[0] = script.run(pendants, robotNames, show, clock::expired);
           w.flush();
         });
-      } catch (IOException e) {
-        throw new UserError("--trace: cannot write " + trace + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+      } catch (IOException | java.io.UncheckedIOException e) {
+        // as run says it: a full disk while tracing is one line, never an internal error
+        Throwable t = e instanceof java.io.UncheckedIOException u ? u.getCause() : e;
+        String why = t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
+        throw new UserError("--trace: could not write " + trace + " (" + why + "); the old file, if any, is unchanged",
+            Main.EXIT_FAILED);
       }
     }
     int stoppedAt = stopped[0];

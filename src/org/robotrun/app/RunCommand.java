@@ -135,6 +135,9 @@ public final class RunCommand implements Callable<Integer> {
   private WorkspaceSession openSession;
 
   private Integer runCommand() throws IOException {
+    if (seed != null && !org.robotrun.io.VisionJson.isValidSeed(seed)) {
+      throw new UserError("--seed: expected a whole number of at most 15 digits (as vision.seed), got " + seed);
+    }
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
     }

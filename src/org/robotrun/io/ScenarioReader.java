@@ -207,6 +207,17 @@ public final class ScenarioReader {
       LocatedJson stateJson = top.members().get("state");
       if (stateJson instanceof JObject so) {
         state = StateJson.read(so, this::error);
+        // state.robots holds each later robot's state: one the cell lacks would be dropped at the next save
+        if (so.members().get("robots") instanceof JObject saved) {
+          List<String> later = robots.stream().skip(1).map(RobotSetup::name).toList();
+          for (String name : saved.members().keySet()) {
+            if (!later.contains(name)) {
+              error(saved.keyLines().getOrDefault(name, saved.line()), "state.robots." + name, "no robot '" + name
+                  + "' after the first in this cell" + (later.isEmpty() ? " (it has one robot)" : " (robots after the first: "
+                  + String.join(", ", later) + ")") + "; its saved state would be lost at the next save");
+            }
+          }
+        }
       } else if (stateJson != null) {
         error(stateJson.line(), "state", "expected an object, got " + stateJson.describe());
       }

@@ -202,4 +202,34 @@ class HardenedFilesTest {
     assertThat(fresh).exists();
     assertThat(mine).exists();
   }
+
+  @Test
+  void savedRegistersComeBackWithTheirTypeAndValue() throws Exception {
+    Path f = Files.writeString(dir.resolve("cell.json"), "{\"format\": 1, \"robots\": [{\"name\": \"robot1\","
+        + " \"model\": \"lrmate200id\"}], \"state\": {\"registers\": {\"1\": 7, \"2\": 2.0, \"3\": 2147483648,"
+        + " \"4\": 1e-320, \"5\": 0.3333333333333333, \"6\": -4503599627370497, \"7\": 1.0E20}}}");
+    CellLoad.Loaded first = (CellLoad.Loaded) ScenarioReader.readCell(f);
+    Path again = dir.resolve("again/cell.json");
+    Files.createDirectories(again.getParent());
+    Files.writeString(again, ScenarioWriter.toJson(first.scenario(), first.state(), again.getParent()));
+    CellLoad.Loaded second = (CellLoad.Loaded) ScenarioReader.readCell(again);
+    var a = first.state().orElseThrow().registers();
+    var b = second.state().orElseThrow().registers();
+    assertThat(b).isEqualTo(a);
+    assertThat(b.get(3)).isEqualTo(new SavedState.Register(2147483648.0, true));
+    assertThat(b.get(4).value()).isEqualTo(1e-320);
+    assertThat(b.get(4).integer()).isFalse();
+    assertThat(b.get(5).value()).isEqualTo(1.0 / 3);
+    assertThat(b.get(2)).isEqualTo(new SavedState.Register(2.0, false));
+    assertThat(b.get(6)).isEqualTo(new SavedState.Register(-4503599627370497.0, true));
+  }
+
+  @Test
+  void aSavedStateOfARobotTheCellLacksIsRefusedWithPathAndLine() throws Exception {
+    List<ScenarioError> e = errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\"}],\n"
+        + " \"state\": {\"robots\": {\n \"ghost\": {\"registers\": {\"1\": 5}}}}}");
+    assertThat(e).extracting(ScenarioError::line, ScenarioError::path).containsExactly(
+        org.assertj.core.groups.Tuple.tuple(3, "state.robots.ghost"));
+    assertThat(e.get(0).message()).contains("no robot 'ghost' after the first in this cell");
+  }
 }
