@@ -148,4 +148,16 @@ class GradeCommandTest {
     assertThat(GradeReports.csv("two\nlines")).isEqualTo("two\\nlines");
     assertThat(GradeReports.csv("=cmd, x")).isEqualTo("\"'=cmd, x\"");
   }
+
+  /** Issue 26: programs/*.LS and programs/ROBOT/*.LS without cell.json, as docs/grading.md lays it out, scored 0. */
+  @Test
+  void aFolderLaidOutAsAWorkspaceWithoutCellJsonIsGraded(@TempDir Path dir) throws Exception {
+    Path sub = dir.resolve("laid-out");
+    Files.createDirectories(sub.resolve("programs/robot2"));
+    Files.copy(Path.of("scenarios/programs/LOADER.LS"), sub.resolve("programs/LOADER.LS"));
+    Files.copy(Path.of("scenarios/programs/UNLOADER.LS"), sub.resolve("programs/robot2/UNLOADER.LS"));
+    Run r = run("grade", "--task", "scenarios/tasks/two-robot-handshake.task.json", "-q", sub.toString());
+    assertThat(r.exit()).as(r.err()).isZero();
+    assertThat(r.out()).isEqualTo("laid-out: 95 of 100 points\n");
+  }
 }
