@@ -801,6 +801,11 @@ public final class Controller implements MotionPort {
   }
 
   /** The UOP signals (UI/UO), the PLC sequence and the reference positions. */
+  /** The UOP outputs as the controller's state is now (a run that ends has no next tick to write them). */
+  public void settleOutputs() {
+    uop.settleOutputs();
+  }
+
   public Uop uop() {
     return uop;
   }

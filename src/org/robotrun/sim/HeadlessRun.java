@@ -170,6 +170,7 @@ public final class HeadlessRun {
         }
       }
       if (active == 0 || cellAlarm.isPresent() || limit != null) {
+        cs.forEach(Controller::settleOutputs);  // PROGRUN/BUSY of a robot that ended on this tick go OFF
         List<RobotResult> out = new ArrayList<>();
         for (int i = 0; i < n; i++) {
           RobotStatus st = status[i];
