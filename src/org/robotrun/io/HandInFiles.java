@@ -488,6 +488,12 @@ public final class HandInFiles {
   }
 
   private static String describe(Throwable e) {
-    return e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+    if (e instanceof EOFException) {
+      return "it ends in the middle of an entry: cut short?";
+    }
+    if (e instanceof java.nio.file.AccessDeniedException) {
+      return "permission denied";
+    }
+    return e.getMessage() == null ? "an input error" : e.getMessage();
   }
 }

@@ -131,7 +131,7 @@ class HandInIntegrityTest {
   void aManifestTwiceIsRefusedByGradeAsByRun() throws Exception {
     Path good = HandIns.zip(REFERENCE, "Ada", dir.resolve("good.zip"));
     java.io.ByteArrayOutputStream raw = new java.io.ByteArrayOutputStream();
-    try (var z = new java.util.zip.ZipFile(good.toFile()); var out = new DuplicateNameZip(raw)) {
+    try (var z = new java.util.zip.ZipFile(good.toFile()); var out = new HandIns.DuplicateNameZip(raw)) {
       out.put("manifest.json", "{\"format\":1,\"student\":\"Mallory\"}".getBytes(StandardCharsets.UTF_8));
       var it = z.entries();
       while (it.hasMoreElements()) {
@@ -145,7 +145,7 @@ class HandInIntegrityTest {
         .hasMessage(twice + ": the zip holds \"manifest.json\" twice");
     // any other name twice, the same
     java.io.ByteArrayOutputStream raw2 = new java.io.ByteArrayOutputStream();
-    try (var z = new java.util.zip.ZipFile(good.toFile()); var out = new DuplicateNameZip(raw2)) {
+    try (var z = new java.util.zip.ZipFile(good.toFile()); var out = new HandIns.DuplicateNameZip(raw2)) {
       var it = z.entries();
       while (it.hasMoreElements()) {
         var e = it.nextElement();
@@ -154,47 +154,6 @@ class HandInIntegrityTest {
       out.put("cell.json", "{}".getBytes(StandardCharsets.UTF_8));
     }
     assertThat(fatal(Files.write(dir.resolve("twice2.zip"), raw2.toByteArray()))).isEqualTo("the zip holds \"cell.json\" twice");
-  }
-
-  /** Stored entries written by hand: unlike ZipOutputStream it lets a name come twice. */
-  private static final class DuplicateNameZip implements AutoCloseable {
-    private final java.io.ByteArrayOutputStream local = new java.io.ByteArrayOutputStream();
-    private final java.io.ByteArrayOutputStream central = new java.io.ByteArrayOutputStream();
-    private final java.io.OutputStream out;
-    private int count;
-
-    DuplicateNameZip(java.io.OutputStream out) {
-      this.out = out;
-    }
-
-    void put(String name, byte[] data) {
-      byte[] n = name.getBytes(StandardCharsets.UTF_8);
-      java.util.zip.CRC32 crc = new java.util.zip.CRC32();
-      crc.update(data);
-      int offset = local.size();
-      var l = java.nio.ByteBuffer.allocate(30 + n.length).order(java.nio.ByteOrder.LITTLE_ENDIAN);
-      l.putInt(0x04034b50).putShort((short) 10).putShort((short) 0x800).putShort((short) 0).putInt(0)
-          .putInt((int) crc.getValue()).putInt(data.length).putInt(data.length).putShort((short) n.length)
-          .putShort((short) 0).put(n);
-      local.writeBytes(l.array());
-      local.writeBytes(data);
-      var c = java.nio.ByteBuffer.allocate(46 + n.length).order(java.nio.ByteOrder.LITTLE_ENDIAN);
-      c.putInt(0x02014b50).putShort((short) 10).putShort((short) 10).putShort((short) 0x800).putShort((short) 0)
-          .putInt(0).putInt((int) crc.getValue()).putInt(data.length).putInt(data.length).putShort((short) n.length)
-          .putShort((short) 0).putShort((short) 0).putShort((short) 0).putShort((short) 0).putInt(0).putInt(offset).put(n);
-      central.writeBytes(c.array());
-      count++;
-    }
-
-    @Override
-    public void close() throws java.io.IOException {
-      var end = java.nio.ByteBuffer.allocate(22).order(java.nio.ByteOrder.LITTLE_ENDIAN);
-      end.putInt(0x06054b50).putShort((short) 0).putShort((short) 0).putShort((short) count).putShort((short) count)
-          .putInt(central.size()).putInt(local.size()).putShort((short) 0);
-      out.write(local.toByteArray());
-      out.write(central.toByteArray());
-      out.write(end.array());
-    }
   }
 
   @Test
