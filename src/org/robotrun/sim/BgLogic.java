@@ -149,6 +149,7 @@ public final class BgLogic {
       return Optional.of("all " + SLOTS + " BG Logic slots are in use");
     }
     Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+    in.leavePulsesToCaller();
     in.setTaskPort(TaskPort.NONE);
     in.setAdvancesTimers(false);
     Slot s = new Slot(program, in);
@@ -166,6 +167,7 @@ public final class BgLogic {
     slots.clear();
     for (String program : programs) {
       Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+      in.leavePulsesToCaller();
       in.setTaskPort(TaskPort.NONE);
       in.setAdvancesTimers(false);
       Slot s = new Slot(program, in);
