@@ -20,7 +20,9 @@ import org.robotrun.render.GlUnavailableException;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.CellStepper;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.grade.Grader;
 import org.robotrun.grade.TaskLoad;
 import org.robotrun.grade.TaskReader;
@@ -97,7 +99,8 @@ public final class GuiCommand implements Callable<Integer> {
    * is null when the window shows a scenario without a workspace (tests).
    */
   public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
-      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots) {}
+      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots,
+      CellStepper stepper) {}
 
   @Override
   public Integer call() {
@@ -306,10 +309,10 @@ public final class GuiCommand implements Callable<Integer> {
     // scenario's), override $SCR.$COLDOVRD = 10%.
     List<Pendant> pendants = new java.util.ArrayList<>();
     for (Controller c : sim.controllers()) {
-      SimRobotControl rc = new SimRobotControl(sim, c);
+      ControllerPort rc = new ControllerPort(c);
       rc.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
       if (sc != null && sc.mode().isPresent()) {
-        rc.setMode(org.robotrun.pendant.RobotControl.Mode.valueOf(sc.mode().get()));
+        rc.setMode(org.robotrun.control.RobotControl.Mode.valueOf(sc.mode().get()));
       }
       Pendant p = new Pendant(rc, new LsLineParser());
       if (sim.controllers().size() > 1) {
@@ -419,7 +422,7 @@ public final class GuiCommand implements Callable<Integer> {
       keyboard.releaseAll();
       pendantPanel.releaseLatched();
     });
-    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector);
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim));
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
@@ -475,8 +478,10 @@ public final class GuiCommand implements Callable<Integer> {
     long[] lastSave = {System.nanoTime()};
     s.bench().setLayoutChangeHandler(() -> dirty[0] = true);
     s.window().run(t -> {
-          // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
-          s.pendant().advance(Math.min(0.1, t - last[0]));
+          // Real time drives the simulation (a stalled frame never makes it jump more than 0.1 s);
+          // then the pendant in hand catches up with its controller.
+          s.stepper().advanceRealTime(t - last[0]);
+          s.robots().get().follow();
           last[0] = t;
           if (s.workspace() != null) {
             s.workspace().session.autosave.poll(System.nanoTime());

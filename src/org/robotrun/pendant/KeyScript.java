@@ -6,6 +6,8 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.DoubleConsumer;
+import org.robotrun.control.RobotControl;
 
 /**
  * A {@code .keys} script: one pendant action per line, for tests, tutorials and graders.
@@ -286,20 +288,20 @@ public final class KeyScript {
   }
 
   /**
-   * Runs the script on {@code pendant}; every SHOW hands {@code show} a header line and the
-   * LCD text.
+   * Runs the script on {@code pendant}; {@code clock} advances the cell's simulated time by the
+   * seconds it is given (a WAIT); every SHOW hands {@code show} a header line and the LCD text.
    */
-  public void run(Pendant pendant, Consumer<String> show) {
-    run(pendant, show, () -> false);
+  public void run(Pendant pendant, DoubleConsumer clock, Consumer<String> show) {
+    run(pendant, clock, show, () -> false);
   }
 
   /**
-   * Runs the script as {@link #run(Pendant, Consumer)} does, asking {@code stop} between steps
+   * Runs the script as {@link #run(Pendant, DoubleConsumer, Consumer)} does, asking {@code stop} between steps
    * (and every simulated second of a WAIT); when it answers true the script ends there and this
    * returns the line it stopped before, or 0 when the script ran to its end.
    */
-  public int run(Pendant pendant, Consumer<String> show, java.util.function.BooleanSupplier stop) {
-    return run(List.of(pendant), List.of("robot1"), show, stop);
+  public int run(Pendant pendant, DoubleConsumer clock, Consumer<String> show, java.util.function.BooleanSupplier stop) {
+    return run(List.of(pendant), List.of("robot1"), clock, show, stop);
   }
 
   /**
@@ -337,6 +339,20 @@ public final class KeyScript {
     return Optional.empty();
   }
 
+  /** Slice of simulated time between two looks of the pendant at the executing line. */
+  static final double FOLLOW_SLICE_SEC = 0.02;
+
+  /** Advances the cell by {@code dtSec}; the EDIT cursor follows the executing line as it goes. */
+  public static void advance(Pendant pendant, DoubleConsumer clock, double dtSec) {
+    double left = dtSec;
+    while (left > 1e-12) {
+      double dt = Math.min(FOLLOW_SLICE_SEC, left);
+      clock.accept(dt);
+      left -= dt;
+      pendant.follow();
+    }
+  }
+
   private static int robotIndex(String robot, List<String> robots) {
     for (int i = 0; i < robots.size(); i++) {
       if (robots.get(i).equals(robot)) {
@@ -353,11 +369,13 @@ public final class KeyScript {
   /**
    * Runs the script on a cell of several robots, each with its own pendant (in cell order, named
    * {@code robots}); it starts on the first, and {@code ROBOT} switches. Time (WAIT) advances the
-   * whole cell whichever pendant is in hand. With several robots the SHOW header names the robot.
+   * whole cell through {@code clock} whichever pendant is in hand, in slices of
+   * {@value #FOLLOW_SLICE_SEC} s after each of which the pendant in hand follows the controller. With several robots the SHOW header names the robot.
    *
    * @throws IllegalArgumentException if a ROBOT line names no robot of the cell (see {@link #unknownRobot})
    */
-  public int run(List<Pendant> pendants, List<String> robots, Consumer<String> show, java.util.function.BooleanSupplier stop) {
+  public int run(List<Pendant> pendants, List<String> robots, DoubleConsumer clock, Consumer<String> show,
+      java.util.function.BooleanSupplier stop) {
     if (pendants.size() != robots.size() || pendants.isEmpty()) {
       throw new IllegalArgumentException("one pendant per robot: " + pendants.size() + " pendants, " + robots.size() + " robots");
     }
@@ -391,7 +409,7 @@ public final class KeyScript {
               return w.line();
             }
             double chunk = Math.min(1.0, left);
-            pendant.advance(chunk);
+            advance(pendant, clock, chunk);
             left -= chunk;
           }
           timeSec += w.seconds();

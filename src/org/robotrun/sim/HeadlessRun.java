@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.function.Consumer;
+import org.robotrun.control.RobotControl;
 
 /**
  * Runs one program to its end with no window, as fast as the machine allows: selects it, starts
@@ -105,8 +106,8 @@ public final class HeadlessRun {
     int n = cs.size();
     boolean several = sim.controllers().size() > 1;
     for (Controller c : cs) {
-      CommandResult start = c.run(programs.get(c), 1, true);
-      if (start instanceof CommandResult.Refused r) {
+      RobotControl.Result start = c.run(programs.get(c), 1, true);
+      if (start instanceof RobotControl.Result.Refused r) {
         throw new IllegalArgumentException(several ? c.name() + ": " + r.reason() : r.reason());
       }
     }
@@ -122,9 +123,10 @@ public final class HeadlessRun {
       lastQ[i] = cs.get(i).jointsRad();
     }
     Optional<ControllerAlarm> cellAlarm = Optional.empty();
+    CellStepper stepper = new CellStepper(sim);
+    stepper.setAfterTick(afterTick);
     while (true) {
-      sim.step();
-      afterTick.accept(sim);
+      stepper.tick();
       double t = sim.timeSec();
       int active = 0;
       for (int i = 0; i < n; i++) {

@@ -5,6 +5,7 @@ import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Registers;
 import org.robotrun.world.ProductionSetup;
@@ -133,6 +134,11 @@ public final class Uop {
     return setup != null && setup.uopEnabled();
   }
 
+  /** Whether the teach pendant's TP ENABLE switch is on (UO TPENBL). */
+  public boolean tpEnabled() {
+    return tpEnabled;
+  }
+
   /** The teach pendant's TP ENABLE switch (the window tells the controller; headless it is off). */
   public void setTpEnabled(boolean on) {
     tpEnabled = on;
@@ -181,7 +187,7 @@ public final class Uop {
 
   /** The remote conditions and the operation enable conditions hold (CMDENBL's inputs, less step mode). */
   private boolean remoteOk() {
-    return enabled() && setup.remote() && c.mode() == OperatingMode.AUTO && !tpEnabled
+    return enabled() && setup.remote() && c.mode() == RobotControl.Mode.AUTO && !tpEnabled
         && ui(IMSTP) && ui(HOLD) && ui(SFSPD) && ui(ENBL);
   }
 
@@ -348,8 +354,8 @@ public final class Uop {
       refuse(program + " is already running");
       return;
     }
-    CommandResult r = c.run(program, 1, true);
-    if (r instanceof CommandResult.Refused f) {
+    RobotControl.Result r = c.run(program, 1, true);
+    if (r instanceof RobotControl.Result.Refused f) {
       refuse(f.reason());
     }
   }
