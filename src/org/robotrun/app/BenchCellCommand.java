@@ -50,7 +50,7 @@ public final class BenchCellCommand implements Callable<Integer> {
     List<List<Program>> own = new java.util.ArrayList<>();
     for (int i = 0; i < sc.robots().size(); i++) {
       var r = sc.robots().get(i);
-      mains.add(i == 0 ? r.mainProgram().or(sc::mainProgram).orElse(null) : r.mainProgram().orElse(null));
+      mains.add(sc.preload(i).mainProgram().orElse(null));
       own.add(RunCommand.loadPrograms(r.programs()));
     }
     if (mains.stream().allMatch(java.util.Objects::isNull)) {

@@ -308,11 +308,13 @@ public final class GuiCommand implements Callable<Integer> {
     // window drives. A fresh window is a cold start for each: mode T1 (the port's default, or the
     // scenario's), override $SCR.$COLDOVRD = 10%.
     List<Pendant> pendants = new java.util.ArrayList<>();
-    for (Controller c : sim.controllers()) {
+    for (int i = 0; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
       ControllerPort rc = new ControllerPort(c);
       rc.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
-      if (sc != null && sc.mode().isPresent()) {
-        rc.setMode(org.robotrun.control.RobotControl.Mode.valueOf(sc.mode().get()));
+      java.util.Optional<String> mode = sc != null && i < sc.robots().size() ? sc.preload(i).mode() : java.util.Optional.empty();
+      if (mode.isPresent()) {
+        rc.setMode(org.robotrun.control.RobotControl.Mode.valueOf(mode.get()));
       }
       Pendant p = new Pendant(rc, new LsLineParser());
       if (sim.controllers().size() > 1) {

@@ -136,12 +136,8 @@ public final class PendantCommand implements Callable<Integer> {
       } catch (FileFormatException | IllegalArgumentException e) {
         throw new UserError(scenario + ": " + e.getMessage());
       }
-      programFiles.addAll(sc.programs());
-      programFiles.addAll(sc.robots().get(0).programs());
+      programFiles.addAll(sc.preload(0).programs());
       cell = sc;
-      if (mode == null && sc.mode().isPresent()) {
-        startMode = RobotControl.Mode.valueOf(sc.mode().get());
-      }
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     }
@@ -151,7 +147,11 @@ public final class PendantCommand implements Callable<Integer> {
     List<Pendant> pendants = new java.util.ArrayList<>();
     for (org.robotrun.sim.Controller c : sim.controllers()) {
       ControllerPort rc = new ControllerPort(c);
-      rc.setMode(startMode);
+      int k = controls.size();
+      // --mode for every robot; else each robot's own mode switch (the scenario's, or T1)
+      java.util.Optional<String> own = mode != null || cell == null || k >= cell.robots().size()
+          ? java.util.Optional.empty() : cell.preload(k).mode();
+      rc.setMode(own.map(RobotControl.Mode::valueOf).orElse(startMode));
       rc.setOverridePct(overridePct);
       controls.add(rc);
       Pendant p = new Pendant(rc, new LsLineParser());

@@ -22,7 +22,6 @@ import org.robotrun.io.BoundedFiles;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.UnreadableFileException;
 import org.robotrun.io.FileFormatException;
-import org.robotrun.io.ScenarioLoad;
 import org.robotrun.io.ScenarioReader;
 import org.robotrun.world.Scenario;
 import org.robotrun.sim.ScenarioCell;
@@ -165,17 +164,18 @@ public final class RunCommand implements Callable<Integer> {
       plcStart = wsCell.production().of(wsCell.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
       if (program == null && plcStart.isEmpty()) {
         String ws = workspace.toString();
-        program = wsCell.robots().get(0).mainProgram().or(wsCell::mainProgram).orElse(null);
+        program = wsCell.preload(0).mainProgram().orElse(null);
         if (program == null && wsCell.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
           throw new UserError("--program: name the program to run (the workspace " + ws + " names no main program)");
         }
       }
       cell = wsCell;
     } else if (scenario != null) {
-      Scenario sc = switch (ScenarioReader.read(scenario)) {
-        case ScenarioLoad.Loaded l -> l.scenario();
-        case ScenarioLoad.Failed f -> throw new UserError(f.message());
+      org.robotrun.io.CellLoad.Loaded load = switch (ScenarioReader.readWithState(scenario)) {
+        case org.robotrun.io.CellLoad.Loaded l -> l;
+        case org.robotrun.io.CellLoad.Failed f -> throw new UserError(f.message());
       };
+      Scenario sc = load.scenario();
       if (seed != null) {
         if (sc.vision().isEmpty()) {
           System.err.println("robotrun: warning: --seed: " + scenario + " has no vision section: the seed changes nothing");
@@ -187,12 +187,13 @@ public final class RunCommand implements Callable<Integer> {
       } catch (FileFormatException | IllegalArgumentException e) {
         throw new UserError(scenario + ": " + e.getMessage());
       }
-      programFiles.addAll(sc.programs());
-      programFiles.addAll(sc.robots().get(0).programs());
+      // A saved controller state ("state", as a workspace keeps it) goes into every robot it names.
+      load.state().ifPresent(st -> st.applyToCell(sim.controllers()));
+      programFiles.addAll(sc.preload(0).programs());
       cell = sc;
       plcStart = sc.production().of(sc.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
       if (program == null && plcStart.isEmpty()) {
-        program = sc.robots().get(0).mainProgram().or(sc::mainProgram).orElse(null);
+        program = sc.preload(0).mainProgram().orElse(null);
         if (program == null && sc.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
           throw new UserError("--program: name the program to run (the scenario " + scenario + " names no main program)");
         }

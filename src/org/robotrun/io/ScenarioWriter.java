@@ -167,6 +167,22 @@ public final class ScenarioWriter {
           }
           g.writeEndArray();
         }
+        if (!r.registers().isEmpty()) {
+          g.writeObjectFieldStart("registers");
+          for (Map.Entry<Integer, Double> e : r.registers().entrySet()) {
+            number(g, e.getKey().toString(), e.getValue());
+          }
+          g.writeEndObject();
+        }
+        if (!r.toolFrames().isEmpty() || !r.userFrames().isEmpty()) {
+          g.writeObjectFieldStart("frames");
+          frameSet(g, "tool", r.toolFrames());
+          frameSet(g, "user", r.userFrames());
+          g.writeEndObject();
+        }
+        if (r.mode().isPresent()) {
+          g.writeStringField("mode", r.mode().get());
+        }
         g.writeEndObject();
       }
       g.writeEndArray();

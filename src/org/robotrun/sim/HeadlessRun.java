@@ -159,18 +159,20 @@ public final class HeadlessRun {
         }
         active++;
       }
-      ControllerAlarm limit = null;
+      // A limit stops every robot still running, each with the alarm naming its own program and line.
+      String limitCode = null;
+      String limitText = null;
       if (active > 0 && cellAlarm.isEmpty()) {
         if (sim.ticks() % STOP_CHECK_TICKS == 0 && stop.getAsBoolean()) {
-          ExecutionStatus s = firstActive(cs, status).status();
-          limit = new ControllerAlarm(WALL_LIMIT_CODE, stopReason, s.program(), s.line(), t);
+          limitCode = WALL_LIMIT_CODE;
+          limitText = stopReason;
         } else if (t - t0 >= maxSimSec) {
-          ExecutionStatus s = firstActive(cs, status).status();
-          limit = new ControllerAlarm(TIME_LIMIT_CODE, String.format(java.util.Locale.ROOT,
-              "time limit reached: the program ran %.1f s of simulated time without ending", maxSimSec),
-              s.program(), s.line(), t);
+          limitCode = TIME_LIMIT_CODE;
+          limitText = String.format(java.util.Locale.ROOT,
+              "time limit reached: the program ran %.1f s of simulated time without ending", maxSimSec);
         }
       }
+      ControllerAlarm limit = limitCode == null ? null : limitAlarm(firstActive(cs, status), limitCode, limitText, t);
       if (active == 0 || cellAlarm.isPresent() || limit != null) {
         List<RobotResult> out = new ArrayList<>();
         for (int i = 0; i < n; i++) {
@@ -179,7 +181,7 @@ public final class HeadlessRun {
           if (st == null) {
             // Still running: a time limit stops it with that alarm, another robot's alarm stops the cell.
             st = limit != null ? RobotStatus.ALARM : RobotStatus.STOPPED;
-            a = Optional.ofNullable(limit);
+            a = limit == null ? Optional.empty() : Optional.of(limitAlarm(cs.get(i), limitCode, limitText, t));
             end[i] = t;
           }
           out.add(new RobotResult(cs.get(i).name(), programs.get(cs.get(i)), st, a, end[i] - t0,
@@ -190,6 +192,12 @@ public final class HeadlessRun {
             List.copyOf(out));
       }
     }
+  }
+
+  /** A limit's alarm on {@code c}: its program and line as they stand. */
+  private static ControllerAlarm limitAlarm(Controller c, String code, String text, double t) {
+    ExecutionStatus s = c.status();
+    return new ControllerAlarm(code, text, s.program(), s.line(), t);
   }
 
   private static Controller firstActive(List<Controller> cs, RobotStatus[] status) {
