@@ -110,10 +110,14 @@ public final class RunCommand implements Callable<Integer> {
   @Option(names = "--trace", paramLabel = "out.csv", description = "Write one CSV row per tick here.")
   Path trace;
 
-  /** A workspace's cell with the --seed placement and vision noise. */
-  private void reseed(Simulation sim) {
+  /**
+   * --seed, the one place it is handled: the cell's parts placed and its vision noise drawn from
+   * the seed instead of the cell's {@code vision.seed}; a warning names {@code cellName} when the
+   * cell has no vision section.
+   */
+  private void reseed(Simulation sim, String cellName) {
     if (sim.vision().isEmpty()) {
-      System.err.println("robotrun: warning: --seed: the workspace's cell has no vision section: the seed changes nothing");
+      System.err.println("robotrun: warning: --seed: " + cellName + " has no vision section: the seed changes nothing");
       return;
     }
     org.robotrun.sim.VisionSystem.reseed(sim, sim.vision().get().setup(), seed);
@@ -136,6 +140,7 @@ public final class RunCommand implements Callable<Integer> {
       throw new UserError("--report and --trace name the same file " + report);
     }
     Simulation sim;
+    String cellName;
     Scenario cell = null;
     // a production setup may say the run starts from its PLC sequence (docs/production.md)
     java.util.Optional<ProductionSetup.Robot> plcStart = java.util.Optional.empty();
@@ -156,9 +161,7 @@ public final class RunCommand implements Callable<Integer> {
         System.err.println("robotrun: warning: " + session.problems());
       }
       sim = session.sim;
-      if (seed != null) {
-        reseed(sim);
-      }
+      cellName = "the workspace's cell";
       fromWorkspace.addAll(session.workspace.programs());
       Scenario wsCell = session.workspace.scenario();
       plcStart = wsCell.production().of(wsCell.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
@@ -176,12 +179,7 @@ public final class RunCommand implements Callable<Integer> {
         case org.robotrun.io.CellLoad.Failed f -> throw new UserError(f.message());
       };
       Scenario sc = load.scenario();
-      if (seed != null) {
-        if (sc.vision().isEmpty()) {
-          System.err.println("robotrun: warning: --seed: " + scenario + " has no vision section: the seed changes nothing");
-        }
-        sc = sc.withVision(sc.vision().withSeed(seed));
-      }
+      cellName = scenario.toString();
       try {
         sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
       } catch (FileFormatException | IllegalArgumentException e) {
@@ -199,13 +197,14 @@ public final class RunCommand implements Callable<Integer> {
         }
       }
     } else {
-      if (seed != null) {
-        System.err.println("robotrun: warning: --seed: the default cell has no vision section: the seed changes nothing");
-      }
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+      cellName = "the default cell";
       if (program == null) {
         throw new UserError("--program: name the program to run (required without --scenario)");
       }
+    }
+    if (seed != null) {
+      reseed(sim, cellName);
     }
     if (plcStart.isPresent() && program != null) {
       System.err.println("robotrun: warning: --program " + TerminalText.safe(program) + " is not used: the cell starts "
