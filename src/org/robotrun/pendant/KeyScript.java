@@ -110,7 +110,8 @@ public final class KeyScript {
 
   private final List<Step> steps;
   /** {@code UI[6] ON}: an input the PLC drives, set by hand. */
-  private static final java.util.regex.Pattern INPUT = java.util.regex.Pattern.compile("(UI|DI)\\[(\\d{1,4})\\]\\s+(ON|OFF)");
+  /** An input line: an address ({@link org.robotrun.program.IoAddress}, UI or DI) and ON or OFF. */
+  private static final java.util.regex.Pattern INPUT = java.util.regex.Pattern.compile("(.+?)\\s+(ON|OFF)");
 
   private KeyScript(List<Step> steps) {
     this.steps = List.copyOf(steps);
@@ -134,14 +135,17 @@ public final class KeyScript {
         continue;
       }
       java.util.regex.Matcher io = INPUT.matcher(t.toUpperCase(Locale.ROOT));
-      if (io.matches()) {
-        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(io.group(1));
-        int index = Integer.parseInt(io.group(2));
+      Optional<org.robotrun.program.IoAddress> address = io.matches()
+          ? org.robotrun.program.IoAddress.parse(io.group(1)).filter(a -> a.kind().equals("UI") || a.kind().equals("DI"))
+          : Optional.empty();
+      if (address.isPresent()) {
+        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(address.get().kind());
+        int index = address.get().index();
         int size = org.robotrun.program.IoRanges.DEFAULT.size(kind);
         if (index < 1 || index > size) {
           return bad(file, n, kind + "[" + index + "]: index out of range (expected 1.." + size + ")");
         }
-        steps.add(new Step.Input(n, kind, index, io.group(3).equals("ON")));
+        steps.add(new Step.Input(n, kind, index, io.group(2).equals("ON")));
         continue;
       }
       String word = t.split("\\s+", 2)[0].toUpperCase(Locale.ROOT);
