@@ -556,7 +556,7 @@ public final class TaskReader {
     }
 
     private static String plain(double d) {
-      return d == Math.rint(d) ? Long.toString((long) d) : Double.toString(d);
+      return org.robotrun.math.DecimalText.plain(d);
     }
   }
 }
