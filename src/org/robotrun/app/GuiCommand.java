@@ -100,7 +100,7 @@ public final class GuiCommand implements Callable<Integer> {
    */
   public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
       CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots,
-      CellStepper stepper) {}
+      CellStepper stepper, java.util.concurrent.atomic.AtomicReference<org.robotrun.sim.SceneSnapshot> frameScene) {}
 
   @Override
   public Integer call() {
@@ -304,6 +304,8 @@ public final class GuiCommand implements Callable<Integer> {
       stage("cell built");
     }
     Controller controller = sim.controllers().get(0);
+    // the scene the window drew this frame (set by run), for the views that draw it again
+    java.util.concurrent.atomic.AtomicReference<org.robotrun.sim.SceneSnapshot> frameScene = new java.util.concurrent.atomic.AtomicReference<>();
     // Every robot has its own controller port and pendant; the robot selector picks the one the
     // window drives. A fresh window is a cold start for each: mode T1 (the port's default, or the
     // scenario's), override $SCR.$COLDOVRD = 10%.
@@ -414,7 +416,10 @@ public final class GuiCommand implements Callable<Integer> {
     }
     if (sim.vision().isPresent()) {
       // Vision (issue 16): camera views in the Vision menu, Reset with a seed in the side panel.
-      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim);
+      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim, () -> {
+        org.robotrun.sim.SceneSnapshot shown = frameScene.get();
+        return shown != null ? shown : sim.snapshot().scene();
+      });
       bench.addSection(org.robotrun.ui.VisionPanel.TITLE, vision::drawContents);
       bench.addMenus(vision);
     }
@@ -424,7 +429,7 @@ public final class GuiCommand implements Callable<Integer> {
       keyboard.releaseAll();
       pendantPanel.releaseLatched();
     });
-    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim));
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim), frameScene);
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
@@ -501,7 +506,10 @@ public final class GuiCommand implements Callable<Integer> {
             lastSave[0] = System.nanoTime();
             warn(s.settings().save(s.bench().layoutState()));
           }
-          return s.sim().snapshot().scene();
+          // the one snapshot of this frame: the 3D view and the camera views draw it
+          org.robotrun.sim.SceneSnapshot scene = s.sim().snapshot().scene();
+          s.frameScene().set(scene);
+          return scene;
         },
         s.bench(),
         () -> {
