@@ -72,7 +72,7 @@ final class CellRunner {
       // Moved in its parent's frame, turned about its own vertical axis.
       Transform moved = Transform.translation(dx, dy, 0).compose(o.startPose())
           .compose(Transform.rotation(0, 0, 1, Math.toRadians(drDeg)));
-      world = world.with(WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), moved, o.startParent()));
+      world = world.with(WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), moved, o.startParent()).withTouchable(o.touchable()));
       j.offsetRegister().ifPresent(n -> regs.put(n, new Position.Cartesian(dx, dy, 0, 0, 0, drDeg, Config.DEFAULT)));
     }
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
