@@ -47,6 +47,7 @@ final class RunChecks {
       case Check.ProgramsCheck h -> throw new IllegalArgumentException("not a run check");
       case Check.ProgramUse h -> throw new IllegalArgumentException("not a run check");
       case Check.Frame h -> throw new IllegalArgumentException("not a run check");
+      case Check.PositionRegister h -> throw new IllegalArgumentException("not a run check");
     };
   }
 

@@ -75,6 +75,7 @@ public final class TaskReader {
     TYPES.put("programUse", Set.of("requires", "forbids", "maxMotionLines"));
     TYPES.put("endState", Set.of("values", "tolerance"));
     TYPES.put("frame", Set.of("frame", "pose", "toleranceMm", "toleranceDeg"));
+    TYPES.put("positionRegister", Set.of("register", "position", "toleranceMm"));
   }
 
   private TaskReader() {}
@@ -402,6 +403,11 @@ public final class TaskReader {
         }
         case "endState" -> new Check.EndState(m, values(o, at), number(o, "tolerance", at, 0, 1e6).orElse(1e-6));
         case "frame" -> frame(m, o, at);
+        case "positionRegister" -> {
+          long n = integer(o, "register", at, 1, 100, true).orElse(1L);
+          Vec3 p = position(o, at);
+          yield new Check.PositionRegister(m, (int) n, p, number(o, "toleranceMm", at, 0, 1000).orElse(1.0));
+        }
         default -> throw new IllegalStateException(type);
       };
     }
