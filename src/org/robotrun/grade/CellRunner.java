@@ -139,7 +139,10 @@ final class CellRunner {
         startParents.put(o.name(), o.parent());
       }
     }
+    List<org.robotrun.math.Vec3> path = new ArrayList<>();
     HeadlessRun.CellResult r = HeadlessRun.runCell(sim, mains, maxSimSec, s -> {
+      org.robotrun.math.Xyzwpr t = c.tcpInWorld();
+      path.add(new org.robotrun.math.Vec3(t.x(), t.y(), t.z()));
       if ((s.ticks() & 63) == 0 && System.nanoTime() - deadlineNanos > 0) {
         throw new WallClockExceeded();
       }
@@ -158,6 +161,6 @@ final class CellRunner {
     Optional<ControllerAlarm> alarm = sim.controllers().size() == 1 ? one.alarm() : r.alarm();
     return new RunOutcome(v.label(), finished, alarm, r.cycleTimeSec(),
         sim.world(), Map.copyOf(sim.heldParts()), new ArrayList<>(sim.collisionEvents()), c.registers(), c.frames(),
-        sim.snapshot().scene(), startParents, List.copyOf(robots));
+        sim.snapshot().scene(), startParents, List.copyOf(robots), List.copyOf(path));
   }
 }

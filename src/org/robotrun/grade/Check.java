@@ -90,6 +90,16 @@ public sealed interface Check {
    */
   record PositionRegister(Meta meta, int number, Vec3 position, double toleranceMm) implements Check {}
 
+  /**
+   * The first robot's active TCP passes within {@code toleranceMm} of each of {@code points_W}
+   * (mm, WORLD) at some time during the run, in any order.
+   */
+  record TcpVisits(Meta meta, List<Vec3> points_W, double toleranceMm) implements Check {
+    public TcpVisits {
+      points_W = List.copyOf(points_W);
+    }
+  }
+
   /** Program features a {@link ProgramUse} check can require or forbid. */
   enum Feature {
     /** A motion with {@code Offset,PR[i]}. */

@@ -76,6 +76,7 @@ public final class TaskReader {
     TYPES.put("endState", Set.of("values", "tolerance"));
     TYPES.put("frame", Set.of("frame", "pose", "toleranceMm", "toleranceDeg"));
     TYPES.put("positionRegister", Set.of("register", "position", "toleranceMm"));
+    TYPES.put("tcpVisits", Set.of("points", "toleranceMm"));
   }
 
   private TaskReader() {}
@@ -403,6 +404,7 @@ public final class TaskReader {
         }
         case "endState" -> new Check.EndState(m, values(o, at), number(o, "tolerance", at, 0, 1e6).orElse(1e-6));
         case "frame" -> frame(m, o, at);
+        case "tcpVisits" -> new Check.TcpVisits(m, points(o, at), number(o, "toleranceMm", at, 0, 1000).orElse(2.0));
         case "positionRegister" -> {
           long n = integer(o, "register", at, 1, 100, true).orElse(1L);
           Vec3 p = position(o, at);
@@ -441,6 +443,26 @@ public final class TaskReader {
       double tolDeg = number(o, "toleranceDeg", at, 0, 180).orElse(1.0);
       return new Check.Frame(m, tool, number, Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform(),
           tolMm, tolDeg);
+    }
+
+    private List<Vec3> points(JObject o, String at) {
+      LocatedJson v = o.members().get("points");
+      List<Vec3> out = new ArrayList<>();
+      if (!(v instanceof LocatedJson.JArray a) || a.items().isEmpty()) {
+        error(v == null ? o.line() : v.line(), at + ".points", "expected a non-empty array of {x, y, z} (mm, WORLD)");
+        return out;
+      }
+      double lim = PoseLimits.MAX_COORDINATE_MM;
+      for (int i = 0; i < a.items().size(); i++) {
+        String pat = at + ".points[" + i + "]";
+        JObject q = object(a.items().get(i), pat, Set.of("x", "y", "z"));
+        if (q == null) {
+          continue;
+        }
+        out.add(new Vec3(number(q, "x", pat, -lim, lim).orElse(0.0), number(q, "y", pat, -lim, lim).orElse(0.0),
+            number(q, "z", pat, -lim, lim).orElse(0.0)));
+      }
+      return out;
     }
 
     private Vec3 position(JObject o, String at) {
