@@ -163,7 +163,9 @@ public final class Grader {
     });
     boolean needVariations = checks.stream().anyMatch(c -> c.meta().runs() != Check.Runs.NOMINAL);
     int count = needVariations ? task.variations().count() : 0;
-    if (cannotRun.isEmpty()) {
+    if (task.program().isEmpty()) {
+      notRun.add("the task runs no program");
+    } else if (cannotRun.isEmpty()) {
       for (int i = 0; i <= count; i++) {
         CellRunner.Variant v = i == 0 ? CellRunner.nominal(cell, task.variations())
             : CellRunner.variation(cell, task.variations(), i);
