@@ -126,7 +126,9 @@ public sealed interface Check {
     /** A motion ending FINE. */
     FINE("fine", "a motion ending FINE"),
     /** RUN of another program (a task beside the main one). */
-    RUN("run", "a RUN of another program");
+    RUN("run", "a RUN of another program"),
+    /** A motion with {@code VOFFSET,VR[i]} (a vision offset). */
+    VOFFSET("voffset", "a motion with VOFFSET,VR[...]");
 
     final String key;
     final String words;

@@ -84,6 +84,8 @@ final class ProgramUse {
               found.add(Check.Feature.OFFSET_PR);
             } else if (o instanceof Motion.ToolOffsetPr) {
               found.add(Check.Feature.TOOL_OFFSET_PR);
+            } else if (o instanceof Motion.RawOption r && r.text().toUpperCase(java.util.Locale.ROOT).startsWith("VOFFSET")) {
+              found.add(Check.Feature.VOFFSET);
             }
           }
           if (m.target() instanceof Motion.Register || m.circularEnd().filter(Motion.Register.class::isInstance).isPresent()) {

@@ -76,7 +76,7 @@ public final class TaskReader {
     TYPES.put("endState", Set.of("values", "tolerance"));
     TYPES.put("frame", Set.of("frame", "pose", "toleranceMm", "toleranceDeg"));
     TYPES.put("positionRegister", Set.of("register", "position", "toleranceMm"));
-    TYPES.put("tcpVisits", Set.of("points", "toleranceMm"));
+    TYPES.put("tcpVisits", Set.of("targets", "toleranceMm"));
   }
 
   private TaskReader() {}
@@ -453,15 +453,15 @@ public final class TaskReader {
     }
 
     private List<Vec3> points(JObject o, String at) {
-      LocatedJson v = o.members().get("points");
+      LocatedJson v = o.members().get("targets");
       List<Vec3> out = new ArrayList<>();
       if (!(v instanceof LocatedJson.JArray a) || a.items().isEmpty()) {
-        error(v == null ? o.line() : v.line(), at + ".points", "expected a non-empty array of {x, y, z} (mm, WORLD)");
+        error(v == null ? o.line() : v.line(), at + ".targets", "expected a non-empty array of {x, y, z} (mm, WORLD)");
         return out;
       }
       double lim = PoseLimits.MAX_COORDINATE_MM;
       for (int i = 0; i < a.items().size(); i++) {
-        String pat = at + ".points[" + i + "]";
+        String pat = at + ".targets[" + i + "]";
         JObject q = object(a.items().get(i), pat, Set.of("x", "y", "z"));
         if (q == null) {
           continue;
