@@ -81,7 +81,9 @@ public final class GuiCommand implements Callable<Integer> {
 
   @Option(names = "--task", paramLabel = "TASK.json",
       description = "A grading task (docs/grading.md): adds a Check menu whose 'Check my work' runs the task's visible "
-          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario.")
+          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario; "
+          + "with a --workspace folder that is new or empty, makes it from the task's scenario (a lab's own workspace, "
+          + "reopened the next time).")
   Path task;
 
   @Option(names = "--program", paramLabel = "FILE.LS",
@@ -156,6 +158,10 @@ public final class GuiCommand implements Callable<Integer> {
     Path next;
     if (scenario != null) {
       next = WorkspaceFiles.createFromScenario(scenario, dirs.newWorkspaceFor(stem(scenario)));
+    } else if (taskLoaded != null && workspace != null
+        && (!java.nio.file.Files.exists(workspace) || WorkspaceFiles.isEmptyFolder(workspace))) {
+      // A lab: the student's own workspace for the task, made from the task's cell the first time and reopened after.
+      next = WorkspaceFiles.createFromScenario(taskLoaded.task().scenario(), workspace);
     } else {
       next = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
     }
