@@ -144,6 +144,9 @@ public final class TaskReader {
           .or(() -> scenario == null || scenario.robots().isEmpty() ? Optional.empty() : scenario.robots().get(0).mainProgram())
           .or(() -> scenario == null ? Optional.empty() : scenario.mainProgram())
           .map(s -> s.toUpperCase(Locale.ROOT)).orElse(null);
+      Map<String, String> others = robots(top, scenario, program);
+      Task.Limits limits = limits(top);
+      Task.Variations variations = variations(top, scenario);
       List<Check> checks = checks(top, scenario);
       // A task whose checks look only at files, frames and recorded registers runs nothing (a pendant lab).
       boolean runs = checks.stream().anyMatch(c -> !(c instanceof Check.HandIn || c instanceof Check.ProgramsCheck
@@ -155,9 +158,6 @@ public final class TaskReader {
           program = "";
         }
       }
-      Map<String, String> others = robots(top, scenario, program);
-      Task.Limits limits = limits(top);
-      Task.Variations variations = variations(top, scenario);
       if (!errors.isEmpty() || scenario == null) {
         return new TaskLoad.Failed(errors);
       }

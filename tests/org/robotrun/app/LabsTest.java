@@ -265,6 +265,10 @@ class LabsTest {
   void lab5ReferenceScoresFullMarksAndTheUsualMistakesLose() throws Exception {
     String lab = "05-first-program";
     assertThat(programs(lab, "reference", 100).score()).isEqualTo(max(lab));
+    // The guide's steps on the pendant: FIRST written with POINT, ED_DEF, a C move and TOUCHUP, run in T1 at 10 %.
+    GradeResult keys = handIn(lab, keyScriptWorkspace(lab));
+    assertThat(failed(keys)).isEmpty();
+    assertThat(keys.score()).isEqualTo(100);
     programs(lab, "no-arc", 85, "J, L and C moves, FINE and CNT");
     programs(lab, "slow", 90, "Cycle time");
     programs(lab, "cnt-corners", 70, "Touches every marker", "Works at any override");
