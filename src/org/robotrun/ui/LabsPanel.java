@@ -132,7 +132,7 @@ public final class LabsPanel implements Workbench.MenuContributor {
       if (System.currentTimeMillis() - stateReadAt > 2000) {
         readState();
       }
-      ImGui.textDisabled(literal(course.title()));
+      Txt.disabled(course.title());
       ImGui.separator();
       for (int i = 0; i < course.labs().size(); i++) {
         Course.Lab lab = course.labs().get(i);
@@ -147,7 +147,7 @@ public final class LabsPanel implements Workbench.MenuContributor {
         ImGui.menuItem("Lab steps", "", showSteps);
       }
       ImGui.separator();
-      ImGui.textDisabled(literal("Your labs: " + home));
+      Txt.disabled("Your labs: " + home);
       ImGui.endMenu();
     }
   }
@@ -173,20 +173,20 @@ public final class LabsPanel implements Workbench.MenuContributor {
         setStep(lab, at + 1);
       }
       ImGui.sameLine();
-      ImGui.textDisabled("step " + (at + 1) + " of " + steps.size());
+      Txt.disabled("step " + (at + 1) + " of " + steps.size());
       ImGui.separator();
       for (int i = 0; i < steps.size(); i++) {
         if (i == at) {
-          ImGui.textColored(1f, 0.85f, 0.3f, 1f, literal("> " + steps.get(i)));
+          Txt.colored(1f, 0.85f, 0.3f, 1f, "> " + steps.get(i));
         } else {
-          ImGui.textDisabled(literal("  " + steps.get(i)));
+          Txt.disabled("  " + steps.get(i));
         }
         if (ImGui.isItemClicked()) {
           setStep(lab, i);
         }
       }
       ImGui.separator();
-      ImGui.textDisabled(literal("The whole guide: " + lab.guide()));
+      Txt.disabled("The whole guide: " + lab.guide());
       if (!message.isEmpty()) {
         ImGui.textUnformatted(message);
       }
@@ -231,11 +231,6 @@ public final class LabsPanel implements Workbench.MenuContributor {
     } catch (IOException | RuntimeException e) {
       message = "cannot save the lab's state in " + stateFile() + ": " + e.getMessage();
     }
-  }
-
-  /** Text for ImGui's formatting calls: a '%' (as in "100% FINE") is shown, not read as a format. */
-  static String literal(String s) {
-    return s.replace("%", "%%");
   }
 
   private static String fmt(double d) {
