@@ -160,9 +160,10 @@ public final class LabsPanel implements Workbench.MenuContributor {
     Course.Lab lab = current.get();
     int at = Math.max(0, Math.min(steps.size() - 1, Integer.parseInt(state.getProperty(lab.id() + ".step", "0"))));
     float em = ImGui.getFontSize();
-    // Beside the pendant: over the 3D view's right part, below the menu bar, narrow enough for 1366x768.
-    ImGui.setNextWindowSize(em * 24, ImGui.getIO().getDisplaySizeY() * 0.55f, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowPos(ImGui.getIO().getDisplaySizeX() * 0.30f, em * 2.2f, ImGuiCond.FirstUseEver);
+    // Over the lower left column, so that neither the robot nor the pendant is hidden (fits 1366x768).
+    float h = ImGui.getIO().getDisplaySizeY();
+    ImGui.setNextWindowSize(em * 21, h * 0.5f, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowPos(0, h * 0.47f, ImGuiCond.FirstUseEver);
     if (ImGui.begin("Lab steps: " + lab.title() + "###labsteps", showSteps)) {
       ImGui.pushTextWrapPos(0);
       if (ImGui.button("< Previous") && at > 0) {
