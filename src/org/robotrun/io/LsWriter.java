@@ -324,7 +324,7 @@ public final class LsWriter {
           case Instruction.FromFrame f -> {
             sb.append(f.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
             index(f.frame(), sb);
-            sb.append(']');
+            sb.append(comment(f.comment())).append(']');
           }
           case Instruction.PosArithmetic p -> {
             item("PR", p.left(), sb);
@@ -336,23 +336,25 @@ public final class LsWriter {
       case Instruction.AssignPosElement a -> {
         sb.append("PR[");
         index(a.register().index(), sb);
-        sb.append(',').append(a.element()).append(comment(a.register().comment())).append("]=");
+        sb.append(',');
+        index(a.element(), sb);
+        sb.append(comment(a.register().comment())).append("]=");
         expr(a.value(), sb);
       }
       case Instruction.SelectFrame s -> {
-        sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME_NUM=" : "UTOOL_NUM=");
+        sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME_NUM" : "UTOOL_NUM").append(s.groupWritten() ? "[GP1]=" : "=");
         numberOrRegister(s.number(), sb);
       }
       case Instruction.SetFrame s -> {
         sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
         index(s.frame(), sb);
-        sb.append("]=");
+        sb.append(comment(s.comment())).append("]=");
         item("PR", s.register(), sb);
       }
       case Instruction.Payload p -> {
         sb.append("PAYLOAD[");
         index(p.schedule(), sb);
-        sb.append(']');
+        sb.append(comment(p.comment())).append(']');
       }
       case Instruction.Label l -> sb.append("LBL[").append(l.number()).append(comment(l.comment())).append(']');
       case Instruction.Jump j -> branch(j, sb);
@@ -372,6 +374,12 @@ public final class LsWriter {
         expr(f.condition(), sb);
         sb.append(',');
         branch(f.branch(), sb);
+      }
+      case Instruction.IfAction f -> {
+        sb.append("IF ");
+        expr(f.condition(), sb);
+        sb.append(',');
+        statement(f.action(), sb);
       }
       case Instruction.IfThen f -> {
         sb.append("IF ");
@@ -485,7 +493,7 @@ public final class LsWriter {
       case Instruction.UserAlarm u -> {
         sb.append("UALM[");
         index(u.number(), sb);
-        sb.append(']');
+        sb.append(comment(u.comment())).append(']');
       }
       case Instruction.SetOverride o -> {
         sb.append("OVERRIDE=");
@@ -574,7 +582,9 @@ public final class LsWriter {
       case Expr.PosElement p -> {
         sb.append("PR[");
         index(p.register().index(), sb);
-        sb.append(',').append(p.element()).append(comment(p.register().comment())).append(']');
+        sb.append(',');
+        index(p.element(), sb);
+        sb.append(comment(p.register().comment())).append(']');
       }
       case Expr.Io io -> item(io.kind().name(), io.port(), sb);
       case Expr.Timer t -> item("TIMER", t.timer(), sb);
@@ -642,6 +652,7 @@ public final class LsWriter {
     switch (i) {
       case Index.Direct d -> sb.append(d.value());
       case Index.Indirect r -> sb.append("R[").append(r.register()).append(comment(r.comment())).append(']');
+      case Index.ViaArg a -> sb.append("AR[").append(a.arg()).append(']');
     }
   }
 

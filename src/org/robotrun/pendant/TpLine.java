@@ -149,6 +149,15 @@ public final class TpLine {
         f.add(Field.fixed(","));
         f.add(branchField(i.branch(), programs, b -> new Instruction.If(i.condition(), b)));
       }
+      case Instruction.IfAction i -> {
+        f.add(Field.fixed("IF "));
+        f.add(exprField(i.condition(), e -> new Instruction.IfAction(e, i.action())));
+        f.add(Field.fixed(","));
+        // The action's own fields, each edit rebuilding the IF around the edited action.
+        for (Field a : fields(i.action(), program, programs)) {
+          f.add(a.mapped(x -> Instruction.IfAction.allowedAction(x) ? new Instruction.IfAction(i.condition(), x) : i));
+        }
+      }
       case Instruction.IfThen i -> {
         f.add(Field.fixed("IF "));
         f.add(exprField(i.condition(), Instruction.IfThen::new));

@@ -231,6 +231,22 @@ final class Ops {
     }
   }
 
+  /** {@code IF cond,action}: runs the action's op when the condition holds. */
+  static final class IfActionOp extends Op {
+    final Node condition;
+    final Op action;
+
+    IfActionOp(Node condition, Op action) {
+      this.condition = condition;
+      this.action = action;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      return condition.bool(m, "IF") ? action.exec(m) : NEXT;
+    }
+  }
+
   /** {@code IF (cond) THEN}: when false, goes to the line after ELSE, or to ENDIF. */
   static final class IfThenOp extends Op {
     final Node condition;
@@ -751,18 +767,19 @@ final class Ops {
 
   static final class AssignPrElementOp extends Op {
     final Idx target;
-    final int element;
+    final Idx elementIdx;
     final Node value;
 
-    AssignPrElementOp(Idx target, int element, Node value) {
+    AssignPrElementOp(Idx target, Idx element, Node value) {
       this.target = target;
-      this.element = element;
+      this.elementIdx = element;
       this.value = value;
     }
 
     @Override
     int exec(Interpreter m) {
       int i = Nodes.check("PR", target.resolve(m), Registers.PR_COUNT);
+      int element = elementIdx.resolve(m);
       if (element < 1 || element > Position.ELEMENTS) {
         throw new AlarmSignal(AlarmKind.BAD_INDEX, "PR[" + i + "," + element + "]: element out of range (expected 1..6)");
       }

@@ -194,7 +194,9 @@ public final class TpLexer {
           out.add(new TpToken(Kind.LBRACKET, ONE_CHAR['['], line, col));
           i++;
           if (message) {
-            int end = text.indexOf(']', i);
+            // The text runs to the last ']': a controller lists MESSAGE[R[1] > 5 mm] as typed.
+            int end = text.lastIndexOf(']');
+            end = end < i ? -1 : end;
             int stop = end < 0 ? n : end;
             out.add(new TpToken(Kind.RAW, text.substring(i, stop), line, firstColumn + i));
             i = stop;
@@ -211,8 +213,7 @@ public final class TpLexer {
           out.add(new TpToken(Kind.COLON, ONE_CHAR[':'], line, col));
           i++;
           if (bracketDepth > 0) {
-            int end = text.indexOf(']', i);
-            int stop = end < 0 ? n : end;
+            int stop = commentEnd(text, i);
             out.add(new TpToken(Kind.ITEM_COMMENT, text.substring(i, stop), line, firstColumn + i));
             i = stop;
           }
@@ -247,6 +248,27 @@ public final class TpLexer {
     }
     out.add(new TpToken(Kind.EOL, "", line, firstColumn + n));
     return out;
+  }
+
+  /**
+   * Where an item comment starting at {@code from} ends: at the {@code ]} that closes its item.
+   * Brackets inside it pair up ({@code R[103:Z-PR[38]]}, a comment a controller keeps as typed).
+   */
+  private static int commentEnd(String text, int from) {
+    int depth = 0;
+    for (int k = from; k < text.length(); k++) {
+      char c = text.charAt(k);
+      if (c == '[') {
+        depth++;
+      } else if (c == ']') {
+        if (depth == 0) {
+          return k;
+        }
+        depth--;
+      }
+    }
+    int first = text.indexOf(']', from);
+    return first < 0 ? text.length() : first;
   }
 
   private static Kind single(char c) {

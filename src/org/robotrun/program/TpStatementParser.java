@@ -132,6 +132,10 @@ public final class TpStatementParser extends TpTokenCursor {
       "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "PRINT", "BREAK", "MROT",
       "constant path", "TORQ_LIMIT");
 
+  /** The arithmetic functions of FANUC's math-function option, written {@code SQRT[R[1]]}. */
+  private static final java.util.Set<String> MATH_FUNCTIONS = java.util.Set.of(
+      "ABS", "SQRT", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ATAN2", "LN", "EXP", "TRUNC", "ROUND");
+
   private int nesting;
   private int operators;
   private java.util.function.IntFunction<String> lineText = l -> null;
@@ -173,6 +177,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.AssignRegister a -> a.value();
       case Instruction.AssignPosElement a -> a.value();
       case Instruction.If f -> f.condition();
+      case Instruction.IfAction f -> f.condition();
       case Instruction.IfThen f -> f.condition();
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
@@ -329,16 +334,39 @@ public final class TpStatementParser extends TpTokenCursor {
         };
       }
       case "UFRAME_NUM", "UTOOL_NUM" -> {
+        boolean group = false;
+        if (peek().is(Kind.LBRACKET)) {
+          // UTOOL_NUM[GP1]=1: a multi-group controller names the group; RobotRun moves group 1
+          next();
+          TpToken g = expectWord("a motion group GPn in " + w + "[GPn]");
+          if (!g.text().toUpperCase(Locale.ROOT).matches("GP[1-9]")) {
+            throw error(g, "expected a motion group GP1..GP9 in " + w + "[...], found " + g.describe());
+          }
+          expect(Kind.RBRACKET, "']' closing " + w + "[GPn]");
+          if (!g.isWord("GP1")) {
+            throw unsupported(g, w + " of motion group " + g.text().toUpperCase(Locale.ROOT) + " (RobotRun moves group 1)", false);
+          }
+          group = true;
+        }
         expect(Kind.EQ, "'=' after " + w);
-        yield new Instruction.SelectFrame(w.equals("UFRAME_NUM") ? FrameKind.USER : FrameKind.TOOL, numberOrRegister(w));
+        if (peek().is(Kind.WORD) && !peek().isWord("R") && !peek().isWord("AR")) {
+          // UFRAME_NUM=Constant and the like: a value the controller listed by name
+          throw unsupported(peek(), w + "=" + TpToken.clip(peek().text()), false);
+        }
+        yield new Instruction.SelectFrame(w.equals("UFRAME_NUM") ? FrameKind.USER : FrameKind.TOOL, numberOrRegister(w),
+            group);
       }
       case "UFRAME", "UTOOL" -> {
-        Index frame = index(w);
+        Item frame = item(w);
         expect(Kind.EQ, "'=' after " + w + "[...]");
         expectWordNamed("PR", "PR[i] (" + w + "[n] is set from a position register)");
-        yield new Instruction.SetFrame(w.equals("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame, item("PR"));
+        yield new Instruction.SetFrame(w.equals("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame.index(),
+            frame.comment(), item("PR"));
       }
-      case "PAYLOAD" -> new Instruction.Payload(index("PAYLOAD"));
+      case "PAYLOAD" -> {
+        Item schedule = item("PAYLOAD");
+        yield new Instruction.Payload(schedule.index(), schedule.comment());
+      }
       case "LBL" -> {
         LabelRef l = labelRef();
         if (!(l.index() instanceof Index.Direct d)) {
@@ -426,7 +454,10 @@ public final class TpStatementParser extends TpTokenCursor {
         expect(Kind.RBRACKET, "']' closing MESSAGE[...]");
         yield new Instruction.Message(text);
       }
-      case "UALM" -> new Instruction.UserAlarm(index("UALM"));
+      case "UALM" -> {
+        Item alarm = item("UALM");
+        yield new Instruction.UserAlarm(alarm.index(), alarm.comment());
+      }
       case "OVERRIDE" -> {
         expect(Kind.EQ, "'=' after OVERRIDE");
         Expr pct = operand();
@@ -516,10 +547,7 @@ public final class TpStatementParser extends TpTokenCursor {
     Index idx = indexValue("PR");
     if (peek().is(Kind.COMMA)) {
       next();
-      int element = intConst("element number 1..6 in PR[i,j]");
-      if (element < 1 || element > 6) {
-        throw error("PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), found " + element);
-      }
+      Index element = elementIndex();
       String comment = itemCommentAndClose("PR[i,j]");
       expect(Kind.EQ, "'=' after PR[i,j]");
       return new Instruction.AssignPosElement(new Item(idx, comment), element, expression());
@@ -543,8 +571,10 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "LPOS" -> new Instruction.CurrentLpos();
       case "JPOS" -> new Instruction.CurrentJpos();
-      case "UFRAME" -> new Instruction.FromFrame(FrameKind.USER, index("UFRAME"));
-      case "UTOOL" -> new Instruction.FromFrame(FrameKind.TOOL, index("UTOOL"));
+      case "UFRAME", "UTOOL" -> {
+        Item frame = item(s.text().toUpperCase(Locale.ROOT));
+        yield new Instruction.FromFrame(s.isWord("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame.index(), frame.comment());
+      }
       default -> {
         if (s.text().startsWith("$") || UNSUPPORTED.containsKey(s.text().toUpperCase(Locale.ROOT))) {
           String name = UNSUPPORTED.get(s.text().toUpperCase(Locale.ROOT));
@@ -585,6 +615,14 @@ public final class TpStatementParser extends TpTokenCursor {
   }
 
   private Instruction call() {
+    if (peek().isWord("SR") && peek(1).is(Kind.LBRACKET)) {
+      // CALL SR[3]: the program named by a string register (an option of newer systems)
+      throw unsupported(peek(), "CALL through a string register SR[]", false);
+    }
+    if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".")) {
+      // CALL ... : the pendant lists a CALL whose program was never chosen this way
+      throw unsupported(peek(), "CALL with no program chosen (...)", false);
+    }
     TpToken name = expectWord("a program name after CALL");
     if (!Program.isValidName(name.text())) {
       throw error(name, "'" + TpToken.clip(name.text())
@@ -628,8 +666,13 @@ public final class TpStatementParser extends TpTokenCursor {
     }
     expect(Kind.COMMA, "',' then JMP or CALL (or THEN) after the IF condition");
     if (!peek().isWord("JMP") && !peek().isWord("CALL") && !peek().is(Kind.EOL)) {
-      // IF (DI[49]),DO[73]=PULSE,0.5sec ; IF R[1]=1,R[2]=5 : an action instead of a branch
-      throw unsupported(peek(), "IF with an action (assignment, output or pulse)", false);
+      // IF (DI[49]),DO[73]=PULSE,0.5sec ; IF R[1]=1,R[2]=(5): an action instead of a branch
+      TpToken at = peek();
+      Instruction action = statement();
+      if (!Instruction.IfAction.allowedAction(action)) {
+        throw unsupported(at, "IF with an action other than an assignment, output or pulse", false);
+      }
+      return new Instruction.IfAction(cond, action);
     }
     return new Instruction.If(cond, branch());
   }
@@ -667,6 +710,10 @@ public final class TpStatementParser extends TpTokenCursor {
    * constant without {@code (sec)} is neither.
    */
   private Instruction waitStatement() {
+    if (peek().is(Kind.WORD) && peek(1).is(Kind.WORD) && onlyWordsFollow()) {
+      // WAIT NEXT PATH and other application waits: words, no condition
+      throw unsupported(peek(), "instruction WAIT " + TpToken.clip(peek().text().toUpperCase(Locale.ROOT)), false);
+    }
     Expr e = expression();
     if (peek().is(Kind.LPAREN) && peek(1).isWord("sec")) {
       // A negative constant would end the WAIT at once without a word; say so when the file is read.
@@ -892,8 +939,12 @@ public final class TpStatementParser extends TpTokenCursor {
         default -> {
           if (w.startsWith("ACC") && allDigits(w, 3)) {
             int acc = parseIntOrFail(t, w.substring(3));
+            if (acc > 150 && acc <= 500) {
+              // A controller whose acceleration limit was raised lists ACC up to 500; RobotRun's is 150.
+              return rawOption(t, "ACC above 150 (a raised acceleration limit)");
+            }
             if (acc > 150) {
-              throw error(t, "ACC" + acc + ": expected 0..150");
+              throw error(t, "ACC" + acc + ": expected 0..150 (0..500 where the controller's limit is raised)");
             }
             return new Motion.Acc(acc);
           }
@@ -1145,6 +1196,10 @@ public final class TpStatementParser extends TpTokenCursor {
             if (name != null) {
               throw unsupported(t, name + " in an expression", false);
             }
+            if (MATH_FUNCTIONS.contains(w) && peek().is(Kind.LBRACKET)) {
+              // ABS[R[1]], SQRT[...]: the arithmetic functions of a controller option
+              throw unsupported(t, "arithmetic function " + w + "[]", false);
+            }
             if (w.startsWith("$")) {
               Optional<String> known = SystemVariables.supported(w);
               if (known.isPresent() && !peek().is(Kind.LBRACKET)) {
@@ -1167,11 +1222,28 @@ public final class TpStatementParser extends TpTokenCursor {
       throw error("PR[i] is a whole position: in an expression use one element, PR[i,j]");
     }
     next();
-    int element = intConst("element number 1..6 in PR[i,j]");
-    if (element < 1 || element > 6) {
-      throw error("PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), found " + element);
-    }
+    Index element = elementIndex();
     return new Expr.PosElement(new Item(idx, itemCommentAndClose("PR[i,j]")), element);
+  }
+
+  /**
+   * The j of {@code PR[i,j]}: 1..6 (X..R or J1..J6), or {@code R[k]} resolved when the line
+   * runs. 7..9 address the extended axes of a robot that has them (a rail): read and kept, not
+   * run (the arm RobotRun moves has six axes).
+   */
+  private Index elementIndex() {
+    TpToken t = peek();
+    if (t.isWord("R") || t.isWord("AR")) {
+      return indexValue("PR[i,j] element");
+    }
+    int element = intConst("element number 1..6 in PR[i,j]");
+    if (element >= 7 && element <= 9) {
+      throw unsupported(t, "PR[i,j] of an extended axis (j = 7..9)", false);
+    }
+    if (element < 1 || element > 6) {
+      throw error(t, "PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), or 7..9 for extended axes, found " + element);
+    }
+    return new Index.Direct(element);
   }
 
   private Expr constant(TpToken t) {
@@ -1234,7 +1306,14 @@ public final class TpStatementParser extends TpTokenCursor {
       return new Index.Indirect(reg, comment);
     }
     if (t.isWord("AR")) {
-      throw unsupported(t, "an index through AR[]", false);
+      next();
+      expect(Kind.LBRACKET, "'[' after AR");
+      int arg = intConst("argument number in AR[...]");
+      if (arg < 1) {
+        throw error("AR[" + arg + "]: argument numbers start at 1");
+      }
+      expect(Kind.RBRACKET, "']' closing AR[...]");
+      return new Index.ViaArg(arg);
     }
     if (t.is(Kind.WORD) && t.text().regionMatches(true, 0, "GP", 0, 2)) {
       throw unsupported(t, "a group in " + what + "[GPn:...] (multi-group)", false);
