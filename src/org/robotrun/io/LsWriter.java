@@ -304,6 +304,17 @@ public final class LsWriter {
     }
   }
 
+  /** One term of a position sum: PR[j], P[j], LPOS or JPOS. */
+  private static void posTerm(Instruction.PosSource s, StringBuilder sb) {
+    switch (s) {
+      case Instruction.FromPosReg f -> item("PR", f.register(), sb);
+      case Instruction.FromLocal f -> sb.append("P[").append(f.number()).append(comment(f.comment())).append(']');
+      case Instruction.CurrentLpos c -> sb.append("LPOS");
+      case Instruction.CurrentJpos c -> sb.append("JPOS");
+      default -> throw new IllegalArgumentException("not a position term: " + s);
+    }
+  }
+
   /** The statement text between the line prefix and the closing ';'. */
   static void statement(Instruction in, StringBuilder sb) {
     switch (in) {
@@ -325,6 +336,13 @@ public final class LsWriter {
             sb.append(f.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
             index(f.frame(), sb);
             sb.append(comment(f.comment())).append(']');
+          }
+          case Instruction.PosSum p -> {
+            posTerm(p.first(), sb);
+            for (Instruction.PosTerm t : p.rest()) {
+              sb.append(t.add() ? '+' : '-');
+              posTerm(t.term(), sb);
+            }
           }
           case Instruction.PosArithmetic p -> {
             item("PR", p.left(), sb);
@@ -473,7 +491,19 @@ public final class LsWriter {
           sb.append(']');
         }
       }
-      case Instruction.MacroCall c -> sb.append(c.name());
+      case Instruction.MacroCall c -> {
+        sb.append(c.name());
+        if (!c.args().isEmpty()) {
+          sb.append('(');
+          for (int i = 0; i < c.args().size(); i++) {
+            if (i > 0) {
+              sb.append(',');
+            }
+            expr(c.args().get(i), sb);
+          }
+          sb.append(')');
+        }
+      }
       case Instruction.SetSysVar s -> {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);

@@ -162,7 +162,7 @@ final class Compiler {
       // A WHEN line does nothing when run as a statement: it is watched through MONITOR.
       case Instruction.When w -> new Ops.Nop();
       case Instruction.AssignString a -> new Ops.AssignSrOp(idx(a.register().index()), expr(a.value()));
-      case Instruction.MacroCall c -> new Ops.MacroOp(c.name());
+      case Instruction.MacroCall c -> new Ops.MacroOp(c.name(), c.args().stream().map(Compiler::expr).toArray(Node[]::new));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
       case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register(), o.userFrame().map(Compiler::idx).orElse(null));
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
@@ -202,6 +202,7 @@ final class Compiler {
       case Instruction.CurrentJpos f -> new Ops.AssignPrOp(target, s, null, null);
       case Instruction.FromFrame f -> new Ops.AssignPrOp(target, s, idx(f.frame()), null);
       case Instruction.PosArithmetic f -> new Ops.AssignPrOp(target, s, idx(f.left().index()), idx(f.right().index()));
+      case Instruction.PosSum f -> new Ops.AssignPrOp(target, s, null, null);
     };
   }
 

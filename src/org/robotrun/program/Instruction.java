@@ -130,6 +130,35 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code PR[i]=LPOS-LPOS}, {@code PR[i]=PR[j]+PR[k]-LPOS}, {@code PR[i]=P[3]+PR[2]}: a sum of
+   * positions beyond {@link PosArithmetic}'s two registers, element by element (XYZWPR or J1..J6)
+   * as the controller adds them; the first term's configuration is kept. Each term is a
+   * {@link FromPosReg}, {@link FromLocal}, {@link CurrentLpos} or {@link CurrentJpos}; Cartesian
+   * and joint terms together are a type-mismatch alarm when the line runs.
+   */
+  record PosSum(PosSource first, List<PosTerm> rest) implements PosSource {
+    public PosSum {
+      Objects.requireNonNull(first, "first");
+      rest = List.copyOf(rest);
+      if (rest.isEmpty() || !isTerm(first) || !rest.stream().allMatch(t -> isTerm(t.term()))) {
+        throw new IllegalArgumentException("a position sum needs two or more PR[], P[], LPOS or JPOS terms");
+      }
+    }
+
+    /** The sources a sum may hold. */
+    public static boolean isTerm(PosSource s) {
+      return s instanceof FromPosReg || s instanceof FromLocal || s instanceof CurrentLpos || s instanceof CurrentJpos;
+    }
+  }
+
+  /** {@code +term} or {@code -term} of a {@link PosSum}. */
+  record PosTerm(boolean add, PosSource term) {
+    public PosTerm {
+      Objects.requireNonNull(term, "term");
+    }
+  }
+
   /** {@code PR[j]+PR[k]} ({@code add}) or {@code PR[j]-PR[k]}. */
   record PosArithmetic(Item left, boolean add, Item right) implements PosSource {
     public PosArithmetic {
@@ -425,12 +454,18 @@ public sealed interface Instruction {
   }
 
   /**
-   * A macro called by its name ({@code OPEN_HAND}): runs the program of that name as a CALL
-   * without arguments (RobotRun's macro table maps each macro to the program of its own name).
+   * A macro called by its name ({@code OPEN_HAND}, {@code Open hand 1}, {@code Program Status(13)}):
+   * runs the program the macro table names (a one-word macro with no table entry: the program of
+   * its own name) as a CALL with {@code args} as AR[1..].
    */
-  record MacroCall(String name) implements Instruction {
+  record MacroCall(String name, List<Expr> args) implements Instruction {
     public MacroCall {
       Objects.requireNonNull(name, "name");
+      args = List.copyOf(args);
+    }
+
+    public MacroCall(String name) {
+      this(name, List.of());
     }
   }
 

@@ -219,7 +219,7 @@ final class Nodes {
     }
   }
 
-  /** A system variable's value: $WAITTMOUT in 1/100 s, $MCR.$GENOVERRIDE in percent (integers). */
+  /** A system variable's value (SystemVariables): $WAITTMOUT in 1/100 s, $MCR.$GENOVERRIDE in percent, frame numbers (integers). */
   static final class SysVarRead extends Node {
     final String name;
 
@@ -233,7 +233,16 @@ final class Nodes {
       return switch (name) {
         case SystemVariables.WAITTMOUT -> Math.round(m.waitTimeoutSec * 100);
         case SystemVariables.GENOVERRIDE -> m.port.overridePct();
-        default -> throw new IllegalStateException("no system variable " + name);
+        case SystemVariables.TOOLNUM -> m.port.activeFrame(Instruction.FrameKind.TOOL);
+        case SystemVariables.FRAMENUM -> m.port.activeFrame(Instruction.FrameKind.USER);
+        case SystemVariables.JOG_GROUP -> 1;
+        default -> {
+          int slot = SystemVariables.backgroundSlot(name);
+          if (slot == 0) {
+            throw new IllegalStateException("no system variable " + name);
+          }
+          yield m.taskPort().backgroundStatus(slot);
+        }
       };
     }
   }

@@ -136,9 +136,12 @@ public final class TpLexer {
       }
       if (isWordStart(c)) {
         int j = i + 1;
-        // A system variable's path ($MCR.$GENOVERRIDE) is one word.
-        while (j < n && (isWordPart(text.charAt(j))
-            || (c == '$' && text.charAt(j) == '.' && j + 1 < n && text.charAt(j + 1) == '$'))) {
+        if (c == '$') {
+          // A system variable's path is one word: $MCR.$GENOVERRIDE, $MNUTOOLNUM[1],
+          // $MIX_BG[2].$STATUS, $SYSTEM_TIME[1].RUN_TOT, and a KAREL variable $[PROG]NAME.
+          j = systemVariableEnd(text, i);
+        }
+        while (j < n && isWordPart(text.charAt(j))) {
           j++;
         }
         String word = text.substring(i, j);
@@ -212,7 +215,10 @@ public final class TpLexer {
         case ':' -> {
           out.add(new TpToken(Kind.COLON, ONE_CHAR[':'], line, col));
           i++;
-          if (bracketDepth > 0) {
+          boolean group = out.size() >= 3 && out.get(out.size() - 2).is(Kind.WORD)
+              && out.get(out.size() - 2).text().matches("(?i)GP[1-9]") && out.get(out.size() - 3).is(Kind.LBRACKET);
+          if (bracketDepth > 0 && !group) {
+            // ("PR[GP1:5,3:Z]": after a group the index follows, not a comment)
             int stop = commentEnd(text, i);
             out.add(new TpToken(Kind.ITEM_COMMENT, text.substring(i, stop), line, firstColumn + i));
             i = stop;
@@ -248,6 +254,48 @@ public final class TpLexer {
     }
     out.add(new TpToken(Kind.EOL, "", line, firstColumn + n));
     return out;
+  }
+
+  /** The end of the system variable path starting with the {@code $} at {@code from}. */
+  private static int systemVariableEnd(String text, int from) {
+    int n = text.length();
+    int j = from + 1;
+    if (j < n && text.charAt(j) == '[') {
+      int close = text.indexOf(']', j);
+      if (close > j + 1 && isWordRun(text, j + 1, close)) {
+        j = close + 1;
+      }
+    }
+    while (true) {
+      while (j < n && isWordPart(text.charAt(j))) {
+        j++;
+      }
+      if (j < n && text.charAt(j) == '[') {
+        int k = j + 1;
+        while (k < n && isDigit(text.charAt(k))) {
+          k++;
+        }
+        if (k > j + 1 && k < n && text.charAt(k) == ']') {
+          j = k + 1;
+          continue;
+        }
+        return j;
+      }
+      if (j + 1 < n && text.charAt(j) == '.' && (text.charAt(j + 1) == '$' || isWordStart(text.charAt(j + 1)))) {
+        j += 2;
+        continue;
+      }
+      return j;
+    }
+  }
+
+  private static boolean isWordRun(String text, int from, int to) {
+    for (int k = from; k < to; k++) {
+      if (!isWordPart(text.charAt(k))) {
+        return false;
+      }
+    }
+    return true;
   }
 
   /**

@@ -130,7 +130,9 @@ public final class TpStatementParser extends TpTokenCursor {
       "COL DETECT", "COL GUARD ADJUST", "JOINT_MAX_SPEED", "LINEAR_MAX_SPEED", "max_speed", "TIMER_OVERFLOW",
       "DIAGNOSTIC", "LOCK PREG", "UNLOCK PREG", "TC_ONLINE", "PTH", "remark", "system variable assignment",
       "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "PRINT", "BREAK", "MROT",
-      "constant path", "TORQ_LIMIT");
+      "constant path", "TORQ_LIMIT",
+      // compliance to an outside force: the simulated arm meets none, so its path is the same
+      "SOFTFLOAT");
 
   /** The arithmetic functions of FANUC's math-function option, written {@code SQRT[R[1]]}. */
   private static final java.util.Set<String> MATH_FUNCTIONS = java.util.Set.of(
@@ -286,7 +288,7 @@ public final class TpStatementParser extends TpTokenCursor {
       throw unsupported(peek(1), "motion to " + targetKind(peek(1).text()), false);
     }
     if (w.startsWith("$")) {
-      Optional<String> known = SystemVariables.supported(w);
+      Optional<String> known = SystemVariables.writable(w);
       if (known.isPresent() && peek(1).is(Kind.EQ)) {
         next();
         next();
@@ -475,14 +477,14 @@ public final class TpStatementParser extends TpTokenCursor {
             && Program.isValidName(w)) {
           yield new Instruction.MacroCall(w);
         }
-        // A macro of several words ("HAND1 OPEN"): the words alone on the line; the controller's
-        // macro table says which program it runs.
-        if (t.is(Kind.WORD) && !UNSUPPORTED.containsKey(w) && !w.startsWith("PAL") && onlyWordsFollow()) {
-          StringBuilder name = new StringBuilder(t.text());
-          while (!peek().is(Kind.EOL)) {
-            name.append(' ').append(next().text());
+        // A macro of several words ("HAND1 OPEN", "Open hand 1", "Program Status(13)"): the
+        // controller's macro table says which program it runs.
+        boolean setMacro = w.equals("SET") && macroArgsFollow();
+        if (t.is(Kind.WORD) && (!UNSUPPORTED.containsKey(w) || setMacro) && !w.startsWith("PAL")) {
+          Optional<Instruction.MacroCall> macro = macro(t);
+          if (macro.isPresent()) {
+            yield macro.get();
           }
-          yield new Instruction.MacroCall(name.toString());
         }
         throw unknownStatement(t);
       }
@@ -529,6 +531,52 @@ public final class TpStatementParser extends TpTokenCursor {
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
 
+  /**
+   * The statement from {@code first} (consumed) as a macro call: words, numbers and hyphens
+   * ({@code ENTER FIXT-ZONE}), then optionally arguments in parentheses ({@code Program Status(13)}),
+   * then the end. Empty (nothing consumed) when the rest is not of that form.
+   */
+  private Optional<Instruction.MacroCall> macro(TpToken first) {
+    int k = 0;
+    while (peek(k).is(Kind.WORD) || peek(k).is(Kind.NUMBER) || peek(k).is(Kind.MINUS)) {
+      k++;
+    }
+    if (!peek(k).is(Kind.EOL) && !peek(k).is(Kind.LPAREN)) {
+      return Optional.empty();
+    }
+    StringBuilder name = new StringBuilder(first.text());
+    TpToken prev = first;
+    for (int j = 0; j < k; j++) {
+      TpToken x = next();
+      boolean adjacent = x.line() == prev.line() && x.column() == prev.column() + prev.text().length();
+      name.append(adjacent ? "" : " ").append(x.text());
+      prev = x;
+    }
+    List<Expr> args = new ArrayList<>();
+    if (peek().is(Kind.LPAREN)) {
+      next();
+      if (!peek().is(Kind.RPAREN)) {
+        do {
+          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+        } while (accept(Kind.COMMA));
+      }
+      expect(Kind.RPAREN, "')' closing the macro's arguments");
+    }
+    if (!peek().is(Kind.EOL)) {
+      throw error("expected the end of the macro call, found " + peek().describe());
+    }
+    return Optional.of(new Instruction.MacroCall(name.toString(), args));
+  }
+
+  /** Words then '(' arguments ')' to the end: {@code SET PATH(100)}, a macro rather than a SET statement. */
+  private boolean macroArgsFollow() {
+    int k = 0;
+    while (peek(k).is(Kind.WORD) || peek(k).is(Kind.MINUS)) {
+      k++;
+    }
+    return k > 0 && peek(k).is(Kind.LPAREN);
+  }
+
   /** True when the rest of the statement (after the current token) is words and numbers only. */
   private boolean onlyWordsFollow() {
     for (int k = 0; ; k++) {
@@ -554,13 +602,41 @@ public final class TpStatementParser extends TpTokenCursor {
     }
     Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
     expect(Kind.EQ, "'=' after PR[...]");
+    Instruction.PosSource src = posSource(true);
+    if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+      // PR[1]=LPOS-LPOS, PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: a sum of positions
+      if (!Instruction.PosSum.isTerm(src) && !(src instanceof Instruction.PosArithmetic)) {
+        throw error("UFRAME[n] and UTOOL[n] cannot be added to: position arithmetic takes PR[], P[], LPOS and JPOS");
+      }
+      Instruction.PosSource first = src instanceof Instruction.PosArithmetic a
+          ? new Instruction.FromPosReg(a.left()) : src;
+      List<Instruction.PosTerm> rest = new ArrayList<>();
+      if (src instanceof Instruction.PosArithmetic a) {
+        rest.add(new Instruction.PosTerm(a.add(), new Instruction.FromPosReg(a.right())));
+      }
+      while (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+        boolean add = next().is(Kind.PLUS);
+        countOperator();
+        Instruction.PosSource term = posSource(false);
+        if (!Instruction.PosSum.isTerm(term)) {
+          throw error("expected PR[], P[], LPOS or JPOS after '" + (add ? "+" : "-") + "' in position arithmetic");
+        }
+        rest.add(new Instruction.PosTerm(add, term));
+      }
+      src = new Instruction.PosSum(first, rest);
+    }
+    return new Instruction.AssignPosReg(reg, src);
+  }
+
+  /** One operand of {@code PR[i]=...}: PR[j] (or PR[j]±PR[k] when {@code pair}), P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]. */
+  private Instruction.PosSource posSource(boolean pair) {
     TpToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
     Instruction.PosSource src = switch (s.text().toUpperCase(Locale.ROOT)) {
       case "PR" -> {
         Item from = item("PR");
-        if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+        if (pair && (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) && peek(1).isWord("PR")) {
           boolean add = next().is(Kind.PLUS);
-          expectWordNamed("PR", "PR[k] (positions add and subtract only with position registers)");
+          next();
           yield new Instruction.PosArithmetic(from, add, item("PR"));
         }
         yield new Instruction.FromPosReg(from);
@@ -583,11 +659,7 @@ public final class TpStatementParser extends TpTokenCursor {
         throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
       }
     };
-    if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
-      // PR[1]=LPOS-PR[2], PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: position arithmetic beyond PR+PR
-      throw unsupported(peek(), "position arithmetic with LPOS, JPOS, P[] or more than two terms", false);
-    }
-    return new Instruction.AssignPosReg(reg, src);
+    return src;
   }
 
   private Instruction ioAssignment(IoKind kind) {
@@ -711,8 +783,8 @@ public final class TpStatementParser extends TpTokenCursor {
    */
   private Instruction waitStatement() {
     if (peek().is(Kind.WORD) && peek(1).is(Kind.WORD) && onlyWordsFollow()) {
-      // WAIT NEXT PATH and other application waits: words, no condition
-      throw unsupported(peek(), "instruction WAIT " + TpToken.clip(peek().text().toUpperCase(Locale.ROOT)), false);
+      // WAIT NEXT PATH: words and no condition, a macro the cell's macro table names
+      return macro(tokens.get(tokens.indexOf(peek()) - 1)).orElseThrow();
     }
     Expr e = expression();
     if (peek().is(Kind.LPAREN) && peek(1).isWord("sec")) {
@@ -1202,10 +1274,11 @@ public final class TpStatementParser extends TpTokenCursor {
             }
             if (w.startsWith("$")) {
               Optional<String> known = SystemVariables.supported(w);
-              if (known.isPresent() && !peek().is(Kind.LBRACKET)) {
+              if (known.isPresent()) {
                 yield new Expr.SysVar(known.get());
               }
-              throw unsupported(t, "system variable in an expression", false);
+              // An application's or another option's variable: the line alarms naming it.
+              throw unsupported(t, "system variable " + TpToken.clip(t.text()) + " in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
           }
@@ -1314,6 +1387,13 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       expect(Kind.RBRACKET, "']' closing AR[...]");
       return new Index.ViaArg(arg);
+    }
+    if (t.isWord("GP1") && peek(1).is(Kind.COLON)) {
+      // PR[GP1:5]: a multi-group controller names the group; group 1 is the arm RobotRun moves
+      // (written back as read; an edited line is written without it, the same statement).
+      next();
+      next();
+      return indexValue(what);
     }
     if (t.is(Kind.WORD) && t.text().regionMatches(true, 0, "GP", 0, 2)) {
       throw unsupported(t, "a group in " + what + "[GPn:...] (multi-group)", false);
