@@ -855,6 +855,10 @@ public final class TpStatementParser extends TpTokenCursor {
 
   private Motion.Target motionTarget() {
     TpToken w = next();
+    if (peek().is(Kind.LBRACKET) && peek(1).is(Kind.WORD) && peek(1).text().regionMatches(true, 0, "GP", 0, 2)) {
+      // J PR[GP1:1,7]: a target of a multi-group robot with its extended axes
+      throw unsupported(peek(1), "a group in " + w.text().toUpperCase(Locale.ROOT) + "[GPn:...] (multi-group)", false);
+    }
     if (w.isWord("P")) {
       Item p = item("P");
       return new Motion.Local(directNumber(p, "P"), p.comment());

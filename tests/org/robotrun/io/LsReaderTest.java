@@ -266,7 +266,7 @@ class LsReaderTest {
         {"UO[1]=ON", "not supported: assigning UO[] (the controller sets it) (the line alarms when it runs)"},
         {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
-        {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
+        {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable $SCR.$ITP_SPEED in an expression (the line alarms when it runs)"},
         {"LOCK PREG", "warning: not supported: LOCK PREG (the line is skipped when it runs)"},
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
         {"TOOL_OFFSET CONDITION PR[2]", "not supported: TOOL_OFFSET CONDITION (the line alarms when it runs)"},
