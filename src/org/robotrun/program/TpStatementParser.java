@@ -327,6 +327,10 @@ public final class TpStatementParser extends TpTokenCursor {
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
+        if (!peek().is(Kind.WORD)) {
+          // TIMER[1]=((-3)): a timer set to a value, which newer systems allow
+          throw unsupported(peek(), "TIMER[i] set to a value", false);
+        }
         TpToken a = expectWord("START, STOP or RESET");
         yield switch (a.text().toUpperCase(Locale.ROOT)) {
           case "START" -> new Instruction.TimerSet(timer, Instruction.TimerAction.START);
@@ -695,7 +699,14 @@ public final class TpStatementParser extends TpTokenCursor {
       // CALL ... : the pendant lists a CALL whose program was never chosen this way
       throw unsupported(peek(), "CALL with no program chosen (...)", false);
     }
-    TpToken name = expectWord("a program name after CALL");
+    String dash = "";
+    if (peek().is(Kind.MINUS) && peek(1).is(Kind.WORD) && peek(1).column() == peek().column() + 1) {
+      // CALL -HELPER: a program whose name starts with '-'
+      next();
+      dash = "-";
+    }
+    TpToken word = expectWord("a program name after CALL");
+    TpToken name = dash.isEmpty() ? word : new TpToken(Kind.WORD, dash + word.text(), word.line(), word.column() - 1);
     if (!Program.isValidName(name.text())) {
       throw error(name, "'" + TpToken.clip(name.text())
           + "' is not a program name: expected letters, digits and '_', starting with a letter");
@@ -705,6 +716,10 @@ public final class TpStatementParser extends TpTokenCursor {
       next();
       if (!peek().is(Kind.RPAREN)) {
         do {
+          if (peek().is(Kind.WORD) && peek(1).is(Kind.EQ)) {
+            // CALL SUB(SPEED=5): arguments by name, a feature of newer systems
+            throw unsupported(peek(), "named CALL arguments (NAME=value)", false);
+          }
           args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
         } while (accept(Kind.COMMA));
       }
@@ -1238,8 +1253,14 @@ public final class TpStatementParser extends TpTokenCursor {
       case WORD -> {
         String w = t.text().toUpperCase(Locale.ROOT);
         return switch (w) {
-          case "ON" -> new Expr.OnOff(true);
-          case "OFF" -> new Expr.OnOff(false);
+          case "ON", "OFF" -> {
+            if (edgeFollows(w.equals("ON") ? Kind.PLUS : Kind.MINUS)) {
+              // WAIT DI[1]=ON+ : the rising (ON+) or falling (OFF-) edge of a signal
+              throw unsupported(t, "edge detection " + w + (w.equals("ON") ? "+" : "-"), false);
+            }
+            yield new Expr.OnOff(w.equals("ON"));
+          }
+          case "ERR_NUM" -> throw unsupported(t, "ERR_NUM (the error-recovery option's alarm number)", false);
           case "R" -> new Expr.Register(item("R"));
           case "PR" -> positionElement();
 
@@ -1290,6 +1311,13 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       default -> throw error(t, VALUE_EXPECTED + t.describe());
     }
+  }
+
+  /** {@code ON+} / {@code OFF-}: the sign right after the word, then the end of the operand. */
+  private boolean edgeFollows(Kind sign) {
+    TpToken after = peek(1);
+    return peek().is(sign) && (after.is(Kind.EOL) || after.is(Kind.RPAREN) || after.is(Kind.COMMA)
+        || after.isWord("AND") || after.isWord("OR") || after.isWord("TIMEOUT"));
   }
 
   private Expr positionElement() {
