@@ -14,6 +14,8 @@ import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.io.FileFormatException;
+import org.robotrun.io.MacroTables;
 import org.robotrun.program.SimulatorEffects;
 import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
@@ -60,6 +62,12 @@ public final class CheckCommand implements Callable<Integer> {
       description = "Further program names CALL may use (programs already on the controller), comma separated.")
   List<String> known = List.of();
 
+  @Option(names = "--macros", paramLabel = "FILE|SCENARIO",
+      description = "The cell's macro table: a scenario (.json, its robots' \"macros\") or a text file of "
+          + "'MACRO NAME = PROGRAM' lines. Macro lines are then checked against the programs they run; "
+          + "without it a macro of several words is reported as not in the macro table.")
+  Path macros;
+
   @Option(names = {"-q", "--quiet"}, description = "Print errors only, not warnings.")
   boolean quiet;
 
@@ -99,9 +107,21 @@ public final class CheckCommand implements Callable<Integer> {
       }
     }
 
+    java.util.Map<String, String> table = java.util.Map.of();
+    if (macros != null) {
+      try {
+        table = MacroTables.read(macros);
+      } catch (FileFormatException e) {
+        err.println(TerminalText.safe("--macros: " + e.getMessage()));
+        return Main.EXIT_BAD_INPUT;
+      } catch (IOException e) {
+        err.println(TerminalText.safe("--macros: " + macros + ": cannot read: " + reason(e)));
+        return Main.EXIT_BAD_INPUT;
+      }
+    }
     boolean errors = false;
     List<Diagnostic> shown = new ArrayList<>();
-    for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known))) {
+    for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known), table)) {
       for (Diagnostic d : withSimulatorWarnings(r)) {
         errors |= d.isError();
         if (d.isError() || !quiet) {

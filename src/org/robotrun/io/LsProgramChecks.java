@@ -61,6 +61,15 @@ final class LsProgramChecks {
 
   /** A diagnostic for each CALL whose target is not {@code known} (the program itself always is). */
   static List<Diagnostic> unknownCalls(LsReadResult r, Predicate<String> known) {
+    return unknownCalls(r, known, Map.of());
+  }
+
+  /**
+   * As {@link #unknownCalls(LsReadResult, Predicate)}, with a macro table (macro name as
+   * {@code InterpreterSettings.macroKey} keys it → program): a macro of the table must name a
+   * known program; a macro of several words outside it is reported as not in the table.
+   */
+  static List<Diagnostic> unknownCalls(LsReadResult r, Predicate<String> known, Map<String, String> macros) {
     String self = r.program().name();
     List<Diagnostic> out = new ArrayList<>();
     List<Instruction> lines = r.program().lines();
@@ -68,7 +77,14 @@ final class LsProgramChecks {
       Optional<Instruction.Call> call = callIn(lines.get(i));
       if (call.isPresent()) {
         String target = call.get().program();
-        if (lines.get(i) instanceof Instruction.MacroCall && target.contains(" ")) {
+        String viaTable = lines.get(i) instanceof Instruction.MacroCall
+            ? macros.get(org.robotrun.program.InterpreterSettings.macroKey(target)) : null;
+        if (viaTable != null) {
+          if (!viaTable.equalsIgnoreCase(self) && !known.test(viaTable)) {
+            out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1), "macro " + target + " runs " + viaTable
+                + " (macro table): no program named " + viaTable + " is known"));
+          }
+        } else if (lines.get(i) instanceof Instruction.MacroCall && target.contains(" ")) {
           // A macro of several words names no program: the controller's macro table says what it runs.
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1), "macro " + target + ": not in the macro table (a "
               + "robot's \"macros\" in the scenario define it; the line alarms when it runs without one)"));
