@@ -13,6 +13,7 @@ import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
+import org.robotrun.io.ControllerCompat;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.FileFormatException;
 import org.robotrun.io.MacroTables;
@@ -68,6 +69,12 @@ public final class CheckCommand implements Callable<Integer> {
           + "without it a macro of several words is reported as not in the macro table.")
   Path macros;
 
+  @Option(names = "--controller", paramLabel = "R-30iA|R-30iB|R-30iB-Plus",
+      description = "Also say, line by line, what that controller would refuse (options a standard controller "
+          + "lacks, statements of a newer system) or treat differently (comments longer than it keeps), before "
+          + "the program goes to the lab's robot (docs/to-the-robot.md).")
+  String controller;
+
   @Option(names = {"-q", "--quiet"}, description = "Print errors only, not warnings.")
   boolean quiet;
 
@@ -107,6 +114,16 @@ public final class CheckCommand implements Callable<Integer> {
       }
     }
 
+    ControllerCompat.Model model = null;
+    if (controller != null) {
+      java.util.Optional<ControllerCompat.Model> m = ControllerCompat.Model.of(controller);
+      if (m.isEmpty()) {
+        err.println(TerminalText.safe("--controller: unknown controller '" + controller
+            + "': expected R-30iA, R-30iB or R-30iB-Plus"));
+        return Main.EXIT_BAD_INPUT;
+      }
+      model = m.get();
+    }
     java.util.Map<String, String> table = java.util.Map.of();
     if (macros != null) {
       try {
@@ -122,7 +139,12 @@ public final class CheckCommand implements Callable<Integer> {
     boolean errors = false;
     List<Diagnostic> shown = new ArrayList<>();
     for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known), table)) {
-      for (Diagnostic d : withSimulatorWarnings(r)) {
+      List<Diagnostic> all = new ArrayList<>(withSimulatorWarnings(r));
+      if (model != null) {
+        all.addAll(ControllerCompat.check(r, model));
+        all.sort(Comparator.comparingInt(Diagnostic::line));
+      }
+      for (Diagnostic d : all) {
         errors |= d.isError();
         if (d.isError() || !quiet) {
           shown.add(d);

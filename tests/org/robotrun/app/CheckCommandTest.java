@@ -96,6 +96,28 @@ class CheckCommandTest {
   }
 
   @Test
+  void controllerOptionSaysWhatTheLabsControllerWouldRefuseOrTreatDifferently(@TempDir Path dir) throws IOException {
+    Path prog = dir.resolve("LAB.LS");
+    Files.writeString(prog, "/PROG  LAB\n/ATTR\nCOMMENT\t\t= \"pick and place for lab 3\";\n/MN\n"
+        + "   1:  R[1:A COMMENT FAR TOO LONG]=1 ;\n   2:  VISION RUN_FIND 'FIND1' ;\n   3:  SR[1]=SR[2] ;\n"
+        + "   4:  CALL SUB(SPEED=5) ;\n   5:  R[2]=2 ;\n/POS\n/END\n");
+    Run b = run("check", "--quiet", "--controller", "R-30iB", prog.toString());
+    assertThat(b.out()).contains(prog + ":6: R-30iB: needs the iRVision option")
+        .contains(prog + ":8: R-30iB: named CALL arguments (NAME=value) is a statement of a newer system than R-30iB")
+        .doesNotContain(":7: R-30iB");
+    Run a = run("check", "--controller", "r-30ia", prog.toString());
+    assertThat(a.out()).contains(prog + ":7: R-30iA: a string register SR[] or string function is a statement of a newer system")
+        .contains(prog + ":5: warning: R-30iA: the comment 'A COMMENT FAR TOO LONG' is 22 characters; the controller keeps 16")
+        .contains(prog + ":1: warning: R-30iA: the program comment is 24 characters; the pendant keeps 16")
+        .doesNotContain(":9:");
+    Run plus = run("check", "--quiet", "--controller", "R-30iB-Plus", prog.toString());
+    assertThat(plus.out()).doesNotContain("newer system");
+    Run bad = run("check", "--controller", "R-2000", prog.toString());
+    assertThat(bad.exit()).isEqualTo(2);
+    assertThat(bad.err()).contains("expected R-30iA, R-30iB or R-30iB-Plus");
+  }
+
+  @Test
   void payloadAndWjntWarnThatTheyHaveNoEffectInTheSimulator(@TempDir Path dir) throws IOException {
     Path w = dir.resolve("PAY.LS");
     Files.writeString(w, "/PROG  PAY\n/ATTR\n/MN\n   1:  PAYLOAD[2] ;\n   2:L P[1] 100mm/sec FINE Wjnt ;\n"
