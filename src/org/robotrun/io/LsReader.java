@@ -684,8 +684,9 @@ public final class LsReader {
         statementStart.add(line - 1);
         if (remarkAfter != null) {
           mend(line, "a remark after ';': kept as remark line " + (instructions.size() + 1));
+          // as a '!' line keeps the text after the '!' (its leading space too)
           String r = remarkAfter.startsWith("//") ? remarkAfter.substring(2) : remarkAfter.substring(1);
-          instructions.add(new Instruction.Comment(stripSemicolon(r.strip())));
+          instructions.add(new Instruction.Comment(stripSemicolon(r.stripTrailing())));
           sourceLines.add(line);
           statementStart.add(line - 1);
         }

@@ -101,15 +101,78 @@ public final class LsWriter {
     if (program.positions().equals(was.positions())) {
       src.tail().forEach(sb::append);
     } else {
-      StringBuilder pos = new StringBuilder("/POS\n");
-      for (LocalPosition p : program.positions().values()) {
-        position(p, pos);
-      }
-      pos.append("/END\n");
-      sb.append(pos.toString().replace("\n", eol));
+      positionsKeepingSource(program, was, src.tail(), eol, sb);
     }
     return sb.toString();
   }
+
+  /**
+   * /POS of an edited program read from a file: every block the edit did not change keeps its
+   * text, and so does every block the model does not hold (a SCARA or rail position, one never
+   * taught, another group's): nothing RobotRun cannot hold is lost. Changed and new positions are
+   * laid out afresh; a deleted one is left out.
+   */
+  private static void positionsKeepingSource(Program program, Program was, List<String> tail, String eol,
+      StringBuilder sb) {
+    Map<Integer, LocalPosition> now = program.positions();
+    java.util.Set<Integer> written = new java.util.HashSet<>();
+    StringBuilder out = new StringBuilder();
+    int k = 0;
+    // the /POS header line (when there is one) as read
+    if (k < tail.size() && tail.get(k).strip().toUpperCase(java.util.Locale.ROOT).startsWith("/POS")) {
+      out.append(tail.get(k++));
+    } else {
+      out.append("/POS").append(eol);
+    }
+    while (k < tail.size()) {
+      String line = tail.get(k);
+      String t = line.strip();
+      java.util.regex.Matcher m = BLOCK_START.matcher(t);
+      if (t.toUpperCase(java.util.Locale.ROOT).startsWith("/END")) {
+        break;
+      }
+      if (!m.lookingAt()) {
+        out.append(line);
+        k++;
+        continue;
+      }
+      int n = Integer.parseInt(m.group(1));
+      int end = k;
+      while (end < tail.size() && !tail.get(end).strip().startsWith("};")) {
+        end++;
+      }
+      end = Math.min(end + 1, tail.size());
+      LocalPosition p = now.get(n);
+      boolean keep = p == null ? !was.positions().containsKey(n) : p.equals(was.positions().get(n));
+      if (keep) {
+        for (int j = k; j < end; j++) {
+          out.append(tail.get(j));
+        }
+      } else if (p != null) {
+        StringBuilder one = new StringBuilder();
+        position(p, one);
+        out.append(one.toString().replace("\n", eol));
+      }
+      written.add(n);
+      k = end;
+    }
+    for (LocalPosition p : now.values()) {
+      if (!written.contains(p.number())) {
+        StringBuilder one = new StringBuilder();
+        position(p, one);
+        out.append(one.toString().replace("\n", eol));
+      }
+    }
+    for (; k < tail.size(); k++) {
+      out.append(tail.get(k));
+    }
+    if (!out.toString().contains("/END")) {
+      out.append("/END").append(eol);
+    }
+    sb.append(out);
+  }
+
+  private static final java.util.regex.Pattern BLOCK_START = java.util.regex.Pattern.compile("P\\[(\\d{1,9})");
 
   private static Map<String, String> withoutLineCount(Map<String, String> attrs) {
     Map<String, String> m = new java.util.LinkedHashMap<>(attrs);
