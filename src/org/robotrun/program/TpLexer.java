@@ -215,8 +215,7 @@ public final class TpLexer {
         case ':' -> {
           out.add(new TpToken(Kind.COLON, ONE_CHAR[':'], line, col));
           i++;
-          boolean group = out.size() >= 3 && out.get(out.size() - 2).is(Kind.WORD)
-              && out.get(out.size() - 2).text().matches("(?i)GP[1-9]") && out.get(out.size() - 3).is(Kind.LBRACKET);
+          boolean group = out.size() >= 3 && isGroupWord(out.get(out.size() - 2)) && out.get(out.size() - 3).is(Kind.LBRACKET);
           if (bracketDepth > 0 && !group) {
             // ("PR[GP1:5,3:Z]": after a group the index follows, not a comment)
             int stop = commentEnd(text, i);
@@ -254,6 +253,13 @@ public final class TpLexer {
     }
     out.add(new TpToken(Kind.EOL, "", line, firstColumn + n));
     return out;
+  }
+
+  /** {@code GP1} .. {@code GP9}, any case: a motion group before ':' in {@code PR[GP1:5]}. */
+  private static boolean isGroupWord(TpToken t) {
+    String w = t.text();
+    return t.is(Kind.WORD) && w.length() == 3 && (w.charAt(0) == 'G' || w.charAt(0) == 'g')
+        && (w.charAt(1) == 'P' || w.charAt(1) == 'p') && w.charAt(2) >= '1' && w.charAt(2) <= '9';
   }
 
   /** The end of the system variable path starting with the {@code $} at {@code from}. */
