@@ -716,7 +716,8 @@ public final class TpStatementParser extends TpTokenCursor {
       next();
       if (!peek().is(Kind.RPAREN)) {
         do {
-          if (peek().is(Kind.WORD) && peek(1).is(Kind.EQ)) {
+          if (peek().is(Kind.WORD) && peek(1).is(Kind.EQ) && !peek().isWord("ON") && !peek().isWord("OFF")
+              && !peek().text().startsWith("$")) {
             // CALL SUB(SPEED=5): arguments by name, a feature of newer systems
             throw unsupported(peek(), "named CALL arguments (NAME=value)", false);
           }
