@@ -197,15 +197,17 @@ final class Ops {
   static final class MacroOp extends Op {
     final String name;
     final Node[] args;
+    /** The table's key of the name, made once (not on every call). */
+    final String key;
 
     MacroOp(String name, Node[] args) {
       this.name = name;
       this.args = args;
+      this.key = InterpreterSettings.macroKey(name);
     }
 
     @Override
     int exec(Interpreter m) {
-      String key = InterpreterSettings.macroKey(name);
       String program = m.settings.macros().get(key);
       if (program == null) {
         if (key.contains(" ")) {
