@@ -132,7 +132,9 @@ final class UrdfReader {
 
   private static FileFormatException xacro(String source) {
     String base = Path.of(source).getFileName().toString();
-    String out = base.replaceAll("(?i)(\\.urdf)?\\.xacro$", "") + ".urdf";
+    String out = base.toLowerCase(Locale.ROOT).endsWith(".xacro")
+        ? base.replaceAll("(?i)(\\.urdf)?\\.xacro$", "") + ".urdf"
+        : base.replaceAll("(?i)\\.urdf$", "") + "_expanded.urdf";
     return new FileFormatException(source, 0, "is a xacro file, which RobotRun does not expand; expand it first with ROS's xacro tool ("
         + "xacro " + base + " > " + out + ") and import " + out);
   }

@@ -1,0 +1,375 @@
+package org.robotrun.io;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.within;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.robotrun.math.Transform;
+import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.robot.LinkMesh;
+import org.robotrun.robot.LinkShape;
+import org.robotrun.robot.LinkSpec;
+import org.robotrun.robot.RobotModel;
+
+/** URDF packages written here are imported as real ones ship: meshes, packages, frames, faults. */
+class UrdfImporterTest {
+  @TempDir Path tmp;
+
+  /** A rotated box (rpy below) used as link_3's COLLADA mesh, in millimetres. */
+  private static final double[] LINK3_RPY = {0.3, 0.5, 0.7};
+
+  /**
+   * Writes the spherical-wrist arm as a ROS workspace: arm_support (URDF, some meshes), a
+   * sibling package arm_meshes, and a package elsewhere ("extra") given with --package.
+   * Returns the URDF.
+   */
+  private Path sphericalArm() throws Exception {
+    Path src = tmp.resolve("ws/src");
+    Path support = src.resolve("arm_support");
+    Path meshes = src.resolve("arm_meshes");
+    Path extra = tmp.resolve("elsewhere/extra");
+    TestArms.packageXml(support, "arm_support");
+    TestArms.packageXml(meshes, "arm_meshes");
+    // base: ASCII STL, metres.
+    MeshFiles.stlAscii(support.resolve("meshes/visual/base.stl"), MeshFiles.cylinder(0, 0, 0.09, 0, 0.33, 24));
+    // link_1: binary STL in the sibling package.
+    MeshFiles.stlBinary(meshes.resolve("meshes/link_1.stl"), MeshFiles.box(TestArms.v(-0.06, -0.06, -0.1), TestArms.v(0.1, 0.06, 0.03)));
+    // link_2: OBJ by a path relative to the URDF.
+    MeshFiles.obj(support.resolve("meshes/visual/link_2.obj"), MeshFiles.concat(
+        MeshFiles.box(TestArms.v(-0.04, -0.05, 0), TestArms.v(0.04, 0.05, 0.36)), MeshFiles.cylinder(0, 0, 0.05, -0.02, 0.02, 16)));
+    // link_3: COLLADA in mm, Z_UP, a box turned by LINK3_RPY.
+    double[] box3 = MeshFiles.box(TestArms.v(-60, -50, -40), TestArms.v(60, 50, 70));
+    double[][] r = TestArms.origin(new double[3], LINK3_RPY);
+    double[] turned = new double[box3.length];
+    for (int i = 0; i < box3.length; i += 3) {
+      for (int k = 0; k < 3; k++) {
+        turned[i + k] = r[k][0] * box3[i] + r[k][1] * box3[i + 1] + r[k][2] * box3[i + 2];
+      }
+    }
+    MeshFiles.dae(support.resolve("meshes/visual/link_3.dae"), turned, 0.001, "Z_UP");
+    // link_4: COLLADA, metres, Y_UP, in the --package folder: a bar along x from 0.05 to 0.3.
+    double[] bar = MeshFiles.box(TestArms.v(0.05, -0.03, -0.02), TestArms.v(0.3, 0.03, 0.04));
+    double[] yUp = new double[bar.length];
+    for (int i = 0; i < bar.length; i += 3) {
+      yUp[i] = bar[i];
+      yUp[i + 1] = bar[i + 2];
+      yUp[i + 2] = -bar[i + 1];
+    }
+    MeshFiles.dae(extra.resolve("link_4.dae"), yUp, 1.0, "Y_UP");
+    // link_5: binary STL written in millimetres, scaled by 0.001 in the URDF.
+    MeshFiles.stlBinary(support.resolve("meshes/visual/link_5.stl"), MeshFiles.cylinder(0, 0, 30, -40, 40, 32));
+    String urdf = TestArms.urdf("test_arm", TestArms.sphericalJoints(), link -> switch (link) {
+      case "base_link" -> """
+            <visual><geometry><mesh filename="package://arm_support/meshes/visual/base.stl"/></geometry></visual>
+            <collision><origin xyz="0 0 0.165"/><geometry><cylinder radius="0.09" length="0.33"/></geometry></collision>
+        """;
+      case "link_1" -> """
+            <visual><geometry><mesh filename="package://arm_meshes/meshes/link_1.stl"/></geometry></visual>
+            <collision><origin xyz="0.02 0 -0.035"/><geometry><box size="0.16 0.12 0.13"/></geometry></collision>
+        """;
+      case "link_2" -> """
+            <visual><geometry><mesh filename="../meshes/visual/link_2.obj"/></geometry></visual>
+            <collision><origin xyz="0 0 0.33"/><geometry><sphere radius="0.06"/></geometry></collision>
+        """;
+      case "link_3" -> """
+            <visual><geometry><mesh filename="package://arm_support/meshes/visual/link_3.dae"/></geometry></visual>
+            <collision><geometry><mesh filename="package://arm_support/meshes/visual/link_3.dae"/></geometry></collision>
+        """;
+      case "link_3_cover" -> """
+            <visual><geometry><box size="0.02 0.03 0.04"/></geometry><material name="orange"/></visual>
+        """;
+      case "link_4" -> """
+            <visual><geometry><mesh filename="package://extra/link_4.dae" scale="1 1 1"/></geometry></visual>
+        """;
+      case "link_5" -> """
+            <visual><origin rpy="1.5707963267948966 0 0"/><geometry><mesh filename="package://arm_support/meshes/visual/link_5.stl" scale="0.001 0.001 0.001"/></geometry></visual>
+        """;
+      case "link_6" -> """
+            <visual><origin xyz="-0.006 0 0" rpy="0 1.5707963267948966 0"/><geometry><cylinder radius="0.025" length="0.012"/></geometry>
+              <material name="grey"><color rgba="0.6 0.6 0.6 1"/></material></visual>
+        """;
+      default -> "";
+    });
+    Path file = support.resolve("urdf/test_arm.urdf");
+    TestArms.write(file, urdf);
+    return file;
+  }
+
+  private Map<String, Path> extraPackage() {
+    return Map.of("extra", tmp.resolve("elsewhere/extra"));
+  }
+
+  // Method: every link pose and the flange (tool0) from the importer against TestArms.pose, an
+  // FK of the URDF numbers written in the test, at zero and 200 random joint vectors (seed 24).
+  // Tolerance 1e-6 mm and 1e-9 rad.
+  @Test
+  void sphericalWristArmHasTheUrdfsForwardKinematics() throws Exception {
+    UrdfImporter.Result r = UrdfImporter.importRobot(sphericalArm(), extraPackage());
+    assertSameFk(r.model(), TestArms.sphericalJoints(), "tool0");
+    assertThat(r.model().links().stream().map(LinkSpec::name))
+        .containsExactly("base_link", "link_1", "link_2", "link_3", "link_4", "link_5", "link_6");
+  }
+
+  @Test
+  void offsetWristArmHasTheUrdfsForwardKinematics() throws Exception {
+    Path file = tmp.resolve("ur/urdf/ur.urdf");
+    TestArms.write(file, TestArms.urdf("ur_like", TestArms.offsetJoints(), link -> link.equals("tool0") ? "" : """
+            <visual><geometry><cylinder radius="0.05" length="0.1"/></geometry></visual>
+            <collision><geometry><cylinder radius="0.05" length="0.1"/></geometry></collision>
+        """));
+    UrdfImporter.Result r = UrdfImporter.importRobot(file, Map.of());
+    assertSameFk(r.model(), TestArms.offsetJoints(), "tool0");
+    assertThat(r.model().joints().get(0).name()).isEqualTo("shoulder_pan_joint");
+    assertThat(r.model().links().get(1).shapes()).singleElement().isInstanceOf(LinkShape.Cylinder.class);
+  }
+
+  @Test
+  void limitsAreConvertedOnceAndAContinuousJointGetsPlusMinus360() throws Exception {
+    RobotModel m = UrdfImporter.importRobot(sphericalArm(), extraPackage()).model();
+    assertThat(m.joint(1).lowerRad()).isEqualTo(-1.74);
+    assertThat(m.joint(1).upperRad()).isEqualTo(2.53);
+    assertThat(m.joint(1).maxSpeedRadPerSec()).isEqualTo(6.63);
+    assertThat(m.joint(5).lowerRad()).isEqualTo(-2 * Math.PI);
+    assertThat(m.joint(5).upperRad()).isEqualTo(2 * Math.PI);
+    assertThat(m.joint(5).maxSpeedRadPerSec()).isEqualTo(17.45);
+    assertThat(m.coupledJ3()).isFalse();
+  }
+
+  // Method: bounds of each display mesh in its robot link's frame against the mesh numbers
+  // written above (unit, up axis, scale and visual origin applied). Tolerance 0.01 mm (floats).
+  @Test
+  void meshesArriveInMillimetresWithUnitsUpAxisScaleAndOriginApplied() throws Exception {
+    RobotModel m = UrdfImporter.importRobot(sphericalArm(), extraPackage()).model();
+    assertBounds(m.links().get(0).meshes().get(0), new double[] {-90, -90, 0}, new double[] {90, 90, 330});
+    assertBounds(m.links().get(1).meshes().get(0), new double[] {-60, -60, -100}, new double[] {100, 60, 30});
+    assertBounds(m.links().get(2).meshes().get(0), new double[] {-50, -50, -20}, new double[] {50, 50, 360});
+    assertBounds(m.links().get(4).meshes().get(0), new double[] {50, -30, -20}, new double[] {300, 30, 40});
+    // link_5: a cylinder along z (mm file, scale 0.001) turned +90° about x: along -y.
+    assertBounds(m.links().get(5).meshes().get(0), new double[] {-30, -40, -30}, new double[] {30, 40, 30});
+    // link_3 merges the cover (orange, its own mesh) behind a fixed joint; link_6's grey flange.
+    assertThat(m.links().get(3).meshes()).extracting(LinkMesh::color).containsExactly("body", "#ff8000");
+    assertThat(m.links().get(6).meshes()).extracting(LinkMesh::color).containsExactly("#999999");
+  }
+
+  @Test
+  void collisionPrimitivesStayAndMeshesGetTightBoxes() throws Exception {
+    UrdfImporter.Result r = UrdfImporter.importRobot(sphericalArm(), extraPackage());
+    RobotModel m = r.model();
+    assertThat(m.links().get(0).shapes()).singleElement().isInstanceOf(LinkShape.Cylinder.class);
+    LinkShape.Box b1 = (LinkShape.Box) m.links().get(1).shapes().get(0);
+    assertThat(b1.size().x()).isCloseTo(160, within(1e-9));
+    assertThat(b1.X_LS().z()).isCloseTo(-35, within(1e-9));
+    LinkShape.Box sphere = (LinkShape.Box) m.links().get(2).shapes().get(0);
+    assertThat(sphere.size().x()).isCloseTo(120, within(1e-9));
+    // link_3: a box mesh turned by three angles; the fitted box must be the box itself (120 x 100 x 110 mm).
+    UrdfImporter.BodyReport fit3 = r.bodies().stream().filter(b -> b.link().equals("link_3")).findFirst().orElseThrow();
+    assertThat(fit3.source()).contains("collision mesh");
+    assertThat(fit3.hullVolumeMm3()).isCloseTo(120 * 100 * 110, within(1.0));
+    assertThat(fit3.ratio()).isCloseTo(1.0, within(1e-4));
+    // link_5: a 32-sided cylinder: its box is the square prism around it, 4/π of the round one (1.27).
+    UrdfImporter.BodyReport fit5 = r.bodies().stream().filter(b -> b.link().equals("link_5")).findFirst().orElseThrow();
+    assertThat(fit5.source()).isEqualTo("fitted to visual meshes");
+    assertThat(fit5.ratio()).isBetween(1.26, 1.30);
+    for (UrdfImporter.BodyReport b : r.bodies()) {
+      System.out.printf(java.util.Locale.ROOT, "spherical arm body %-8s %-55s box %10.1f cm3 hull %10.1f cm3 ratio %.3f%n",
+          b.link(), b.source(), b.boxVolumeMm3() / 1000, b.hullVolumeMm3() / 1000, b.ratio());
+    }
+  }
+
+  @Test
+  void theWrittenRobotFolderLoadsBackWithTheSameKinematicsAndMeshes() throws Exception {
+    UrdfImporter.Result r = UrdfImporter.importRobot(sphericalArm(), extraPackage());
+    Path out = tmp.resolve("robots/test_arm");
+    Path json = RobotFileWriter.write(r.model(), "test", out);
+    assertThat(json).isEqualTo(out.resolve("test_arm.json"));
+    RobotModel back = RobotDefinitions.loadFile(json);
+    assertSameFk(back, TestArms.sphericalJoints(), "tool0");
+    for (int i = 0; i <= 6; i++) {
+      assertThat(back.links().get(i).meshes()).hasSameSizeAs(r.model().links().get(i).meshes());
+      assertThat(back.links().get(i).shapes()).hasSameSizeAs(r.model().links().get(i).shapes());
+    }
+    assertBounds(back.links().get(4).meshes().get(0), new double[] {50, -30, -20}, new double[] {300, 30, 40});
+    try (Stream<Path> s = Files.list(tmp.resolve("robots"))) {
+      assertThat(s.map(p -> p.getFileName().toString())).containsExactly("test_arm");
+    }
+    // A second import into the same folder is refused and leaves the first whole.
+    assertThatThrownBy(() -> RobotFileWriter.write(r.model(), "test", out)).hasMessageContaining("already exists");
+    assertThat(RobotDefinitions.loadFile(json).links().get(4).meshes()).hasSize(1);
+  }
+
+  @Test
+  void aScenarioMayNameTheUrdfOrTheImportedJsonRelativeToItself() throws Exception {
+    Path urdf = sphericalArm();
+    Files.createDirectories(tmp.resolve("elsewhere/extra"));
+    // The scenario names the URDF; the 'extra' package cannot be given there, so point its mesh at a file path.
+    String text = Files.readString(urdf).replace("package://extra/link_4.dae", "file://" + tmp.resolve("elsewhere/extra/link_4.dae"));
+    Files.writeString(urdf, text);
+    Path scenario = tmp.resolve("ws/cell.json");
+    Files.writeString(scenario, """
+        {"format": 1, "robots": [{"name": "robot1", "model": "src/arm_support/urdf/test_arm.urdf", "jointsDeg": [0, 0, 0, 0, 0, 0]}]}
+        """);
+    ScenarioLoad load = ScenarioReader.read(scenario);
+    assertThat(load).isInstanceOf(ScenarioLoad.Loaded.class);
+    String ref = ((ScenarioLoad.Loaded) load).scenario().robots().get(0).modelId();
+    assertThat(Path.of(ref)).isEqualTo(urdf.toAbsolutePath().normalize());
+    assertSameFk(RobotDefinitions.load(ref), TestArms.sphericalJoints(), "tool0");
+    String written = ScenarioWriter.toJson(((ScenarioLoad.Loaded) load).scenario(), scenario.getParent());
+    assertThat(written).contains("\"model\" : \"src/arm_support/urdf/test_arm.urdf\"");
+  }
+
+  // ---- refusals: one line naming the file and the reason, nothing written ----
+
+  /** A valid 6-joint URDF text with simple links (no meshes). */
+  private static String plain(List<TestArms.J> joints) {
+    return TestArms.urdf("plain", joints, l -> "    <collision><geometry><box size=\"0.1 0.1 0.1\"/></geometry></collision>\n");
+  }
+
+  private static List<TestArms.J> sixJoints() {
+    List<TestArms.J> j = new ArrayList<>();
+    String parent = "base_link";
+    for (int i = 1; i <= 6; i++) {
+      String child = "link_" + i;
+      j.add(TestArms.rev("joint_" + i, parent, child, TestArms.v(0, 0, 0.1), TestArms.v(0, i % 2, (i + 1) % 2), -3, 3, 5));
+      parent = child;
+    }
+    return j;
+  }
+
+  private String refusal(String name, String urdfText) throws Exception {
+    Path file = tmp.resolve("bad/" + name);
+    TestArms.write(file, urdfText);
+    Path out = tmp.resolve("out-" + name);
+    try {
+      UrdfImporter.Result r = UrdfImporter.importRobot(file, Map.of());
+      RobotFileWriter.write(r.model(), "x", out);
+    } catch (FileFormatException e) {
+      assertThat(out).doesNotExist();
+      assertThat(e.getMessage()).startsWith(file.toString()).doesNotContain("\n");
+      return e.getMessage();
+    }
+    throw new AssertionError(name + " was imported");
+  }
+
+  @Test
+  void fiveOrSevenMovingJointsAreRefused() throws Exception {
+    assertThat(refusal("five.urdf", plain(sixJoints().subList(0, 5))))
+        .contains("not a serial 6-axis arm: 5 moving joints from 'base_link' to 'link_5'").contains("exactly 6");
+    List<TestArms.J> seven = new ArrayList<>(sixJoints());
+    seven.add(TestArms.rev("joint_7", "link_6", "link_7", TestArms.v(0, 0, 0.1), TestArms.v(0, 0, 1), -3, 3, 5));
+    assertThat(refusal("seven.urdf", plain(seven))).contains("7 moving joints").contains("joint_7");
+  }
+
+  @Test
+  void aTreeAndALoopAreRefused() throws Exception {
+    List<TestArms.J> tree = new ArrayList<>(sixJoints());
+    tree.add(TestArms.rev("finger", "link_3", "side", TestArms.v(0, 0, 0.1), TestArms.v(0, 0, 1), -1, 1, 1));
+    assertThat(refusal("tree.urdf", plain(tree))).contains("link 'link_3' branches into joints 'joint_4' and 'finger'").contains("tree");
+    List<TestArms.J> loop = new ArrayList<>(sixJoints());
+    loop.add(TestArms.fixed("closing", "link_6", "link_2", TestArms.v(0, 0, 0), TestArms.v(0, 0, 0)));
+    assertThat(refusal("loop.urdf", plain(loop))).matches(".*loop.urdf:\\d+: .*link 'link_2' is the child of joint 'joint_2'.*loop");
+  }
+
+  @Test
+  void aMissingMeshABadNumberAndAnUnknownParentNameTheirLine() throws Exception {
+    String missing = TestArms.urdf("m", sixJoints(), l -> l.equals("link_2")
+        ? "    <visual><geometry><mesh filename=\"meshes/nothere.stl\"/></geometry></visual>\n" : "");
+    assertThat(refusal("missing.urdf", missing)).matches(".*missing.urdf:\\d+: mesh 'meshes/nothere.stl' not found \\(looked for .*nothere.stl\\)");
+    String badNumber = plain(sixJoints()).replace("<origin xyz=\"0.0 0.0 0.1\"", "<origin xyz=\"0.0 0.0 0.1x\"");
+    String msg = refusal("number.urdf", badNumber);
+    int line = lineOf(badNumber, "0.1x");
+    assertThat(msg).isEqualTo(tmp.resolve("bad/number.urdf") + ":" + line
+        + ": joint 'joint_1' <origin> xyz: expected 3 numbers (metres) separated by spaces, got \"0.0 0.0 0.1x\"");
+    String unknownParent = plain(sixJoints()).replace("<parent link=\"link_3\"/>", "<parent link=\"link_33\"/>");
+    assertThat(refusal("parent.urdf", unknownParent))
+        .startsWith(tmp.resolve("bad/parent.urdf") + ":" + lineOf(unknownParent, "link_33") + ": joint 'joint_4' <parent>: unknown link 'link_33'");
+    String unknownPackage = TestArms.urdf("p", sixJoints(), l -> l.equals("link_1")
+        ? "    <visual><geometry><mesh filename=\"package://nowhere/a.stl\"/></geometry></visual>\n" : "");
+    assertThat(refusal("package.urdf", unknownPackage)).contains("package 'nowhere' not found (give --package nowhere=DIR");
+  }
+
+  @Test
+  void xacroAndPrismaticAndBadLimitsAreRefused() throws Exception {
+    String xacro = plain(sixJoints()).replace("<robot name=\"plain\">",
+        "<robot name=\"plain\" xmlns:xacro=\"http://www.ros.org/wiki/xacro\">\n  <xacro:property name=\"l\" value=\"0.1\"/>");
+    assertThat(refusal("arm.urdf", xacro)).contains("is a xacro file").contains("xacro arm.urdf > arm_expanded.urdf");
+    Path x = tmp.resolve("bad/arm.urdf.xacro");
+    TestArms.write(x, xacro);
+    assertThatThrownBy(() -> UrdfImporter.importRobot(x, Map.of())).hasMessage(x
+        + ": is a xacro file, which RobotRun does not expand; expand it first with ROS's xacro tool (xacro arm.urdf.xacro > arm.urdf) and import arm.urdf");
+    List<TestArms.J> prismatic = new ArrayList<>(sixJoints());
+    TestArms.J j3 = prismatic.get(2);
+    prismatic.set(2, new TestArms.J(j3.name(), "prismatic", j3.parent(), j3.child(), j3.xyz(), j3.rpy(), j3.axis(), 0, 0.5, 1));
+    assertThat(refusal("prismatic.urdf", plain(prismatic))).contains("joint 'joint_3' is prismatic");
+    String badLimit = plain(sixJoints()).replaceFirst("lower=\"-3.0\" upper=\"3.0\"", "lower=\"3.0\" upper=\"-3.0\"");
+    assertThat(refusal("limit.urdf", badLimit)).contains("joint 'joint_1' <limit>: expected lower below upper");
+    String floating = plain(sixJoints()).replaceFirst("type=\"revolute\"", "type=\"floating\"");
+    assertThat(refusal("floating.urdf", floating)).contains("type 'floating' is not supported");
+  }
+
+  private static int lineOf(String text, String needle) {
+    String[] lines = text.split("\n", -1);
+    for (int i = 0; i < lines.length; i++) {
+      if (lines[i].contains(needle)) {
+        return i + 1;
+      }
+    }
+    throw new AssertionError(needle);
+  }
+
+  // ---- helpers ----
+
+  static void assertSameFk(RobotModel m, List<TestArms.J> joints, String flangeLink) {
+    List<String> linkNames = new ArrayList<>();
+    linkNames.add(joints.get(0).parent());
+    for (TestArms.J j : joints) {
+      if (j.moving()) {
+        linkNames.add(j.child());
+      }
+    }
+    Random rnd = new Random(24);
+    for (int trial = 0; trial <= 200; trial++) {
+      double[] q = new double[6];
+      for (int i = 0; i < 6 && trial > 0; i++) {
+        q[i] = m.joint(i).lowerRad() + rnd.nextDouble() * (m.joint(i).upperRad() - m.joint(i).lowerRad());
+      }
+      Transform[] X_BL = ForwardKinematics.linkPosesInBase(m, q);
+      for (int i = 0; i <= 6; i++) {
+        assertClose(X_BL[i], TestArms.pose(joints, linkNames.get(i), q), "link " + linkNames.get(i));
+      }
+      assertClose(ForwardKinematics.flangePoseInBase(m, q), TestArms.pose(joints, flangeLink, q), "flange");
+    }
+  }
+
+  private static void assertClose(Transform X, double[][] expected, String what) {
+    double[] got = {X.r00(), X.r01(), X.r02(), X.x(), X.r10(), X.r11(), X.r12(), X.y(), X.r20(), X.r21(), X.r22(), X.z()};
+    for (int r = 0; r < 3; r++) {
+      for (int c = 0; c < 4; c++) {
+        double tol = c == 3 ? 1e-6 : 1e-9;
+        assertThat(got[r * 4 + c]).as("%s [%d][%d]", what, r, c).isCloseTo(expected[r][c], within(tol));
+      }
+    }
+  }
+
+  private static void assertBounds(LinkMesh m, double[] lo, double[] hi) {
+    float[] t = m.triangles();
+    double[] min = {Double.MAX_VALUE, Double.MAX_VALUE, Double.MAX_VALUE};
+    double[] max = {-Double.MAX_VALUE, -Double.MAX_VALUE, -Double.MAX_VALUE};
+    for (int i = 0; i < t.length; i++) {
+      min[i % 3] = Math.min(min[i % 3], t[i]);
+      max[i % 3] = Math.max(max[i % 3], t[i]);
+    }
+    for (int k = 0; k < 3; k++) {
+      assertThat(min[k]).as("%s min[%d]", m.key(), k).isCloseTo(lo[k], within(0.01));
+      assertThat(max[k]).as("%s max[%d]", m.key(), k).isCloseTo(hi[k], within(0.01));
+    }
+  }
+}
