@@ -226,7 +226,7 @@ public final class UrdfImporter {
       }
       RobotModel model;
       try {
-        model = new RobotModel(id, robot.name(), joints, X_6F, Transform.IDENTITY, links, Optional.empty(), false);
+        model = new RobotModel(id, robot.name(), joints, X_6F, worldInBase(joints).inverse(), links, Optional.empty(), false);
       } catch (IllegalArgumentException e) {
         throw new FileFormatException(source, 0, e.getMessage());
       }
@@ -270,6 +270,22 @@ public final class UrdfImporter {
       }
       assert parent == chain.moving().indexOf(j);
       return new JointSpec(j.name(), X_PJ, j.axis(), lower, upper, speed);
+    }
+
+    /**
+     * Where WORLD sits in the base frame: as on a FANUC controller, on the J1 axis at the height
+     * of J2 (when J1 turns about the base's z axis); otherwise at the base frame itself.
+     */
+    private Transform worldInBase(List<JointSpec> joints) {
+      JointSpec j1 = joints.get(0);
+      Vec3 axis = j1.X_PJ().rotate(j1.axis());
+      if (Math.abs(Math.abs(axis.z()) - 1) > 1e-9) {
+        notes.add("J1 does not turn about the base's z axis: WORLD is the base frame");
+        return Transform.IDENTITY;
+      }
+      double z2 = j1.X_PJ().compose(joints.get(1).X_PJ()).z();
+      notes.add(String.format(Locale.ROOT, "WORLD: on the J1 axis at J2's height, %.3f mm above the base frame (as on a FANUC arm)", z2));
+      return Transform.translation(j1.X_PJ().x(), j1.X_PJ().y(), z2);
     }
 
     private Transform flange() {

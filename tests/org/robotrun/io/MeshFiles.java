@@ -9,7 +9,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 /** Writes small meshes in STL (ASCII, binary), OBJ and COLLADA for importer tests. */
-final class MeshFiles {
+public final class MeshFiles {
   private MeshFiles() {}
 
   /** An axis-aligned box from {@code lo} to {@code hi}: 12 triangles, counter-clockwise from outside. */

@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 
 /**
  * URDF packages written for the importer tests, and an FK of their joint lists that does not
@@ -17,8 +18,103 @@ import java.util.Locale;
  * a3 0.39225, d4 0.10915, d5 0.09465, d6 0.0823 m, Universal Robots' DH table), laid out here
  * as URDF joint origins.
  */
-final class TestArms {
+public final class TestArms {
   private TestArms() {}
+
+  /** A rotated box (rpy below) used as link_3's COLLADA mesh, in millimetres. */
+  static final double[] LINK3_RPY = {0.3, 0.5, 0.7};
+
+  /**
+   * Writes the spherical-wrist arm as a ROS workspace: arm_support (URDF, some meshes), a
+   * sibling package arm_meshes, and a package elsewhere ("extra") given with --package.
+   * Returns the URDF.
+   */
+  public static Path sphericalPackage(Path tmp) throws Exception {
+    Path src = tmp.resolve("ws/src");
+    Path support = src.resolve("arm_support");
+    Path meshes = src.resolve("arm_meshes");
+    Path extra = tmp.resolve("elsewhere/extra");
+    packageXml(support, "arm_support");
+    packageXml(meshes, "arm_meshes");
+    // base: ASCII STL, metres.
+    MeshFiles.stlAscii(support.resolve("meshes/visual/base.stl"), MeshFiles.cylinder(0, 0, 0.09, 0, 0.33, 24));
+    // link_1: binary STL in the sibling package.
+    MeshFiles.stlBinary(meshes.resolve("meshes/link_1.stl"), MeshFiles.box(v(-0.06, -0.06, -0.1), v(0.1, 0.06, 0.03)));
+    // link_2: OBJ by a path relative to the URDF.
+    MeshFiles.obj(support.resolve("meshes/visual/link_2.obj"), MeshFiles.concat(
+        MeshFiles.box(v(-0.04, -0.05, 0), v(0.04, 0.05, 0.36)), MeshFiles.cylinder(0, 0, 0.05, -0.02, 0.02, 16)));
+    // link_3: COLLADA in mm, Z_UP, a box turned by LINK3_RPY.
+    double[] box3 = MeshFiles.box(v(-60, -50, -40), v(60, 50, 70));
+    double[][] r = origin(new double[3], LINK3_RPY);
+    double[] turned = new double[box3.length];
+    for (int i = 0; i < box3.length; i += 3) {
+      for (int k = 0; k < 3; k++) {
+        turned[i + k] = r[k][0] * box3[i] + r[k][1] * box3[i + 1] + r[k][2] * box3[i + 2];
+      }
+    }
+    MeshFiles.dae(support.resolve("meshes/visual/link_3.dae"), turned, 0.001, "Z_UP");
+    // link_4: COLLADA, metres, Y_UP, in the --package folder: a bar along x from 0.05 to 0.3.
+    double[] bar = MeshFiles.box(v(0.05, -0.03, -0.02), v(0.3, 0.03, 0.04));
+    double[] yUp = new double[bar.length];
+    for (int i = 0; i < bar.length; i += 3) {
+      yUp[i] = bar[i];
+      yUp[i + 1] = bar[i + 2];
+      yUp[i + 2] = -bar[i + 1];
+    }
+    MeshFiles.dae(extra.resolve("link_4.dae"), yUp, 1.0, "Y_UP");
+    // link_5: binary STL written in millimetres, scaled by 0.001 in the URDF.
+    MeshFiles.stlBinary(support.resolve("meshes/visual/link_5.stl"), MeshFiles.cylinder(0, 0, 30, -40, 40, 32));
+    String urdf = urdf("test_arm", sphericalJoints(), link -> switch (link) {
+      case "base_link" -> """
+            <visual><geometry><mesh filename="package://arm_support/meshes/visual/base.stl"/></geometry></visual>
+            <collision><origin xyz="0 0 0.165"/><geometry><cylinder radius="0.09" length="0.33"/></geometry></collision>
+        """;
+      case "link_1" -> """
+            <visual><geometry><mesh filename="package://arm_meshes/meshes/link_1.stl"/></geometry></visual>
+            <collision><origin xyz="0.02 0 -0.035"/><geometry><box size="0.16 0.12 0.13"/></geometry></collision>
+        """;
+      case "link_2" -> """
+            <visual><geometry><mesh filename="../meshes/visual/link_2.obj"/></geometry></visual>
+            <collision><origin xyz="0 0 0.33"/><geometry><sphere radius="0.06"/></geometry></collision>
+        """;
+      case "link_3" -> """
+            <visual><geometry><mesh filename="package://arm_support/meshes/visual/link_3.dae"/></geometry></visual>
+            <collision><geometry><mesh filename="package://arm_support/meshes/visual/link_3.dae"/></geometry></collision>
+        """;
+      case "link_3_cover" -> """
+            <visual><geometry><box size="0.02 0.03 0.04"/></geometry><material name="orange"/></visual>
+        """;
+      case "link_4" -> """
+            <visual><geometry><mesh filename="package://extra/link_4.dae" scale="1 1 1"/></geometry></visual>
+        """;
+      case "link_5" -> """
+            <visual><origin rpy="1.5707963267948966 0 0"/><geometry><mesh filename="package://arm_support/meshes/visual/link_5.stl" scale="0.001 0.001 0.001"/></geometry></visual>
+        """;
+      case "link_6" -> """
+            <visual><origin xyz="-0.006 0 0" rpy="0 1.5707963267948966 0"/><geometry><cylinder radius="0.025" length="0.012"/></geometry>
+              <material name="grey"><color rgba="0.6 0.6 0.6 1"/></material></visual>
+        """;
+      default -> "";
+    });
+    Path file = support.resolve("urdf/test_arm.urdf");
+    write(file, urdf);
+    return file;
+  }
+
+  /** Writes the offset-wrist arm (cylinders for visual and collision) and returns its URDF. */
+  public static Path offsetPackage(Path tmp) throws IOException {
+    Path file = tmp.resolve("ur/urdf/ur.urdf");
+    write(file, urdf("ur_like", offsetJoints(), link -> link.equals("tool0") ? "" : """
+            <visual><geometry><cylinder radius="0.05" length="0.1"/></geometry></visual>
+            <collision><geometry><cylinder radius="0.05" length="0.1"/></geometry></collision>
+        """));
+    return file;
+  }
+
+  public static Map<String, Path> extraPackage(Path tmp) {
+    return Map.of("extra", tmp.resolve("elsewhere/extra"));
+  }
+
 
   /** One URDF joint as the test writes it: metres and radians. */
   record J(String name, String type, String parent, String child, double[] xyz, double[] rpy, double[] axis,

@@ -24,88 +24,12 @@ import org.robotrun.robot.RobotModel;
 class UrdfImporterTest {
   @TempDir Path tmp;
 
-  /** A rotated box (rpy below) used as link_3's COLLADA mesh, in millimetres. */
-  private static final double[] LINK3_RPY = {0.3, 0.5, 0.7};
-
-  /**
-   * Writes the spherical-wrist arm as a ROS workspace: arm_support (URDF, some meshes), a
-   * sibling package arm_meshes, and a package elsewhere ("extra") given with --package.
-   * Returns the URDF.
-   */
   private Path sphericalArm() throws Exception {
-    Path src = tmp.resolve("ws/src");
-    Path support = src.resolve("arm_support");
-    Path meshes = src.resolve("arm_meshes");
-    Path extra = tmp.resolve("elsewhere/extra");
-    TestArms.packageXml(support, "arm_support");
-    TestArms.packageXml(meshes, "arm_meshes");
-    // base: ASCII STL, metres.
-    MeshFiles.stlAscii(support.resolve("meshes/visual/base.stl"), MeshFiles.cylinder(0, 0, 0.09, 0, 0.33, 24));
-    // link_1: binary STL in the sibling package.
-    MeshFiles.stlBinary(meshes.resolve("meshes/link_1.stl"), MeshFiles.box(TestArms.v(-0.06, -0.06, -0.1), TestArms.v(0.1, 0.06, 0.03)));
-    // link_2: OBJ by a path relative to the URDF.
-    MeshFiles.obj(support.resolve("meshes/visual/link_2.obj"), MeshFiles.concat(
-        MeshFiles.box(TestArms.v(-0.04, -0.05, 0), TestArms.v(0.04, 0.05, 0.36)), MeshFiles.cylinder(0, 0, 0.05, -0.02, 0.02, 16)));
-    // link_3: COLLADA in mm, Z_UP, a box turned by LINK3_RPY.
-    double[] box3 = MeshFiles.box(TestArms.v(-60, -50, -40), TestArms.v(60, 50, 70));
-    double[][] r = TestArms.origin(new double[3], LINK3_RPY);
-    double[] turned = new double[box3.length];
-    for (int i = 0; i < box3.length; i += 3) {
-      for (int k = 0; k < 3; k++) {
-        turned[i + k] = r[k][0] * box3[i] + r[k][1] * box3[i + 1] + r[k][2] * box3[i + 2];
-      }
-    }
-    MeshFiles.dae(support.resolve("meshes/visual/link_3.dae"), turned, 0.001, "Z_UP");
-    // link_4: COLLADA, metres, Y_UP, in the --package folder: a bar along x from 0.05 to 0.3.
-    double[] bar = MeshFiles.box(TestArms.v(0.05, -0.03, -0.02), TestArms.v(0.3, 0.03, 0.04));
-    double[] yUp = new double[bar.length];
-    for (int i = 0; i < bar.length; i += 3) {
-      yUp[i] = bar[i];
-      yUp[i + 1] = bar[i + 2];
-      yUp[i + 2] = -bar[i + 1];
-    }
-    MeshFiles.dae(extra.resolve("link_4.dae"), yUp, 1.0, "Y_UP");
-    // link_5: binary STL written in millimetres, scaled by 0.001 in the URDF.
-    MeshFiles.stlBinary(support.resolve("meshes/visual/link_5.stl"), MeshFiles.cylinder(0, 0, 30, -40, 40, 32));
-    String urdf = TestArms.urdf("test_arm", TestArms.sphericalJoints(), link -> switch (link) {
-      case "base_link" -> """
-            <visual><geometry><mesh filename="package://arm_support/meshes/visual/base.stl"/></geometry></visual>
-            <collision><origin xyz="0 0 0.165"/><geometry><cylinder radius="0.09" length="0.33"/></geometry></collision>
-        """;
-      case "link_1" -> """
-            <visual><geometry><mesh filename="package://arm_meshes/meshes/link_1.stl"/></geometry></visual>
-            <collision><origin xyz="0.02 0 -0.035"/><geometry><box size="0.16 0.12 0.13"/></geometry></collision>
-        """;
-      case "link_2" -> """
-            <visual><geometry><mesh filename="../meshes/visual/link_2.obj"/></geometry></visual>
-            <collision><origin xyz="0 0 0.33"/><geometry><sphere radius="0.06"/></geometry></collision>
-        """;
-      case "link_3" -> """
-            <visual><geometry><mesh filename="package://arm_support/meshes/visual/link_3.dae"/></geometry></visual>
-            <collision><geometry><mesh filename="package://arm_support/meshes/visual/link_3.dae"/></geometry></collision>
-        """;
-      case "link_3_cover" -> """
-            <visual><geometry><box size="0.02 0.03 0.04"/></geometry><material name="orange"/></visual>
-        """;
-      case "link_4" -> """
-            <visual><geometry><mesh filename="package://extra/link_4.dae" scale="1 1 1"/></geometry></visual>
-        """;
-      case "link_5" -> """
-            <visual><origin rpy="1.5707963267948966 0 0"/><geometry><mesh filename="package://arm_support/meshes/visual/link_5.stl" scale="0.001 0.001 0.001"/></geometry></visual>
-        """;
-      case "link_6" -> """
-            <visual><origin xyz="-0.006 0 0" rpy="0 1.5707963267948966 0"/><geometry><cylinder radius="0.025" length="0.012"/></geometry>
-              <material name="grey"><color rgba="0.6 0.6 0.6 1"/></material></visual>
-        """;
-      default -> "";
-    });
-    Path file = support.resolve("urdf/test_arm.urdf");
-    TestArms.write(file, urdf);
-    return file;
+    return TestArms.sphericalPackage(tmp);
   }
 
   private Map<String, Path> extraPackage() {
-    return Map.of("extra", tmp.resolve("elsewhere/extra"));
+    return TestArms.extraPackage(tmp);
   }
 
   // Method: every link pose and the flange (tool0) from the importer against TestArms.pose, an
@@ -121,11 +45,7 @@ class UrdfImporterTest {
 
   @Test
   void offsetWristArmHasTheUrdfsForwardKinematics() throws Exception {
-    Path file = tmp.resolve("ur/urdf/ur.urdf");
-    TestArms.write(file, TestArms.urdf("ur_like", TestArms.offsetJoints(), link -> link.equals("tool0") ? "" : """
-            <visual><geometry><cylinder radius="0.05" length="0.1"/></geometry></visual>
-            <collision><geometry><cylinder radius="0.05" length="0.1"/></geometry></collision>
-        """));
+    Path file = TestArms.offsetPackage(tmp);
     UrdfImporter.Result r = UrdfImporter.importRobot(file, Map.of());
     assertSameFk(r.model(), TestArms.offsetJoints(), "tool0");
     assertThat(r.model().joints().get(0).name()).isEqualTo("shoulder_pan_joint");
@@ -142,6 +62,15 @@ class UrdfImporterTest {
     assertThat(m.joint(5).upperRad()).isEqualTo(2 * Math.PI);
     assertThat(m.joint(5).maxSpeedRadPerSec()).isEqualTo(17.45);
     assertThat(m.coupledJ3()).isFalse();
+  }
+
+  @Test
+  void worldSitsOnTheJ1AxisAtJ2HeightAsOnAFanucArm() throws Exception {
+    assertThat(UrdfImporter.importRobot(sphericalArm(), extraPackage()).model().X_WB())
+        .isEqualTo(Transform.translation(0, 0, -330));
+    Transform ur = UrdfImporter.importRobot(TestArms.offsetPackage(tmp), Map.of()).model().X_WB();
+    assertThat(ur.z()).isCloseTo(-89.159, within(1e-9));
+    assertThat(ur.x()).isZero();
   }
 
   // Method: bounds of each display mesh in its robot link's frame against the mesh numbers
