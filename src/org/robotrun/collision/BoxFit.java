@@ -17,7 +17,8 @@ import org.robotrun.math.Vec3;
  * of the points projected on the face's plane (rotating calipers over their 2D hull). A minimum
  * box has a face flush with a hull face in most cases (O'Rourke 1985 shows the exact optimum
  * also covers boxes flush with two hull edges; the face-flush search is the usual practical
- * subset). The smallest candidate wins. A flat cloud gets its PCA box, at least
+ * subset), trying at most {@link #MAX_DIRECTIONS} directions, those of the largest faces first.
+ * The smallest candidate wins. A flat cloud gets its PCA box, at least
  * {@link #MIN_THICKNESS_MM} thick.
  *
  * @param X_LB the box's centre and axes in the cloud's frame
@@ -25,6 +26,9 @@ import org.robotrun.math.Vec3;
  * @param hullVolume the cloud's convex hull volume (mm³), 0 when flat
  */
 public record BoxFit(Transform X_LB, Vec3 size, double hullVolume) {
+
+  /** Most hull face directions tried (the largest faces'). */
+  public static final int MAX_DIRECTIONS = 64;
 
   /** Thickness given to the box of a flat cloud (mm), so it still collides. */
   public static final double MIN_THICKNESS_MM = 1.0;
@@ -46,8 +50,20 @@ public record BoxFit(Transform X_LB, Vec3 size, double hullVolume) {
     candidates.add(pcaAxes(pts));
     if (hull.isSolid()) {
       double[] normals = hull.faceNormals();
+      double[] areas = hull.faceAreas();
+      // Largest faces first: a smooth mesh (a sphere's hull has tens of thousands of faces) is
+      // searched over its MAX_DIRECTIONS largest distinct face directions.
+      Integer[] order = new Integer[areas.length];
+      for (int i = 0; i < order.length; i++) {
+        order[i] = i;
+      }
+      Arrays.sort(order, (a, b) -> Double.compare(areas[b], areas[a]));
       Set<Long> seen = new HashSet<>();
-      for (int i = 0; i < normals.length; i += 3) {
+      for (int f : order) {
+        if (seen.size() >= MAX_DIRECTIONS) {
+          break;
+        }
+        int i = 3 * f;
         double nx = normals[i], ny = normals[i + 1], nz = normals[i + 2];
         if (nx * nx + ny * ny + nz * nz < 0.5) {
           continue;
@@ -158,7 +174,8 @@ public record BoxFit(Transform X_LB, Vec3 size, double hullVolume) {
   }
 
   /** Andrew's monotone chain: the 2D hull of {@code q} (2 doubles per point), counter-clockwise. */
-  static double[] hull2d(double[] q) {
+  static double[] hull2d(double[] all) {
+    double[] q = dropInterior(all);
     int m = q.length / 2;
     Integer[] idx = new Integer[m];
     for (int i = 0; i < m; i++) {
@@ -186,6 +203,46 @@ public record BoxFit(Transform X_LB, Vec3 size, double hullVolume) {
       out[2 * i + 1] = q[2 * h[i] + 1];
     }
     return out;
+  }
+
+  /**
+   * Akl–Toussaint: the points extreme along eight directions span an octagon inside the hull;
+   * points strictly inside it cannot be hull vertices, so the sort sees only the rest.
+   */
+  private static double[] dropInterior(double[] q) {
+    int m = q.length / 2;
+    if (m < 64) {
+      return q;
+    }
+    double[][] dirs = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    int[] ext = new int[8];
+    for (int d = 0; d < 8; d++) {
+      double best = Double.NEGATIVE_INFINITY;
+      for (int i = 0; i < m; i++) {
+        double v = dirs[d][0] * q[2 * i] + dirs[d][1] * q[2 * i + 1];
+        if (v > best) {
+          best = v;
+          ext[d] = i;
+        }
+      }
+    }
+    double[] kept = new double[q.length];
+    int k = 0;
+    for (int i = 0; i < m; i++) {
+      boolean inside = true;
+      for (int d = 0; d < 8 && inside; d++) {
+        int a = ext[d], b = ext[(d + 1) % 8];
+        // Counter-clockwise octagon: inside means strictly left of every edge that has a length.
+        if (a != b && turn(q, a, b, i) <= 1e-9 * (Math.abs(q[2 * a]) + Math.abs(q[2 * a + 1]) + 1)) {
+          inside = false;
+        }
+      }
+      if (!inside) {
+        kept[k++] = q[2 * i];
+        kept[k++] = q[2 * i + 1];
+      }
+    }
+    return Arrays.copyOf(kept, k);
   }
 
   private static double turn(double[] q, int o, int a, int b) {

@@ -2,22 +2,20 @@ package org.robotrun.collision;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Random;
 import java.util.Set;
 
 /**
  * The convex hull of a point cloud in 3D (mm), for fitting collision boxes to meshes and for
  * reporting how tight they are.
  *
- * <p>Method: incremental construction (start from the largest tetrahedron found from extreme
- * points, then add each point outside the hull: delete the faces it sees, close the hole with a
- * cone of faces from the horizon to the point), with a tolerance of 1e-9 of the cloud's extent.
- * Points are visited in a fixed shuffled order so sorted input does not hit the quadratic case.
- * A flat or empty cloud has no hull: {@link #compute} returns an empty hull (volume 0, no faces).
+ * <p>Method: quickhull (Barber, Dobkin, Huhdanpaa 1996): start from a large tetrahedron found
+ * from extreme points, then repeatedly add the farthest point outside a face: delete the faces
+ * it sees, close the hole with a cone of faces from the horizon to the point; tolerance 1e-9 of
+ * the cloud's extent. A flat or empty cloud has no hull: {@link #compute} returns an empty hull
+ * (volume 0, no faces).
  */
 public final class ConvexHull {
   private final double[] points;
@@ -43,7 +41,9 @@ public final class ConvexHull {
     if (tetra == null) {
       return new ConvexHull(xyz, List.of());
     }
-    return new ConvexHull(xyz, new Builder(xyz, eps).build(tetra, n));
+    List<int[]> faces = new Builder(xyz, eps).build(tetra, n);
+    // A walk that met an edge with no face behind it (rounding in a near-degenerate cloud) gives no hull.
+    return new ConvexHull(xyz, faces == null ? List.of() : faces);
   }
 
   /** Whether the cloud spans a volume (at least four points not in one plane). */
@@ -93,6 +93,17 @@ public final class ConvexHull {
       out[3 * i] = nrm[0];
       out[3 * i + 1] = nrm[1];
       out[3 * i + 2] = nrm[2];
+    }
+    return out;
+  }
+
+  /** Areas of the hull's faces (mm²), in the order of {@link #faceNormals}. */
+  public double[] faceAreas() {
+    double[] out = new double[faces.size()];
+    for (int i = 0; i < faces.size(); i++) {
+      int[] f = faces.get(i);
+      double[] c = cross(sub(points, f[1], f[0]), sub(points, f[2], f[0]));
+      out[i] = Math.sqrt(dot(c, c)) / 2;
     }
     return out;
   }
@@ -161,13 +172,21 @@ public final class ConvexHull {
     return d < 0 ? null : new int[] {a, b, c, d};
   }
 
-  /** The incremental construction; faces are vertex triples, counter-clockwise seen from outside. */
+  /**
+   * Quickhull-style construction: every point outside the hull waits in the outside set of one
+   * face it sees; the farthest point of a face is added next, the faces it sees are found by a
+   * walk over neighbouring faces (they are connected), replaced by a cone from the horizon, and
+   * their waiting points move to the new faces. Faces are vertex triples, counter-clockwise seen
+   * from outside; a directed edge maps to the face that holds it.
+   */
   private static final class Builder {
     private final double[] p;
     private final double eps;
     private final List<int[]> faces = new ArrayList<>();
     private final List<double[]> planes = new ArrayList<>();
     private final List<Boolean> alive = new ArrayList<>();
+    private final List<IntList> outside = new ArrayList<>();
+    private final Map<Long, Integer> edgeFace = new HashMap<>();
 
     Builder(double[] p, double eps) {
       this.p = p;
@@ -178,27 +197,29 @@ public final class ConvexHull {
       // Orient the tetrahedron's faces outward: the fourth vertex must lie behind each.
       int[][] tf = {{t[0], t[1], t[2]}, {t[0], t[3], t[1]}, {t[1], t[3], t[2]}, {t[2], t[3], t[0]}};
       int[] opposite = {t[3], t[2], t[0], t[1]};
-      for (int i = 0; i < 4; i++) {
-        int[] f = tf[i];
-        double[] pl = plane(f);
-        if (signedDistance(pl, opposite[i]) > 0) {
-          f = new int[] {f[0], f[2], f[1]};
-        }
-        add(f);
+      boolean flip = signedDistance(plane(tf[0]), opposite[0]) > 0;
+      for (int[] f : tf) {
+        add(flip ? new int[] {f[0], f[2], f[1]} : f);
       }
-      int[] order = new int[n];
+      IntList all = new IntList();
       for (int i = 0; i < n; i++) {
-        order[i] = i;
+        if (i != t[0] && i != t[1] && i != t[2] && i != t[3]) {
+          all.add(i);
+        }
       }
-      Random rnd = new Random(1);
-      for (int i = n - 1; i > 0; i--) {
-        int j = rnd.nextInt(i + 1);
-        int tmp = order[i];
-        order[i] = order[j];
-        order[j] = tmp;
-      }
-      for (int idx : order) {
-        insert(idx);
+      List<Integer> created = List.of(0, 1, 2, 3);
+      assign(all, created);
+      java.util.ArrayDeque<Integer> work = new java.util.ArrayDeque<>(created);
+      while (!work.isEmpty()) {
+        int f = work.pop();
+        if (!alive.get(f) || outside.get(f).size == 0) {
+          continue;
+        }
+        List<Integer> made = addPoint(f, farthest(f));
+        if (made == null) {
+          return null;
+        }
+        work.addAll(made);
       }
       List<int[]> out = new ArrayList<>();
       for (int i = 0; i < faces.size(); i++) {
@@ -209,44 +230,93 @@ public final class ConvexHull {
       return out;
     }
 
-    private void insert(int q) {
-      List<Integer> visible = new ArrayList<>();
-      for (int i = 0; i < faces.size(); i++) {
-        if (alive.get(i) && signedDistance(planes.get(i), q) > eps) {
-          visible.add(i);
+    private int farthest(int f) {
+      IntList o = outside.get(f);
+      double[] pl = planes.get(f);
+      int best = o.get(0);
+      double bestD = signedDistance(pl, best);
+      for (int k = 1; k < o.size; k++) {
+        double d = signedDistance(pl, o.get(k));
+        if (d > bestD) {
+          bestD = d;
+          best = o.get(k);
         }
       }
-      if (visible.isEmpty()) {
-        return;
-      }
-      // Directed edges of the visible faces; an edge whose reverse is not among them is on the horizon.
-      Map<Long, int[]> edges = new HashMap<>();
-      Set<Long> all = new HashSet<>();
-      for (int i : visible) {
-        int[] f = faces.get(i);
+      return best;
+    }
+
+    /** Adds point q seen from face f; returns the new faces (null when the hull's edges are inconsistent). */
+    private List<Integer> addPoint(int f, int q) {
+      List<Integer> visible = new ArrayList<>(List.of(f));
+      Map<Integer, Boolean> seen = new HashMap<>();
+      seen.put(f, true);
+      List<int[]> horizon = new ArrayList<>();
+      for (int v = 0; v < visible.size(); v++) {
+        int[] face = faces.get(visible.get(v));
         for (int e = 0; e < 3; e++) {
-          all.add(key(f[e], f[(e + 1) % 3]));
-        }
-      }
-      for (int i : visible) {
-        int[] f = faces.get(i);
-        for (int e = 0; e < 3; e++) {
-          int a = f[e], b = f[(e + 1) % 3];
-          if (!all.contains(key(b, a))) {
-            edges.put(key(a, b), new int[] {a, b});
+          int a = face[e], b = face[(e + 1) % 3];
+          Integer g = edgeFace.get(key(b, a));
+          if (g == null) {
+            return null;
+          }
+          Boolean vis = seen.get(g);
+          if (vis == null) {
+            vis = signedDistance(planes.get(g), q) > eps;
+            seen.put(g, vis);
+            if (vis) {
+              visible.add(g);
+            }
+          }
+          if (!vis) {
+            horizon.add(new int[] {a, b});
           }
         }
-        alive.set(i, false);
       }
-      for (int[] e : edges.values()) {
-        add(new int[] {e[0], e[1], q});
+      IntList orphans = new IntList();
+      for (int v : visible) {
+        alive.set(v, false);
+        int[] face = faces.get(v);
+        for (int e = 0; e < 3; e++) {
+          edgeFace.remove(key(face[e], face[(e + 1) % 3]));
+        }
+        IntList o = outside.get(v);
+        for (int k = 0; k < o.size; k++) {
+          if (o.get(k) != q) {
+            orphans.add(o.get(k));
+          }
+        }
+        outside.set(v, new IntList());
+      }
+      List<Integer> made = new ArrayList<>();
+      for (int[] e : horizon) {
+        made.add(add(new int[] {e[0], e[1], q}));
+      }
+      assign(orphans, made);
+      return made;
+    }
+
+    private void assign(IntList points, List<Integer> candidates) {
+      for (int k = 0; k < points.size; k++) {
+        int i = points.get(k);
+        for (int f : candidates) {
+          if (signedDistance(planes.get(f), i) > eps) {
+            outside.get(f).add(i);
+            break;
+          }
+        }
       }
     }
 
-    private void add(int[] f) {
+    private int add(int[] f) {
+      int idx = faces.size();
       faces.add(f);
       planes.add(plane(f));
       alive.add(true);
+      outside.add(new IntList());
+      for (int e = 0; e < 3; e++) {
+        edgeFace.put(key(f[e], f[(e + 1) % 3]), idx);
+      }
+      return idx;
     }
 
     private double[] plane(int[] f) {
@@ -260,6 +330,23 @@ public final class ConvexHull {
 
     private static long key(int a, int b) {
       return ((long) a << 32) | (b & 0xffffffffL);
+    }
+  }
+
+  /** A growable list of ints. */
+  private static final class IntList {
+    private int[] a = new int[4];
+    private int size;
+
+    void add(int v) {
+      if (size == a.length) {
+        a = java.util.Arrays.copyOf(a, size * 2);
+      }
+      a[size++] = v;
+    }
+
+    int get(int i) {
+      return a[i];
     }
   }
 
