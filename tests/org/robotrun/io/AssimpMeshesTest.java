@@ -56,6 +56,15 @@ class AssimpMeshesTest {
     assertBounds(AssimpMeshes.read(dir.resolve("in.dae")), LO, HI, 1e-6);
   }
 
+  // Method: the box at the origin placed by its node's matrix (a translation of 1, 2, 3 units
+  // in a file in centimetres, Z_UP): the vertices come out moved by 0.01, 0.02, 0.03 m.
+  @Test
+  void colladaNodeTransformsAreBakedIn() throws Exception {
+    double[] cm = MeshFiles.box(new double[] {0, 0, 0}, new double[] {10, 20, 30});
+    MeshFiles.dae(dir.resolve("node.dae"), cm, 0.01, "Z_UP", "<matrix>1 0 0 1 0 1 0 2 0 0 1 3 0 0 0 1</matrix>");
+    assertBounds(AssimpMeshes.read(dir.resolve("node.dae")), new double[] {0.01, 0.02, 0.03}, new double[] {0.11, 0.22, 0.33}, 1e-6);
+  }
+
   @Test
   void aFileThatIsNotAMeshIsRefusedWithItsName() throws Exception {
     Path bad = dir.resolve("bad.stl");

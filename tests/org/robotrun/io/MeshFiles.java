@@ -107,6 +107,11 @@ public final class MeshFiles {
 
   /** COLLADA 1.4 with one triangle mesh in one node; coordinates in the file's own unit and up axis. */
   static void dae(Path file, double[] t, double unitMeter, String upAxis) throws IOException {
+    dae(file, t, unitMeter, upAxis, "");
+  }
+
+  /** As above, with {@code nodeXml} (e.g. a {@code <matrix>}) placing the geometry's node. */
+  static void dae(Path file, double[] t, double unitMeter, String upAxis, String nodeXml) throws IOException {
     StringBuilder pos = new StringBuilder();
     for (double v : t) {
       pos.append(String.format(Locale.ROOT, "%.9g ", v));
@@ -143,12 +148,12 @@ public final class MeshFiles {
           </library_geometries>
           <library_visual_scenes>
             <visual_scene id="s" name="s">
-              <node id="n" name="n"><instance_geometry url="#g"/></node>
+              <node id="n" name="n">%s<instance_geometry url="#g"/></node>
             </visual_scene>
           </library_visual_scenes>
           <scene><instance_visual_scene url="#s"/></scene>
         </COLLADA>
-        """.formatted(Double.toString(unitMeter), upAxis, t.length, pos, t.length / 3, t.length / 9, idx);
+        """.formatted(Double.toString(unitMeter), upAxis, t.length, pos, t.length / 3, t.length / 9, idx, nodeXml);
     write(file, xml.getBytes(StandardCharsets.UTF_8));
   }
 
