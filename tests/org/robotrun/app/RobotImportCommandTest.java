@@ -52,7 +52,7 @@ class RobotImportCommandTest {
     assertThat(imp.exitCode()).as(imp.err()).isZero();
     Path cell = tmp.resolve("cell.json");
     Files.writeString(cell, """
-        {"format": 1, "robots": [{"name": "robot1", "model": "robots/ur/ur_like.json", "jointsDeg": [0, -60, 60, 0, 90, 0]}]}
+        {"format": 1, "robots": [{"name": "robot1", "model": "robots/ur/ur_like.json", "basePose": {"x": 0, "y": 0, "z": -89.159}, "jointsDeg": [0, -60, 60, 0, 90, 0]}]}
         """);
     Path png = tmp.resolve("ur.png");
     RenderCommandTest.Run r = RenderCommandTest.run("render", "--scenario", cell.toString(), "--out", png.toString(),

@@ -101,13 +101,52 @@ public final class TestArms {
     return file;
   }
 
-  /** Writes the offset-wrist arm (cylinders for visual and collision) and returns its URDF. */
+  /**
+   * Writes the offset-wrist arm as package ur_like_description: each link a box tube with a
+   * round housing, in all three formats (STL ASCII and binary, OBJ, COLLADA Z_UP in metres and
+   * Y_UP in millimetres); only the base has a collision primitive, the rest get fitted boxes.
+   * Returns its URDF.
+   */
   public static Path offsetPackage(Path tmp) throws IOException {
-    Path file = tmp.resolve("ur/urdf/ur.urdf");
-    write(file, urdf("ur_like", offsetJoints(), link -> link.equals("tool0") ? "" : """
-            <visual><geometry><cylinder radius="0.05" length="0.1"/></geometry></visual>
-            <collision><geometry><cylinder radius="0.05" length="0.1"/></geometry></collision>
-        """));
+    Path pkg = tmp.resolve("ur/ur_like_description");
+    packageXml(pkg, "ur_like_description");
+    Path m = pkg.resolve("meshes");
+    MeshFiles.stlAscii(m.resolve("base.stl"), MeshFiles.cylinder(0, 0, 0.075, 0, 0.06, 32));
+    MeshFiles.obj(m.resolve("shoulder.obj"), MeshFiles.concat(
+        MeshFiles.cylinder(0, 0, 0.06, -0.06, 0.06, 32), MeshFiles.box(v(-0.045, 0, -0.045), v(0.045, 0.18, 0.045))));
+    MeshFiles.dae(m.resolve("upperarm.dae"), MeshFiles.concat(
+        MeshFiles.box(v(-0.045, -0.17, -0.045), v(0.045, -0.08, 0.045)),
+        MeshFiles.box(v(-0.04, -0.16, -0.04), v(0.04, -0.08, 0.44)),
+        MeshFiles.cylinder(0, -0.12, 0.055, 0.38, 0.47, 32)), 1.0, "Z_UP");
+    MeshFiles.stlBinary(m.resolve("forearm.stl"), MeshFiles.concat(
+        MeshFiles.box(v(-0.035, -0.035, -0.03), v(0.035, 0.035, 0.40)), MeshFiles.cylinder(0, 0.03, 0.045, 0.36, 0.42, 32)));
+    double[] w1 = MeshFiles.concat(MeshFiles.box(v(-0.035, -0.02, -0.035), v(0.035, 0.12, 0.035)),
+        MeshFiles.cylinder(0, 0.093, 0.04, -0.05, 0.05, 24));
+    double[] w1mm = new double[w1.length];
+    for (int i = 0; i < w1.length; i += 3) {
+      w1mm[i] = w1[i] * 1000;
+      w1mm[i + 1] = w1[i + 2] * 1000;
+      w1mm[i + 2] = -w1[i + 1] * 1000;
+    }
+    MeshFiles.dae(m.resolve("wrist1.dae"), w1mm, 0.001, "Y_UP");
+    MeshFiles.obj(m.resolve("wrist2.obj"), MeshFiles.concat(MeshFiles.box(v(-0.035, -0.035, -0.02), v(0.035, 0.035, 0.12)),
+        MeshFiles.cylinder(0, 0, 0.04, 0.06, 0.13, 24)));
+    MeshFiles.stlBinary(m.resolve("wrist3.stl"), MeshFiles.cylinder(0, 0, 0.035, 0, 0.08, 32));
+    Map<String, String> visual = Map.of("base_link", "base.stl", "shoulder_link", "shoulder.obj", "upper_arm_link", "upperarm.dae",
+        "forearm_link", "forearm.stl", "wrist_1_link", "wrist1.dae", "wrist_2_link", "wrist2.obj", "wrist_3_link", "wrist3.stl");
+    Path file = pkg.resolve("urdf/ur_like.urdf");
+    write(file, urdf("ur_like", offsetJoints(), link -> {
+      if (!visual.containsKey(link)) {
+        return "";
+      }
+      String origin = link.equals("wrist_3_link") ? "<origin rpy=\"-1.5707963267948966 0 0\"/>" : "";
+      String mesh = "    <visual>" + origin + "<geometry><mesh filename=\"package://ur_like_description/meshes/" + visual.get(link)
+          + "\"/></geometry><material name=\"" + (link.equals("base_link") ? "dark" : "blue") + "\"><color rgba=\""
+          + (link.equals("base_link") ? "0.2 0.2 0.2 1" : "0.35 0.55 0.8 1") + "\"/></material></visual>\n";
+      return link.equals("base_link")
+          ? mesh + "    <collision><origin xyz=\"0 0 0.03\"/><geometry><cylinder radius=\"0.075\" length=\"0.06\"/></geometry></collision>\n"
+          : mesh;
+    }));
     return file;
   }
 

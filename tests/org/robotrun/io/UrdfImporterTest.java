@@ -49,7 +49,16 @@ class UrdfImporterTest {
     UrdfImporter.Result r = UrdfImporter.importRobot(file, Map.of());
     assertSameFk(r.model(), TestArms.offsetJoints(), "tool0");
     assertThat(r.model().joints().get(0).name()).isEqualTo("shoulder_pan_joint");
-    assertThat(r.model().links().get(1).shapes()).singleElement().isInstanceOf(LinkShape.Cylinder.class);
+    assertThat(r.model().links().get(0).shapes()).singleElement().isInstanceOf(LinkShape.Cylinder.class);
+    assertThat(r.model().links().get(1).shapes()).singleElement().isInstanceOf(LinkShape.Box.class);
+    assertThat(r.model().links().get(1).meshes()).singleElement().extracting(LinkMesh::color).isEqualTo("#598ccc");
+    for (UrdfImporter.BodyReport b : r.bodies()) {
+      System.out.printf(java.util.Locale.ROOT, "offset arm body %-15s %-50s box %10.1f cm3 hull %10.1f cm3 ratio %.3f%n",
+          b.link(), b.source(), b.boxVolumeMm3() / 1000, b.hullVolumeMm3() / 1000, b.ratio());
+      if (!Double.isNaN(b.hullVolumeMm3())) {
+        assertThat(b.ratio()).as(b.link()).isBetween(1.0, 1.6);
+      }
+    }
   }
 
   @Test
