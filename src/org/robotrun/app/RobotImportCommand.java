@@ -25,12 +25,18 @@ import picocli.CommandLine.Spec;
     name = "import",
     mixinStandardHelpOptions = true,
     description = {
-      "Imports a serial 6-axis arm from a URDF: writes DIR/ID.json (a RobotRun robot definition) and DIR/meshes/*.stl",
-      "(its display meshes), which a scenario names as \"model\": \"DIR/ID.json\" (a scenario may also name the .urdf).",
-      "Meshes: STL, OBJ, COLLADA; package://NAME/... paths are found with --package or by walking up to the package.xml",
-      "that names NAME. Collision bodies: the URDF's boxes, cylinders and spheres; meshes get tight fitted boxes.",
-      "xacro files are refused: expand them first (xacro robot.urdf.xacro > robot.urdf). See docs/robot-import.md.",
-      "Prints the joints, the flange, what was merged or assumed, and each fitted box's volume against its mesh's hull."
+      "Imports a serial 6-axis arm from a URDF into the new folder DIR: DIR/ID.json",
+      "(a RobotRun robot) and DIR/meshes/*.stl (its display meshes). A scenario names",
+      "it as \"model\": \"DIR/ID.json\" (or names the .urdf itself).",
+      "Meshes: STL, OBJ, COLLADA (its unit and up axis honoured); package://NAME/...",
+      "is found with --package NAME=DIR or by walking up to the package.xml naming it.",
+      "Collision bodies: the URDF's boxes and cylinders (spheres as cubes); meshes get",
+      "tight fitted boxes. xacro files are refused: expand them first",
+      "(xacro robot.urdf.xacro > robot.urdf). Anything but a serial 6-axis arm is",
+      "refused in one line, and nothing is written. Prints the joints, the flange,",
+      "what was merged or assumed, and each fitted box's volume against its mesh's",
+      "convex hull. See docs/robot-import.md.",
+      ""
     })
 final class RobotImportCommand implements Callable<Integer> {
   @Spec picocli.CommandLine.Model.CommandSpec spec;

@@ -61,6 +61,35 @@ class UrdfImporterTest {
     }
   }
 
+  // A layout as ROS-Industrial ships it: a "world" root, <axis> left out (URDF's default x),
+  // an upper-case .STL, comments, and only a "flange" link after joint 6.
+  @Test
+  void rosIndustrialLayoutWithDefaultsImports() throws Exception {
+    Path pkg = tmp.resolve("ws/src/m_support");
+    TestArms.packageXml(pkg, "m_support");
+    MeshFiles.stlBinary(pkg.resolve("meshes/BASE_LINK.STL"), MeshFiles.box(TestArms.v(-0.1, -0.1, 0), TestArms.v(0.1, 0.1, 0.2)));
+    List<TestArms.J> joints = new ArrayList<>();
+    joints.add(TestArms.fixed("world-base_link", "world", "base_link", TestArms.v(0, 0, 0), TestArms.v(0, 0, 0)));
+    String parent = "base_link";
+    double[][] xyz = {{0, 0, 0.45}, {0.15, 0, 0}, {0, 0, 0.6}, {0, 0, 0.2}, {0.64, 0, 0}, {0.1, 0, 0}};
+    for (int i = 0; i < 6; i++) {
+      double[] axis = i % 3 == 0 ? TestArms.v(0, 0, 1) : TestArms.v(1, 0, 0);
+      joints.add(TestArms.rev("joint_" + (i + 1), parent, "link_" + (i + 1), xyz[i], axis, -3, 3, 4));
+      parent = "link_" + (i + 1);
+    }
+    joints.add(TestArms.fixed("joint_6-flange", "link_6", "flange", TestArms.v(0, 0, 0), TestArms.v(0, 0, 0)));
+    String text = TestArms.urdf("m10", joints, l -> l.equals("base_link")
+        ? "    <!-- the base -->\n    <visual><geometry><mesh filename=\"package://m_support/meshes/BASE_LINK.STL\"/></geometry></visual>\n" : "")
+        .replace("<axis xyz=\"1.0 0.0 0.0\"/>", "");
+    Path file = pkg.resolve("urdf/m10.urdf");
+    TestArms.write(file, text);
+    assertThat(text).doesNotContain("<axis xyz=\"1.0 0.0 0.0\"/>");
+    UrdfImporter.Result r = UrdfImporter.importRobot(file, Map.of());
+    assertSameFk(r.model(), joints.subList(1, joints.size()), "flange");
+    assertThat(r.notes()).contains("flange: link 'flange'", "link 'world' includes [base_link] (fixed joints)");
+    assertBounds(r.model().links().get(0).meshes().get(0), new double[] {-100, -100, 0}, new double[] {100, 100, 200});
+  }
+
   @Test
   void limitsAreConvertedOnceAndAContinuousJointGetsPlusMinus360() throws Exception {
     RobotModel m = UrdfImporter.importRobot(sphericalArm(), extraPackage()).model();
