@@ -76,6 +76,11 @@ class UrdfImporterTest {
       double[] axis = i % 3 == 0 ? TestArms.v(0, 0, 1) : TestArms.v(1, 0, 0);
       joints.add(TestArms.rev("joint_" + (i + 1), parent, "link_" + (i + 1), xyz[i], axis, -3, 3, 4));
       parent = "link_" + (i + 1);
+      if (i == 2) {
+        // A turned adapter between two moving joints: joint_4 hangs from a merged link.
+        joints.add(TestArms.fixed("adapter", parent, "link_3_adapter", TestArms.v(0.01, 0.02, 0.03), TestArms.v(0.3, -0.2, 0.5)));
+        parent = "link_3_adapter";
+      }
     }
     joints.add(TestArms.fixed("joint_6-flange", "link_6", "flange", TestArms.v(0, 0, 0), TestArms.v(0, 0, 0)));
     String text = TestArms.urdf("m10", joints, l -> l.equals("base_link")
