@@ -60,7 +60,8 @@ public final class AssimpMeshes {
     AIScene scene = Assimp.aiImportFile(file.toAbsolutePath().toString(), flags);
     if (scene == null) {
       String why = Assimp.aiGetErrorString();
-      throw new FileFormatException(name, 0, "not a readable mesh: " + (why == null || why.isBlank() ? "unknown format" : why.strip()));
+      throw new FileFormatException(name, 0, "not a readable mesh: "
+          + (why == null || why.isBlank() ? "unknown format" : why.strip().replaceAll("\\s+", " ")));
     }
     try {
       boolean yUp = name.toLowerCase(Locale.ROOT).endsWith(".dae");

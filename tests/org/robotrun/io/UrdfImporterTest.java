@@ -267,6 +267,11 @@ class UrdfImporterTest {
     String unknownPackage = TestArms.urdf("p", sixJoints(), l -> l.equals("link_1")
         ? "    <visual><geometry><mesh filename=\"package://nowhere/a.stl\"/></geometry></visual>\n" : "");
     assertThat(refusal("package.urdf", unknownPackage)).contains("package 'nowhere' not found (give --package nowhere=DIR");
+    Files.writeString(tmp.resolve("bad/broken.dae"), "<COLLADA>not really</COLLADA>");
+    String corrupt = TestArms.urdf("c", sixJoints(), l -> l.equals("link_4")
+        ? "    <collision><geometry><mesh filename=\"broken.dae\"/></geometry></collision>\n" : "");
+    assertThat(refusal("corrupt.urdf", corrupt)).matches(".*corrupt.urdf:" + lineOf(corrupt, "broken.dae")
+        + ": mesh 'broken.dae': .*broken.dae: (not a readable mesh|the mesh holds no triangles).*");
   }
 
   @Test
