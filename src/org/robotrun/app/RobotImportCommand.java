@@ -52,18 +52,7 @@ final class RobotImportCommand implements Callable<Integer> {
 
   @Override
   public Integer call() {
-    Map<String, Path> dirs = new LinkedHashMap<>();
-    for (String p : packages) {
-      int eq = p.indexOf('=');
-      if (eq <= 0 || eq == p.length() - 1) {
-        throw new UserError("--package: expected NAME=DIR, got '" + p + "'", Main.EXIT_BAD_INPUT);
-      }
-      Path dir = Path.of(p.substring(eq + 1));
-      if (!Files.isDirectory(dir)) {
-        throw new UserError("--package " + p + ": no such folder " + dir, Main.EXIT_BAD_INPUT);
-      }
-      dirs.put(p.substring(0, eq), dir.toAbsolutePath().normalize());
-    }
+    Map<String, Path> dirs = packageDirs(packages);
     if (!Files.isRegularFile(urdf) && !urdf.toString().toLowerCase(Locale.ROOT).endsWith(".xacro")) {
       throw new UserError(urdf + ": no such file", Main.EXIT_BAD_INPUT);
     }
@@ -81,6 +70,23 @@ final class RobotImportCommand implements Callable<Integer> {
     double ms = (System.nanoTime() - t0) / 1e6;
     print(spec.commandLine().getOut(), r, json, ms);
     return Main.EXIT_OK;
+  }
+
+  /** The {@code --package NAME=DIR} options as a map (name → absolute folder). */
+  static Map<String, Path> packageDirs(List<String> packages) {
+    Map<String, Path> dirs = new LinkedHashMap<>();
+    for (String p : packages) {
+      int eq = p.indexOf('=');
+      if (eq <= 0 || eq == p.length() - 1) {
+        throw new UserError("--package: expected NAME=DIR, got '" + p + "'", Main.EXIT_BAD_INPUT);
+      }
+      Path dir = Path.of(p.substring(eq + 1));
+      if (!Files.isDirectory(dir)) {
+        throw new UserError("--package " + p + ": no such folder " + dir, Main.EXIT_BAD_INPUT);
+      }
+      dirs.put(p.substring(0, eq), dir.toAbsolutePath().normalize());
+    }
+    return dirs;
   }
 
   static void print(PrintWriter o, UrdfImporter.Result r, Path json, double ms) {

@@ -45,6 +45,17 @@ class RobotImportCommandTest {
   }
 
   @Test
+  void benchImportPrintsColdAndWarmTimes() throws Exception {
+    RenderCommandTest.Run r = RenderCommandTest.run("bench", "import", TestArms.offsetPackage(tmp).toString(), "--rounds", "2");
+    assertThat(r.exitCode()).as(r.err()).isZero();
+    assertThat(r.out()).matches("robot=ur_like triangles=904 fitted_boxes=6 cold_import_ms=[0-9.]+ cold_import_cpu_ms=[0-9.]+ "
+        + "import_ms=[0-9.]+ import_cpu_ms=[0-9.]+ write_ms=[0-9.]+ rounds=2\\R");
+    try (Stream<Path> s = Files.list(tmp)) {
+      assertThat(s.map(p -> p.getFileName().toString())).containsExactly("ur");
+    }
+  }
+
+  @Test
   void aScenarioWithTheImportedArmRenders() throws Exception {
     GlTestSupport.rendererOrSkip(16, 16).close();
     Path out = tmp.resolve("robots/ur");
