@@ -65,6 +65,25 @@ class AssimpMeshesTest {
     assertBounds(AssimpMeshes.read(dir.resolve("node.dae")), new double[] {0.01, 0.02, 0.03}, new double[] {0.11, 0.22, 0.33}, 1e-6);
   }
 
+  // An OBJ as CAD tools export it: quads, a material library that was not copied along.
+  @Test
+  void objWithQuadsAndAMissingMaterialLibraryReads() throws Exception {
+    Files.writeString(dir.resolve("q.obj"), """
+        mtllib gone.mtl
+        v 0 0 0
+        v 0.1 0 0
+        v 0.1 0.2 0
+        v 0 0.2 0
+        v 0 0 0.3
+        usemtl paint
+        f 1 2 3 4
+        f 1 2 5
+        """);
+    double[] t = AssimpMeshes.read(dir.resolve("q.obj"));
+    assertThat(t).hasSize(3 * 9);
+    assertBounds(t, new double[] {0, 0, 0}, new double[] {0.1, 0.2, 0.3}, 1e-6);
+  }
+
   @Test
   void aFileThatIsNotAMeshIsRefusedWithItsName() throws Exception {
     Path bad = dir.resolve("bad.stl");
