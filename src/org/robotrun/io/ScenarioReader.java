@@ -162,6 +162,8 @@ public final class ScenarioReader {
   private static final class Session extends JsonFieldReader {
     private final Path dir;
     private final Map<String, RobotModel> models = new HashMap<>();
+    // What RobotSetup.modelId holds for each model text: the library id, or the robot file's absolute path.
+    private final Map<String, String> modelRefs = new HashMap<>();
     /** Where each name was first defined, for duplicate messages. */
     private final Map<String, String> definedAt = new HashMap<>();
 
@@ -293,7 +295,8 @@ public final class ScenarioReader {
           error(nameLine, at + ".name", "robot name '" + robotName + "' ends in .LS: its programs folder programs/"
               + Workspace.robotFolder(robotName) + "/ would collide with a program file; give the robot another name");
         }
-        Optional<RobotModel> model = string(r, "model", at, true).flatMap(m -> model(m, r, at));
+        Optional<String> modelText = string(r, "model", at, true);
+        Optional<RobotModel> model = modelText.flatMap(m -> model(m, r, at));
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
         double[] jointsRad = joints(r, at, model);
@@ -309,7 +312,7 @@ public final class ScenarioReader {
         frames(r, at, ownTools, ownUsers);
         Optional<String> ownMode = string(r, "mode", at, false).map(m -> mode(m, r, at));
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
-          out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
+          out.add(new RobotSetup(robotName, modelRefs.get(modelText.get()), X_CB, tool,
               Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros,
               ownRegisters, ownTools, ownUsers, ownMode));
         }
@@ -477,13 +480,27 @@ public final class ScenarioReader {
       return (int) n.value();
     }
 
+    /** The model a robot names: a library id, or a robot file (.json, .urdf) relative to the scenario. */
     private Optional<RobotModel> model(String id, JObject r, String at) {
       if (models.containsKey(id)) {
         return Optional.of(models.get(id));
       }
+      if (RobotDefinitions.isFileReference(id)) {
+        Path file = dir.resolve(id).normalize();
+        try {
+          RobotModel m = RobotDefinitions.loadFile(file);
+          models.put(id, m);
+          modelRefs.put(id, file.toString());
+          return Optional.of(m);
+        } catch (FileFormatException e) {
+          error(r.members().get("model").line(), at + ".model", "robot file '" + id + "': " + e.getMessage());
+          return Optional.empty();
+        }
+      }
       try {
         RobotModel m = RobotDefinitions.load(id);
         models.put(id, m);
+        modelRefs.put(id, m.id());
         return Optional.of(m);
       } catch (FileFormatException e) {
         error(r.members().get("model").line(), at + ".model", "unknown robot model '" + id + "' (e.g. \""
