@@ -486,7 +486,18 @@ public final class ScenarioReader {
         return Optional.of(models.get(id));
       }
       if (RobotDefinitions.isFileReference(id)) {
-        Path file = dir.resolve(id).normalize();
+        int line = r.members().get("model").line();
+        if (confined) {
+          // A hand-in carries no robot files (the hand-in reader takes cell.json, programs/ and scenarios/ only),
+          // and a robot file or URDF names meshes of its own: a hand-in's robot comes from the library.
+          error(line, at + ".model", "robot file '" + TerminalText.safe(id.length() > 100 ? id.substring(0, 100) + "..." : id)
+              + "': a hand-in names its robot by a library id (robotrun robots lists them), not by a file");
+          return Optional.empty();
+        }
+        Path file = resolve(id, line, at + ".model");
+        if (file == null) {
+          return Optional.empty();
+        }
         try {
           RobotModel m = RobotDefinitions.loadFile(file);
           models.put(id, m);

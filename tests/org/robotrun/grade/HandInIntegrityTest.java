@@ -128,6 +128,20 @@ class HandInIntegrityTest {
   }
 
   @Test
+  void aHandInsRobotComesFromTheLibraryNeverFromAFileOfTheGrader() throws Exception {
+    String cell = Files.readString(REFERENCE.resolve("cell.json"));
+    // a robot file (RobotRun JSON or URDF) names meshes of its own: it would read the grader's files
+    String evil = cell.replaceFirst("\"model\"\\s*:\\s*\"[a-z0-9]+\"", "\"model\": \"../../../../../../../tmp/evil.urdf\"");
+    assertThat(evil).isNotEqualTo(cell);
+    Map<String, byte[]> files = new LinkedHashMap<>();
+    files.put("cell.json", evil.getBytes(StandardCharsets.UTF_8));
+    files.put("programs/PICKPLACE.LS", Files.readAllBytes(REFERENCE.resolve("programs/PICKPLACE.LS")));
+    GradeResult r = Grading.gradeOne(grader, new SubmissionLoader(), HandIns.zip(files, "Eve", dir.resolve("robot.zip")), true);
+    String handIn = HandIns.check(r, "Hand-in").feedback();
+    assertThat(handIn).contains("a hand-in names its robot by a library id");
+  }
+
+  @Test
   void aManifestTwiceIsRefusedByGradeAsByRun() throws Exception {
     Path good = HandIns.zip(REFERENCE, "Ada", dir.resolve("good.zip"));
     java.io.ByteArrayOutputStream raw = new java.io.ByteArrayOutputStream();
