@@ -7,14 +7,15 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Optional;
-import org.robotrun.math.Angles;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.Locale;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.robot.JointSpec;
 import org.robotrun.robot.LinkShape;
 import org.robotrun.robot.LinkSpec;
-import org.robotrun.robot.OpwParameters;
 import org.robotrun.robot.RobotModel;
 
 /**
@@ -29,12 +30,68 @@ public final class RobotDefinitions {
 
   private RobotDefinitions() {}
 
-  /** Loads a robot shipped in the jar by its id, e.g. "lrmate200id". */
+  /**
+   * The library shipped in the jar, in listing order (each has {@code resources/robots/ID.json}).
+   */
+  public static final List<String> LIBRARY = List.of(
+      "lrmate200id", "lrmate200id4s", "er4ia", "m10ia", "m10id12", "m20ia", "r2000ic165f", "crx10ia", "crx10ial");
+
+  /**
+   * A library entry's facts for listings: what the file says besides the chain.
+   *
+   * @param id library id
+   * @param name model name
+   * @param payloadKg rated payload (kg), NaN when the file does not say
+   * @param reachMm reach (mm) as the file states it, NaN when it does not
+   * @param source where the numbers come from
+   */
+  public record Entry(String id, String name, double payloadKg, double reachMm, String source) {}
+
+  /**
+   * Loads a robot by what a scenario's {@code model} field holds: a library id (e.g.
+   * "lrmate200id"), or a path to a robot file ({@code .json}, RobotRun's own format). A relative
+   * path is taken against {@code baseDir} (the scenario's folder; null: the working directory).
+   * This is the one place a model name becomes a model: other file kinds (URDF) are added here.
+   *
+   * @throws FileFormatException naming the file (or the library) and what is wrong
+   */
+  public static RobotModel resolve(String model, Path baseDir) {
+    if (!isPath(model)) {
+      return load(model);
+    }
+    Path file;
+    try {
+      file = baseDir == null ? Path.of(model) : baseDir.resolve(model);
+    } catch (InvalidPathException e) {
+      throw new FileFormatException(model, 0, "not a valid path");
+    }
+    String lower = model.toLowerCase(Locale.ROOT);
+    if (lower.endsWith(".urdf")) {
+      throw new FileFormatException(file.toString(), 0,
+          "URDF robot files are not read directly yet: import it with 'robotrun robot import' and name the .json it writes");
+    }
+    return loadFile(file.toAbsolutePath().normalize());
+  }
+
+  /** Whether a model name is a file path (has an extension or a separator) rather than a library id. */
+  public static boolean isPath(String model) {
+    String lower = model.toLowerCase(Locale.ROOT);
+    return lower.endsWith(".json") || lower.endsWith(".urdf") || model.contains("/") || model.contains("\\");
+  }
+
+  /**
+   * Loads a robot by id or by absolute path (what a loaded scenario's robot holds after
+   * {@link #resolve}): the function the simulation builders take.
+   */
   public static RobotModel load(String id) {
+    if (isPath(id)) {
+      return resolve(id, null);
+    }
     String path = "/robots/" + id + ".json";
     try (InputStream in = RobotDefinitions.class.getResourceAsStream(path)) {
-      if (in == null) {
-        throw new FileFormatException(path, 0, "no robot definition named '" + id + "'");
+      if (in == null || !id.matches("[a-z0-9_]+")) {
+        throw new FileFormatException(path, 0, "no robot definition named '" + id + "' (library: "
+            + String.join(", ", LIBRARY) + ")");
       }
       return parse(path, JSON.readTree(in));
     } catch (JsonParseException e) {
@@ -44,12 +101,57 @@ public final class RobotDefinitions {
     }
   }
 
+  /** Loads a RobotRun robot file (JSON, the library's format) from disk. */
+  public static RobotModel loadFile(Path file) {
+    String name = file.toString();
+    if (!Files.isRegularFile(file)) {
+      throw new FileFormatException(name, 0, "robot file not found (paths are relative to the scenario file)");
+    }
+    try {
+      String text = BoundedFiles.readUtf8(file, MAX_FILE_BYTES, "robot files");
+      return parse(name, JSON.readTree(text));
+    } catch (JsonParseException e) {
+      throw new FileFormatException(name, e.getLocation().getLineNr(), e.getOriginalMessage());
+    } catch (UnreadableFileException e) {
+      throw new FileFormatException(name, 0, e.getMessage());
+    } catch (IOException e) {
+      throw new FileFormatException(name, 0, "cannot read: " + e.getMessage());
+    }
+  }
+
+  /** Largest robot file read (the library's are under 8 KiB). */
+  public static final long MAX_FILE_BYTES = 4L << 20;
+
+  /** The library's entries, in {@link #LIBRARY} order. */
+  public static List<Entry> library() {
+    List<Entry> out = new ArrayList<>();
+    for (String id : LIBRARY) {
+      String path = "/robots/" + id + ".json";
+      try (InputStream in = RobotDefinitions.class.getResourceAsStream(path)) {
+        JsonNode root = JSON.readTree(in);
+        out.add(new Entry(id, root.path("name").asText(id), root.path("payloadKg").asDouble(Double.NaN),
+            root.path("reachMm").asDouble(Double.NaN), root.path("source").asText("")));
+      } catch (IOException | RuntimeException e) {
+        throw new FileFormatException(path, 0, "cannot read the library entry: " + e.getMessage());
+      }
+    }
+    return out;
+  }
+
   /** The default robot. */
   public static RobotModel defaultRobot() {
     return load(DEFAULT_ROBOT);
   }
 
   static RobotModel parse(String source, JsonNode root) {
+    try {
+      return parseChecked(source, root);
+    } catch (IllegalArgumentException e) {
+      throw new FileFormatException(source, 0, e.getMessage());
+    }
+  }
+
+  private static RobotModel parseChecked(String source, JsonNode root) {
     Reader r = new Reader(source);
     List<JointSpec> joints = new ArrayList<>();
     JsonNode js = r.array(root, "joints");
@@ -97,23 +199,10 @@ public final class RobotDefinitions {
       links.add(new LinkSpec(r.text(l, "name", at), shapes));
     }
 
-    Optional<OpwParameters> opw = Optional.empty();
-    if (root.has("opw")) {
-      JsonNode o = root.get("opw");
-      double[] offsets = Angles.toRadians(r.numbers(o, "offsets", "opw", 6));
-      double[] signsD = r.numbers(o, "signs", "opw", 6);
-      int[] signs = new int[6];
-      for (int i = 0; i < 6; i++) {
-        signs[i] = (int) signsD[i];
-      }
-      opw = Optional.of(new OpwParameters(
-          r.number(o, "a1", "opw"), r.number(o, "a2", "opw"), r.number(o, "b", "opw"),
-          r.number(o, "c1", "opw"), r.number(o, "c2", "opw"), r.number(o, "c3", "opw"),
-          r.number(o, "c4", "opw"), offsets, signs));
-    }
     try {
-      return new RobotModel(
-          r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links, opw,
+      // The closed form's parameters come from the chain (OpwDerivation), never from the file.
+      return RobotModel.fromChain(
+          r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links,
           root.path("coupledJ3").asBoolean(false));
     } catch (IllegalArgumentException e) {
       throw new FileFormatException(source, 0, e.getMessage());

@@ -6,7 +6,8 @@ import java.util.List;
 import java.util.Optional;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import org.robotrun.robot.ClosedFormIk;
+import org.robotrun.robot.IkSolver;
+import org.robotrun.robot.NumericSolver;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.KinematicChain;
@@ -59,7 +60,8 @@ public final class MotionRunner {
   private final RobotModel model;
   private final MotionLimits limits;
   private final PoseTracker tracker;
-  private final Optional<ClosedFormIk> closedForm;
+  /** The arm's own solver for the ends of Cartesian moves; empty for a numeric-only arm (tracked instead). */
+  private final Optional<IkSolver> closedForm;
   private final MotionListener listener;
 
   private final double[] q;
@@ -93,7 +95,8 @@ public final class MotionRunner {
     this.model = model;
     this.limits = limits;
     this.tracker = new PoseTracker(model);
-    this.closedForm = model.opw().map(p -> new ClosedFormIk(model));
+    IkSolver solver = IkSolver.forModel(model);
+    this.closedForm = solver instanceof NumericSolver ? Optional.empty() : Optional.of(solver);
     this.listener = listener;
     this.q = q0.clone();
   }
