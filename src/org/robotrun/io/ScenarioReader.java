@@ -239,7 +239,8 @@ public final class ScenarioReader {
           error(nameLine, at + ".name", "robot names '" + clash + "' and '" + robotName
               + "' would share one programs folder in a workspace; give the robots names that differ in letters or digits");
         }
-        Optional<RobotModel> model = string(r, "model", at, true).flatMap(m -> model(m, r, at));
+        Optional<String> modelText = string(r, "model", at, true);
+        Optional<RobotModel> model = modelText.flatMap(m -> model(m, r, at));
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
         double[] jointsRad = joints(r, at, model);
@@ -250,7 +251,7 @@ public final class ScenarioReader {
         Optional<String> ownMain = mainProgram(r, at);
         List<RobotSetup.Macro> macros = macros(r, at);
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
-          out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
+          out.add(new RobotSetup(robotName, modelKey(modelText.get()), X_CB, tool,
               Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros));
         }
       }
@@ -405,17 +406,31 @@ public final class ScenarioReader {
       return (int) n.value();
     }
 
+    /** What a robot setup keeps of its model: the library id, or a robot file's absolute path. */
+    private String modelKey(String text) {
+      return RobotDefinitions.isPath(text) ? dir.resolve(text).toAbsolutePath().normalize().toString() : text;
+    }
+
+    /** The model a robot names: a library id or a robot file (relative to the scenario), via {@link RobotDefinitions#resolve}. */
     private Optional<RobotModel> model(String id, JObject r, String at) {
       if (models.containsKey(id)) {
         return Optional.of(models.get(id));
       }
       try {
-        RobotModel m = RobotDefinitions.load(id);
+        RobotModel m = RobotDefinitions.resolve(id, dir);
         models.put(id, m);
         return Optional.of(m);
       } catch (FileFormatException e) {
-        error(r.members().get("model").line(), at + ".model", "unknown robot model '" + id + "' (e.g. \""
-            + RobotDefinitions.DEFAULT_ROBOT + "\")");
+        int line = r.members().get("model").line();
+        if (RobotDefinitions.isPath(id)) {
+          error(line, at + ".model", "cannot load robot file '" + id + "': " + e.getMessage());
+        } else {
+          error(line, at + ".model", "unknown robot model '" + id + "': expected a library id ("
+              + String.join(", ", RobotDefinitions.LIBRARY) + ") or a path to a robot .json file");
+        }
+        return Optional.empty();
+      } catch (java.nio.file.InvalidPathException e) {
+        error(r.members().get("model").line(), at + ".model", "not a valid path: \"" + id + "\"");
         return Optional.empty();
       }
     }

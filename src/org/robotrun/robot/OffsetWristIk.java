@@ -63,6 +63,8 @@ public final class OffsetWristIk implements IkSolver {
   /** A grid interval that may hold a root cluster is split SPLIT ways, SPLIT_LEVELS times. */
   private static final int SPLIT = 8;
   private static final int SPLIT_LEVELS = 2;
+  /** Below this |det| (units of L2³) the elbow is also solved in the plane perpendicular to the J5 axis. */
+  private static final double DEGENERATE = 1e-4;
   /** Golden-section steps when looking for a touching root in one grid interval. */
   private static final int GOLDEN_STEPS = 34;
   /** A minimum of |g| below this fraction of the slope bound is a touching-root candidate. */
@@ -566,15 +568,50 @@ public final class OffsetWristIk implements IkSolver {
 
   /** Both postures of one root: O3 and O5 from g's last evaluation at t. */
   private void postures(double t) {
-    g(Math.cos(t), Math.sin(t));
-    if (Math.abs(lastDet) < 1e-12) {
-      return;
-    }
+    double c = Math.cos(t), sn = Math.sin(t);
+    g(c, sn);
     double l2 = lay.l2();
     Vec3 p0 = lay.p0();
-    ox3 = p0.x() + l2 * ex3 / lastDet;
-    oy3 = p0.y() + l2 * ey3 / lastDet;
-    oz3 = p0.z() + l2 * ez3 / lastDet;
+    double px = ox5, py = oy5, pz = oz5;
+    double det = lastDet;
+    if (Math.abs(det) > 1e-12) {
+      elbow(p0.x() + l2 * ex3 / det, p0.y() + l2 * ey3 / det, p0.z() + l2 * ez3 / det, px, py, pz);
+    }
+    if (Math.abs(det) < DEGENERATE) {
+      // The J5 axis (nearly) perpendicular to the arm plane (J4 near 0 or 180°, a common taught
+      // posture): the three equations are dependent there and Cramer's rule says nothing, but
+      // the elbow is then a plain two-link problem in the plane with normal v through P0.
+      double vx = c * e1x + sn * e2x, vy = c * e1y + sn * e2y, vz = c * e1z + sn * e2z;
+      double dv = px * vx + py * vy + pz * vz;
+      double dx = px - dv * vx, dy = py - dv * vy, dz = pz - dv * vz;
+      double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
+      double l3 = lay.l3() / l2;
+      if (d > 1e-12) {
+        double a = (1 - l3 * l3 + d * d) / (2 * d);
+        double h2 = 1 - a * a;
+        if (h2 > -1e-9) {
+          double h = Math.sqrt(Math.max(0, h2));
+          double ux = dx / d, uy = dy / d, uz = dz / d;
+          double wx = vy * uz - vz * uy, wy = vz * ux - vx * uz, wz = vx * uy - vy * ux;
+          for (int s = -1; s <= 1; s += 2) {
+            elbow(p0.x() + l2 * (a * ux + s * h * wx), p0.y() + l2 * (a * uy + s * h * wy),
+                p0.z() + l2 * (a * uz + s * h * wz), px, py, pz);
+          }
+        }
+      }
+    }
+  }
+
+  /** Both postures (J1 and J1 + 180°) of one elbow O3 (mm, B) with O5 = P0 + L2·(px, py, pz). */
+  private void elbow(double e3x, double e3y, double e3z, double px, double py, double pz) {
+    double l2 = lay.l2();
+    Vec3 p0 = lay.p0();
+    ox3 = e3x;
+    oy3 = e3y;
+    oz3 = e3z;
+    ox5 = px;
+    oy5 = py;
+    oz5 = pz;
     double o5x = p0.x() + l2 * ox5, o5y = p0.y() + l2 * oy5, o5z = p0.z() + l2 * oz5;
     // Arm plane normal: z1 × (O5 − P0), else z1 × (O3 − P0); on the axis J1 is free (0).
     Vec3 z = lay.z1();
