@@ -27,13 +27,18 @@ import org.robotrun.math.Vec3;
  * the two sphere equations |O3| = L2, |O3 − O5| = L3), {@code O3·v = O5·v} (J4 ⟂ J5) and
  * {@code O3·(z1 × O5) = 0} (the arm plane contains the J1 axis); Cramer's rule gives
  * {@code det·O3 = X(t)}, and the remaining equation |O3| = L2 becomes
- * {@code g(t) = |X(t)|² − L2²·det(t)² = 0}, a smooth scalar function with no branches. g is
- * sampled at {@link #SAMPLES} angles; each sign change is refined by the Illinois method to
- * 1e-15 rad, and each sample where |g| has a small local minimum without a sign change is
- * searched for a touching or a close pair of roots (golden section). Every root gives one O3
+ * {@code g(t) = |X(t)|² − L2²·det(t)² = 0}, a smooth scalar function with no branches: a
+ * trigonometric polynomial of degree 4 (as mattj23/crx-kinematics also reports for its form of
+ * the constraint), so at most 8 roots per turn. Its 9 Fourier coefficients come exactly from 16
+ * samples; the Fourier form is scanned on a 128-point grid, and an interval is halved (up to 14
+ * times) while a bound on g'' says it may hide more roots than its end values show; each root
+ * is refined by the Illinois method, and a minimum of |g| that nearly touches zero is a
+ * candidate. Every root (for J4 near 0° or 180°, where the three equations become dependent,
+ * also the elbow solved as a plane two-link problem) gives one O3
  * and two postures (J1 and J1 + 180° with the shoulder mirrored); each posture's joints follow
- * joint by joint (a rotation of a known vector onto a known vector per joint), and each is kept
- * only when the chain's FK reproduces the target (1e-6 mm, 1e-9 rad).
+ * joint by joint (a rotation of a known vector onto a known vector per joint), are polished by a
+ * few Newton steps on the pose, and are kept only when the chain's FK reproduces the target
+ * (1e-6 mm, 1e-9 rad).
  *
  * <h2>CONFIG and branch choice</h2>
  * The flags are {@link ChainConfig}'s (F: J5 &gt; 0; U: the wrist point O5 on the forward side
@@ -60,15 +65,16 @@ public final class OffsetWristIk implements IkSolver {
   private static final double ANGLE_TOL = 1e-9;
   private static final double LENGTH_TOL = 1e-6;
   private static final double LIMIT_SLACK = 1e-9;
-  /** A grid interval that may hold a root cluster is split SPLIT ways, SPLIT_LEVELS times. */
-  private static final int SPLIT = 8;
-  private static final int SPLIT_LEVELS = 2;
+  /** A grid interval that may hold more roots than it shows is halved up to this many times. */
+  private static final int SPLIT_LEVELS = 14;
   /** Below this |det| (units of L2³) the elbow is also solved in the plane perpendicular to the J5 axis. */
   private static final double DEGENERATE = 1e-4;
   /** Golden-section steps when looking for a touching root in one grid interval. */
   private static final int GOLDEN_STEPS = 34;
   /** A minimum of |g| below this fraction of the slope bound is a touching-root candidate. */
   private static final double TOUCH = 1e-5;
+  /** Touching-root candidates closer than this (rad) to a root or candidate are left out. */
+  private static final double CANDIDATE_SPACING = 1e-4;
   /** cos(k·t), sin(k·t) for k = 0..DEGREE on the fit and scan grids. */
   private static final double[][] FIT_COS = new double[DEGREE + 1][FIT];
   private static final double[][] FIT_SIN = new double[DEGREE + 1][FIT];
@@ -109,8 +115,8 @@ public final class OffsetWristIk implements IkSolver {
   /** g(t) = ca[0] + Σ ca[k]·cos kt + sb[k]·sin kt. */
   private final double[] ca = new double[DEGREE + 1];
   private final double[] sb = new double[DEGREE + 1];
-  /** Bernstein: |g'| ≤ DEGREE·max|g| ≤ DEGREE·Σ|coefficients|. */
-  private double slopeBound;
+  /** Σ k²·|c_k| ≥ max |g''|. */
+  private double curvatureBound;
   private final double[] jac = new double[36];
   private final double[] jacScratch = new double[Jacobian.SCRATCH];
   private final double[] err = new double[6];
@@ -363,7 +369,7 @@ public final class OffsetWristIk implements IkSolver {
     for (int j = 0; j < FIT; j++) {
       fit[j] = g(FIT_COS[1][j], FIT_SIN[1][j]);
     }
-    double bound = 0;
+    curvatureBound = 0;
     for (int k = 0; k <= DEGREE; k++) {
       double a = 0, b = 0;
       for (int j = 0; j < FIT; j++) {
@@ -372,9 +378,8 @@ public final class OffsetWristIk implements IkSolver {
       }
       ca[k] = (k == 0 ? 1.0 : 2.0) * a / FIT;
       sb[k] = k == 0 ? 0 : 2.0 * b / FIT;
-      bound += Math.abs(ca[k]) + Math.abs(sb[k]);
+      curvatureBound += k * k * Math.hypot(ca[k], sb[k]);
     }
-    slopeBound = DEGREE * bound;
     for (int j = 0; j < SAMPLES; j++) {
       double v = ca[0];
       for (int k = 1; k <= DEGREE; k++) {
@@ -420,30 +425,6 @@ public final class OffsetWristIk implements IkSolver {
 
   private double lastDet;
 
-  /** The roots of the last search (diagnostics for tests). */
-  double[] lastRoots() {
-    return java.util.Arrays.copyOf(roots, rootCount);
-  }
-
-  /** g over one turn at n angles after setting up the target (diagnostics for tests). */
-  double[] gCurve(Transform X_BF, int n) {
-    solveAll(X_BF);
-    double[] out = new double[n];
-    for (int k = 0; k < n; k++) {
-      out[k] = gAt(k * TWO_PI / n);
-    }
-    return out;
-  }
-
-  /** The search angle t of a joint vector's wrist point (diagnostics for tests). */
-  double angleOf(double[] q) {
-    Transform[] L = ForwardKinematics.linkPosesInBase(model, q);
-    solveAll(ForwardKinematics.flangePoseInBase(model, q));
-    double dx = L[5].x() - o6x, dy = L[5].y() - o6y, dz = L[5].z() - o6z;
-    double t = Math.atan2(dx * e2x + dy * e2y + dz * e2z, dx * e1x + dy * e1y + dz * e1z);
-    return t < 0 ? t + TWO_PI : t;
-  }
-
   /** g(t) from its Fourier form. */
   private double gAt(double t) {
     double c1 = Math.cos(t), s1 = Math.sin(t);
@@ -458,39 +439,38 @@ public final class OffsetWristIk implements IkSolver {
   }
 
   /**
-   * Roots of g in one grid interval [a, b]. A sign change is refined. Without one, the interval
-   * may still hold a touching root or a close pair only if |g(a)| + |g(b)| ≤ slope bound ·
-   * width (Bernstein's inequality for trigonometric polynomials: |g'| ≤ degree · max |g|); then
-   * the minimum of |g| there is found (golden section): if g changes sign at it, both roots are
-   * refined; if it nearly touches zero, it is a candidate that {@link #polish} confirms or drops
-   * (the roots of a cluster are only known to about the square root of the rounding).
+   * Roots of g in [a, b] (a grid interval, then its halves). With M2 = Σ k²·|c_k| ≥ |g''|:
+   * without a sign change, g cannot reach zero when min(|g(a)|, |g(b)|) &gt; w²/8 · M2 (it lies
+   * within that of the chord); with one, there is exactly one root when |g'(mid)| &gt; w/2 · M2
+   * (g is monotone there). Otherwise the interval is halved, down to {@link #SPLIT_LEVELS}; a
+   * last interval with a sign change is refined, one without is searched for the minimum of |g|
+   * (golden section): a sign change there gives both roots, a near-zero minimum a touching-root
+   * candidate that {@link #polish} confirms or drops (the roots of a cluster are only known to
+   * about the square root of the rounding).
    */
   private void scan(double a, double b, double ga, double gb, int depth) {
     if (ga == 0) {
       addRoot(a);
       return;
     }
-    if (ga * gb < 0) {
-      addRoot(illinois(a, b, ga, gb));
-      return;
-    }
-    if (Math.abs(ga) + Math.abs(gb) > slopeBound * (b - a)) {
+    double w = b - a;
+    boolean change = ga * gb < 0;
+    if (change) {
+      if (depth >= SPLIT_LEVELS || Math.abs(gDerivativeAt(0.5 * (a + b))) > 0.5 * w * curvatureBound) {
+        addRoot(illinois(a, b, ga, gb));
+        return;
+      }
+    } else if (Math.min(Math.abs(ga), Math.abs(gb)) > 0.125 * w * w * curvatureBound) {
       return;
     }
     if (depth < SPLIT_LEVELS) {
-      // A cluster of roots closer than the grid: look again on a finer grid here.
-      double w = (b - a) / SPLIT;
-      double gl = ga;
-      for (int k = 1; k <= SPLIT; k++) {
-        double x = k == SPLIT ? b : a + k * w;
-        double gx = k == SPLIT ? gb : gAt(x);
-        scan(a + (k - 1) * w, x, gl, gx, depth + 1);
-        gl = gx;
-      }
+      double m = 0.5 * (a + b);
+      double gm = gAt(m);
+      scan(a, m, ga, gm, depth + 1);
+      scan(m, b, gm, gb, depth + 1);
       return;
     }
-    double sign = Math.signum(ga);
-    final double r = 0.5 * (Math.sqrt(5) - 1);
+    double sign = Math.signum(ga);    final double r = 0.5 * (Math.sqrt(5) - 1);
     double lo = a, hi = b;
     double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo);
     double f1 = sign * gAt(x1), f2 = sign * gAt(x2);
@@ -514,9 +494,24 @@ public final class OffsetWristIk implements IkSolver {
     if (fm <= 0) {
       addRoot(illinois(a, tm, ga, sign * fm));
       addRoot(illinois(tm, b, sign * fm, gb));
-    } else if (fm < TOUCH * slopeBound && tm - a > 1e-3 * (b - a) && b - tm > 1e-3 * (b - a)) {
+    } else if (fm < TOUCH * curvatureBound && tm - a > 1e-3 * (b - a) && b - tm > 1e-3 * (b - a)
+        && !nearRoot(tm, CANDIDATE_SPACING)) {
+      // In a flat stretch rounding makes many tiny minima: one candidate per CANDIDATE_SPACING.
       addRoot(tm);
     }
+  }
+
+  /** g'(t) from the Fourier form. */
+  private double gDerivativeAt(double t) {
+    double c1 = Math.cos(t), s1 = Math.sin(t);
+    double c = c1, sn = s1, v = -ca[1] * s1 + sb[1] * c1;
+    for (int k = 2; k <= DEGREE; k++) {
+      double nc = c * c1 - sn * s1, ns = sn * c1 + c * s1;
+      c = nc;
+      sn = ns;
+      v += k * (-ca[k] * sn + sb[k] * c);
+    }
+    return v;
   }
 
   /** Illinois false position on a bracket of the Fourier form. */
@@ -553,6 +548,15 @@ public final class OffsetWristIk implements IkSolver {
       }
     }
     return 0.5 * (a + b);
+  }
+
+  private boolean nearRoot(double t, double within) {
+    for (int r = 0; r < rootCount; r++) {
+      if (Math.abs(ClosedFormIk.wrap(roots[r] - t)) < within) {
+        return true;
+      }
+    }
+    return false;
   }
 
   private void addRoot(double t) {
