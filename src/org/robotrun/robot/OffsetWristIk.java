@@ -71,7 +71,7 @@ public final class OffsetWristIk implements IkSolver {
   private static final double DEGENERATE = 1e-4;
   /** Golden-section steps when looking for a touching root in one grid interval. */
   private static final int GOLDEN_STEPS = 34;
-  /** A minimum of |g| below this fraction of the slope bound is a touching-root candidate. */
+  /** A minimum of |g| below this fraction of the curvature bound is a touching-root candidate. */
   private static final double TOUCH = 1e-5;
   /** Touching-root candidates closer than this (rad) to a root or candidate are left out. */
   private static final double CANDIDATE_SPACING = 1e-4;
