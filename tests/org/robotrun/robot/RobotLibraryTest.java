@@ -185,6 +185,20 @@ class RobotLibraryTest {
 
   @ParameterizedTest
   @MethodSource("models")
+  void theGeometricConfigFlagsEqualTheClosedFormsOnEveryOpwArm(String id) {
+    RobotModel model = RobotDefinitions.load(id);
+    if (model.opw().isEmpty()) {
+      return;
+    }
+    ClosedFormIk closed = new ClosedFormIk(model);
+    ChainConfig chain = new ChainConfig(new KinematicChain(model));
+    for (double[] q : randomJoints(model, FACTS.get(id), 2000, 7 + id.hashCode())) {
+      assertThat(chain.configOf(q)).as(id).isEqualTo(closed.configOf(q));
+    }
+  }
+
+  @ParameterizedTest
+  @MethodSource("models")
   void ikRoundTripsTwoThousandTargetsInTheirConfig(String id) {
     RobotModel model = RobotDefinitions.load(id);
     IkSolver solver = IkSolver.forModel(model);
