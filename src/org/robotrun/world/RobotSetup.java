@@ -65,6 +65,11 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
     return new RobotSetup(name, modelId, X_CB, endEffector, jointsRad, toolIo, io, userAlarms, programs, mainProgram, macros);
   }
 
+  /** This robot as another model (a library id or a robot file's absolute path); everything else kept. */
+  public RobotSetup withModel(String model) {
+    return new RobotSetup(name, model, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, macros);
+  }
+
   /** This robot with other programs of its own and main program. */
   public RobotSetup withPrograms(List<java.nio.file.Path> files, java.util.Optional<String> main) {
     return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main, macros);
