@@ -61,7 +61,7 @@ public final class MotionRunner {
   private final MotionLimits limits;
   private final PoseTracker tracker;
   /** The arm's own solver for the ends of Cartesian moves; empty for a numeric-only arm (tracked instead). */
-  private final Optional<IkSolver> closedForm;
+  private final Optional<IkSolver> allSolutions;
   private final MotionListener listener;
 
   private final double[] q;
@@ -96,7 +96,7 @@ public final class MotionRunner {
     this.limits = limits;
     this.tracker = new PoseTracker(model);
     IkSolver solver = IkSolver.forModel(model);
-    this.closedForm = solver instanceof NumericSolver ? Optional.empty() : Optional.of(solver);
+    this.allSolutions = solver instanceof NumericSolver ? Optional.empty() : Optional.of(solver);
     this.listener = listener;
     this.q = q0.clone();
   }
@@ -606,14 +606,14 @@ public final class MotionRunner {
     };
   }
 
-  /** The joints at the end of a Cartesian move (closed form, the branch nearest the current joints); null after a fault. */
+  /** The joints at the end of a Cartesian move (the arm's solver, the branch nearest the current joints); null after a fault. */
   private double[] jointsAtEnd(Segment.CartesianSegment c, long tag) {
-    if (closedForm.isEmpty()) {
+    if (allSolutions.isEmpty()) {
       double[] qq = qCart.clone();
       return tracker.track(qq, c.X_WEnd, c.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD) ? qq : null;
     }
     Transform X_BF = model.X_WB().inverse().compose(c.X_WEnd).compose(c.X_FT.inverse());
-    IkResult r = closedForm.get().solveNearest(X_BF, qCart);
+    IkResult r = allSolutions.get().solveNearest(X_BF, qCart);
     if (r instanceof IkResult.Solved sol) {
       return sol.q();
     }
@@ -690,11 +690,11 @@ public final class MotionRunner {
   }
 
   private boolean reachable(Transform X_WT, Transform X_FT, long tag, String what) {
-    if (closedForm.isEmpty()) {
+    if (allSolutions.isEmpty()) {
       return true;
     }
     Transform X_BF = model.X_WB().inverse().compose(X_WT).compose(X_FT.inverse());
-    IkResult r = closedForm.get().solveNearest(X_BF, q);
+    IkResult r = allSolutions.get().solveNearest(X_BF, q);
     if (r instanceof IkResult.Unreachable u) {
       MotionFault.Kind kind = u.reason() == IkResult.Reason.JOINT_LIMIT
           ? MotionFault.Kind.JOINT_LIMIT : MotionFault.Kind.OUT_OF_REACH;
