@@ -11,7 +11,7 @@ import org.robotrun.io.LsReader;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Xyzwpr;
-import org.robotrun.motion.JogFrame;
+import org.robotrun.control.RobotControl;
 import org.robotrun.motion.JogState;
 import org.robotrun.program.Program;
 import org.robotrun.robot.Config;
@@ -95,13 +95,13 @@ class RobotLibraryCellTest {
   void jogsInEveryFrameMoveTheArmWithoutChangingItsConfig(String id) {
     RobotModel m = RobotDefinitions.load(id);
     IkSolver ik = IkSolver.forModel(m);
-    for (JogFrame frame : JogFrame.values()) {
+    for (RobotControl.CoordSystem frame : RobotControl.CoordSystem.values()) {
       // Each frame from the program's end pose (off every singularity).
       Simulation sim = DefaultCell.simulation(m);
       Controller c = sim.controllers().get(0);
       c.saveProgram(program(m));
       assertThat(HeadlessRun.run(sim, c, "SHORT", 60, s -> {}).status()).isEqualTo(HeadlessRun.Status.FINISHED);
-      c.setMode(OperatingMode.T1);
+      c.setMode(RobotControl.Mode.T1);
       c.setDeadman(true);
       c.setOverridePct(50);
       c.setCoordSystem(frame);
@@ -110,7 +110,7 @@ class RobotLibraryCellTest {
         Config before = ik.configOf(q0);
         Xyzwpr p0 = c.tcpInWorld();
         assertThat(c.jogKeyDown(axis, +1, JogState.Press.HELD)).as("%s %s axis %d", id, frame, axis)
-            .isInstanceOf(CommandResult.Ok.class);
+            .isInstanceOf(RobotControl.Result.Ok.class);
         for (int i = 0; i < 150; i++) {
           sim.step();
         }
@@ -122,7 +122,7 @@ class RobotLibraryCellTest {
         Xyzwpr p1 = c.tcpInWorld();
         String what = id + " " + frame + " axis " + axis;
         assertThat(c.alarmHistory()).as(what).isEmpty();
-        if (frame == JogFrame.JOINT) {
+        if (frame == RobotControl.CoordSystem.JOINT) {
           assertThat(q1[axis - 1] - q0[axis - 1]).as(what).isGreaterThan(0.01);
         } else {
           double moved = axis <= 3
@@ -133,7 +133,7 @@ class RobotLibraryCellTest {
           assertThat(after.sameBranch(before)).as(what + ": " + before + " -> " + after).isTrue();
         }
         // Back where it started, so each axis starts off the singularities too.
-        assertThat(c.jogKeyDown(axis, -1, JogState.Press.HELD)).isInstanceOf(CommandResult.Ok.class);
+        assertThat(c.jogKeyDown(axis, -1, JogState.Press.HELD)).isInstanceOf(RobotControl.Result.Ok.class);
         for (int i = 0; i < 150; i++) {
           sim.step();
         }
