@@ -28,6 +28,7 @@ import picocli.CommandLine.Command;
       GradeCommand.class,
       BenchCommand.class,
       RobotCommand.class,
+      RobotsCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class Main implements java.util.concurrent.Callable<Integer> {

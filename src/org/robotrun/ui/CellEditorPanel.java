@@ -128,6 +128,7 @@ public final class CellEditorPanel {
       keepSelection();
     }
     drawScenarios();
+    drawRobotModels();
     ImGui.separator();
     if (ImGui.button("Add box")) {
       addAndSelect(editor.addBox());
@@ -171,6 +172,46 @@ public final class CellEditorPanel {
       List<WorldObject> all = editor.world().objects();
       selected = all.get(all.size() - 1).name();
     }
+  }
+
+  /** One model choice per robot of the active scenario (only in a workspace: the cell is opened again). */
+  private void drawRobotModels() {
+    if (!inWorkspace) {
+      return;
+    }
+    var robots = editor.active().robots();
+    for (int i = 0; i < robots.size(); i++) {
+      var r = robots.get(i);
+      Txt.disabled("Robot " + r.name());
+      ImGui.setNextItemWidth(-1);
+      if (ImGui.beginCombo("##model" + i, modelName(r.modelId()))) {
+        for (org.robotrun.io.RobotDefinitions.Entry e : org.robotrun.io.RobotDefinitions.library()) {
+          if (ImGui.selectable(e.name() + "##m" + i + e.id(), e.id().equals(r.modelId()))) {
+            report(editor.setRobotModel(i, e.id(), jointsFor(e.id(), r.initialJointsRad())));
+          }
+        }
+        ImGui.endCombo();
+      }
+      if (ImGui.isItemHovered()) {
+        Txt.tooltip("Choosing another model opens the cell again with it (the robot starts at its scenario joints,"
+            + " or at HOME where those are outside the new model's limits). Your programs stay.");
+      }
+    }
+  }
+
+  private static String modelName(String id) {
+    return org.robotrun.io.RobotDefinitions.library().stream().filter(e -> e.id().equals(id)).map(e -> e.name())
+        .findFirst().orElse(id);
+  }
+
+  /** The robot's joints if the new model allows them, else HOME (pendant convention, rad). */
+  private static List<Double> jointsFor(String modelId, List<Double> pendantRad) {
+    org.robotrun.robot.RobotModel m = org.robotrun.io.RobotDefinitions.load(modelId);
+    double[] p = pendantRad.stream().mapToDouble(Double::doubleValue).toArray();
+    if (m.firstJointOutsideLimits(org.robotrun.robot.JointConvention.pendantToKinematic(m, p)) < 0) {
+      return pendantRad;
+    }
+    return List.of(0.0, 0.0, 0.0, 0.0, -Math.PI / 2, 0.0);
   }
 
   private void drawScenarios() {

@@ -47,6 +47,16 @@ public final class Workbench implements SimulatorWindow.Panels {
     double[] pendantDeg();
 
     Xyzwpr flangeInWorld();
+
+    /** The robot's model name (e.g. "FANUC CRX-10iA"); empty when unknown. */
+    default String modelName() {
+      return "";
+    }
+
+    /** The joints' names as the model's file gives them (J1..J6 on FANUC arms). */
+    default java.util.List<String> jointNames() {
+      return java.util.List.of("J1", "J2", "J3", "J4", "J5", "J6");
+    }
   }
 
   private final OrbitCamera camera;
@@ -402,7 +412,7 @@ public final class Workbench implements SimulatorWindow.Panels {
       }
       state.robotOpen = section("Robot", state.robotOpen);
       if (state.robotOpen) {
-        RobotStatusPanel.drawContents(robot.pendantDeg(), robot.flangeInWorld());
+        RobotStatusPanel.drawContents(robot.modelName(), robot.jointNames(), robot.pendantDeg(), robot.flangeInWorld());
       }
       state.cellOpen = section("Cell", state.cellOpen);
       if (state.cellOpen) {

@@ -450,6 +450,27 @@ public final class CellEditor {
     return apply(new State(List.copyOf(out), out.size() - 1), "scenario " + n + " added");
   }
 
+  /**
+   * Robot {@code index} (cell order) of the active scenario becomes model {@code modelId} (a
+   * library id), standing at {@code jointsRad} (pendant convention; the caller knows the new
+   * model's limits). The window then opens the cell again with it.
+   */
+  public Result setRobotModel(int index, String modelId, List<Double> jointsRad) {
+    Scenario a = active();
+    if (index < 0 || index >= a.robots().size()) {
+      return refused("robot: expected 1 to " + a.robots().size() + ", got " + (index + 1));
+    }
+    RobotSetup r = a.robots().get(index);
+    if (r.modelId().equals(modelId)) {
+      return new Result.Done("");
+    }
+    List<RobotSetup> robots = new ArrayList<>(a.robots());
+    robots.set(index, r.withModel(modelId).withJoints(jointsRad));
+    List<Scenario> out = new ArrayList<>(state.scenarios);
+    out.set(state.active, a.withRobots(robots));
+    return apply(new State(List.copyOf(out), state.active), r.name() + " is now " + modelId);
+  }
+
   /** Makes scenario {@code index} the active one. */
   public Result activate(int index) {
     if (index < 0 || index >= state.scenarios.size()) {
