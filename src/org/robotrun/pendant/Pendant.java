@@ -379,11 +379,13 @@ public final class Pendant {
       }
     }
     Result r = control.run(from, name, line, forward);
+    boolean fromLastLine = forward && line == count && count > 1;
+    int startLine = line;
     message = switch (r) {
-      case Result.Ok ok when ok.message().isEmpty() && forward && line == count && count > 1 ->
+      case Result.Ok ok when ok.message().isEmpty() && fromLastLine ->
           // the cursor stayed on the last line after a run: only that line runs, which a student
           // takes for nothing happening; say so (a deliberate addition, docs/pendant.md)
-          "Started at line " + line + ", the last line of " + name + ": for the whole program put the cursor on line 1";
+          "Started at line " + startLine + ", the last line of " + name + ": for the whole program put the cursor on line 1";
       case Result.Ok ok -> ok.message();
       case Result.Refused no -> no.reason();
     };
