@@ -536,6 +536,36 @@ public final class Pendant {
     modal = new Modal.Choice(title, options, onChoose);
   }
 
+  /** A choice list opening on item {@code current} (the field's value now), as a controller's does. */
+  void choose(String title, List<String> options, int current, IntConsumer onChoose) {
+    Modal.Choice c = new Modal.Choice(title, options, onChoose);
+    c.cursor = Math.max(0, Math.min(current, options.size() - 1));
+    modal = c;
+  }
+
+  /**
+   * The item of {@code options} a field showing {@code text} holds: the same text, else the
+   * longest item the text starts with ({@code CNT50} is {@code CNT}), else 0.
+   */
+  static int currentChoice(List<String> options, String text) {
+    String t = text.strip().toUpperCase(Locale.ROOT);
+    // an item field DO[3] matches the item DO[...]
+    String kind = t.indexOf('[') > 0 ? t.substring(0, t.indexOf('[')) : t;
+    int best = -1;
+    int bestLength = 0;
+    for (int i = 0; i < options.size(); i++) {
+      String o = options.get(i).strip().toUpperCase(Locale.ROOT).replace("[...]", "");
+      if (o.equals(t) || o.equals(kind)) {
+        return i;
+      }
+      if (!o.isEmpty() && t.startsWith(o) && o.length() > bestLength) {
+        best = i;
+        bestLength = o.length();
+      }
+    }
+    return Math.max(best, 0);
+  }
+
   /** An entry offering {@code initial}: the first typed character replaces it, ENTER keeps it. */
   void entry(String prompt, String initial, boolean letters, Function<String, Optional<String>> onEnter) {
     modal = new Modal.Entry(prompt, initial, true, letters, onEnter);
