@@ -435,9 +435,10 @@ public final class Workbench implements SimulatorWindow.Panels {
     return ImGui.collapsingHeader(title, ImGuiTreeNodeFlags.None);
   }
 
-  /** The cell editor's last message along the bottom of the 3D view, where the student looks. */
+  /** The cell editor's last message along the bottom of the 3D view, where the student looks, while it applies. */
   private void drawPromptStrip() {
-    if (editorPanel == null || editorPanel.message().isEmpty() || !editorPanel.messageIsError()) {
+    java.util.Optional<String> shown = editorPanel == null ? java.util.Optional.empty() : editorPanel.stripMessage();
+    if (shown.isEmpty()) {
       return;
     }
     WindowLayout.Rect v = layout.view();
@@ -446,7 +447,11 @@ public final class Workbench implements SimulatorWindow.Panels {
     ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), ImGui.getFontSize() * 15);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
         | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav | ImGuiWindowFlags.NoInputs)) {
-      Txt.colored(1f, 0.55f, 0.45f, 1f, editorPanel.message());
+      if (editorPanel.messageIsError()) {
+        Txt.colored(1f, 0.55f, 0.45f, 1f, shown.get());
+      } else {
+        Txt.colored(0.55f, 0.9f, 0.55f, 1f, shown.get());
+      }
     }
     ImGui.end();
   }

@@ -214,7 +214,8 @@ public final class CellEditor {
     String stem = f.substring(0, f.length() - 4).replaceAll("[^A-Za-z0-9_]", "_");
     WorldObject o = WorldObject.of(freeName(stem.isEmpty() ? "mesh" : stem), ObjectKind.FIXTURE,
         new Shape.Mesh(file, scale, mesh), Rgb.GREY, Transform.IDENTITY, Optional.empty());
-    return apply(withWorld(append(o)), "added " + o.name());
+    return apply(withWorld(append(o)), "imported " + f + " as fixture " + o.name() + " (" + mesh.triangleCount()
+        + " triangles, scale " + fmt(scale) + ")");
   }
 
   private Result addObject(String name, Shape shape) {
