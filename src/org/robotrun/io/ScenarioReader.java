@@ -509,7 +509,7 @@ public final class ScenarioReader {
           modelRefs.put(id, file.toString());
           return Optional.of(m);
         } catch (FileFormatException e) {
-          error(r.members().get("model").line(), at + ".model", "robot file '" + id + "': " + e.getMessage());
+          error(line, at + ".model", "cannot load robot file '" + id + "': " + e.getMessage());
           return Optional.empty();
         }
       }
