@@ -1,9 +1,5 @@
 package org.robotrun.app;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Locale;
@@ -12,34 +8,14 @@ import org.robotrun.grade.CheckResult;
 import org.robotrun.grade.GradeResult;
 import org.robotrun.grade.Task;
 
-/** The grading outputs as bytes: Gradescope results.json, the class CSV and the HTML report. */
+/** The grading outputs as bytes: Gradescope results.json, the class CSV, the gradebook CSVs and the HTML report. */
 final class GradeReports {
-  private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
 
   private GradeReports() {}
 
-  /**
-   * The Gradescope autograder format (score, output, tests[] with name, score, max_score,
-   * status, output, visibility); hidden checks get visibility "hidden".
-   */
+  /** The Gradescope autograder format ({@link PlatformResults#gradescope}), the student from the manifest. */
   static byte[] gradescope(Task task, GradeResult r) throws java.io.IOException {
-    ObjectNode root = JSON.createObjectNode();
-    root.put("score", round(r.score()));
-    root.put("output", task.title() + ": " + fmt(r.score()) + " of " + fmt(r.maxScore()) + " points"
-        + (r.student().isEmpty() ? "" : " (" + r.student() + ")"));
-    root.put("visibility", "visible");
-    root.put("stdout_visibility", "hidden");
-    ArrayNode tests = root.putArray("tests");
-    for (CheckResult c : r.checks()) {
-      ObjectNode t = tests.addObject();
-      t.put("name", c.name());
-      t.put("score", round(c.score()));
-      t.put("max_score", round(c.maxScore()));
-      t.put("status", c.passed() ? "passed" : "failed");
-      t.put("output", c.feedback());
-      t.put("visibility", c.hidden() ? "hidden" : "visible");
-    }
-    return JSON.writeValueAsBytes(root);
+    return PlatformResults.gradescope(task, r, r.student(), List.of(), r.wallSec());
   }
 
   /** One row per submission, one column per check (points given), RFC 4180 quoting. */

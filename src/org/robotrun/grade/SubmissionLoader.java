@@ -24,6 +24,7 @@ import java.util.zip.ZipException;
 import java.util.zip.ZipInputStream;
 import org.robotrun.io.AtomicFiles;
 import org.robotrun.io.HandIn;
+import org.robotrun.io.HandInDroppings;
 
 /**
  * Finds a submission's programs and cell: a hand-in {@code .zip} (CONTRACTS item 2: root
@@ -116,6 +117,7 @@ public final class SubmissionLoader {
       throws IOException {
     Map<String, String> hashes = new LinkedHashMap<>();
     List<String> problems = new ArrayList<>();
+    List<String> droppings = new ArrayList<>();
     long total = 0;
     try (java.util.stream.Stream<Path> s = Files.walk(dir, 3)) {
       for (Iterator<Path> it = s.iterator(); it.hasNext(); ) {
@@ -125,6 +127,10 @@ public final class SubmissionLoader {
         }
         String rel = dir.relativize(p).toString().replace('\\', '/');
         if (rel.equals("manifest.json")) {
+          continue;
+        }
+        if (HandInDroppings.isDropping(rel)) {
+          droppings.add(rel);
           continue;
         }
         if (hashes.size() >= limits.entries()) {
@@ -146,7 +152,7 @@ public final class SubmissionLoader {
       return Submission.failed(name, kind, "manifest.json: " + e.getMessage(), Optional.empty());
     }
     String student = checkManifest(manifest, hashes, problems);
-    return new Submission(name, kind, programs, cell, student, problems, Optional.empty(), Optional.empty());
+    return new Submission(name, kind, programs, cell, student, problems, Optional.empty(), Optional.empty(), droppings);
   }
 
   private Submission zip(Path file, String name) throws IOException {
@@ -154,6 +160,7 @@ public final class SubmissionLoader {
         PosixFilePermissions.asFileAttribute(PosixFilePermissions.fromString("rwx------")));
     Map<String, String> hashes = new LinkedHashMap<>();
     Map<String, byte[]> keep = new LinkedHashMap<>();
+    List<String> droppings = new ArrayList<>();
     byte[] manifest = null;
     int entries = 0;
     long total = 0;
@@ -195,6 +202,10 @@ public final class SubmissionLoader {
               + mb(limits.entryBytes()), Optional.of(temp));
         }
         total += bytes.length;
+        if (HandInDroppings.isDropping(entry)) {
+          droppings.add(entry);
+          continue;
+        }
         if (entry.equals("manifest.json")) {
           manifest = bytes;
           continue;
@@ -234,7 +245,7 @@ public final class SubmissionLoader {
     }
     Optional<Path> cell = Files.isRegularFile(temp.resolve("cell.json")) ? Optional.of(temp.resolve("cell.json")) : Optional.empty();
     return new Submission(name, Submission.Kind.ZIP, temp.resolve("programs"), cell, student, problems, Optional.empty(),
-        Optional.of(temp));
+        Optional.of(temp), droppings);
   }
 
   /** The manifest's student name; what is wrong with it goes to {@code problems}. */

@@ -228,6 +228,9 @@ public final class HandIn {
             throw new HandInException(where + ": more than " + MAX_ENTRIES + " entries");
           }
           String name = e.getName();
+          if (HandInDroppings.isDropping(name)) {
+            continue;  // __MACOSX/, .DS_Store and the like: not part of the hand-in
+          }
           if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || ROBOT_FOLDER.matcher(name).matches()
               || name.equals(Workspace.SCENARIOS + "/"))) {
             continue;
