@@ -7,7 +7,8 @@ set -u
 ROOT="${ROBOTRUN_AUTOGRADER_ROOT:-${GITHUB_WORKSPACE:-.}}"
 SOURCE="$ROOT/.robotrun"
 TASK="$SOURCE/@TASK@"
-GUARD_SECONDS="@GUARD_SECONDS@"
+# The longest a grading may take (the task's wall-clock limit plus start-up); ROBOTRUN_AUTOGRADER_GUARD_SECONDS overrides.
+GUARD_SECONDS="${ROBOTRUN_AUTOGRADER_GUARD_SECONDS:-@GUARD_SECONDS@}"
 # Each check's runner name and points, as the workflow names them.
 RUNNERS="@RUNNERS@"
 OUT="${GITHUB_OUTPUT:-/dev/stdout}"

@@ -8,7 +8,8 @@ ROOT="${ROBOTRUN_AUTOGRADER_ROOT:-/grade}"
 SOURCE="$ROOT/serverFilesCourse/robotrun"
 RESULTS="$ROOT/results/results.json"
 TASK="$ROOT/tests/@TASK@"
-GUARD_SECONDS="@GUARD_SECONDS@"
+# The longest a grading may take (the task's wall-clock limit plus start-up); ROBOTRUN_AUTOGRADER_GUARD_SECONDS overrides.
+GUARD_SECONDS="${ROBOTRUN_AUTOGRADER_GUARD_SECONDS:-@GUARD_SECONDS@}"
 mkdir -p "$ROOT/results"
 rm -f "$RESULTS"
 # $1: the message (text from this script only: no quotes or backslashes).

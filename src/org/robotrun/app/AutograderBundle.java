@@ -218,7 +218,26 @@ final class AutograderBundle {
         Files.copy(e.getValue(), p);
       }
       return switch (TaskReader.read(temp.resolve(files.task()))) {
-        case TaskLoad.Loaded l -> "";
+        case TaskLoad.Loaded l -> {
+          // Every file the task reads must be the bundle's copy, not one named by an absolute path.
+          List<String> outside = new ArrayList<>();
+          List<Path> read = new ArrayList<>(List.of(l.task().scenario()));
+          read.addAll(l.scenario().programs());
+          l.scenario().robots().forEach(r -> read.addAll(r.programs()));
+          l.scenario().world().objects().forEach(o -> {
+            if (o.shape() instanceof Shape.Mesh m) {
+              read.add(m.file());
+            }
+          });
+          Path inside = temp.toRealPath();
+          for (Path p : read) {
+            if (!p.toAbsolutePath().normalize().startsWith(inside) && !p.toAbsolutePath().normalize().startsWith(temp)) {
+              outside.add(p.toString());
+            }
+          }
+          yield outside.isEmpty() ? "" : "named by an absolute path (make it relative to the file that names it): "
+              + String.join(", ", outside);
+        }
         case TaskLoad.Failed f -> f.message();
       };
     } finally {

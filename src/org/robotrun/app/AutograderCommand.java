@@ -319,6 +319,12 @@ public final class AutograderCommand implements Runnable {
       common.report(w, b, "GitHub Classroom");
       w.println("GitHub Classroom: commit these files to the assignment's template repository; students commit "
           + "the .zip of File > Hand in and push.");
+      List<String> programs = files.files().keySet().stream().filter(f -> f.toUpperCase(Locale.ROOT).endsWith(".LS"))
+          .toList();
+      if (!programs.isEmpty()) {
+        w.println("note: the task's scenario lists programs (" + String.join(", ", programs) + "); they are in "
+            + ".robotrun/task/, which students can read: give the task a scenario without a solution in them.");
+      }
       return Main.EXIT_OK;
     }
 
