@@ -65,6 +65,11 @@ public final class GradeCommand implements Callable<Integer> {
       description = "Write the one submission's Gradescope results.json here (e.g. /autograder/results/results.json).")
   Path gradescope;
 
+  @Option(names = "--csv-for", paramLabel = "LMS",
+      description = "With --out: also write DIR/LMS.csv, the gradebook import file of canvas or moodle "
+          + "(their column names; docs/grading.md).")
+  String csvFor;
+
   @Option(names = "--jobs", paramLabel = "N", description = "Submissions graded at once (default: the number of cores).")
   Integer jobs;
 
@@ -90,6 +95,12 @@ public final class GradeCommand implements Callable<Integer> {
     }
     if (out != null && Files.exists(out) && !Files.isDirectory(out)) {
       throw new UserError("--out: " + out + " is a file; give a folder");
+    }
+    if (csvFor != null && !List.of("canvas", "moodle").contains(csvFor)) {
+      throw new UserError("--csv-for: expected canvas or moodle, got \"" + csvFor + "\"");
+    }
+    if (csvFor != null && out == null) {
+      throw new UserError("--csv-for: give --out DIR too (the file is written there)");
     }
     if (gradescope != null) {
       Path dir = gradescope.toAbsolutePath().getParent();
@@ -144,7 +155,9 @@ public final class GradeCommand implements Callable<Integer> {
     Files.createDirectories(out);
     List<String> folders = new ArrayList<>();
     Set<String> used = new HashSet<>();
-    used.add("summary.csv");  // the class summary lives beside the folders
+    used.add("summary.csv");  // the class summary and the gradebook files live beside the folders
+    used.add("canvas.csv");
+    used.add("moodle.csv");
     for (GradeResult r : results) {
       folders.add(uniqueFolder(r.submission(), used));
     }
@@ -185,6 +198,15 @@ public final class GradeCommand implements Callable<Integer> {
     }
     AtomicFiles.write(out.resolve("summary.csv"), GradeReports.summaryCsv(task, results, folders));
     w.println("wrote " + out.resolve("summary.csv") + " and " + results.size() + " report folder(s)");
+    if (csvFor != null) {
+      Path lms = out.resolve(csvFor + ".csv");
+      AtomicFiles.write(lms, csvFor.equals("canvas") ? GradeReports.canvasCsv(task, results)
+          : GradeReports.moodleCsv(task, results));
+      long unmatched = results.stream().filter(r -> csvFor.equals("canvas") ? r.student().isBlank()
+          : !r.student().contains("@")).count();
+      w.println("wrote " + lms + (unmatched == 0 ? "" : " (" + unmatched + " row(s) " + (csvFor.equals("canvas")
+          ? "name no student" : "have no email address") + ": fill them in before importing)"));
+    }
   }
 
   /** A folder name made of safe characters from the submission's name, unique in this run. */

@@ -40,6 +40,42 @@ final class GradeReports {
   }
 
   /**
+   * Canvas's gradebook import: its columns {@code Student, ID, SIS User ID, SIS Login ID, Section},
+   * then one column named after the assignment (the task's title), a {@code Points Possible} row,
+   * one row per submission. Canvas matches a row by ID or SIS ID, else by the student's name as
+   * Canvas shows it; only the name is known here (the hand-in's manifest), so the ID columns are
+   * left for the instructor to fill when names do not match.
+   */
+  static byte[] canvasCsv(Task task, List<GradeResult> results) {
+    StringBuilder b = new StringBuilder();
+    String title = task.title().isEmpty() ? "RobotRun task" : task.title();
+    b.append("Student,ID,SIS User ID,SIS Login ID,Section,").append(csv(title)).append("\r\n");
+    b.append("    Points Possible,,,,,").append(fmt(task.maxPoints())).append("\r\n");
+    for (GradeResult r : results) {
+      b.append(csv(r.student())).append(",,,,,").append(fmt(r.score())).append("\r\n");
+    }
+    return b.toString().getBytes(StandardCharsets.UTF_8);
+  }
+
+  /**
+   * Moodle's grade import (CSV): {@code Email address} (Moodle matches users by email, username or
+   * ID number, never by name: the manifest's student when it is an email address), {@code Full
+   * name}, and one column named after the grade item (the task's title), to map on import.
+   */
+  static byte[] moodleCsv(Task task, List<GradeResult> results) {
+    StringBuilder b = new StringBuilder();
+    String title = task.title().isEmpty() ? "RobotRun task" : task.title();
+    b.append("Email address,Full name,").append(csv(title)).append("\r\n");
+    for (GradeResult r : results) {
+      String who = r.student().strip();
+      boolean email = who.matches("[^\\s@,;]+@[^\\s@,;]+\\.[^\\s@,;]+");
+      b.append(email ? csv(who) : "").append(',').append(csv(email ? "" : who)).append(',').append(fmt(r.score()))
+          .append("\r\n");
+    }
+    return b.toString().getBytes(StandardCharsets.UTF_8);
+  }
+
+  /**
    * A self-contained page: score, each check with points and feedback, the final cell and, for
    * each failed part check, where the part ended (pictures as data URIs; absent pictures say why).
    *
