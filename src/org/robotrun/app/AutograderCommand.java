@@ -231,7 +231,7 @@ public final class AutograderCommand implements Runnable {
       b.add(server + "robotrun-java.sh", common.javaScript(), false);
       b.copy(server + "robotrun.jar", common.jar(), false);
       String dir = "questions/" + q + "/";
-      b.add(dir + "info.json", infoJson(task, guard), false);
+      b.add(dir + "info.json", infoJson(task, q, guard), false);
       b.add(dir + "question.html", questionHtml(task), false);
       files.files().forEach((rel, p) -> b.copy(dir + "tests/" + rel, p, false));
       b.add("robotrun-grader-image/Dockerfile", dockerfile(), false);
@@ -246,10 +246,10 @@ public final class AutograderCommand implements Runnable {
       return Main.EXIT_OK;
     }
 
-    private String infoJson(Task task, int guard) throws IOException {
+    private String infoJson(Task task, String q, int guard) throws IOException {
       var json = new com.fasterxml.jackson.databind.ObjectMapper();
       var root = json.createObjectNode();
-      root.put("uuid", UUID.nameUUIDFromBytes(("robotrun:" + task.title() + ":" + question).getBytes(StandardCharsets.UTF_8))
+      root.put("uuid", UUID.nameUUIDFromBytes(("robotrun:" + q + ":" + task.title()).getBytes(StandardCharsets.UTF_8))
           .toString());
       root.put("title", task.title().isEmpty() ? "RobotRun task" : task.title());
       root.put("topic", "RobotRun");
