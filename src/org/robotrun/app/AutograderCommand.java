@@ -31,10 +31,8 @@ import picocli.CommandLine.Spec;
     description = {
       "Build an autograder for a course platform from a task file (docs/grading.md): the scripts the platform "
           + "runs, the RobotRun jar, the task and its cell. Students hand in the .zip that File > Hand in writes.",
-      "  gradescope        autograder.zip to upload as a Programming Assignment's autograder",
-      "  prairielearn     a question and the course's shared grader files (external grading)",
-      "  github-classroom the workflow and files of the assignment's template repository",
-      "  run              grade inside the platform's container (what the scripts run)"
+      "Every script takes its root from $" + AutograderRunCommand.ROOT_ENV + " (default: the platform's own) and "
+          + "writes the platform's results whatever goes wrong."
     },
     subcommands = {
       AutograderCommand.Gradescope.class,
