@@ -292,6 +292,26 @@ class AutograderBundlesTest {
     assertThat(r.get("output").asText()).contains("stopped (exit 124) after at most 1 s");
   }
 
+  @Test
+  void aRuntimeInTheBundleIsTheJavaTheScriptsUse() throws Exception {
+    // A stand-in runtime: says it is Java 21, then fails, so the message shows it was the one run.
+    Path runtime = Files.createDirectories(shared.resolve("runtime/bin"));
+    Files.writeString(runtime.resolve("java"), "#!/usr/bin/env bash\n"
+        + "if [ \"$1\" = -version ]; then echo 'openjdk version \"21.0.2\"' >&2; exit 0; fi\nexit 7\n");
+    runtime.resolve("java").toFile().setExecutable(true);
+    Path zip = shared.resolve("gs-runtime/autograder.zip");
+    Run b = robotrun("autograder", "gradescope", "--task", task.toString(), "--out", zip.toString(), "--jar",
+        jar.toString(), "--runtime", shared.resolve("runtime").toString());
+    assertThat(b.exit()).as(b.err()).isZero();
+    Path root = gradescopeRoot(shared.resolve("gs-runtime/root"), zip);
+    assertThat(root.resolve("source/runtime/bin/java")).isExecutable();
+    Files.copy(goodZip, root.resolve("submission/ada.zip"));
+    script(root.resolve("run_autograder"), root, Map.of("ROBOTRUN_JAVA", ""));
+    assertThat(gradescopeResults(root).get("output").asText()).contains("exited with code 7");
+    assertThat(robotrun("autograder", "gradescope", "--task", task.toString(), "--out", zip.toString(), "--jar",
+        jar.toString(), "--runtime", shared.toString()).err()).contains("--runtime: " + shared + " has no bin/java");
+  }
+
   // ---- PrairieLearn --------------------------------------------------------------------------
 
   private static Path prairieLearnBundle() throws IOException {
