@@ -115,8 +115,10 @@ public final class GradeCommand implements Callable<Integer> {
     Task task = loaded.task();
     Grader grader = new Grader(task, loaded.scenario());
     AtomicInteger done = new AtomicInteger();
+    // The runs are kept only for the reports' pictures and a Gradescope leaderboard (the cycle time).
+    boolean keepRuns = out != null && !noPictures || task.autograder().leaderboard();
     List<GradeResult> results = Grading.gradeAll(grader, new SubmissionLoader(), submissions, threads, !studentView,
-        r -> {
+        keepRuns, r -> {
           int n = done.incrementAndGet();
           if (submissions.size() > 10 && n % 10 == 0) {
             System.err.printf(Locale.ROOT, "graded %d of %d%n", n, submissions.size());
