@@ -145,8 +145,7 @@ final class GradeReports {
   }
 
   static String fmt(double d) {
-    double r = round(d);
-    return r == Math.rint(r) ? Long.toString((long) r) : Double.toString(r);
+    return org.robotrun.math.DecimalText.plain(round(d));
   }
 
   private static double round(double d) {

@@ -20,7 +20,9 @@ import org.robotrun.render.GlUnavailableException;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.CellStepper;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.grade.Grader;
 import org.robotrun.grade.TaskLoad;
 import org.robotrun.grade.TaskReader;
@@ -97,7 +99,8 @@ public final class GuiCommand implements Callable<Integer> {
    * is null when the window shows a scenario without a workspace (tests).
    */
   public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
-      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots) {}
+      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots,
+      CellStepper stepper, java.util.concurrent.atomic.AtomicReference<org.robotrun.sim.SceneSnapshot> frameScene) {}
 
   @Override
   public Integer call() {
@@ -301,15 +304,19 @@ public final class GuiCommand implements Callable<Integer> {
       stage("cell built");
     }
     Controller controller = sim.controllers().get(0);
+    // the scene the window drew this frame (set by run), for the views that draw it again
+    java.util.concurrent.atomic.AtomicReference<org.robotrun.sim.SceneSnapshot> frameScene = new java.util.concurrent.atomic.AtomicReference<>();
     // Every robot has its own controller port and pendant; the robot selector picks the one the
     // window drives. A fresh window is a cold start for each: mode T1 (the port's default, or the
     // scenario's), override $SCR.$COLDOVRD = 10%.
     List<Pendant> pendants = new java.util.ArrayList<>();
-    for (Controller c : sim.controllers()) {
-      SimRobotControl rc = new SimRobotControl(sim, c);
+    for (int i = 0; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
+      ControllerPort rc = new ControllerPort(c);
       rc.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
-      if (sc != null && sc.mode().isPresent()) {
-        rc.setMode(org.robotrun.pendant.RobotControl.Mode.valueOf(sc.mode().get()));
+      java.util.Optional<String> mode = sc != null && i < sc.robots().size() ? sc.preload(i).mode() : java.util.Optional.empty();
+      if (mode.isPresent()) {
+        rc.setMode(org.robotrun.control.RobotControl.Mode.valueOf(mode.get()));
       }
       Pendant p = new Pendant(rc, new LsLineParser());
       if (sim.controllers().size() > 1) {
@@ -409,7 +416,10 @@ public final class GuiCommand implements Callable<Integer> {
     }
     if (sim.vision().isPresent()) {
       // Vision (issue 16): camera views in the Vision menu, Reset with a seed in the side panel.
-      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim);
+      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim, () -> {
+        org.robotrun.sim.SceneSnapshot shown = frameScene.get();
+        return shown != null ? shown : sim.snapshot().scene();
+      });
       bench.addSection(org.robotrun.ui.VisionPanel.TITLE, vision::drawContents);
       bench.addMenus(vision);
     }
@@ -419,7 +429,7 @@ public final class GuiCommand implements Callable<Integer> {
       keyboard.releaseAll();
       pendantPanel.releaseLatched();
     });
-    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector);
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim), frameScene);
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
@@ -475,8 +485,10 @@ public final class GuiCommand implements Callable<Integer> {
     long[] lastSave = {System.nanoTime()};
     s.bench().setLayoutChangeHandler(() -> dirty[0] = true);
     s.window().run(t -> {
-          // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
-          s.pendant().advance(Math.min(0.1, t - last[0]));
+          // Real time drives the simulation (a stalled frame never makes it jump more than 0.1 s);
+          // then the pendant in hand catches up with its controller.
+          s.stepper().advanceRealTime(t - last[0]);
+          s.robots().get().follow();
           last[0] = t;
           if (s.workspace() != null) {
             s.workspace().session.autosave.poll(System.nanoTime());
@@ -494,7 +506,10 @@ public final class GuiCommand implements Callable<Integer> {
             lastSave[0] = System.nanoTime();
             warn(s.settings().save(s.bench().layoutState()));
           }
-          return s.sim().snapshot().scene();
+          // the one snapshot of this frame: the 3D view and the camera views draw it
+          org.robotrun.sim.SceneSnapshot scene = s.sim().snapshot().scene();
+          s.frameScene().set(scene);
+          return scene;
         },
         s.bench(),
         () -> {

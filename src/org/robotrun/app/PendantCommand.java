@@ -7,21 +7,23 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.robotrun.control.RobotControl;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.FileFormatException;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.LsWriter;
-import org.robotrun.io.TerminalText;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.TerminalText;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.RobotControl;
 import org.robotrun.program.Program;
-import org.robotrun.world.Scenario;
+import org.robotrun.sim.CellStepper;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
+import org.robotrun.world.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -134,22 +136,22 @@ public final class PendantCommand implements Callable<Integer> {
       } catch (FileFormatException | IllegalArgumentException e) {
         throw new UserError(scenario + ": " + e.getMessage());
       }
-      programFiles.addAll(sc.programs());
-      programFiles.addAll(sc.robots().get(0).programs());
+      programFiles.addAll(sc.preload(0).programs());
       cell = sc;
-      if (mode == null && sc.mode().isPresent()) {
-        startMode = RobotControl.Mode.valueOf(sc.mode().get());
-      }
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     }
     // One pendant per robot, each like a cold-started controller's; the script starts on the first (ROBOT switches).
     List<String> robotNames = sim.controllers().stream().map(org.robotrun.sim.Controller::name).toList();
-    List<SimRobotControl> controls = new java.util.ArrayList<>();
+    List<ControllerPort> controls = new java.util.ArrayList<>();
     List<Pendant> pendants = new java.util.ArrayList<>();
     for (org.robotrun.sim.Controller c : sim.controllers()) {
-      SimRobotControl rc = new SimRobotControl(sim, c);
-      rc.setMode(startMode);
+      ControllerPort rc = new ControllerPort(c);
+      int k = controls.size();
+      // --mode for every robot; else each robot's own mode switch (the scenario's, or T1)
+      java.util.Optional<String> own = mode != null || cell == null || k >= cell.robots().size()
+          ? java.util.Optional.empty() : cell.preload(k).mode();
+      rc.setMode(own.map(RobotControl.Mode::valueOf).orElse(startMode));
       rc.setOverridePct(overridePct);
       controls.add(rc);
       Pendant p = new Pendant(rc, new LsLineParser());
@@ -158,7 +160,7 @@ public final class PendantCommand implements Callable<Integer> {
       }
       pendants.add(p);
     }
-    SimRobotControl control = controls.get(0);
+    ControllerPort control = controls.get(0);
     programFiles.addAll(programs);
     for (Path file : programFiles) {
       control.saveProgram(readProgram(file));
@@ -184,16 +186,17 @@ public final class PendantCommand implements Callable<Integer> {
       }
     };
     int[] stopped = {0};
+    CellStepper stepper = new CellStepper(sim);
     if (trace == null) {
-      stopped[0] = script.run(pendants, robotNames, show, clock::expired);
+      stopped[0] = script.run(pendants, robotNames, stepper::advance, show, clock::expired);
     } else {
       try {
         org.robotrun.io.AtomicFiles.write(trace, stream -> {
           java.io.Writer w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(stream, StandardCharsets.UTF_8));
           org.robotrun.sim.TraceWriter tw = new org.robotrun.sim.TraceWriter(w, sim.controllers());
           tw.write(sim);
-          controls.forEach(rc -> rc.setAfterTick(tw::write));
-          stopped[0] = script.run(pendants, robotNames, show, clock::expired);
+          stepper.setAfterTick(tw::write);
+          stopped[0] = script.run(pendants, robotNames, stepper::advance, show, clock::expired);
           w.flush();
         });
       } catch (IOException e) {

@@ -59,7 +59,10 @@ final class CellRunner {
     return new Variant(0, base, 100, regs);
   }
 
-  /** Variation {@code i} (1-based) drawn with seed {@code seed + i}: the same every time. */
+  /**
+   * Variation {@code i} (1-based) drawn with seed {@code seed + i}: the same every time. The
+   * offset registers are written into every robot's controller.
+   */
   static Variant variation(Scenario base, Task.Variations v, int i) {
     SplittableRandom rng = new SplittableRandom(v.seed() + i);
     World world = base.world();
@@ -77,9 +80,7 @@ final class CellRunner {
     }
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
         : rng.nextInt(v.overrideMinPct(), v.overrideMaxPct() + 1);
-    Scenario s = new Scenario(base.name(), base.description(), base.robots(), world, base.programs(), base.mainProgram(),
-        base.registers(), base.toolFrames(), base.userFrames(), base.camera(), base.onCollision()).withExtrasOf(base);
-    return new Variant(i, s, override, regs);
+    return new Variant(i, base.withWorld(world), override, regs);
   }
 
   private static double draw(SplittableRandom rng, double range) {
@@ -132,6 +133,10 @@ final class CellRunner {
       });
       rs.positionRegisters().forEach((n, p) -> o.registers().setPosition(n, p));
       mains.put(o, rs.program());
+    }
+    // Every robot of the cell sees where the parts were found (its own PRs first, as the first's).
+    for (Controller o : sim.controllers().subList(1, sim.controllers().size())) {
+      v.offsetRegisters().forEach((n, p) -> o.registers().setPosition(n, p));
     }
     Map<String, Optional<String>> startParents = new HashMap<>();
     for (WorldObject o : sim.world().objects()) {

@@ -136,8 +136,7 @@ public final class Grader {
     tool.putAll(toolFrames);
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
     user.putAll(userFrames);
-    Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
-        scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
+    Scenario cell = scenario.withPresets(regs, tool, user);
     Map<String, List<Program>> others = new LinkedHashMap<>();
     otherPrograms.forEach((r, ps) -> others.put(r, List.copyOf(ps)));
     return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of(), others), List.of(), "", List.of(),
@@ -213,6 +212,16 @@ public final class Grader {
   }
 
   /** The robot a robot check looks at, by name. */
+  /** The index of the robot named {@code name} in {@code cell}, or -1. */
+  private static int robotIndex(Scenario cell, String name) {
+    for (int i = 0; i < cell.robots().size(); i++) {
+      if (cell.robots().get(i).name().equals(name)) {
+        return i;
+      }
+    }
+    return -1;
+  }
+
   private String robotOf(Check c) {
     return c.meta().robot().orElse(scenario.robots().get(0).name());
   }
@@ -289,14 +298,15 @@ public final class Grader {
 
   private CheckResult frame(Check.Frame f, Context ctx) {
     FrameTable frames;
-    boolean first = robotOf(f).equals(scenario.robots().get(0).name());
     if (!ctx.runs().isEmpty()) {
       frames = ctx.runs().get(0).robot(f.meta().robot()).frames();
     } else {
       frames = new FrameTable();
-      if (first) {
-        ctx.cell().toolFrames().forEach((n, t) -> frames.setTransform(FrameKind.TOOL, n, t));
-        ctx.cell().userFrames().forEach((n, t) -> frames.setTransform(FrameKind.USER, n, t));
+      int robot = robotIndex(ctx.cell(), robotOf(f));
+      if (robot >= 0) {
+        Scenario.Preload preload = ctx.cell().preload(robot);
+        preload.toolFrames().forEach((n, t) -> frames.setTransform(FrameKind.TOOL, n, t));
+        preload.userFrames().forEach((n, t) -> frames.setTransform(FrameKind.USER, n, t));
       }
     }
     Transform taught = frames.transform(f.tool() ? FrameKind.TOOL : FrameKind.USER, f.number());
@@ -479,8 +489,7 @@ public final class Grader {
     tool.putAll(own.toolFrames());
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
     user.putAll(own.userFrames());
-    return new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
-        scenario.programs(), scenario.mainProgram(), registers, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
+    return scenario.withPresets(registers, tool, user);
   }
 
   // ---- helpers -----------------------------------------------------------------------------

@@ -140,8 +140,7 @@ public final class TaskReader {
       Scenario scenario = scenario(top);
       String program = string(top, "program", "", false).map(s -> s.toUpperCase(Locale.ROOT))
           // As robotrun run: the first robot's own mainProgram, else the scenario's.
-          .or(() -> scenario == null || scenario.robots().isEmpty() ? Optional.empty() : scenario.robots().get(0).mainProgram())
-          .or(() -> scenario == null ? Optional.empty() : scenario.mainProgram())
+          .or(() -> scenario == null ? Optional.empty() : scenario.preload(0).mainProgram())
           .map(s -> s.toUpperCase(Locale.ROOT)).orElse(null);
       if (program == null && scenario != null) {
         error(top.line(), "program", "missing: name the program to run (the scenario names no main program)");
@@ -574,7 +573,7 @@ public final class TaskReader {
     }
 
     private static String plain(double d) {
-      return d == Math.rint(d) ? Long.toString((long) d) : Double.toString(d);
+      return org.robotrun.math.DecimalText.plain(d);
     }
   }
 }

@@ -74,7 +74,7 @@ public final class ScenarioReader {
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
       "onCollision", "state", "mode", "wiring", "production", VisionJson.KEY);
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
-      "io", "userAlarms", "programs", "mainProgram", "macros");
+      "io", "userAlarms", "programs", "mainProgram", "macros", "registers", "frames", "mode");
   /** Highest UALM[i] a scenario may give a text for. */
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
@@ -98,6 +98,14 @@ public final class ScenarioReader {
       case CellLoad.Loaded l -> new ScenarioLoad.Loaded(l.scenario());
       case CellLoad.Failed f -> new ScenarioLoad.Failed(f.errors());
     };
+  }
+
+  /**
+   * Loads a scenario file with its {@code "state"} section, checked as {@link #read} checks it
+   * ({@code robotrun run --scenario} applies the state to every robot).
+   */
+  public static CellLoad readWithState(Path file) {
+    return readCell(file, false);
   }
 
   /**
@@ -164,14 +172,15 @@ public final class ScenarioReader {
       List<WorldObject> objects = objects(top);
       List<Path> programs = programs(top, "");
       Optional<String> mainProgram = mainProgram(top, "");
-      TreeMap<Integer, Double> registers = registers(top);
+      TreeMap<Integer, Double> registers = registers(top, "");
       TreeMap<Integer, Transform> toolFrames = new TreeMap<>();
       TreeMap<Integer, Transform> userFrames = new TreeMap<>();
-      frames(top, toolFrames, userFrames);
+      frames(top, "", toolFrames, userFrames);
+      firstRobotOnce(top);
       Optional<CameraView> camera = camera(top);
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
-      Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
+      Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top, ""));
       Wiring wiring = WiringJson.read(this, top, robots);
       ProductionSetup production = ProductionJson.read(top, file, robots, errors::add);
       SavedState state = null;
@@ -249,9 +258,15 @@ public final class ScenarioReader {
         List<Path> ownPrograms = programs(r, at);
         Optional<String> ownMain = mainProgram(r, at);
         List<RobotSetup.Macro> macros = macros(r, at);
+        TreeMap<Integer, Double> ownRegisters = registers(r, at);
+        TreeMap<Integer, Transform> ownTools = new TreeMap<>();
+        TreeMap<Integer, Transform> ownUsers = new TreeMap<>();
+        frames(r, at, ownTools, ownUsers);
+        Optional<String> ownMode = string(r, "mode", at, false).map(m -> mode(m, r, at));
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
           out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
-              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros));
+              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros,
+              ownRegisters, ownTools, ownUsers, ownMode));
         }
       }
       return out;
@@ -420,12 +435,30 @@ public final class ScenarioReader {
       }
     }
 
-    private String mode(String s, JObject top) {
+    private String mode(String s, JObject o, String where) {
       if (!Scenario.MODES.contains(s)) {
-        error(top.members().get("mode").line(), "mode", "unknown mode '" + s + "': expected one of " + Scenario.MODES);
+        error(o.members().get("mode").line(), join(where, "mode"), "unknown mode '" + s + "': expected one of "
+            + Scenario.MODES);
         return "T1";
       }
       return s;
+    }
+
+    /**
+     * The first robot's registers and frames are the top-level ones or its own, not both: two
+     * places for one robot's presets would leave which one wins to the reader.
+     */
+    private void firstRobotOnce(JObject top) {
+      if (!(top.members().get("robots") instanceof JArray arr) || arr.items().isEmpty()
+          || !(arr.items().get(0) instanceof JObject r0)) {
+        return;
+      }
+      for (String key : List.of("registers", "frames")) {
+        if (top.members().containsKey(key) && r0.members().containsKey(key)) {
+          error(r0.keyLines().get(key), "robots[0]." + key, "the first robot's " + key + " are given at the top level too (\""
+              + key + "\" at line " + top.keyLines().get(key) + "): give them in one place");
+        }
+      }
     }
 
     private CollisionResponse onCollision(String s, JObject top) {
@@ -732,14 +765,15 @@ public final class ScenarioReader {
       return dot < 0 ? base : base.substring(0, dot);
     }
 
-    private TreeMap<Integer, Double> registers(JObject top) {
+    /** The {@code "registers"} of the top level ({@code where} "") or of a robot ("robots[1]"). */
+    private TreeMap<Integer, Double> registers(JObject top, String where) {
       TreeMap<Integer, Double> out = new TreeMap<>();
-      JObject regs = member(top, "registers", "", null, false);
+      JObject regs = member(top, "registers", where, null, false);
       if (regs == null) {
         return out;
       }
       for (Map.Entry<String, LocatedJson> e : regs.members().entrySet()) {
-        String at = "registers." + e.getKey();
+        String at = join(where, "registers." + e.getKey());
         Integer index = index(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
         Double v = finite(e.getValue(), at);
         if (index != null && v != null) {
@@ -749,20 +783,21 @@ public final class ScenarioReader {
       return out;
     }
 
-    private void frames(JObject top, Map<Integer, Transform> tool, Map<Integer, Transform> user) {
-      JObject frames = member(top, "frames", "", Set.of("tool", "user"), false);
+    /** The {@code "frames"} of the top level ({@code where} "") or of a robot ("robots[1]"). */
+    private void frames(JObject top, String where, Map<Integer, Transform> tool, Map<Integer, Transform> user) {
+      JObject frames = member(top, "frames", where, Set.of("tool", "user"), false);
       if (frames == null) {
         return;
       }
       for (String kind : List.of("tool", "user")) {
-        JObject set = member(frames, kind, "frames", null, false);
+        JObject set = member(frames, kind, join(where, "frames"), null, false);
         if (set == null) {
           continue;
         }
         for (String key : set.members().keySet()) {
-          String at = "frames." + kind + "." + key;
+          String at = join(where, "frames." + kind + "." + key);
           Integer n = index(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
-          Transform pose = pose(set, key, "frames." + kind);
+          Transform pose = pose(set, key, join(where, "frames." + kind));
           if (n != null && pose != null) {
             (kind.equals("tool") ? tool : user).put(n, pose);
           }

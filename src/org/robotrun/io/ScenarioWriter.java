@@ -6,9 +6,6 @@ import com.fasterxml.jackson.core.util.DefaultIndenter;
 import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
 import java.io.IOException;
 import java.io.StringWriter;
-import java.math.BigDecimal;
-import java.math.MathContext;
-import java.math.RoundingMode;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Map;
@@ -167,6 +164,22 @@ public final class ScenarioWriter {
           }
           g.writeEndArray();
         }
+        if (!r.registers().isEmpty()) {
+          g.writeObjectFieldStart("registers");
+          for (Map.Entry<Integer, Double> e : r.registers().entrySet()) {
+            number(g, e.getKey().toString(), e.getValue());
+          }
+          g.writeEndObject();
+        }
+        if (!r.toolFrames().isEmpty() || !r.userFrames().isEmpty()) {
+          g.writeObjectFieldStart("frames");
+          frameSet(g, "tool", r.toolFrames());
+          frameSet(g, "user", r.userFrames());
+          g.writeEndObject();
+        }
+        if (r.mode().isPresent()) {
+          g.writeStringField("mode", r.mode().get());
+        }
         g.writeEndObject();
       }
       g.writeEndArray();
@@ -306,11 +319,7 @@ public final class ScenarioWriter {
   }
 
   private static String tidyText(double v) {
-    if (Math.abs(v) < 1e-12) {
-      return "0";
-    }
-    BigDecimal d = new BigDecimal(v).round(new MathContext(15, RoundingMode.HALF_EVEN)).stripTrailingZeros();
-    return d.signum() == 0 ? "0" : d.scale() <= 0 ? d.toBigInteger().toString() : d.toPlainString();
+    return org.robotrun.math.DecimalText.tidy(v);
   }
 
   private static String relative(Path dir, Path file) {

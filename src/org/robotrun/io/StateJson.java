@@ -2,9 +2,6 @@ package org.robotrun.io;
 
 import com.fasterxml.jackson.core.JsonGenerator;
 import java.io.IOException;
-import java.math.BigDecimal;
-import java.math.MathContext;
-import java.math.RoundingMode;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
@@ -144,11 +141,7 @@ final class StateJson {
 
   /** 15 significant digits, always with a fraction ("3.0"); exact for what the pendant enters. */
   private static String realText(double v) {
-    if (Math.abs(v) < 1e-12) {
-      return "0.0";
-    }
-    String t = new BigDecimal(v).round(new MathContext(15, RoundingMode.HALF_EVEN)).stripTrailingZeros().toPlainString();
-    return t.contains(".") ? t : t + ".0";
+    return org.robotrun.math.DecimalText.tidyReal(v);
   }
 
   // ---- reading --------------------------------------------------------------------------------

@@ -446,7 +446,7 @@ public final class VisionJson extends JsonFieldReader {
   }
 
   private static String text(double v) {
-    return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
+    return org.robotrun.math.DecimalText.plain(v);
   }
 
   /** {@code [min, max]} with |values| ≤ limit; null with an error when bad. */
@@ -620,8 +620,7 @@ public final class VisionJson extends JsonFieldReader {
   }
 
   private static String tidy(double v) {
-    double r = Math.rint(v * 1e9) / 1e9;
-    return r == Math.rint(r) && Math.abs(r) < 1e15 ? Long.toString((long) r) : Double.toString(r);
+    return org.robotrun.math.DecimalText.plain(Math.rint(v * 1e9) / 1e9);
   }
 
   private static void pose(JsonGenerator g, String field, Transform t, NumberWriter number) throws IOException {

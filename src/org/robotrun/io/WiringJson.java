@@ -84,7 +84,9 @@ final class WiringJson {
     }
     String path = JsonFieldReader.join(at, key);
     int line = o.keyLines().getOrDefault(key, o.line());
-    Optional<Signal> s = Signal.parse(text.get());
+    // ROBOT.KIND[N], read by the one reader of I/O addresses
+    Optional<Signal> s = org.robotrun.program.IoAddress.parseOnRobot(text.get())
+        .map(a -> new Signal(a.robot(), a.address().kind(), a.address().index()));
     if (s.isEmpty()) {
       r.error(line, path, "expected a signal like \"robot1." + (output ? "DO" : "DI") + "[10]\", got \"" + text.get() + "\"");
       return Optional.empty();

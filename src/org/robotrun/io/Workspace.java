@@ -299,8 +299,7 @@ public final class Workspace implements AutoCloseable {
 
   /** {@code s} under another name. */
   static Scenario renamed(Scenario s, String name) {
-    return new Scenario(name, s.description(), s.robots(), s.world(), s.programs(), s.mainProgram(), s.registers(),
-        s.toolFrames(), s.userFrames(), s.camera(), s.onCollision(), s.mode()).withExtrasOf(s);
+    return s.withName(name, s.description());
   }
 
   /**

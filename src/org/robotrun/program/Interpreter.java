@@ -119,7 +119,18 @@ public final class Interpreter {
   /** Action programs of monitors that fired, running beside the program. */
   private final List<Interpreter> actions = new ArrayList<>(1);
   /** TIME AFTER actions counting down: seconds left, and the action. */
-  private final java.util.List<Object[]> afterTimers = new java.util.ArrayList<>(2);
+  private final java.util.List<AfterTimer> afterTimers = new java.util.ArrayList<>(2);
+
+  /** A TIME AFTER action counting down (a plain field, not a boxed double per tick). */
+  private static final class AfterTimer {
+    double leftSec;
+    final Motion.TimedAction action;
+
+    AfterTimer(double leftSec, Motion.TimedAction action) {
+      this.leftSec = leftSec;
+      this.action = action;
+    }
+  }
   private double waitRemainingSec;
   private double waitElapsedSec;
   private Ops.WaitConditionOp waitOp;
@@ -567,7 +578,7 @@ public final class Interpreter {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
               if (!motionBefore.isEmpty() && !motionHeld) {
-                fireBefore(port.timeLeftSec(motionHandle), port.distanceLeftMm(motionHandle));
+                fireBefore(false);
               }
               if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
                 // The skip condition turned true: the arm stops and the program goes on with the
@@ -588,9 +599,9 @@ public final class Interpreter {
               waitKind = W_NONE;
               // CNT: done when blending starts; TIME BEFORE actions not fired yet fire now, and
               // TIME AFTER actions start counting (RobotRun's approximation of "after the point").
-              fireBefore(0, 0);
+              fireBefore(true);
               for (Motion.TimedAction t : motionAfter) {
-                afterTimers.add(new Object[] {t.amount(), t});
+                afterTimers.add(new AfterTimer(t.amount(), t));
               }
               motionAfter.clear();
               if (!afterTimers.isEmpty()) {
@@ -968,11 +979,28 @@ public final class Interpreter {
   }
 
   /** Fires the TIME/DISTANCE BEFORE actions whose moment has come, {@code leftSec} / {@code leftMm} before the point. */
-  private void fireBefore(double leftSec, double leftMm) {
+  /**
+   * Runs the TIME BEFORE / DISTANCE BEFORE actions that are due; the time and distance left are
+   * asked of the motion only when an action needs them (the distance costs forward kinematics);
+   * {@code arrived}: the motion is done, every action is due.
+   */
+  private void fireBefore(boolean arrived) {
+    double leftSec = arrived ? 0 : Double.NaN;
+    double leftMm = arrived ? 0 : Double.NaN;
     for (java.util.Iterator<Motion.TimedAction> it = motionBefore.iterator(); it.hasNext(); ) {
       Motion.TimedAction t = it.next();
-      boolean due = t.when() == Motion.When.DISTANCE_BEFORE ? leftMm <= t.amount() + 1e-6
-          : leftSec <= t.amount() + TIME_EPS_SEC;
+      boolean due;
+      if (t.when() == Motion.When.DISTANCE_BEFORE) {
+        if (Double.isNaN(leftMm)) {
+          leftMm = port.distanceLeftMm(motionHandle);
+        }
+        due = leftMm <= t.amount() + 1e-6;
+      } else {
+        if (Double.isNaN(leftSec)) {
+          leftSec = port.timeLeftSec(motionHandle);
+        }
+        due = leftSec <= t.amount() + TIME_EPS_SEC;
+      }
       if (due) {
         it.remove();
         runTimedAction(t);
@@ -981,13 +1009,12 @@ public final class Interpreter {
   }
 
   private void advanceTimedActions(double dtSec) {
-    for (java.util.Iterator<Object[]> it = afterTimers.iterator(); it.hasNext(); ) {
-      Object[] a = it.next();
-      double left = (double) a[0] - dtSec;
-      a[0] = left;
-      if (left <= TIME_EPS_SEC) {
+    for (java.util.Iterator<AfterTimer> it = afterTimers.iterator(); it.hasNext(); ) {
+      AfterTimer a = it.next();
+      a.leftSec -= dtSec;
+      if (a.leftSec <= TIME_EPS_SEC) {
         it.remove();
-        runTimedAction((Motion.TimedAction) a[1]);
+        runTimedAction(a.action);
       }
     }
   }

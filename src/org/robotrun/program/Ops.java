@@ -196,14 +196,16 @@ final class Ops {
    */
   static final class MacroOp extends Op {
     final String name;
+    /** The table's key of the name, made once (not on every call). */
+    final String key;
 
     MacroOp(String name) {
       this.name = name;
+      this.key = InterpreterSettings.macroKey(name);
     }
 
     @Override
     int exec(Interpreter m) {
-      String key = InterpreterSettings.macroKey(name);
       String program = m.settings.macros().get(key);
       if (program == null) {
         if (key.contains(" ")) {

@@ -41,6 +41,8 @@ public final class BgLogic {
     final String program;
     final Interpreter interpreter;
     boolean running;
+    /** The version of the program last found fit for background logic (null: none yet). */
+    Program checked;
 
     Slot(String program, Interpreter interpreter) {
       this.program = program;
@@ -235,11 +237,16 @@ public final class BgLogic {
         continue;
       }
       Optional<Program> p = store.find(s.program);
-      Optional<String> bad = p.isEmpty() ? Optional.of("program " + s.program + " does not exist") : refusal(p.get());
-      if (bad.isPresent()) {
-        s.running = false;
-        controller.raiseRunFailed("BG Logic: " + bad.get());
-        continue;
+      if (p.isEmpty() || p.get() != s.checked) {
+        // checked once per version of the program (programs are immutable: an edit is a new one)
+        Optional<String> bad = p.isEmpty() ? Optional.of("program " + s.program + " does not exist") : refusal(p.get());
+        if (bad.isPresent()) {
+          s.running = false;
+          s.checked = null;
+          controller.raiseRunFailed("BG Logic: " + bad.get());
+          continue;
+        }
+        s.checked = p.get();
       }
       Interpreter in = s.interpreter;
       in.select(s.program);

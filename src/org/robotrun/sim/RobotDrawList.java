@@ -24,7 +24,11 @@ public final class RobotDrawList {
    * @param q joint values (rad, kinematic convention)
    */
   public static void addRobot(List<DrawItem> out, String prefix, RobotModel model, Transform X_WR, double[] q) {
-    Transform[] X_RL = ForwardKinematics.linkPosesInWorld(model, q);
+    addRobot(out, prefix, model, X_WR, ForwardKinematics.linkPosesInWorld(model, q));
+  }
+
+  /** As {@link #addRobot(List, String, RobotModel, Transform, double[])} with the link poses in the robot's WORLD already computed. */
+  public static void addRobot(List<DrawItem> out, String prefix, RobotModel model, Transform X_WR, Transform[] X_RL) {
     for (int i = 0; i < model.links().size(); i++) {
       LinkSpec link = model.links().get(i);
       Transform X_WL = X_WR.compose(X_RL[i]);

@@ -444,8 +444,7 @@ public final class CellEditor {
       return refused("scenario name: '" + n + "' is already taken");
     }
     Scenario a = active();
-    Scenario copy = new Scenario(n, a.description(), a.robots(), a.world(), a.programs(), a.mainProgram(),
-        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision(), a.mode()).withExtrasOf(a);
+    Scenario copy = a.withName(n, a.description());
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.add(copy);
     return apply(new State(List.copyOf(out), out.size() - 1), "scenario " + n + " added");
@@ -520,8 +519,7 @@ public final class CellEditor {
 
   private State withWorld(World w) {
     Scenario a = active();
-    Scenario s = new Scenario(a.name(), a.description(), a.robots(), w.reset(), a.programs(), a.mainProgram(),
-        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision(), a.mode()).withExtrasOf(a);
+    Scenario s = a.withWorld(w.reset());
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.set(state.active, s);
     return new State(List.copyOf(out), state.active);

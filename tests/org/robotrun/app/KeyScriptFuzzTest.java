@@ -15,6 +15,7 @@ import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.Key;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.Simulation;
 
@@ -60,9 +61,9 @@ class KeyScriptFuzzTest {
       }
       case KeyScript.Parsed.Ok ok -> {
         Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
-        Pendant p = new Pendant(new SimRobotControl(sim, sim.controllers().get(0)), new LsLineParser());
+        Pendant p = new Pendant(new ControllerPort(sim.controllers().get(0)), new LsLineParser());
         StringBuilder shown = new StringBuilder();
-        ok.script().run(p, shown::append);
+        ok.script().run(p, new org.robotrun.sim.CellStepper(sim)::advance, shown::append);
         assertThat(p.render()).isNotEmpty();
       }
     }

@@ -5,6 +5,7 @@ import static org.robotrun.sim.TaskProgs.program;
 import static org.robotrun.sim.TaskProgs.steps;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.IoKind;
 
 /**
@@ -21,7 +22,7 @@ class MultitaskingTest {
     // the task counts in R[2] while the main program waits for it and then moves
     c.saveProgram(program("COUNT", false, "FOR R[3]=1 TO 5", "R[2]=R[2]+1", "WAIT 0.10(sec)", "ENDFOR", "DO[7]=ON"));
     c.saveProgram(program("MAIN", true, "RUN COUNT", "R[1]=R[2]", "WAIT DO[7]=ON", "R[4]=R[2]"));
-    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
     steps(sim, 2);
     // RUN did not wait: the main program went on at once and sees the task's first increment at most
     assertThat(c.registers().number(1)).isLessThanOrEqualTo(1);
@@ -44,7 +45,7 @@ class MultitaskingTest {
     c.saveProgram(program("SECOND", false, "R[6]=R[6]+1", "WAIT 0.05(sec)", "R[7]=1"));
     c.saveProgram(program("FIRST", false, "RUN SECOND", "R[5]=1"));
     c.saveProgram(program("MAIN", false, "RUN FIRST", "WAIT R[7]=1", "R[8]=1"));
-    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
     steps(sim, 100);
     assertThat(c.activeAlarms()).isEmpty();
     assertThat(c.registers().number(5)).isEqualTo(1);
@@ -92,7 +93,7 @@ class MultitaskingTest {
     assertThat(c.activeAlarms().get(0).message()).contains("LOOPER is already running");
     assertThat(c.activeAlarms().get(0).line()).isEqualTo(2);
     // and the pendant cannot start it either
-    assertThat(c.run("LOOPER", 1, true)).isInstanceOf(CommandResult.Refused.class);
+    assertThat(c.run("LOOPER", 1, true)).isInstanceOf(RobotControl.Result.Refused.class);
   }
 
   @Test

@@ -1,13 +1,13 @@
-package org.robotrun.app;
+package org.robotrun.sim;
 
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
+import org.robotrun.control.RobotControl;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import org.robotrun.motion.JogFrame;
 import org.robotrun.motion.JogState;
-import org.robotrun.pendant.RobotControl;
+import org.robotrun.program.AlarmCode;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
@@ -15,42 +15,37 @@ import org.robotrun.program.Registers;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
-import org.robotrun.sim.CommandResult;
-import org.robotrun.sim.Controller;
-import org.robotrun.sim.ControllerAlarm;
-import org.robotrun.sim.OperatingMode;
-import org.robotrun.sim.Simulation;
 
 /**
- * The pendant's {@link RobotControl} port on a real {@link Controller} of a {@link Simulation}:
- * the robot model's kinematics, the motion planner, collision-free jog limits and the
- * project's frame teaching ({@link RobotFrameTeacher}). It lives in {@code app} (not
- * {@code pendant}) because the controller's API speaks {@code motion} and {@code robot} types,
- * which DESIGN.md keeps out of the pendant package.
+ * The {@link RobotControl} port of one {@link Controller}: what a teach pendant and an operator
+ * panel drive. The switch signals (TP ENABLE, DEADMAN, SHIFT, mode, E-stop) arrive here and every
+ * safety decision is made here, once: whether a jog or a start may go (mode, TP ENABLE, E-stop,
+ * DEADMAN, SHIFT, then the controller's own alarm and motion checks), hold-to-run in T1/T2,
+ * SRVO-003 when the DEADMAN lets go. The switches are stored once: DEADMAN in the controller, TP
+ * ENABLE in its UOP, the jog coordinate system in the controller; only SHIFT lives here. Time is
+ * not part of the port: the cell's {@link CellStepper} advances the controller.
  */
-public final class SimRobotControl implements RobotControl {
-  private final Simulation simulation;
+public final class ControllerPort implements RobotControl {
   private final Controller controller;
-  private double pendingSec;
   private final RobotFrameTeacher teacher = new RobotFrameTeacher();
-  private java.util.function.Consumer<Simulation> afterTick = s -> { };
+  private boolean shiftHeld;
+  /** Whether a jog key went down since jogging last stopped (for the SHIFT-released message). */
+  private boolean jogging;
 
-  /** Drives {@code controller}; {@link #advance} steps {@code simulation} (which owns it). */
-  public SimRobotControl(Simulation simulation, Controller controller) {
-    this.simulation = Objects.requireNonNull(simulation, "simulation");
+  /**
+   * The port of {@code controller} with a pendant in hand: the mode switch at T1, TP ENABLE on
+   * (a cold-started controller's pendant is picked up switched on), DEADMAN and SHIFT let go.
+   */
+  public ControllerPort(Controller controller) {
     this.controller = Objects.requireNonNull(controller, "controller");
-    if (!simulation.controllers().contains(controller)) {
-      throw new IllegalArgumentException("controller " + controller.name() + " is not in the simulation");
-    }
-    // a pendant in hand: the mode switch starts at T1, as a window or script starts
-    controller.setMode(OperatingMode.T1);
+    controller.setMode(Mode.T1);
+    controller.setDeadman(false);
+    controller.uop().setTpEnabled(true);
   }
 
-  private static Result result(CommandResult r) {
-    return switch (r) {
-      case CommandResult.Ok ok -> new Result.Ok(ok.message());
-      case CommandResult.Refused no -> new Result.Refused(no.reason());
-    };
+  /** The controller behind this port. */
+  public Controller controller() {
+    return controller;
   }
 
   // ---- programs, data, frames ----------------------------------------------------------------
@@ -72,7 +67,7 @@ public final class SimRobotControl implements RobotControl {
 
   @Override
   public Result deleteProgram(String name) {
-    return result(controller.deleteProgram(name));
+    return controller.deleteProgram(name);
   }
 
   @Override
@@ -142,11 +137,6 @@ public final class SimRobotControl implements RobotControl {
   @Override
   public Result removeBg(String program) {
     return controller.bgLogic().remove(program) ? Result.ok() : Result.refused(program + " is not in a BG Logic slot");
-  }
-
-  @Override
-  public void tpEnableChanged(boolean on) {
-    controller.uop().setTpEnabled(on);
   }
 
   @Override
@@ -260,19 +250,38 @@ public final class SimRobotControl implements RobotControl {
 
   @Override
   public Result moveTo(Position target, int userFrame, int toolFrame) {
-    return result(controller.moveTo(target, userFrame, toolFrame));
+    return controller.moveTo(target, userFrame, toolFrame);
   }
 
   @Override
-  public Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched) {
-    controller.setCoordSystem(JogFrame.valueOf(coord.name()));
-    return result(controller.jogKeyDown(axis, sign, latched ? JogState.Press.LATCHED : JogState.Press.HELD));
+  public CoordSystem coordSystem() {
+    return controller.coordSystem();
   }
 
   @Override
-  public Result jogIncrement(CoordSystem coord, int axis, int sign, boolean veryFine) {
-    controller.setCoordSystem(JogFrame.valueOf(coord.name()));
-    return result(controller.jogIncrement(axis, sign, veryFine));
+  public void setCoordSystem(CoordSystem coord) {
+    controller.setCoordSystem(coord);
+    controller.jogStop();
+    jogging = false;
+  }
+
+  @Override
+  public Result jogKeyDown(int axis, int sign, boolean latched) {
+    Optional<String> refused = switchRefusal("jog");
+    if (refused.isPresent()) {
+      return Result.refused(refused.get());
+    }
+    Result r = controller.jogKeyDown(axis, sign, latched ? JogState.Press.LATCHED : JogState.Press.HELD);
+    if (r instanceof Result.Ok) {
+      jogging = true;
+    }
+    return r;
+  }
+
+  @Override
+  public Result jogIncrement(int axis, int sign, boolean veryFine) {
+    Optional<String> refused = switchRefusal("jog");
+    return refused.isPresent() ? Result.refused(refused.get()) : controller.jogIncrement(axis, sign, veryFine);
   }
 
   @Override
@@ -283,6 +292,106 @@ public final class SimRobotControl implements RobotControl {
   @Override
   public void jogStop() {
     controller.jogStop();
+  }
+
+  /** Whether a jog is on that has not stopped by itself since (a limit, the edge of reach). */
+  private boolean jogging() {
+    return jogging && controller.jogMessage().isEmpty();
+  }
+
+  /**
+   * Why the pendant's switches do not allow {@code what} ("jog", "run") now, checked as a
+   * controller does: mode, TP ENABLE, E-stop, DEADMAN, SHIFT.
+   */
+  private Optional<String> switchRefusal(String what) {
+    if (controller.mode() == Mode.AUTO) {
+      return Optional.of(what.equals("jog") ? "AUTO mode: the pendant cannot jog (mode switch to T1)"
+          : "AUTO mode: start from the operator panel (TP OFF, CYCLE START)");
+    }
+    if (!tpEnabled()) {
+      return Optional.of("TP disabled: turn TP ENABLE on to " + what);
+    }
+    if (controller.estopped()) {
+      return Optional.of("E-stop pressed: release it and RESET");
+    }
+    if (!controller.deadman()) {
+      return Optional.of("Hold the DEADMAN to " + what);
+    }
+    if (!shiftHeld) {
+      return Optional.of("Hold SHIFT and the DEADMAN to " + what);
+    }
+    return Optional.empty();
+  }
+
+  // ---- switches -------------------------------------------------------------------------------
+
+  @Override
+  public boolean tpEnabled() {
+    return controller.uop().tpEnabled();
+  }
+
+  @Override
+  public void setTpEnabled(boolean on) {
+    if (!on && jogging) {
+      controller.jogStop();
+      jogging = false;
+    }
+    if (!on && tpEnabled()) {
+      holdToRun("TP disabled");
+    }
+    controller.uop().setTpEnabled(on);
+  }
+
+  @Override
+  public boolean deadmanHeld() {
+    return controller.deadman();
+  }
+
+  @Override
+  public Result setDeadman(boolean held) {
+    if (held || !controller.deadman()) {
+      controller.setDeadman(held);
+      return Result.ok();
+    }
+    controller.setDeadman(false);
+    jogging = false;
+    if (!tpEnabled()) {
+      return Result.ok();
+    }
+    boolean running = controller.status().state() == org.robotrun.sim.ExecutionStatus.State.RUNNING;
+    controller.deadmanReleased();
+    return new Result.Ok(AlarmCode.SRVO_003.code() + " " + AlarmCode.SRVO_003.text() + (running ? ": program paused" : "")
+        + " (hold DEADMAN, RESET)");
+  }
+
+  @Override
+  public boolean shiftHeld() {
+    return shiftHeld;
+  }
+
+  @Override
+  public Result setShift(boolean held) {
+    if (held || !shiftHeld) {
+      shiftHeld = held;
+      return Result.ok();
+    }
+    shiftHeld = false;
+    String message = "";
+    if (jogging()) {
+      controller.jogStop();
+      message = "Jog stopped: SHIFT released";
+    }
+    jogging = false;
+    return new Result.Ok(holdToRun("SHIFT released").orElse(message));
+  }
+
+  /** T1/T2: a running program pauses when SHIFT, DEADMAN or TP ENABLE lets go (the arm decelerates). */
+  private Optional<String> holdToRun(String why) {
+    if (controller.mode().holdToRun() && controller.status().state() == org.robotrun.sim.ExecutionStatus.State.RUNNING) {
+      controller.hold();
+      return Optional.of("Program paused: " + why + " (hold-to-run in " + controller.mode() + "; SHIFT+FWD resumes)");
+    }
+    return Optional.empty();
   }
 
   // ---- execution and alarms ------------------------------------------------------------------
@@ -308,8 +417,26 @@ public final class SimRobotControl implements RobotControl {
   }
 
   @Override
-  public Result run(String program, int line, boolean forward) {
-    return result(controller.run(program, line, forward));
+  public Result mayStart(StartFrom from, boolean forward) {
+    if (from == StartFrom.OPERATOR_PANEL) {
+      if (controller.mode() != Mode.AUTO) {
+        return Result.refused("CYCLE START works in AUTO: in " + controller.mode() + " run from the pendant (SHIFT+FWD)");
+      }
+      if (tpEnabled()) {
+        return Result.refused("CYCLE START refused: the TP is enabled (turn it OFF to run in AUTO)");
+      }
+      return Result.ok();
+    }
+    if (!shiftHeld) {
+      return Result.refused("Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run");
+    }
+    return switchRefusal("run").<Result>map(Result::refused).orElse(Result.ok());
+  }
+
+  @Override
+  public Result run(StartFrom from, String program, int line, boolean forward) {
+    Result may = mayStart(from, forward);
+    return may instanceof Result.Refused ? may : controller.run(program, line, forward);
   }
 
   @Override
@@ -329,17 +456,19 @@ public final class SimRobotControl implements RobotControl {
 
   @Override
   public Mode mode() {
-    return Mode.valueOf(controller.mode().name());
+    return controller.mode();
   }
 
   @Override
   public void setMode(Mode mode) {
-    controller.setMode(OperatingMode.valueOf(mode.name()));
+    controller.setMode(mode);
+    jogging = false;
   }
 
   @Override
   public void emergencyStop(boolean fromPendant) {
     controller.emergencyStop(fromPendant);
+    jogging = false;
   }
 
   @Override
@@ -350,11 +479,6 @@ public final class SimRobotControl implements RobotControl {
   @Override
   public boolean emergencyStopped() {
     return controller.estopped();
-  }
-
-  @Override
-  public void deadmanReleased() {
-    controller.deadmanReleased();
   }
 
   @Override
@@ -383,7 +507,7 @@ public final class SimRobotControl implements RobotControl {
 
   @Override
   public List<AlarmEntry> alarmHistory() {
-    return controller.alarmHistory().stream().map(SimRobotControl::entry).toList();
+    return controller.alarmHistory().stream().map(ControllerPort::entry).toList();
   }
 
   @Override
@@ -399,30 +523,5 @@ public final class SimRobotControl implements RobotControl {
   @Override
   public String jogStopReason() {
     return controller.jogMessage();
-  }
-
-  /** Called after every simulation tick {@link #advance} runs (a CSV trace). */
-  public void setAfterTick(java.util.function.Consumer<Simulation> listener) {
-    afterTick = Objects.requireNonNull(listener, "listener");
-  }
-
-  /** The simulation this port steps. */
-  public Simulation simulation() {
-    return simulation;
-  }
-
-  /** Steps the simulation in whole ticks; a remainder under one tick carries over to the next call. */
-  @Override
-  public void advance(double dtSec) {
-    if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
-      throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);
-    }
-    pendingSec += dtSec;
-    double tick = simulation.tickSec();
-    while (pendingSec >= tick - 1e-12) {
-      simulation.step();
-      afterTick.accept(simulation);
-      pendingSec -= tick;
-    }
   }
 }

@@ -1,20 +1,25 @@
-package org.robotrun.app;
+package org.robotrun.sim;
 
 import java.util.List;
+import org.robotrun.control.RobotControl.TeachMethod;
+import org.robotrun.control.RobotControl.TeachResult;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
-import org.robotrun.pendant.FrameTeacher;
-import org.robotrun.pendant.RobotControl.TeachMethod;
-import org.robotrun.pendant.RobotControl.TeachResult;
 import org.robotrun.program.Config;
 import org.robotrun.program.Position;
 import org.robotrun.robot.FrameTeaching;
 import org.robotrun.robot.FrameTeachingException;
 
 /** The pendant's frame teaching done by {@link FrameTeaching} (the kinematics issue's methods). */
-public final class RobotFrameTeacher implements FrameTeacher {
-  @Override
+public final class RobotFrameTeacher {
+  /**
+   * Computes the frame a method's recorded points define.
+   *
+   * @param X_WF the flange pose in WORLD at each recorded point (tool methods)
+   * @param p_W the active tool's TCP in WORLD at each recorded point (user methods)
+   * @return the frame (X_FT for a tool, X_WU for a user frame) or why the points do not define one
+   */
   public TeachResult teach(TeachMethod method, List<Transform> X_WF, List<Vec3> p_W) {
     Transform frame;
     try {

@@ -1,4 +1,4 @@
-package org.robotrun.pendant;
+package org.robotrun.control;
 
 import java.util.List;
 import java.util.Objects;
@@ -9,9 +9,12 @@ import org.robotrun.program.Program;
 import org.robotrun.program.Registers;
 
 /**
- * What the pendant needs from one robot's controller. The pendant owns screens and keys; the
- * controller owns programs, registers, frames, motion and execution. {@code sim.Controller} is
- * reached through an adapter in {@code app} (the tests also have a stand-in).
+ * The port between an operator's station (the teach pendant, the operator panel) and one robot's
+ * controller. The pendant owns screens and keys and sends switch signals and key commands; the
+ * controller owns programs, registers, frames, motion and execution, and makes every safety
+ * decision (may this jog move, hold-to-run, the T1 cap, SRVO-003) itself. {@code sim.ControllerPort}
+ * implements it on a {@code sim.Controller}. Time is not part of the port: the cell's stepper
+ * advances the controllers, and the pendant only looks at what they report.
  *
  * <p>Units at this boundary are the pendant's: mm and degrees; joints in FANUC's coupled-J3
  * convention. Every method a user can make fail answers with a {@link Result}, never an
@@ -190,28 +193,37 @@ public interface RobotControl {
     JOINT, JGFRM, WORLD, TOOL, USER
   }
 
-  /**
-   * A jog key goes down: axis 1..6 (X,Y,Z,W,P,R or J1..J6), sign +1/-1, in {@code coord}. Held:
-   * the axis moves until {@link #jogKeyUp}; latched (an on-screen click): the first press turns it
-   * on, a second press of the same key turns it off. Keys of different axes combine. The pendant
-   * only sends this with TP ENABLE on and the DEADMAN and SHIFT held.
-   */
-  Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched);
+  /** The jog coordinate system (COORD). */
+  CoordSystem coordSystem();
+
+  /** Selects the jog coordinate system; a change stops every jog axis. */
+  void setCoordSystem(CoordSystem coord);
 
   /**
-   * Incremental jog (override VFINE or FINE): one step of axis 1..6 by {@code sign} in
-   * {@code coord}, at once. Step sizes as an R-30iB documents them: FINE about 0.023 mm
-   * (0.001 deg for joints and rotations), VFINE about 0.002 mm (0.0001 deg).
+   * A jog key goes down: axis 1..6 (X,Y,Z,W,P,R or J1..J6), sign +1/-1, in the current
+   * coordinate system. Held: the axis moves until {@link #jogKeyUp}; latched (an on-screen
+   * click): the first press turns it on, a second press of the same key turns it off. Keys of
+   * different axes combine. Refused, with the reason, unless the switches allow a jog (not AUTO,
+   * TP ENABLE on, no E-stop, DEADMAN and SHIFT held) and the controller can (no alarm, no program
+   * moving the arm).
    */
-  Result jogIncrement(CoordSystem coord, int axis, int sign, boolean veryFine);
+  Result jogKeyDown(int axis, int sign, boolean latched);
+
+  /**
+   * Incremental jog (override VFINE or FINE): one step of axis 1..6 by {@code sign} in the
+   * current coordinate system, at once, refused as {@link #jogKeyDown} is. Step sizes as an
+   * R-30iB documents them: FINE about 0.023 mm (0.001 deg for joints and rotations), VFINE about
+   * 0.002 mm (0.0001 deg).
+   */
+  Result jogIncrement(int axis, int sign, boolean veryFine);
 
   /** A held jog key comes up (latched axes go on). */
   void jogKeyUp(int axis, int sign);
 
-  /** Every jog axis off (deadman released, COORD changed, HOLD). */
+  /** Every jog axis off (COORD changed, HOLD). */
   void jogStop();
 
-  // ---- safety: the operator panel's mode switch and E-stop, the pendant's E-stop and deadman ----
+  // ---- the operator's switches: TP ENABLE, DEADMAN, SHIFT, the mode switch, E-stops ----------
 
   /** The operator panel's mode switch, as on an R-30iB. */
   enum Mode {
@@ -222,11 +234,41 @@ public interface RobotControl {
     /** Production: programs start from the operator panel with the pendant disabled; no jogging. */
     AUTO;
 
+    /** The T1 speed limit of the TCP and the flange (mm/s). */
+    public static final double T1_SPEED_MM_PER_SEC = 250;
+
     /** Whether a program runs only while SHIFT and DEADMAN are held. */
     public boolean holdToRun() {
       return this != AUTO;
     }
   }
+
+  /** Whether the pendant's TP ENABLE switch is on. */
+  boolean tpEnabled();
+
+  /**
+   * TP ENABLE switched on or off. Off stops jogging and, in T1/T2, pauses a running program; the
+   * UOP output TPENBL follows it (CMDENBL needs it off).
+   */
+  void setTpEnabled(boolean on);
+
+  /** Whether the DEADMAN is held in its middle (enabling) position. */
+  boolean deadmanHeld();
+
+  /**
+   * The DEADMAN is held or let go. Let go with TP ENABLE on: SRVO-003, the arm stops, a program
+   * pauses. Answers what the prompt line says ("" when nothing).
+   */
+  Result setDeadman(boolean held);
+
+  /** Whether SHIFT is held. */
+  boolean shiftHeld();
+
+  /**
+   * SHIFT is held or let go. Let go: jogging stops and, in T1/T2, a running program pauses
+   * (hold-to-run). Answers what the prompt line says ("" when nothing).
+   */
+  Result setShift(boolean held);
 
   /** The mode switch. */
   Mode mode();
@@ -246,9 +288,6 @@ public interface RobotControl {
   /** Whether an E-stop button is pressed (RESET does nothing until it is released). */
   boolean emergencyStopped();
 
-  /** The DEADMAN was let go with the pendant enabled: SRVO-003, the arm stops, a program pauses. */
-  void deadmanReleased();
-
   // ---- execution ---------------------------------------------------------------------------
 
   /** Speed override, 1..100 %. */
@@ -263,12 +302,26 @@ public interface RobotControl {
   /** Sets single-step mode. */
   void setStepMode(boolean on);
 
+  /** Where a program start comes from. */
+  enum StartFrom {
+    /** SHIFT+FWD / SHIFT+BWD on the teach pendant (T1, T2; TP ENABLE on, DEADMAN and SHIFT held). */
+    TEACH_PENDANT,
+    /** CYCLE START on the operator panel (AUTO, TP ENABLE off). */
+    OPERATOR_PANEL
+  }
+
   /**
-   * SHIFT+FWD / SHIFT+BWD: runs {@code program} from {@code line} forward, or steps back one
-   * motion; a paused program of the same name resumes. Refused with a reason (active alarm,
-   * program missing, line out of range).
+   * Whether the switches allow a start from {@code from} now (mode, TP ENABLE, E-stop, DEADMAN,
+   * SHIFT), before a program is chosen: Ok, or the reason for the prompt line.
    */
-  Result run(String program, int line, boolean forward);
+  Result mayStart(StartFrom from, boolean forward);
+
+  /**
+   * SHIFT+FWD / SHIFT+BWD or CYCLE START: runs {@code program} from {@code line} forward, or
+   * steps back one motion; a paused program of the same name resumes. Refused with a reason
+   * ({@link #mayStart}, an active alarm, program missing, line out of range).
+   */
+  Result run(StartFrom from, String program, int line, boolean forward);
 
   /** HOLD: pauses a running program (motion decelerates). */
   void hold();
@@ -317,9 +370,7 @@ public interface RobotControl {
    * the edge of reach, a wrist singularity); "" when it did not. The pendant shows it on the prompt
    * line so a stop never looks like a broken robot.
    */
-  default String jogStopReason() {
-    return "";
-  }
+  String jogStopReason();
 
   /**
    * One alarm as the pendant shows it: {@code SRVO-062 ...}, {@code INTP-311 (PICK, 4) ...}.
@@ -342,67 +393,40 @@ public interface RobotControl {
     }
   }
 
-  // ---- time --------------------------------------------------------------------------------
-
-  /**
-   * Advances the simulation by {@code dtSec} of simulated time (headless and scripted use; a
-   * GUI-driven controller advances on its own clock and may treat this as a no-op).
-   */
-  void advance(double dtSec);
-
-  // ---- tasks and UOP (defaults: a controller without them) -------------------------------------
+  // ---- tasks and BG Logic -------------------------------------------------------------------
 
   /**
    * What runs now, by program: "RUNNING" or "PAUSED" for the main program and every RUN task,
    * "BG" for a running background logic program (the SELECT screen marks them).
    */
-  default java.util.Map<String, String> programStates() {
-    return java.util.Map.of();
-  }
+  java.util.Map<String, String> programStates();
 
   /** One line of STATUS Program: a running program, its state ("RUNNING", "PAUSED") and line. */
   record TaskInfo(String program, String state, int line, boolean main) {}
 
   /** The main program and the RUN tasks, main first (STATUS Program). */
-  default List<TaskInfo> tasks() {
-    return List.of();
-  }
+  List<TaskInfo> tasks();
 
   /** PAUSE (true) or resume (false) one RUN task. */
-  default Result pauseTask(String program, boolean pause) {
-    return Result.refused("this controller has no multitasking");
-  }
+  Result pauseTask(String program, boolean pause);
 
   /** ABORT one RUN task. */
-  default Result abortTask(String program) {
-    return Result.refused("this controller has no multitasking");
-  }
+  Result abortTask(String program);
 
   /** One BG Logic slot (SETUP BG Logic). */
   record BgSlot(String program, boolean running) {}
 
-  default List<BgSlot> bgSlots() {
-    return List.of();
-  }
+  /** The BG Logic slots, in order. */
+  List<BgSlot> bgSlots();
 
   /** Puts a program in the next BG Logic slot (refused with the controller's reason). */
-  default Result addBg(String program) {
-    return Result.refused("this controller has no BG Logic");
-  }
+  Result addBg(String program);
 
   /** START (true) or STOP (false) a BG Logic slot. */
-  default Result runBg(String program, boolean run) {
-    return Result.refused("this controller has no BG Logic");
-  }
+  Result runBg(String program, boolean run);
 
   /** Removes a program from its BG Logic slot. */
-  default Result removeBg(String program) {
-    return Result.refused("this controller has no BG Logic");
-  }
-
-  /** The pendant's TP ENABLE switch changed (the controller's UOP outputs TPENBL and needs it off for CMDENBL). */
-  default void tpEnableChanged(boolean on) {
-  }
+  Result removeBg(String program);
 
   /** Outcome of a command the controller may refuse. */
   sealed interface Result {

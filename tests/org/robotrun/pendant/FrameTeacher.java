@@ -1,18 +1,17 @@
 package org.robotrun.pendant;
 
 import java.util.List;
+import org.robotrun.control.RobotControl.TeachMethod;
+import org.robotrun.control.RobotControl.TeachResult;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import org.robotrun.pendant.RobotControl.TeachMethod;
-import org.robotrun.pendant.RobotControl.TeachResult;
 
 /**
- * Frame teaching geometry for a controller that has none of its own: the project's lives in
- * {@code robot.FrameTeaching}, which the pendant may not import, so the application passes it
- * in (see {@code app.RobotFrameTeacher}).
+ * Frame teaching geometry for the stand-in controller, which has none of its own: the project's is
+ * {@code sim.RobotFrameTeacher} (over {@code robot.FrameTeaching}), passed in by {@link StandIn}.
  */
 @FunctionalInterface
-public interface FrameTeacher {
+interface FrameTeacher {
   /**
    * Computes the frame a method's recorded points define.
    *
