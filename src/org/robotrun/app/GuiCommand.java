@@ -23,6 +23,7 @@ import org.robotrun.robot.RobotModel;
 import org.robotrun.sim.CellStepper;
 import org.robotrun.sim.Controller;
 import org.robotrun.sim.ControllerPort;
+import org.robotrun.grade.Course;
 import org.robotrun.grade.Grader;
 import org.robotrun.grade.TaskLoad;
 import org.robotrun.grade.TaskReader;
@@ -81,9 +82,16 @@ public final class GuiCommand implements Callable<Integer> {
           + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
 
+  @Option(names = "--course", paramLabel = "DIR|course.json",
+      description = "The course whose labs the Labs menu lists (docs/labs/README.md); default: the shipped one, "
+          + "scenarios/labs. Each lab's workspace is in ~/robotrun-labs/ID (ROBOTRUN_LABS_HOME sets another folder).")
+  Path courseFile;
+
   @Option(names = "--task", paramLabel = "TASK.json",
       description = "A grading task (docs/grading.md): adds a Check menu whose 'Check my work' runs the task's visible "
-          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario.")
+          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario; "
+          + "with a --workspace folder that is new or empty, makes it from the task's scenario (a lab's own workspace, "
+          + "reopened the next time).")
   Path task;
 
   @Option(names = "--program", paramLabel = "FILE.LS",
@@ -156,9 +164,15 @@ public final class GuiCommand implements Callable<Integer> {
       throw new UserError("--program: cannot read a program (" + e.getMessage() + ")");
     }
     UserDirs dirs = UserDirs.fromSystem();
+    Course course = course(courseFile);
+    Path labsHome = labsHome();
     Path next;
     if (scenario != null) {
       next = WorkspaceFiles.createFromScenario(scenario, dirs.newWorkspaceFor(stem(scenario)));
+    } else if (taskLoaded != null && workspace != null
+        && (!java.nio.file.Files.exists(workspace) || WorkspaceFiles.isEmptyFolder(workspace))) {
+      // A lab: the student's own workspace for the task, made from the task's cell the first time and reopened after.
+      next = WorkspaceFiles.createFromScenario(taskLoaded.task().scenario(), workspace);
     } else {
       next = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
     }
@@ -177,9 +191,33 @@ public final class GuiCommand implements Callable<Integer> {
         if (log) {
           stage("cell and window ready");
         }
-        if (taskLoaded != null) {
-          s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()),
-              s.sim().controllers()));
+        // The Labs menu: the course's labs; a workspace in the labs folder is its lab's, with its task.
+        java.util.Optional<Course.Lab> lab = course == null ? java.util.Optional.empty()
+            : labOf(course, labsHome, next);
+        TaskLoad.Loaded sessionTask = taskLoaded;
+        if (sessionTask == null && lab.isPresent() && TaskReader.read(lab.get().task()) instanceof TaskLoad.Loaded l) {
+          sessionTask = l;
+        }
+        org.robotrun.ui.LabsPanel labs = null;
+        if (course != null) {
+          SimulatorWindow sw = s.window();
+          labs = new org.robotrun.ui.LabsPanel(course, labsHome, lab, chosen -> {
+            Path dir = labsHome.resolve(chosen.id());
+            if (!java.nio.file.Files.exists(dir) || WorkspaceFiles.isEmptyFolder(dir)) {
+              WorkspaceFiles.createFromScenario(chosen.cell(), dir);
+            }
+            switchTo[0] = dir;
+            sw.requestClose();
+          });
+          s.bench().addMenus(labs);
+        }
+        if (sessionTask != null) {
+          CheckWorkPanel check = new CheckWorkPanel(new Grader(sessionTask.task(), sessionTask.scenario()),
+              s.sim().controllers());
+          if (labs != null) {
+            check.onResult(labs::checked);
+          }
+          s.bench().addMenus(check);
         }
         SimulatorWindow w = s.window();
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
@@ -430,6 +468,60 @@ public final class GuiCommand implements Callable<Integer> {
       pendantPanel.releaseLatched();
     });
     return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim), frameScene);
+  }
+
+  /** The course the Labs menu lists: {@code --course}, else the shipped one when it is there (null: no Labs menu). */
+  static Course course(Path given) {
+    if (given != null) {
+      try {
+        return Course.read(given);
+      } catch (Course.CourseException e) {
+        throw new UserError("--course: " + e.getMessage());
+      }
+    }
+    for (Path p : shippedCourses()) {
+      if (java.nio.file.Files.isRegularFile(p)) {
+        try {
+          return Course.read(p);
+        } catch (Course.CourseException e) {
+          System.err.println("robotrun: the Labs menu is off: " + e.getMessage());
+          return null;
+        }
+      }
+    }
+    return null;
+  }
+
+  /** Where the shipped course may be: beside the application (scenarios/labs), or in the current folder. */
+  private static List<Path> shippedCourses() {
+    List<Path> out = new java.util.ArrayList<>();
+    try {
+      Path jar = Path.of(GuiCommand.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+      Path dir = jar.getParent();
+      for (int up = 0; dir != null && up < 3; up++, dir = dir.getParent()) {
+        out.add(dir.resolve("scenarios/labs/course.json"));
+      }
+    } catch (java.net.URISyntaxException | RuntimeException e) {
+      // no code source: the current folder only
+    }
+    out.add(Path.of("scenarios/labs/course.json"));
+    return out;
+  }
+
+  /** The student's labs folder: ROBOTRUN_LABS_HOME, else ~/robotrun-labs. */
+  static Path labsHome() {
+    String env = System.getenv("ROBOTRUN_LABS_HOME");
+    return (env != null && !env.isBlank() ? Path.of(env) : Path.of(System.getProperty("user.home"), "robotrun-labs"))
+        .toAbsolutePath().normalize();
+  }
+
+  /** The lab whose workspace {@code dir} is: a folder of the labs folder named after a lab's id. */
+  static java.util.Optional<Course.Lab> labOf(Course course, Path home, Path dir) {
+    Path d = dir.toAbsolutePath().normalize();
+    if (d.getParent() == null || !d.getParent().equals(home)) {
+      return java.util.Optional.empty();
+    }
+    return course.lab(d.getFileName().toString());
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */

@@ -75,7 +75,7 @@ final class CellRunner {
       // Moved in its parent's frame, turned about its own vertical axis.
       Transform moved = Transform.translation(dx, dy, 0).compose(o.startPose())
           .compose(Transform.rotation(0, 0, 1, Math.toRadians(drDeg)));
-      world = world.with(WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), moved, o.startParent()));
+      world = world.with(WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), moved, o.startParent()).withTouchable(o.touchable()));
       j.offsetRegister().ifPresent(n -> regs.put(n, new Position.Cartesian(dx, dy, 0, 0, 0, drDeg, Config.DEFAULT)));
     }
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
@@ -144,7 +144,10 @@ final class CellRunner {
         startParents.put(o.name(), o.parent());
       }
     }
+    List<org.robotrun.math.Vec3> path = new ArrayList<>();
     HeadlessRun.CellResult r = HeadlessRun.runCell(sim, mains, maxSimSec, s -> {
+      org.robotrun.math.Xyzwpr t = c.tcpInWorld();
+      path.add(new org.robotrun.math.Vec3(t.x(), t.y(), t.z()));
       if ((s.ticks() & 63) == 0 && System.nanoTime() - deadlineNanos > 0) {
         throw new WallClockExceeded();
       }
@@ -163,6 +166,6 @@ final class CellRunner {
     Optional<ControllerAlarm> alarm = sim.controllers().size() == 1 ? one.alarm() : r.alarm();
     return new RunOutcome(v.label(), finished, alarm, r.cycleTimeSec(),
         sim.world(), Map.copyOf(sim.heldParts()), new ArrayList<>(sim.collisionEvents()), c.registers(), c.frames(),
-        sim.snapshot().scene(), startParents, List.copyOf(robots));
+        sim.snapshot().scene(), startParents, List.copyOf(robots), List.copyOf(path));
   }
 }

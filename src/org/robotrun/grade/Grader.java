@@ -163,7 +163,9 @@ public final class Grader {
     });
     boolean needVariations = checks.stream().anyMatch(c -> c.meta().runs() != Check.Runs.NOMINAL);
     int count = needVariations ? task.variations().count() : 0;
-    if (cannotRun.isEmpty()) {
+    if (task.program().isEmpty()) {
+      notRun.add("the task runs no program");
+    } else if (cannotRun.isEmpty()) {
       for (int i = 0; i <= count; i++) {
         CellRunner.Variant v = i == 0 ? CellRunner.nominal(cell, task.variations())
             : CellRunner.variation(cell, task.variations(), i);
@@ -185,7 +187,7 @@ public final class Grader {
     } else {
       notRun.add(cannotRun.get());
     }
-    Context ctx = new Context(loaded, handInProblems, ignored, cellNotes, runs, notRun, cell);
+    Context ctx = new Context(loaded, handInProblems, ignored, cellNotes, runs, notRun, cell, positionRegisters);
     List<CheckResult> out = new ArrayList<>();
     for (Check c : checks) {
       out.add(evaluate(c, ctx));
@@ -195,7 +197,7 @@ public final class Grader {
 
   /** What a grade needs besides the check. */
   private record Context(Loaded loaded, List<String> handInProblems, String ignored, List<String> cellNotes,
-      List<RunOutcome> runs, List<String> notRun, Scenario cell) {
+      List<RunOutcome> runs, List<String> notRun, Scenario cell, Map<Integer, Position> positionRegisters) {
     /** The hand-in check's notes: the files ignored, then why the cell.json was not used. */
     String handInNotes() {
       return (ignored.isEmpty() ? "" : "\nnote: " + ignored) + notes();
@@ -258,6 +260,7 @@ public final class Grader {
       case Check.ProgramUse u -> ProgramUse.evaluate(u, ctx.loaded().programsOf(robotOf(u)), mainOf(robotOf(u)))
           .map(why -> fail(c, why)).orElseGet(() -> pass(c, ProgramUse.describe(u)));
       case Check.Frame f -> frame(f, ctx);
+      case Check.PositionRegister r -> positionRegister(r, ctx);
       default -> overRuns(c, ctx);
     };
   }
@@ -317,6 +320,22 @@ public final class Grader {
         name, d, a, fmt(f.toleranceMm()), fmt(f.toleranceDeg()));
     m += ctx.notes();
     return d <= f.toleranceMm() && a <= f.toleranceDeg() ? pass(f, m) : fail(f, m);
+  }
+
+  private CheckResult positionRegister(Check.PositionRegister r, Context ctx) {
+    String name = "PR[" + r.number() + "]";
+    Position p = ctx.positionRegisters().get(r.number());
+    if (p == null) {
+      return fail(r, name + " was never recorded (it holds zeros)" + ctx.notes());
+    }
+    if (!(p instanceof Position.Cartesian c)) {
+      return fail(r, name + " holds joint angles, not X, Y, Z: record it with the pendant in a Cartesian "
+          + "representation (DATA, Position Reg, SHIFT+F3 RECORD)" + ctx.notes());
+    }
+    double d = new Vec3(c.xMm(), c.yMm(), c.zMm()).minus(r.position()).norm();
+    String m = String.format(Locale.ROOT, "%s is %.2f mm from the point (X %.1f Y %.1f Z %.1f, allowed %s mm)",
+        name, d, c.xMm(), c.yMm(), c.zMm(), fmt(r.toleranceMm())) + ctx.notes();
+    return d <= r.toleranceMm() ? pass(r, m) : fail(r, m);
   }
 
   // ---- programs and cell -------------------------------------------------------------------

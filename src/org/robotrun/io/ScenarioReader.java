@@ -79,7 +79,7 @@ public final class ScenarioReader {
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
-      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent");
+      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent", "touchable");
   private static final Map<String, Set<String>> SHAPE_FIELDS = Map.of(
       "box", Set.of("size"), "cylinder", Set.of("radius", "height"), "mesh", Set.of("file", "scale"));
   private static final Set<String> POSE = Set.of("x", "y", "z", "w", "p", "r");
@@ -563,6 +563,7 @@ public final class ScenarioReader {
           return rgb.orElse(Rgb.GREY);
         }).orElse(Rgb.GREY);
         Transform pose = pose(o, "pose", at);
+        boolean touchable = touchable(o, at);
         Optional<String> parent = string(o, "parent", at, false);
         // Checked here, not with the other parents: the world object itself refuses it.
         boolean ownParent = objName.isPresent() && parent.isPresent() && parent.get().equals(objName.get());
@@ -576,11 +577,23 @@ public final class ScenarioReader {
           }
         }
         if (objName.isPresent() && kind.isPresent() && shape != null && pose != null && !ownParent) {
-          out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent));
+          out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent).withTouchable(touchable));
         }
       }
       checkParents(kinds, parented);
       return out;
+    }
+
+    private boolean touchable(JObject o, String at) {
+      LocatedJson v = o.members().get("touchable");
+      if (v == null) {
+        return false;
+      }
+      if (!(v instanceof LocatedJson.JBool b)) {
+        error(v.line(), at + ".touchable", "expected true or false, got " + v.describe());
+        return false;
+      }
+      return b.value();
     }
 
     private void checkParents(Map<String, ObjectKind> kinds, List<Parented> parented) {

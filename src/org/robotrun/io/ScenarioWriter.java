@@ -282,6 +282,9 @@ public final class ScenarioWriter {
     if (o.parent().isPresent()) {
       g.writeStringField("parent", o.parent().get());
     }
+    if (o.touchable()) {
+      g.writeBooleanField("touchable", true);
+    }
     g.writeEndObject();
   }
 
