@@ -837,6 +837,15 @@ public final class Interpreter {
   }
 
   /** The value of R[j] used as an index ({@code R[R[j]]}, {@code LBL[R[j]]}): a whole number. */
+  /** The CALL argument AR[j] as an index (R[AR[1]]): an alarm when it is missing or not a whole number. */
+  int argAsIndex(int j) {
+    double v = readArg(j);
+    if (kind == Nodes.STR || !Nodes.isWhole(v)) {
+      throw new AlarmSignal(AlarmKind.BAD_INDEX, "AR[" + j + "] is not a whole number and cannot be an index");
+    }
+    return (int) v;
+  }
+
   int registerAsIndex(int j) {
     Nodes.check("R", j, Registers.R_COUNT);
     double v = regs.r[j];

@@ -90,6 +90,7 @@ public final class BgLogic {
       case Instruction.Label l -> null;
       case Instruction.Jump j -> null;
       case Instruction.If f -> f.branch() instanceof Instruction.Call ? "CALL" : null;
+      case Instruction.IfAction f -> f.action() instanceof Instruction.AssignPosElement ? "a PR[] assignment" : null;
       case Instruction.IfThen f -> null;
       case Instruction.Else e -> null;
       case Instruction.EndIf e -> null;

@@ -24,6 +24,7 @@ import org.robotrun.motion.MotionRunner;
 import org.robotrun.motion.MoveRequest;
 import org.robotrun.motion.Speed;
 import org.robotrun.motion.Termination;
+import org.robotrun.program.TaskPort;
 import org.robotrun.program.Alarm;
 import org.robotrun.program.AlarmCode;
 import org.robotrun.program.Instruction.FrameKind;
@@ -167,7 +168,21 @@ public final class Controller implements MotionPort {
     this.tasks = new Tasks(this, n -> Optional.ofNullable(programs.get(n)), settings);
     this.bgLogic = new BgLogic(this, n -> Optional.ofNullable(programs.get(n)), settings);
     this.uop = new Uop(this);
-    interpreter.setTaskPort(tasks::run);
+    interpreter.setTaskPort(new TaskPort() {
+      @Override
+      public Optional<String> run(String program) {
+        return tasks.run(program);
+      }
+
+      @Override
+      public int backgroundStatus(int slot) {
+        var slots = bgLogic.slots();
+        if (slot < 1 || slot > slots.size()) {
+          return 0;
+        }
+        return slots.get(slot - 1).running() ? 2 : 1;
+      }
+    });
   }
 
   public String name() {

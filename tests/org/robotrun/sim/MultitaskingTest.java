@@ -11,7 +11,7 @@ import org.robotrun.program.IoKind;
 /**
  * RUN starts a task beside the main program, as on an R-30iB: tasks share registers and I/O, a
  * task without a motion group runs while the main program moves, two tasks never hold group 1
- * (INTP-105, cause PROG-040), and RUN of a running program fails with INTP-105.
+ * (INTP-267, cause PROG-040), and RUN of a running program fails with INTP-267 (cause PROG-007).
  */
 class MultitaskingTest {
 
@@ -63,7 +63,7 @@ class MultitaskingTest {
     c.run("MAIN", 1, true);
     steps(sim, 3);
     assertThat(c.activeAlarms()).hasSize(1);
-    assertThat(c.activeAlarms().get(0).code()).isEqualTo("INTP-105");
+    assertThat(c.activeAlarms().get(0).code()).isEqualTo("INTP-267");
     assertThat(c.activeAlarms().get(0).message()).contains("PROG-040 Already locked by other task").contains("MAIN");
     assertThat(c.activeAlarms().get(0).line()).isEqualTo(1);
     assertThat(c.registers().number(9)).isZero();
@@ -89,8 +89,9 @@ class MultitaskingTest {
     c.saveProgram(program("MAIN", false, "RUN LOOPER", "RUN LOOPER"));
     c.run("MAIN", 1, true);
     steps(sim, 3);
-    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
-    assertThat(c.activeAlarms().get(0).message()).contains("LOOPER is already running");
+    // INTP-267 RUN stmt failed, cause PROG-007 (FANUC's help text for a RUN of a running program)
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-267");
+    assertThat(c.activeAlarms().get(0).message()).contains("PROG-007").contains("LOOPER is already running");
     assertThat(c.activeAlarms().get(0).line()).isEqualTo(2);
     // and the pendant cannot start it either
     assertThat(c.run("LOOPER", 1, true)).isInstanceOf(RobotControl.Result.Refused.class);
