@@ -53,14 +53,27 @@ class ArchitectureTest {
         .importPackages("org.robotrun");
   }
 
+  /** DESIGN.md's one exception: io may read mesh files through LWJGL's Assimp binding, in this class only. */
+  private static final String ASSIMP_READER = "org.robotrun.io.AssimpMeshes";
+
   @Test
   void corePackagesDoNotTouchOpenGlUiOrApp() {
     for (String p : HEADLESS) {
       noClasses().that().resideInAPackage("org.robotrun." + p + "..")
+          .and().doNotHaveFullyQualifiedName(ASSIMP_READER)
           .should().dependOnClassesThat().resideInAnyPackage(
               "org.lwjgl..", "imgui..", "org.robotrun.render..", "org.robotrun.ui..", "org.robotrun.app..")
           .check(classes);
     }
+  }
+
+  @Test
+  void theAssimpReaderUsesOnlyAssimpAndLwjglsMemoryTypes() {
+    noClasses().that().haveFullyQualifiedName(ASSIMP_READER)
+        .should().dependOnClassesThat().resideInAnyPackage(
+            "org.lwjgl.opengl..", "org.lwjgl.glfw..", "org.lwjgl.stb..", "org.lwjgl.nfd..", "imgui..",
+            "org.robotrun.render..", "org.robotrun.ui..", "org.robotrun.app..")
+        .check(classes);
   }
 
   @Test

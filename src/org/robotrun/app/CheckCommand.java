@@ -90,6 +90,8 @@ public final class CheckCommand implements Callable<Integer> {
     PrintWriter out = spec.commandLine().getOut();
     PrintWriter err = spec.commandLine().getErr();
     boolean unreadable = false;
+    // files that could not be read at all: on stderr, and in the JSON too (line 0: the whole file)
+    List<Diagnostic> fileErrors = new ArrayList<>();
     List<LsReadResult> results = new ArrayList<>();
     for (Path given : files) {
       List<Path> programs;
@@ -98,11 +100,13 @@ public final class CheckCommand implements Callable<Integer> {
       } catch (IOException e) {
         err.println(TerminalText.safe(given + ": cannot read: " + reason(e)));
         unreadable = true;
+        fileErrors.add(Diagnostic.error(given.toString(), 0, "cannot read: " + reason(e)));
         continue;
       }
       if (programs.isEmpty()) {
         err.println(TerminalText.safe(given + ": no .LS files in this directory"));
         unreadable = true;
+        fileErrors.add(Diagnostic.error(given.toString(), 0, "no .LS files in this directory"));
       }
       for (Path f : programs) {
         try {
@@ -110,6 +114,7 @@ public final class CheckCommand implements Callable<Integer> {
         } catch (IOException e) {
           err.println(TerminalText.safe(f + ": cannot read: " + reason(e)));
           unreadable = true;
+          fileErrors.add(Diagnostic.error(f.toString(), 0, "cannot read: " + reason(e)));
         }
       }
     }
@@ -137,7 +142,7 @@ public final class CheckCommand implements Callable<Integer> {
       }
     }
     boolean errors = false;
-    List<Diagnostic> shown = new ArrayList<>();
+    List<Diagnostic> shown = new ArrayList<>(format == Format.json ? fileErrors : List.of());
     for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known), table)) {
       List<Diagnostic> all = new ArrayList<>(withSimulatorWarnings(r));
       if (model != null) {

@@ -1,6 +1,7 @@
 package org.robotrun.app;
 
 import java.nio.charset.StandardCharsets;
+import org.robotrun.io.TerminalText;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -135,7 +136,10 @@ final class GradeReports {
     return b.toString();
   }
 
-  static String csv(String s) {
+  static String csv(String raw) {
+    // Names come from students' files: control characters (NUL, ESC, CR, LF) are escaped as the
+    // terminal and the HTML report do, so a row stays one row and no byte can drive a viewer.
+    String s = TerminalText.safe(raw.replace("\r", "\\r").replace("\n", "\\n"));
     // A leading = + - @ would be a formula in a spreadsheet; a quote before it keeps it text.
     String v = !s.isEmpty() && "=+-@".indexOf(s.charAt(0)) >= 0 ? "'" + s : s;
     if (v.contains(",") || v.contains("\"") || v.contains("\n") || v.contains("\r")) {

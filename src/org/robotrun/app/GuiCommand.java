@@ -57,7 +57,7 @@ import picocli.CommandLine.Option;
       "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant side by side.",
       "The window works in a workspace, a folder with cell.json and programs/NAME.LS (docs/workspace.md): with no option "
           + "it opens the last workspace, or creates the default one (Linux ~/.local/share/robotrun/workspace, Windows "
-          + "%APPDATA%\\RobotRun\\workspace, macOS ~/Library/Application Support/RobotRun/workspace). Every change is saved "
+          + "%%APPDATA%%\\RobotRun\\workspace, macOS ~/Library/Application Support/RobotRun/workspace). Every change is saved "
           + "within 2 s and on close; File menu: New/Open workspace (Ctrl+O), Open scenario, Save now (Ctrl+S), Save a copy, "
           + "Import/Export .LS, Recent, Hand in, Quit (Ctrl+Q).",
       "Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object; Home resets the view.",

@@ -28,6 +28,7 @@ import picocli.CommandLine.Command;
       GradeCommand.class,
       AutograderCommand.class,
       BenchCommand.class,
+      RobotCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class Main implements java.util.concurrent.Callable<Integer> {

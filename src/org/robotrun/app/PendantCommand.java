@@ -39,7 +39,9 @@ import picocli.CommandLine.Spec;
       "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10%% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
       "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD). In a cell of several robots each has its own controller and pendant (the status line starts with its name); ROBOT 2 or ROBOT name switches to another; --program and --save concern the first robot's programs; --mode and --override set every robot's start.",
       "With --workspace DIR the workspace is opened (or created) first and everything the script changes is saved back to it when the script ends (and at each SHOW); a second RobotRun on the same workspace opens it read-only. Opening it is a cold start too (T1, 10%%).",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written, 2 bad option, unreadable program or malformed script (file:line)."
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written "
+          + "(a --workspace that cannot be saved to: held by another RobotRun for more than 10 s, read-only, a hand-in "
+          + "zip: the script is not run), 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   /** The override a cold start sets ($SCR.$COLDOVRD on a controller): 10%. */
@@ -123,8 +125,7 @@ public final class PendantCommand implements Callable<Integer> {
     Simulation sim;
     Scenario cell = null;
     if (workspace != null) {
-      session = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
-          m -> System.err.println("robotrun: " + m));
+      session = openForWriting(workspace);
       if (!session.problems().isEmpty()) {
         System.err.println("robotrun: " + session.problems());
       }
@@ -199,8 +200,12 @@ public final class PendantCommand implements Callable<Integer> {
           stopped[0] = script.run(pendants, robotNames, stepper::advance, show, clock::expired);
           w.flush();
         });
-      } catch (IOException e) {
-        throw new UserError("--trace: cannot write " + trace + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+      } catch (IOException | java.io.UncheckedIOException e) {
+        // as run says it: a full disk while tracing is one line, never an internal error
+        Throwable t = e instanceof java.io.UncheckedIOException u ? u.getCause() : e;
+        String why = t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
+        throw new UserError("--trace: could not write " + trace + " (" + why + "); the old file, if any, is unchanged",
+            Main.EXIT_FAILED);
       }
     }
     int stoppedAt = stopped[0];
@@ -227,6 +232,47 @@ public final class PendantCommand implements Callable<Integer> {
       }
     }
     return Main.EXIT_OK;
+  }
+
+  /** How long a script waits for another RobotRun to let go of the workspace. */
+  static volatile double lockWaitSeconds = 10;
+
+  /**
+   * Opens the workspace for the script, which must be able to save what it does: while another
+   * RobotRun holds it, waits up to {@link #lockWaitSeconds} for it; when it still cannot be
+   * written (held, a read-only folder or disk, a lock file that is not a file, a hand-in zip),
+   * fails before the script runs, exit 1, saying why. A script whose result cannot be saved is
+   * never run.
+   */
+  private static WorkspaceSession openForWriting(Path workspace) {
+    long deadline = System.nanoTime() + (long) (lockWaitSeconds * 1e9);
+    boolean said = false;
+    while (true) {
+      WorkspaceSession s = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
+          m -> System.err.println("robotrun: " + m));
+      if (!s.workspace.readOnly()) {
+        return s;
+      }
+      String why = s.workspace.readOnlyReason();
+      boolean busy = s.workspace.lockBusy();
+      s.close();
+      if (busy && System.nanoTime() < deadline) {
+        if (!said) {
+          System.err.println("robotrun: " + workspace + ": another RobotRun has this workspace open; waiting up to "
+              + WallClock.format(lockWaitSeconds) + " s for it");
+          said = true;
+        }
+        try {
+          Thread.sleep(200);
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+          throw new UserError("--workspace: interrupted while waiting for " + workspace, Main.EXIT_FAILED);
+        }
+        continue;
+      }
+      throw new UserError("--workspace: " + workspace + ": " + why.replace(": opened read-only, nothing is saved", "")
+          + "; the script was not run, since nothing it did could be saved", Main.EXIT_FAILED);
+    }
   }
 
   private static Program readProgram(Path file) {

@@ -125,6 +125,22 @@ public final class RunCommand implements Callable<Integer> {
 
   @Override
   public Integer call() throws IOException {
+    try {
+      return runCommand();
+    } finally {
+      if (openSession != null) {
+        openSession.close();  // the hand-in's temporary copy goes, whatever happened
+      }
+    }
+  }
+
+  /** The workspace this run opened, closed by {@link #call} whatever happens. */
+  private WorkspaceSession openSession;
+
+  private Integer runCommand() throws IOException {
+    if (seed != null && !org.robotrun.io.VisionJson.isValidSeed(seed)) {
+      throw new UserError("--seed: expected a whole number of at most 15 digits (as vision.seed), got " + seed);
+    }
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
     }
@@ -152,6 +168,7 @@ public final class RunCommand implements Callable<Integer> {
         throw new UserError("--workspace and --scenario: give one of them (a workspace has its own cell)");
       }
       session = WorkspaceSession.open(workspace, true, java.util.Optional::empty, m -> {});
+      openSession = session;
       if (session.workspace.cellBlocked()) {
         String why = session.problems();
         session.close();

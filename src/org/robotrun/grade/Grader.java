@@ -428,8 +428,8 @@ public final class Grader {
         if (SubmissionLoader.isLs(fileName) && !org.robotrun.io.HandInDroppings.isDropping(fileName)
             && Files.isRegularFile(p)) {
           files.add(p);
-          if (files.size() > SubmissionLoader.Limits.DEFAULT.entries()) {
-            errors.add(shown + ": more than " + SubmissionLoader.Limits.DEFAULT.entries() + " .LS files");
+          if (files.size() > SubmissionLoader.DEFAULT_LIMITS.entries()) {
+            errors.add(shown + ": more than " + SubmissionLoader.DEFAULT_LIMITS.entries() + " .LS files");
             return List.of();
           }
         }
@@ -443,8 +443,8 @@ public final class Grader {
     for (Path f : files) {
       String name = shown + f.getFileName();
       try {
-        if (Files.size(f) > SubmissionLoader.Limits.DEFAULT.entryBytes()) {
-          errors.add(name + ": larger than " + (SubmissionLoader.Limits.DEFAULT.entryBytes() >> 20) + " MB; not a program");
+        if (Files.size(f) > SubmissionLoader.DEFAULT_LIMITS.entryBytes()) {
+          errors.add(name + ": larger than " + (SubmissionLoader.DEFAULT_LIMITS.entryBytes() >> 20) + " MB; not a program");
           continue;
         }
         read.add(LsReader.readCheckingFileName(f));
@@ -479,7 +479,7 @@ public final class Grader {
     }
     Scenario own;
     TreeMap<Integer, Double> stateRegisters = new TreeMap<>();
-    switch (ScenarioReader.readCell(sub.cell().get())) {
+    switch (ScenarioReader.readHandInCell(sub.cell().get())) {
       case CellLoad.Loaded l -> {
         own = l.scenario();
         // A workspace's saved controller state (docs/scenario-format.md, "state"): its R[] and PR[].

@@ -181,8 +181,14 @@ public final class TaskReader {
         error(line, "scenario", "not a valid path: \"" + rel.get() + "\"");
         return null;
       }
-      if (!Files.isRegularFile(p)) {
+      if (!Files.exists(p)) {
         error(line, "scenario", "scenario file not found: " + p + " (paths are relative to the task file)");
+        return null;
+      }
+      try {
+        org.robotrun.io.BoundedFiles.requireRegularFile(p);  // a device or FIFO is named, never opened
+      } catch (org.robotrun.io.UnreadableFileException e) {
+        error(line, "scenario", "cannot read the scenario " + p + ": " + e.getMessage());
         return null;
       }
       return switch (ScenarioReader.read(p)) {

@@ -115,7 +115,8 @@ public final class ScenarioWriter {
       for (RobotSetup r : s.robots()) {
         g.writeStartObject();
         g.writeStringField("name", r.name());
-        g.writeStringField("model", r.modelId());
+        // A robot file is named relative to the scenario, as programs are.
+        g.writeStringField("model", RobotDefinitions.isFileReference(r.modelId()) ? relative(dir, Path.of(r.modelId())) : r.modelId());
         pose(g, "basePose", r.X_CB());
         g.writeStringField("endEffector", r.endEffector().fileName());
         g.writeArrayFieldStart("jointsDeg");

@@ -31,6 +31,14 @@ public final class VisionJson extends JsonFieldReader {
   /** The section's key in the scenario file. */
   public static final String KEY = "vision";
 
+  /** Seeds are whole numbers below this in size: exact in a double, so written and read back unchanged. */
+  public static final double SEED_LIMIT = 9.0e15;
+
+  /** Whether {@code seed} is a seed {@code vision.seed} (and so {@code --seed}) takes: |seed| below {@link #SEED_LIMIT}. */
+  public static boolean isValidSeed(double seed) {
+    return seed == Math.rint(seed) && Math.abs(seed) < SEED_LIMIT;
+  }
+
   private static final Set<String> TOP = Set.of("seed", "cameras", "models", "processes", "placements");
   private static final Set<String> CAMERA = Set.of("name", "robot", "pose", "fovDeg", "imageSize", "searchWindow",
       "noise");
@@ -76,10 +84,10 @@ public final class VisionJson extends JsonFieldReader {
     long seed = 1;
     if (o.members().containsKey("seed")) {
       LocatedJson s = o.members().get("seed");
-      if (s instanceof JNumber n && n.integral() && Math.abs(n.value()) < 9.0e15) {
+      if (s instanceof JNumber n && n.integral() && isValidSeed(n.value())) {
         seed = (long) n.value();
       } else {
-        error(s.line(), KEY + ".seed", "expected a whole number, got " + s.describe());
+        error(s.line(), KEY + ".seed", "expected a whole number of at most 15 digits, got " + s.describe());
       }
     }
     World world = worldOf(objects);

@@ -167,7 +167,9 @@ public final class KeyScript {
           steps.add(new Step.Type(n, text.stripTrailing()));
         }
         case "WAIT" -> {
-          java.util.OptionalDouble v = org.robotrun.math.DecimalText.parse(rest);
+          // a plain decimal (docs/pendant.md): "2.5", not "1e3", "+2" or other scripts' digits
+          java.util.OptionalDouble v = rest.matches("-?([0-9]{1,9}(\\.[0-9]{0,9})?|\\.[0-9]{1,9})")
+              ? org.robotrun.math.DecimalText.parse(rest) : java.util.OptionalDouble.empty();
           if (v.isEmpty()) {
             return bad(file, n, "WAIT needs seconds (e.g. WAIT 2.5), got '" + rest + "'");
           }
@@ -250,11 +252,11 @@ public final class KeyScript {
           int times = 1;
           int star = t.lastIndexOf('*');
           if (star > 0) {
-            try {
-              times = Integer.parseInt(t.substring(star + 1).strip());
-            } catch (NumberFormatException e) {
+            String count = t.substring(star + 1).strip();
+            if (!count.matches("[0-9]{1,9}")) {
               return bad(file, n, "repeat count after * must be a whole number");
             }
+            times = Integer.parseInt(count);
             if (times < 1 || times > 1000) {
               return bad(file, n, "repeat count must be 1..1000");
             }

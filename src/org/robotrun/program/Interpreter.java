@@ -61,8 +61,6 @@ public final class Interpreter {
   private static final int W_CONDITION = 3;
   private static final double TIME_EPS_SEC = 1e-9;
   private static final int MAX_SCREEN_LINES = 100;
-  /** Ports PULSE may drive. */
-  private static final IoKind[] PULSED = {IoKind.DO, IoKind.RO};
 
   final ProgramStore store;
   final Registers regs;
@@ -140,8 +138,8 @@ public final class Interpreter {
   /** String value of the last node when {@code kind == STR}. */
   String str;
 
-  private final double[][] pulseLeftSec;
-  private int activePulses;
+  /** Whether this interpreter's tick counts the shared pulses down (false under a controller). */
+  private boolean ownsPulseClock = true;
   private final List<String> userScreen = new ArrayList<>();
   private String notice = "";
   private long executedLines;
@@ -159,10 +157,6 @@ public final class Interpreter {
     this.frames = new Frame[settings.maxCallDepth()];
     for (int i = 0; i < frames.length; i++) {
       frames[i] = new Frame();
-    }
-    this.pulseLeftSec = new double[IoKind.values().length][];
-    for (IoKind k : IoKind.values()) {
-      pulseLeftSec[k.ordinal()] = new double[registers.ioSize(k) + 1];
     }
   }
 
@@ -436,8 +430,8 @@ public final class Interpreter {
     if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
       throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);
     }
-    if (activePulses > 0) {
-      advancePulses(dtSec);
+    if (ownsPulseClock) {
+      regs.advancePulses(dtSec);
     }
     if (!afterTimers.isEmpty()) {
       try {
@@ -884,12 +878,17 @@ public final class Interpreter {
   }
 
   void pulse(IoKind io, int i, double widthSec) {
-    regs.io[io.ordinal()][i] = 1;
-    if (pulseLeftSec[io.ordinal()][i] <= 0) {
-      activePulses++;
-    }
-    // A zero width still shows ON until the next tick.
-    pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
+    // A zero width still shows ON until the next tick. The countdown is the I/O's (Registers).
+    regs.startPulse(io, i, widthSec);
+  }
+
+  /**
+   * Leaves counting pulses down to the caller, who calls {@link Registers#advancePulses} once per
+   * tick for every interpreter sharing these registers (the controller: its main program, RUN
+   * tasks, action programs and BG Logic). A lone interpreter counts them itself.
+   */
+  public void leavePulsesToCaller() {
+    ownsPulseClock = false;
   }
 
   // ================================================================ condition monitors
@@ -958,6 +957,7 @@ public final class Interpreter {
           + " " + role + " moves the robot");
     }
     Interpreter child = new Interpreter(store, regs, port, settings);
+    child.ownsPulseClock = false;  // the pulses it starts count down with the caller's (shared I/O)
     child.setAdvancesTimers(false);  // TIMER[] advance once per tick, in the program that started it
     child.select(name);
     child.forward();
@@ -1052,22 +1052,6 @@ public final class Interpreter {
     };
     if (op != null) {
       op.exec(this);
-    }
-  }
-
-  private void advancePulses(double dtSec) {
-    for (IoKind io : PULSED) {
-      double[] left = pulseLeftSec[io.ordinal()];
-      for (int i = 1; i < left.length; i++) {
-        if (left[i] > 0) {
-          left[i] -= dtSec;
-          if (left[i] <= TIME_EPS_SEC) {
-            left[i] = 0;
-            regs.io[io.ordinal()][i] = 0;
-            activePulses--;
-          }
-        }
-      }
     }
   }
 

@@ -152,6 +152,7 @@ public final class BgLogic {
       return Optional.of("all " + SLOTS + " BG Logic slots are in use");
     }
     Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+    in.leavePulsesToCaller();
     in.setTaskPort(TaskPort.NONE);
     in.setAdvancesTimers(false);
     Slot s = new Slot(program, in);
@@ -169,6 +170,7 @@ public final class BgLogic {
     slots.clear();
     for (String program : programs) {
       Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+      in.leavePulsesToCaller();
       in.setTaskPort(TaskPort.NONE);
       in.setAdvancesTimers(false);
       Slot s = new Slot(program, in);

@@ -165,6 +165,7 @@ public final class Controller implements MotionPort {
     this.runner = new MotionRunner(model, limits, q0, new Events());
     this.jogger = new Jogger(model, limits);
     this.interpreter = new Interpreter(n -> Optional.ofNullable(programs.get(n)), registers, this, settings);
+    interpreter.leavePulsesToCaller();
     this.tasks = new Tasks(this, n -> Optional.ofNullable(programs.get(n)), settings);
     this.bgLogic = new BgLogic(this, n -> Optional.ofNullable(programs.get(n)), settings);
     this.uop = new Uop(this);
@@ -204,6 +205,9 @@ public final class Controller implements MotionPort {
       gripper.tick(registers, dtSec);
     }
     uop.tick(dtSec);
+    // Pulses count down once per tick in the shared I/O, whoever started them (a RUN task or an
+    // action program that ended leaves its pulse to end on time), just before the programs run.
+    registers.advancePulses(dtSec);
     Outcome o = interpreter.tick(dtSec);
     tasks.tick(dtSec);
     bgLogic.tick(dtSec);
@@ -831,6 +835,11 @@ public final class Controller implements MotionPort {
   }
 
   /** The UOP signals (UI/UO), the PLC sequence and the reference positions. */
+  /** The UOP outputs as the controller's state is now (a run that ends has no next tick to write them). */
+  public void settleOutputs() {
+    uop.settleOutputs();
+  }
+
   public Uop uop() {
     return uop;
   }

@@ -174,6 +174,7 @@ public final class HeadlessRun {
       }
       ControllerAlarm limit = limitCode == null ? null : limitAlarm(firstActive(cs, status), limitCode, limitText, t);
       if (active == 0 || cellAlarm.isPresent() || limit != null) {
+        cs.forEach(Controller::settleOutputs);  // PROGRUN/BUSY of a robot that ended on this tick go OFF
         List<RobotResult> out = new ArrayList<>();
         for (int i = 0; i < n; i++) {
           RobotStatus st = status[i];

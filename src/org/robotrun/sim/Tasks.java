@@ -94,6 +94,7 @@ public final class Tasks {
     }
     MotionPort port = motion ? controller : new NoGroupPort(controller);
     Interpreter in = new Interpreter(store, controller.registers(), port, settings);
+    in.leavePulsesToCaller();
     in.setTaskPort(this::run);
     // A RUN task finds parts with the same vision system as the main program (issue 16).
     in.setVisionPort(controller.interpreter().visionPort());

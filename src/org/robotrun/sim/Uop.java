@@ -249,6 +249,15 @@ public final class Uop {
     writeOutputs(dtSec);
   }
 
+  /**
+   * Writes the UOP outputs once more from the controller's state now, with no time passing: the
+   * outputs otherwise follow at the next tick, and a run that ends on this tick has no next one
+   * (PROGRUN and BUSY of the last robot to finish would stay ON in the report).
+   */
+  void settleOutputs() {
+    writeOutputs(0);
+  }
+
   private boolean rose(int i) {
     return ui(i) && !lastUi[i];
   }

@@ -34,7 +34,7 @@ class KeyScriptFuzzTest {
 
   private static final List<String> COMMANDS = List.of("SHOW", "WAIT 0.05", "WAIT 0", "HOLD SHIFT", "RELEASE SHIFT",
       "HOLD DEADMAN", "RELEASE DEADMAN", "CLICK +X", "CLICK J1+", "DOWN *3", "UP *2", "HOLD +X/J1", "RELEASE +X/J1",
-      "SHIFT+FWD", "SHIFT+BWD", "SHIFT+F1", "SHIFT+F5", "HOLD", "WAIT 0x1p3", "FROB", "TYPE", "* 3", "ENTER *0",
+      "SHIFT+FWD", "SHIFT+BWD", "SHIFT+F1", "SHIFT+F5", "HOLD", "WAIT 0x1p3", "WAIT 1e3", "FROB", "TYPE", "* 3", "ENTER *0",
       "# a comment", "", "RELEASE");
 
   @Provide

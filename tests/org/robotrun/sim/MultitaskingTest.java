@@ -37,6 +37,31 @@ class MultitaskingTest {
     assertThat(c.activeAlarms()).isEmpty();
   }
 
+  /** Issue 26: a PULSE still pending when its task ended stayed ON for ever (the task's interpreter counted it). */
+  @Test
+  void aPulsePendingWhenItsTaskEndsStillEndsOnTime() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("PULSER", false, "DO[5]=PULSE,0.2sec"));
+    c.saveProgram(program("MAIN", true, "RUN PULSER", "WAIT 1.00(sec)"));
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
+    steps(sim, 10);  // 40 ms: the task pulsed and ended
+    assertThat(c.tasks().list()).isEmpty();
+    assertThat(c.registers().bit(IoKind.DO, 5)).isTrue();
+    steps(sim, 45);  // 220 ms in all: the pulse is over although its task is gone
+    assertThat(c.registers().bit(IoKind.DO, 5)).isFalse();
+    // the main program's own pulse counts once per tick too (not faster with tasks around)
+    Simulation sim2 = ControllerTest.cell();
+    Controller c2 = sim2.controllers().get(0);
+    c2.saveProgram(program("PULSER", false, "DO[5]=PULSE,0.2sec"));
+    c2.saveProgram(program("MAIN2", true, "RUN PULSER", "DO[6]=PULSE,0.2sec", "WAIT 1.00(sec)"));
+    assertThat(c2.run("MAIN2", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
+    steps(sim2, 45);  // 180 ms
+    assertThat(c2.registers().bit(IoKind.DO, 6)).isTrue();
+    steps(sim2, 10);  // 220 ms
+    assertThat(c2.registers().bit(IoKind.DO, 6)).isFalse();
+  }
+
   @Test
   void aTaskMayRunAnotherTask() {
     // The task list grows while the tasks are being stepped (it threw ConcurrentModificationException).
