@@ -91,6 +91,6 @@ class HandInDroppingsTest {
         true);
     CheckResult handIn = HandIns.check(r, "Hand-in");
     assertThat(handIn.passed()).isFalse();
-    assertThat(handIn.feedback()).contains("\"programs/EXTRA.LS\" is in the zip but not in manifest.json");
+    assertThat(handIn.feedback()).contains("\"programs/EXTRA.LS\" is in the hand-in but not in manifest.json");
   }
 }
