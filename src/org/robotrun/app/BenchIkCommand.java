@@ -12,9 +12,9 @@ import java.util.concurrent.Callable;
 import org.robotrun.io.FileFormatException;
 import org.robotrun.io.IkTargetsCsv;
 import org.robotrun.io.RobotDefinitions;
-import org.robotrun.math.Angles;
 import org.robotrun.math.Transform;
-import org.robotrun.robot.ClosedFormIk;
+import org.robotrun.robot.IkSolver;
+import org.robotrun.robot.OffsetWristIk;
 import org.robotrun.robot.Config;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.IkResult;
@@ -33,15 +33,18 @@ import picocli.CommandLine.Spec;
     name = "ik",
     mixinStandardHelpOptions = true,
     description = {
-      "Solve every target of a reference IK file with the default robot and print one summary line.",
-      "The file has the columns id, q1..q6, x, y, z (m), r11..r33, s1..s6, n1..n6 (see docs/kinematics.md):",
-      "  solved=N/M in_limits=N/M same_config=N/M median_us=X p99_us=Y",
+      "Solve every target of an IK target file with a robot (--robot, default lrmate200id) and print",
+      "one summary line. The file has the columns id, q1..q6, x, y, z (m, robot base frame),",
+      "r11..r33, s1..s6, n1..n6 (see docs/kinematics.md); --generate N makes N targets instead,",
+      "from FK of random joint vectors inside the limits (--seed), optionally saved (--write-targets):",
+      "  solved=N/M in_limits=N/M same_config=N/M median_us=X p99_us=Y robot=ID solver=KIND",
       "solved: FK of the answer within 0.1 mm and 0.01 rad of the target;",
-      "same_config: joints equal the ground truth within 1e-6 rad (wrapped).",
+      "same_config: the answer's CONFIG (flags and turn numbers) equals the ground truth's.",
       "Times: System.nanoTime around each solve only, in the last of several",
       "passes (see --warmup, --warmup-ms).",
-      "closed-form picks the branch by the CONFIG of the row's ground truth;",
-      "numeric starts from --start. resolved-rate times one step per target",
+      "The robot's own solver (--solver auto: closed-form where the chain is OPW, offset-wrist",
+      "for the CRX layout, else numeric) and closed-form/offset-wrist pick the branch by the",
+      "CONFIG of the row's ground truth; numeric starts from --start. resolved-rate times one step per target",
       "(ground-truth joints; 100 mm/s along X, 0.2 rad/s about Z) and prints",
       "  steps=M damped=K median_us=X p99_us=Y",
       ""
@@ -50,15 +53,31 @@ public final class BenchIkCommand implements Callable<Integer> {
 
   @Spec CommandSpec spec;
 
-  @Option(names = "--targets", required = true, paramLabel = "FILE",
-      description = "Reference targets CSV (id, q1..q6, x, y, z in m, r11..r33, s1..s6, n1..n6).")
+  @Option(names = "--targets", paramLabel = "FILE",
+      description = "Targets CSV (id, q1..q6, x, y, z in m, r11..r33, s1..s6, n1..n6). Or --generate.")
   Path targets;
+
+  @Option(names = "--robot", defaultValue = "lrmate200id", paramLabel = "ID|FILE",
+      description = "Library id (see 'robotrun robots') or robot file. Default: ${DEFAULT-VALUE}.")
+  String robotName;
+
+  @Option(names = "--generate", paramLabel = "N",
+      description = "Instead of --targets: N targets from FK of random joint vectors inside the robot's limits.")
+  Integer generate;
+
+  @Option(names = "--seed", defaultValue = "1", paramLabel = "S",
+      description = "Seed of --generate. Default: ${DEFAULT-VALUE}.")
+  long seed;
+
+  @Option(names = "--write-targets", paramLabel = "FILE",
+      description = "Write the generated targets (same CSV format as --targets).")
+  Path writeTargets;
 
   @Option(names = "--start", defaultValue = "home", paramLabel = "home|random|near",
       description = "Numeric solver start: home (q = 0), random (s1..s6) or near (n1..n6). Default: ${DEFAULT-VALUE}.")
   String start;
 
-  @Option(names = "--solver", defaultValue = "closed-form", paramLabel = "closed-form|numeric|resolved-rate",
+  @Option(names = "--solver", defaultValue = "auto", paramLabel = "auto|closed-form|offset-wrist|numeric|resolved-rate",
       description = "Solver to measure. Default: ${DEFAULT-VALUE}.")
   String solver;
 
@@ -79,9 +98,18 @@ public final class BenchIkCommand implements Callable<Integer> {
     if (!List.of("home", "random", "near").contains(start)) {
       throw new ParameterException(spec.commandLine(), "--start: expected home, random or near, got '" + start + "'");
     }
-    if (!List.of("closed-form", "numeric", "resolved-rate").contains(solver)) {
+    if (!List.of("auto", "closed-form", "offset-wrist", "numeric", "resolved-rate").contains(solver)) {
       throw new ParameterException(spec.commandLine(),
-          "--solver: expected closed-form, numeric or resolved-rate, got '" + solver + "'");
+          "--solver: expected auto, closed-form, offset-wrist, numeric or resolved-rate, got '" + solver + "'");
+    }
+    if ((targets == null) == (generate == null)) {
+      throw new ParameterException(spec.commandLine(), "give either --targets FILE or --generate N");
+    }
+    if (generate != null && (generate < 1 || generate > 1_000_000)) {
+      throw new ParameterException(spec.commandLine(), "--generate: expected a count 1..1000000, got " + generate);
+    }
+    if (writeTargets != null && generate == null) {
+      throw new ParameterException(spec.commandLine(), "--write-targets needs --generate");
     }
     if (warmup < 0) {
       throw new ParameterException(spec.commandLine(), "--warmup: expected a count >= 0, got " + warmup);
@@ -89,8 +117,13 @@ public final class BenchIkCommand implements Callable<Integer> {
     if (warmupMs < 0) {
       throw new ParameterException(spec.commandLine(), "--warmup-ms: expected a duration >= 0, got " + warmupMs);
     }
-    List<IkTargetsCsv.Target> rows = read(targets);
-    RobotModel robot = RobotDefinitions.defaultRobot();
+    RobotModel robot;
+    try {
+      robot = RobotDefinitions.resolve(robotName, null);
+    } catch (FileFormatException e) {
+      throw new UserError("--robot: " + e.getMessage());
+    }
+    List<IkTargetsCsv.Target> rows = targets != null ? read(targets) : generated(robot);
     PrintWriter o = spec.commandLine().getOut();
     if (solver.equals("resolved-rate")) {
       o.println(resolvedRate(robot, rows));
@@ -106,29 +139,43 @@ public final class BenchIkCommand implements Callable<Integer> {
     Transform[] poses = new Transform[m];
     Config[] configs = new Config[m];
     double[][] starts = new double[m][];
-    ClosedFormIk closed = robot.opw().isPresent() ? new ClosedFormIk(robot) : null;
-    if (solver.equals("closed-form") && closed == null) {
-      throw new UserError(robot.id() + " has no OPW parameters: use --solver numeric", Main.EXIT_FAILED);
-    }
+    IkSolver own = IkSolver.forModel(robot);
+    String kind = solver.equals("auto") ? own.kind() : solver;
+    IkSolver chosen = switch (kind) {
+      case "closed-form" -> {
+        if (robot.opw().isEmpty()) {
+          throw new UserError(robot.id() + " is not an OPW arm (no closed form): use --solver auto or numeric", Main.EXIT_FAILED);
+        }
+        yield own;
+      }
+      case "offset-wrist" -> {
+        if (!OffsetWristIk.applies(robot)) {
+          throw new UserError(robot.id() + " does not have the CRX layout: use --solver auto or numeric", Main.EXIT_FAILED);
+        }
+        yield own;
+      }
+      default -> null;
+    };
     NumericIk numeric = new NumericIk(robot);
     for (int i = 0; i < m; i++) {
       IkTargetsCsv.Target t = rows.get(i);
       poses[i] = t.X_BF();
-      configs[i] = closed == null ? null : closed.configOf(t.q());
+      configs[i] = own.configOf(t.q());
       starts[i] = switch (start) {
         case "random" -> t.randomStart();
         case "near" -> t.nearStart();
         default -> new double[6];
       };
     }
-    boolean useClosed = solver.equals("closed-form");
+    boolean useOwn = chosen != null;
+    double[] home = new double[6];
     IkResult[] results = new IkResult[m];
     long[] nanos = new long[m];
     long warmupEnd = System.nanoTime() + warmupMs * 1_000_000;
     for (int pass = 0; pass <= warmup || System.nanoTime() < warmupEnd; pass++) {
       for (int i = 0; i < m; i++) {
         long t0 = System.nanoTime();
-        IkResult r = useClosed ? closed.solve(poses[i], configs[i]) : numeric.solve(poses[i], starts[i]);
+        IkResult r = useOwn ? chosen.solve(poses[i], configs[i], home) : numeric.solve(poses[i], starts[i]);
         long t1 = System.nanoTime();
         results[i] = r;
         nanos[i] = t1 - t0;
@@ -148,7 +195,7 @@ public final class BenchIkCommand implements Callable<Integer> {
         if (robot.firstJointOutsideLimits(s.q()) < 0) {
           inLimits++;
         }
-        if (sameJoints(s.q(), rows.get(i).q())) {
+        if (own.configOf(s.q()).equals(configs[i])) {
           sameConfig++;
         }
       }
@@ -156,8 +203,8 @@ public final class BenchIkCommand implements Callable<Integer> {
     if (out != null) {
       writeSolutions(rows, solutions);
     }
-    return String.format(Locale.ROOT, "solved=%d/%d in_limits=%d/%d same_config=%d/%d median_us=%.3f p99_us=%.3f",
-        solved, m, inLimits, m, sameConfig, m, percentileMicros(nanos, 50), percentileMicros(nanos, 99));
+    return String.format(Locale.ROOT, "solved=%d/%d in_limits=%d/%d same_config=%d/%d median_us=%.3f p99_us=%.3f robot=%s solver=%s",
+        solved, m, inLimits, m, sameConfig, m, percentileMicros(nanos, 50), percentileMicros(nanos, 99), robot.id(), kind);
   }
 
   private String resolvedRate(RobotModel robot, List<IkTargetsCsv.Target> rows) {
@@ -185,13 +232,30 @@ public final class BenchIkCommand implements Callable<Integer> {
         m, damped, percentileMicros(nanos, 50), percentileMicros(nanos, 99));
   }
 
-  private static boolean sameJoints(double[] q, double[] truth) {
-    for (int i = 0; i < 6; i++) {
-      if (Math.abs(Angles.wrapPi(q[i] - truth[i])) > 1e-6) {
-        return false;
+  /** Targets from FK of uniform random joint vectors inside the limits; starts as in the reference file. */
+  private List<IkTargetsCsv.Target> generated(RobotModel robot) {
+    java.util.Random rnd = new java.util.Random(seed);
+    List<IkTargetsCsv.Target> out = new java.util.ArrayList<>();
+    double[] lo = robot.lowerLimits(), hi = robot.upperLimits();
+    for (int k = 0; k < generate; k++) {
+      double[] q = new double[6], s = new double[6], n = new double[6];
+      for (int i = 0; i < 6; i++) {
+        q[i] = lo[i] + rnd.nextDouble() * (hi[i] - lo[i]);
+      }
+      for (int i = 0; i < 6; i++) {
+        s[i] = lo[i] + rnd.nextDouble() * (hi[i] - lo[i]);
+        n[i] = Math.max(lo[i], Math.min(hi[i], q[i] + (rnd.nextDouble() * 0.2 - 0.1)));
+      }
+      out.add(new IkTargetsCsv.Target(k, q, ForwardKinematics.flangePoseInBase(robot, q), s, n));
+    }
+    if (writeTargets != null) {
+      try {
+        IkTargetsCsv.write(writeTargets, out);
+      } catch (IOException e) {
+        throw new UserError(writeTargets + ": cannot write: " + e.getMessage());
       }
     }
-    return true;
+    return out;
   }
 
   /** Nearest-rank percentile (µs). */

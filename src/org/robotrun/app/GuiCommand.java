@@ -418,6 +418,16 @@ public final class GuiCommand implements Callable<Integer> {
             Controller c = selected();
             return Xyzwpr.fromTransform(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
           }
+
+          @Override
+          public String modelName() {
+            return selected().model().displayName();
+          }
+
+          @Override
+          public List<String> jointNames() {
+            return selected().model().joints().stream().map(j -> j.name()).toList();
+          }
         },
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
     // Menus of other parts of the window go into the menu bar here, left of View and Help.

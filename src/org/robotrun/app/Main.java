@@ -29,6 +29,7 @@ import picocli.CommandLine.Command;
       AutograderCommand.class,
       BenchCommand.class,
       RobotCommand.class,
+      RobotsCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class Main implements java.util.concurrent.Callable<Integer> {

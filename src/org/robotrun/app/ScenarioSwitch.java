@@ -27,9 +27,14 @@ import org.robotrun.world.Scenario;
 final class ScenarioSwitch {
   private ScenarioSwitch() {}
 
-  /** Whether the editor's active scenario is another one than the running cell's. */
+  /** Whether the editor's active scenario is another one than the running cell's, or a robot of it another model. */
   static boolean wanted(WorkspaceSession s, CellEditor editor) {
-    return !editor.active().name().equals(s.workspace.scenario().name());
+    return !editor.active().name().equals(s.workspace.scenario().name())
+        || !models(editor.active()).equals(models(s.workspace.scenario()));
+  }
+
+  private static List<String> models(Scenario sc) {
+    return sc.robots().stream().map(r -> r.modelId()).toList();
   }
 
   /**

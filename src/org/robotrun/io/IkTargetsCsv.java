@@ -76,6 +76,38 @@ public final class IkTargetsCsv {
     return out;
   }
 
+  /**
+   * Writes targets in the reference format (metres, row-major rotation, plus the quaternion
+   * columns qw..qz with qw ≥ 0), through the atomic writer.
+   */
+  public static void write(Path file, List<Target> targets) throws IOException {
+    StringBuilder sb = new StringBuilder("id,q1,q2,q3,q4,q5,q6,x,y,z,r11,r12,r13,r21,r22,r23,r31,r32,r33,qw,qx,qy,qz,"
+        + "s1,s2,s3,s4,s5,s6,n1,n2,n3,n4,n5,n6\n");
+    for (Target t : targets) {
+      Transform x = t.X_BF();
+      sb.append(t.id());
+      for (double v : t.q()) {
+        sb.append(',').append(v);
+      }
+      sb.append(',').append(x.x() / 1000).append(',').append(x.y() / 1000).append(',').append(x.z() / 1000);
+      for (double v : x.rotationRowMajor()) {
+        sb.append(',').append(v);
+      }
+      org.robotrun.math.Quaternion q = org.robotrun.math.Quaternion.fromTransform(x);
+      double sgn = q.w() < 0 ? -1 : 1;
+      sb.append(',').append(sgn * q.w()).append(',').append(sgn * q.x()).append(',').append(sgn * q.y())
+          .append(',').append(sgn * q.z());
+      for (double v : t.randomStart()) {
+        sb.append(',').append(v);
+      }
+      for (double v : t.nearStart()) {
+        sb.append(',').append(v);
+      }
+      sb.append('\n');
+    }
+    AtomicFiles.write(file, sb.toString().getBytes(java.nio.charset.StandardCharsets.UTF_8));
+  }
+
   private record Cells(String file, int line, String[] f, Map<String, Integer> col) {
     double num(String name) {
       int i = col.get(name);

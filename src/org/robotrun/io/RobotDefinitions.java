@@ -7,16 +7,16 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Optional;
-import org.robotrun.math.Angles;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.Locale;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import java.nio.file.Path;
 import org.robotrun.robot.JointSpec;
 import org.robotrun.robot.LinkMesh;
 import org.robotrun.robot.LinkShape;
 import org.robotrun.robot.LinkSpec;
-import org.robotrun.robot.OpwParameters;
 import org.robotrun.robot.RobotModel;
 
 /**
@@ -32,17 +32,68 @@ public final class RobotDefinitions {
   private RobotDefinitions() {}
 
   /**
-   * Loads a robot shipped in the jar by its id, e.g. "lrmate200id", or, when {@code id} is a
-   * file reference ({@link #isFileReference}, an absolute path as scenarios resolve it), that file.
+   * The library shipped in the jar, in listing order (each has {@code resources/robots/ID.json}).
+   */
+  public static final List<String> LIBRARY = List.of(
+      "lrmate200id", "lrmate200id4s", "er4ia", "m10ia", "m10id12", "m20ia", "r2000ic165f", "crx10ia", "crx10ial");
+
+  /**
+   * A library entry's facts for listings: what the file says besides the chain.
+   *
+   * @param id library id
+   * @param name model name
+   * @param payloadKg rated payload (kg), NaN when the file does not say
+   * @param reachMm reach (mm) as the file states it, NaN when it does not
+   * @param source where the numbers come from
+   */
+  public record Entry(String id, String name, double payloadKg, double reachMm, String source) {}
+
+  /**
+   * Loads a robot by what a scenario's {@code model} field holds: a library id (e.g.
+   * "lrmate200id"), or a path to a robot file ({@code .json}, RobotRun's own format). A relative
+   * path is taken against {@code baseDir} (the scenario's folder; null: the working directory).
+   * This is the one place a model name becomes a model; a {@code .urdf} is imported in memory
+   * (as {@code robotrun robot import} would, package folders found from the file's place).
+   *
+   * @throws FileFormatException naming the file (or the library) and what is wrong
+   */
+  public static RobotModel resolve(String model, Path baseDir) {
+    if (!isPath(model)) {
+      return load(model);
+    }
+    Path file;
+    try {
+      file = baseDir == null ? Path.of(model) : baseDir.resolve(model);
+    } catch (InvalidPathException e) {
+      throw new FileFormatException(model, 0, "not a valid path");
+    }
+    return loadFile(file.toAbsolutePath().normalize());
+  }
+
+  /** Whether a model name is a file path (has an extension or a separator) rather than a library id. */
+  public static boolean isPath(String model) {
+    String lower = model.toLowerCase(Locale.ROOT);
+    return lower.endsWith(".json") || lower.endsWith(".urdf") || model.contains("/") || model.contains("\\");
+  }
+
+  /** Whether a scenario's {@code model} names a robot file (RobotRun's JSON or a URDF): {@link #isPath}. */
+  public static boolean isFileReference(String model) {
+    return isPath(model);
+  }
+
+  /**
+   * Loads a robot by id or by absolute path (what a loaded scenario's robot holds after
+   * {@link #resolve}): the function the simulation builders take.
    */
   public static RobotModel load(String id) {
-    if (isFileReference(id)) {
-      return loadFile(Path.of(id));
+    if (isPath(id)) {
+      return resolve(id, null);
     }
     String path = "/robots/" + id + ".json";
     try (InputStream in = RobotDefinitions.class.getResourceAsStream(path)) {
-      if (in == null) {
-        throw new FileFormatException(path, 0, "no robot definition named '" + id + "'");
+      if (in == null || !id.matches("[a-z0-9_]+")) {
+        throw new FileFormatException(path, 0, "no robot definition named '" + id + "' (library: "
+            + String.join(", ", LIBRARY) + ")");
       }
       return parse(path, JSON.readTree(in), file -> {
         try (InputStream m = RobotDefinitions.class.getResourceAsStream("/robots/" + file)) {
@@ -60,36 +111,23 @@ public final class RobotDefinitions {
   }
 
   /**
-   * Whether a scenario's {@code model} names a robot file (RobotRun's JSON or a URDF) rather
-   * than a robot of the library.
-   */
-  public static boolean isFileReference(String model) {
-    String lower = model.toLowerCase(java.util.Locale.ROOT);
-    return lower.endsWith(".json") || lower.endsWith(".urdf");
-  }
-
-  /**
-   * Loads a robot from a file: RobotRun's JSON (display meshes named in it are read relative
-   * to its folder) or a URDF (imported in memory, as {@code robotrun robot import} would).
+   * Loads a robot from a file: RobotRun's JSON (display meshes named in it are read relative to
+   * its folder) or a URDF (imported in memory, as {@code robotrun robot import} would).
    *
    * @throws FileFormatException naming the file, line or field, and what was expected
    */
   public static RobotModel loadFile(Path file) {
     String name = file.toString();
-    if (name.toLowerCase(java.util.Locale.ROOT).endsWith(".urdf")) {
-      return UrdfImporter.importRobot(file, java.util.Map.of()).model();
+    if (!Files.isRegularFile(file)) {
+      throw new FileFormatException(name, 0, "robot file not found (paths are relative to the scenario file)");
     }
-    byte[] bytes;
-    try {
-      bytes = BoundedFiles.read(file, MAX_FILE_BYTES, "robot definitions");
-    } catch (UnreadableFileException e) {
-      throw new FileFormatException(name, 0, e.getMessage());
-    } catch (IOException e) {
-      throw new FileFormatException(name, 0, "cannot read: " + e.getMessage());
+    if (name.toLowerCase(Locale.ROOT).endsWith(".urdf")) {
+      return UrdfImporter.importRobot(file, java.util.Map.of()).model();
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
     try {
-      return parse(name, JSON.readTree(bytes), mesh -> {
+      String text = BoundedFiles.readUtf8(file, MAX_FILE_BYTES, "robot files");
+      return parse(name, JSON.readTree(text), mesh -> {
         Path p = Path.of(mesh);
         if (p.isAbsolute() || mesh.contains("..")) {
           throw new FileFormatException(name, 0, "mesh '" + mesh + "': expected a path relative to the robot file's folder");
@@ -98,17 +136,35 @@ public final class RobotDefinitions {
       });
     } catch (JsonParseException e) {
       throw new FileFormatException(name, e.getLocation().getLineNr(), e.getOriginalMessage());
-    } catch (IOException e) {
+    } catch (UnreadableFileException e) {
       throw new FileFormatException(name, 0, e.getMessage());
+    } catch (IOException e) {
+      throw new FileFormatException(name, 0, "cannot read: " + e.getMessage());
     }
   }
 
-  /** Largest robot definition file read (robot JSON is a few kB; meshes are separate files). */
+  /** Largest robot file read (the library's are under 8 KiB; meshes are separate files). */
   public static final long MAX_FILE_BYTES = 4L << 20;
 
   /** Reads the mesh a robot file names (relative path, mm, binary or ASCII STL). */
   interface MeshFiles {
     org.robotrun.world.TriangleMesh read(String relativePath) throws IOException;
+  }
+
+  /** The library's entries, in {@link #LIBRARY} order. */
+  public static List<Entry> library() {
+    List<Entry> out = new ArrayList<>();
+    for (String id : LIBRARY) {
+      String path = "/robots/" + id + ".json";
+      try (InputStream in = RobotDefinitions.class.getResourceAsStream(path)) {
+        JsonNode root = JSON.readTree(in);
+        out.add(new Entry(id, root.path("name").asText(id), root.path("payloadKg").asDouble(Double.NaN),
+            root.path("reachMm").asDouble(Double.NaN), root.path("source").asText("")));
+      } catch (IOException | RuntimeException e) {
+        throw new FileFormatException(path, 0, "cannot read the library entry: " + e.getMessage());
+      }
+    }
+    return out;
   }
 
   /** The default robot. */
@@ -117,6 +173,14 @@ public final class RobotDefinitions {
   }
 
   static RobotModel parse(String source, JsonNode root, MeshFiles meshFiles) throws IOException {
+    try {
+      return parseChecked(source, root, meshFiles);
+    } catch (IllegalArgumentException e) {
+      throw new FileFormatException(source, 0, e.getMessage());
+    }
+  }
+
+  private static RobotModel parseChecked(String source, JsonNode root, MeshFiles meshFiles) throws IOException {
     Reader r = new Reader(source);
     List<JointSpec> joints = new ArrayList<>();
     JsonNode js = r.array(root, "joints");
@@ -169,8 +233,8 @@ public final class RobotDefinitions {
           String mat = at + ".meshes[" + k + "]";
           String file = r.text(m, "file", mat);
           String color = m.has("color") ? r.text(m, "color", mat) : "body";
-          if (!color.matches("body|joint|base|flange|#[0-9a-fA-F]{6}")) {
-            throw new FileFormatException(source, 0, mat + ".color: expected body, joint, base, flange or #rrggbb, got '" + color + "'");
+          if (!color.matches("body|joint|base|flange|white|#[0-9a-fA-F]{6}")) {
+            throw new FileFormatException(source, 0, mat + ".color: expected body, joint, base, flange, white or #rrggbb, got '" + color + "'");
           }
           meshes.add(new LinkMesh(source + ":" + file, meshFiles.read(file).corners(), color));
         }
@@ -178,23 +242,10 @@ public final class RobotDefinitions {
       links.add(new LinkSpec(r.text(l, "name", at), shapes, meshes));
     }
 
-    Optional<OpwParameters> opw = Optional.empty();
-    if (root.has("opw")) {
-      JsonNode o = root.get("opw");
-      double[] offsets = Angles.toRadians(r.numbers(o, "offsets", "opw", 6));
-      double[] signsD = r.numbers(o, "signs", "opw", 6);
-      int[] signs = new int[6];
-      for (int i = 0; i < 6; i++) {
-        signs[i] = (int) signsD[i];
-      }
-      opw = Optional.of(new OpwParameters(
-          r.number(o, "a1", "opw"), r.number(o, "a2", "opw"), r.number(o, "b", "opw"),
-          r.number(o, "c1", "opw"), r.number(o, "c2", "opw"), r.number(o, "c3", "opw"),
-          r.number(o, "c4", "opw"), offsets, signs));
-    }
     try {
-      return new RobotModel(
-          r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links, opw,
+      // The closed form's parameters come from the chain (OpwDerivation), never from the file.
+      return RobotModel.fromChain(
+          r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links,
           root.path("coupledJ3").asBoolean(false));
     } catch (IllegalArgumentException e) {
       throw new FileFormatException(source, 0, e.getMessage());

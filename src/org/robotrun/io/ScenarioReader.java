@@ -312,7 +312,7 @@ public final class ScenarioReader {
         frames(r, at, ownTools, ownUsers);
         Optional<String> ownMode = string(r, "mode", at, false).map(m -> mode(m, r, at));
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
-          out.add(new RobotSetup(robotName, modelRefs.get(modelText.get()), X_CB, tool,
+          out.add(new RobotSetup(robotName, modelKey(modelText.get()), X_CB, tool,
               Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros,
               ownRegisters, ownTools, ownUsers, ownMode));
         }
@@ -480,7 +480,12 @@ public final class ScenarioReader {
       return (int) n.value();
     }
 
-    /** The model a robot names: a library id, or a robot file (.json, .urdf) relative to the scenario. */
+    /** What a robot setup keeps of its model: the library id, or a robot file's absolute path. */
+    private String modelKey(String text) {
+      return RobotDefinitions.isPath(text) ? dir.resolve(text).toAbsolutePath().normalize().toString() : text;
+    }
+
+    /** The model a robot names: a library id or a robot file (relative to the scenario), via {@link RobotDefinitions#resolve}. */
     private Optional<RobotModel> model(String id, JObject r, String at) {
       if (models.containsKey(id)) {
         return Optional.of(models.get(id));
@@ -504,18 +509,26 @@ public final class ScenarioReader {
           modelRefs.put(id, file.toString());
           return Optional.of(m);
         } catch (FileFormatException e) {
-          error(r.members().get("model").line(), at + ".model", "robot file '" + id + "': " + e.getMessage());
+          error(line, at + ".model", "cannot load robot file '" + id + "': " + e.getMessage());
           return Optional.empty();
         }
       }
       try {
-        RobotModel m = RobotDefinitions.load(id);
+        RobotModel m = RobotDefinitions.resolve(id, dir);
         models.put(id, m);
         modelRefs.put(id, m.id());
         return Optional.of(m);
       } catch (FileFormatException e) {
-        error(r.members().get("model").line(), at + ".model", "unknown robot model '" + id + "' (e.g. \""
-            + RobotDefinitions.DEFAULT_ROBOT + "\")");
+        int line = r.members().get("model").line();
+        if (RobotDefinitions.isPath(id)) {
+          error(line, at + ".model", "cannot load robot file '" + id + "': " + e.getMessage());
+        } else {
+          error(line, at + ".model", "unknown robot model '" + id + "': expected a library id ("
+              + String.join(", ", RobotDefinitions.LIBRARY) + ") or a path to a robot .json or .urdf file");
+        }
+        return Optional.empty();
+      } catch (java.nio.file.InvalidPathException e) {
+        error(r.members().get("model").line(), at + ".model", "not a valid path: \"" + id + "\"");
         return Optional.empty();
       }
     }

@@ -115,8 +115,9 @@ public final class ScenarioWriter {
       for (RobotSetup r : s.robots()) {
         g.writeStartObject();
         g.writeStringField("name", r.name());
-        // A robot file is named relative to the scenario, as programs are.
-        g.writeStringField("model", RobotDefinitions.isFileReference(r.modelId()) ? relative(dir, Path.of(r.modelId())) : r.modelId());
+        // A robot file is kept as an absolute path once read; written relative, like meshes.
+        g.writeStringField("model", RobotDefinitions.isPath(r.modelId()) && Path.of(r.modelId()).isAbsolute()
+            ? relative(dir, Path.of(r.modelId())) : r.modelId());
         pose(g, "basePose", r.X_CB());
         g.writeStringField("endEffector", r.endEffector().fileName());
         g.writeArrayFieldStart("jointsDeg");

@@ -226,7 +226,8 @@ public final class UrdfImporter {
       }
       RobotModel model;
       try {
-        model = new RobotModel(id, robot.name(), joints, X_6F, worldInBase(joints).inverse(), links, Optional.empty(), false);
+        // The solver comes from the chain, as for the library (closed form where the arm is OPW).
+        model = RobotModel.fromChain(id, robot.name(), joints, X_6F, worldInBase(joints).inverse(), links, false);
       } catch (IllegalArgumentException e) {
         throw new FileFormatException(source, 0, e.getMessage());
       }

@@ -6,7 +6,8 @@ import java.util.List;
 import java.util.Optional;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
-import org.robotrun.robot.ClosedFormIk;
+import org.robotrun.robot.IkSolver;
+import org.robotrun.robot.NumericSolver;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.KinematicChain;
@@ -59,7 +60,8 @@ public final class MotionRunner {
   private final RobotModel model;
   private final MotionLimits limits;
   private final PoseTracker tracker;
-  private final Optional<ClosedFormIk> closedForm;
+  /** The arm's own solver for the ends of Cartesian moves; empty for a numeric-only arm (tracked instead). */
+  private final Optional<IkSolver> allSolutions;
   private final MotionListener listener;
 
   private final double[] q;
@@ -93,7 +95,8 @@ public final class MotionRunner {
     this.model = model;
     this.limits = limits;
     this.tracker = new PoseTracker(model);
-    this.closedForm = model.opw().map(p -> new ClosedFormIk(model));
+    IkSolver solver = IkSolver.forModel(model);
+    this.allSolutions = solver instanceof NumericSolver ? Optional.empty() : Optional.of(solver);
     this.listener = listener;
     this.q = q0.clone();
   }
@@ -603,14 +606,14 @@ public final class MotionRunner {
     };
   }
 
-  /** The joints at the end of a Cartesian move (closed form, the branch nearest the current joints); null after a fault. */
+  /** The joints at the end of a Cartesian move (the arm's solver, the branch nearest the current joints); null after a fault. */
   private double[] jointsAtEnd(Segment.CartesianSegment c, long tag) {
-    if (closedForm.isEmpty()) {
+    if (allSolutions.isEmpty()) {
       double[] qq = qCart.clone();
       return tracker.track(qq, c.X_WEnd, c.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD) ? qq : null;
     }
     Transform X_BF = model.X_WB().inverse().compose(c.X_WEnd).compose(c.X_FT.inverse());
-    IkResult r = closedForm.get().solveNearest(X_BF, qCart);
+    IkResult r = allSolutions.get().solveNearest(X_BF, qCart);
     if (r instanceof IkResult.Solved sol) {
       return sol.q();
     }
@@ -687,11 +690,11 @@ public final class MotionRunner {
   }
 
   private boolean reachable(Transform X_WT, Transform X_FT, long tag, String what) {
-    if (closedForm.isEmpty()) {
+    if (allSolutions.isEmpty()) {
       return true;
     }
     Transform X_BF = model.X_WB().inverse().compose(X_WT).compose(X_FT.inverse());
-    IkResult r = closedForm.get().solveNearest(X_BF, q);
+    IkResult r = allSolutions.get().solveNearest(X_BF, q);
     if (r instanceof IkResult.Unreachable u) {
       MotionFault.Kind kind = u.reason() == IkResult.Reason.JOINT_LIMIT
           ? MotionFault.Kind.JOINT_LIMIT : MotionFault.Kind.OUT_OF_REACH;

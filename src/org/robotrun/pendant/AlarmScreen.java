@@ -34,7 +34,15 @@ final class AlarmScreen implements Screen {
     }
     top = Math.max(0, Math.min(top, h.size() - 1));
     for (int i = top; i < h.size() && rows.size() < Lcd.BODY_ROWS; i++) {
-      rows.add(String.format(java.util.Locale.ROOT, "%s%3d %s", i == top ? ">" : " ", i + 1, h.get(i).display()));
+      if (i == top) {
+        // the entry under the cursor is shown whole, wrapped under its number
+        List<String> w = Lcd.wrap(h.get(i).display(), Lcd.WIDTH - 5);
+        for (int j = 0; j < w.size(); j++) {
+          rows.add(j == 0 ? String.format(java.util.Locale.ROOT, ">%3d %s", i + 1, w.get(j)) : "     " + w.get(j));
+        }
+      } else {
+        rows.add(String.format(java.util.Locale.ROOT, " %3d %s", i + 1, h.get(i).display()));
+      }
     }
     return rows;
   }

@@ -139,7 +139,7 @@ final class DataScreen implements Screen {
       case DOWN -> cursor[t] = Math.min(table.size - 1, cursor[t] + (p.shift() ? Lcd.BODY_ROWS : 1));
       case LEFT -> column = 0;
       case RIGHT -> column = 1;
-      case F1 -> p.choose("TYPE", java.util.Arrays.stream(Table.values()).map(x -> x.title).toList(), i -> {
+      case F1 -> p.choose("TYPE", java.util.Arrays.stream(Table.values()).map(x -> x.title).toList(), table.ordinal(), i -> {
         table = Table.values()[i];
         visionDetail = false;
       });

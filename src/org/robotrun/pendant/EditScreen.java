@@ -274,7 +274,7 @@ final class EditScreen implements Screen {
     Field.Edit edit = maybe.get();
     int keep = field;
     if (typed == null && !edit.choices().isEmpty()) {
-      p.choose(fs.get(field).text(), edit.choices(), i -> {
+      p.choose(fs.get(field).text(), edit.choices(), Pendant.currentChoice(edit.choices(), fs.get(field).text()), i -> {
         if (p.editProgram(programName, pr -> ProgramEdits.replaceLine(pr, cur, edit.choose().apply(i)))) {
           field = Math.min(keep, fields(p, program(p), cur).size() - 1);
           adjustPositions(p, cur);

@@ -48,7 +48,7 @@ final class IoScreen implements Screen {
     switch (k) {
       case UP -> cursor[t] = Math.max(0, cursor[t] - 1);
       case DOWN -> cursor[t] = Math.min(p.control().registers().ioSize(kind) - 1, cursor[t] + 1);
-      case F1 -> p.choose("I/O TYPE", KINDS.stream().map(IoKind::name).toList(), i -> kind = KINDS.get(i));
+      case F1 -> p.choose("I/O TYPE", KINDS.stream().map(IoKind::name).toList(), KINDS.indexOf(kind), i -> kind = KINDS.get(i));
       case F4, F5 -> {
         if (kind.group()) {
           p.message("Group I/O: type a number and ENTER");

@@ -8,31 +8,68 @@ import java.util.List;
  * the status line, row 1 the active alarm, row 2 the screen title, then {@link #BODY_ROWS} body
  * rows, the prompt line, and the function-key labels on the last row. The cursor line starts
  * with {@code >} and the field under the cursor is shown in braces: {@code {200}}.
+ *
+ * <p>An alarm or a prompt longer than a row is never cut: it wraps at spaces onto up to
+ * {@link #MAX_WRAP} rows ({@code alarmRows}, {@code promptRows}), taken from the body (the body
+ * window keeps the cursor line in view).
  */
-public record Lcd(List<String> rows) {
+public record Lcd(List<String> rows, int alarmRows, int promptRows) {
   public static final int WIDTH = 64;
   public static final int BODY_ROWS = 11;
   public static final int HEIGHT = BODY_ROWS + 5;
+  /** The most rows an alarm or a prompt wraps onto (the rest of the body stays for the screen). */
+  public static final int MAX_WRAP = 4;
 
   public Lcd {
     rows = List.copyOf(rows);
     if (rows.size() != HEIGHT) {
       throw new IllegalArgumentException("an LCD has " + HEIGHT + " rows, got " + rows.size());
     }
+    if (alarmRows < 1 || promptRows < 1 || alarmRows > MAX_WRAP || promptRows > MAX_WRAP) {
+      throw new IllegalArgumentException("alarm and prompt take 1.." + MAX_WRAP + " rows, got " + alarmRows + ", " + promptRows);
+    }
   }
 
-  /** Builds the LCD, padding or cutting every row to {@link #WIDTH}. */
+  /** An LCD whose alarm and prompt take one row each. */
+  public Lcd(List<String> rows) {
+    this(rows, 1, 1);
+  }
+
+  /**
+   * Builds the LCD, padding every row to {@link #WIDTH}; an alarm or prompt too long for a row
+   * wraps onto the rows below (the alarm) or above (the prompt) it.
+   */
   static Lcd of(String status, String alarm, String title, List<String> body, String prompt, List<String> fkeys) {
+    List<String> alarmLines = wrapped(alarm);
+    List<String> promptLines = wrapped(prompt);
+    int bodyRows = BODY_ROWS - (alarmLines.size() - 1) - (promptLines.size() - 1);
     List<String> out = new ArrayList<>(HEIGHT);
     out.add(fit(status));
-    out.add(fit(alarm));
+    alarmLines.forEach(r -> out.add(fit(r)));
     out.add(fit(title));
-    for (int i = 0; i < BODY_ROWS; i++) {
+    int first = 0;
+    for (int i = 0; i < body.size(); i++) {
+      if (body.get(i).startsWith(">")) {
+        first = Math.max(0, i - bodyRows + 1);
+        break;
+      }
+    }
+    for (int i = first; i < first + bodyRows; i++) {
       out.add(fit(i < body.size() ? body.get(i) : ""));
     }
-    out.add(fit(prompt));
+    promptLines.forEach(r -> out.add(fit(r)));
     out.add(fit(fkeyRow(fkeys)));
-    return new Lcd(out);
+    return new Lcd(out, alarmLines.size(), promptLines.size());
+  }
+
+  /** One row, or the text wrapped onto at most {@link #MAX_WRAP} rows (the last one cut only beyond that). */
+  private static List<String> wrapped(String text) {
+    String one = text.replace('\n', ' ');
+    if (one.length() <= WIDTH) {
+      return List.of(one);
+    }
+    List<String> w = wrap(one, WIDTH);
+    return w.size() <= MAX_WRAP ? w : w.subList(0, MAX_WRAP);
   }
 
   private static String fkeyRow(List<String> labels) {
@@ -102,14 +139,35 @@ public record Lcd(List<String> rows) {
     return rows.get(0);
   }
 
-  /** The alarm line (blank without an active alarm). */
+  /** The alarm line (blank without an active alarm); a wrapped alarm's rows joined by a space. */
   public String alarmLine() {
-    return rows.get(1);
+    return joined(1, alarmRows);
   }
 
-  /** The prompt line (messages and entry). */
+  /** Whether row {@code i} shows (part of) the active alarm. */
+  public boolean isAlarmRow(int i) {
+    return i >= 1 && i <= alarmRows;
+  }
+
+  /** The screen title. */
+  public String title() {
+    return rows.get(1 + alarmRows);
+  }
+
+  /** The prompt line (messages and entry); a wrapped prompt's rows joined by a space. */
   public String promptLine() {
-    return rows.get(HEIGHT - 2);
+    return joined(HEIGHT - 1 - promptRows, promptRows);
+  }
+
+  private String joined(int from, int count) {
+    if (count == 1) {
+      return rows.get(from);
+    }
+    StringBuilder sb = new StringBuilder();
+    for (int i = from; i < from + count; i++) {
+      sb.append(i > from ? " " : "").append(rows.get(i).stripTrailing());
+    }
+    return sb.toString();
   }
 
   /** The function-key labels. */
@@ -119,7 +177,7 @@ public record Lcd(List<String> rows) {
 
   /** The body rows. */
   public List<String> body() {
-    return rows.subList(3, 3 + BODY_ROWS);
+    return rows.subList(2 + alarmRows, HEIGHT - 1 - promptRows);
   }
 
   /** The row the cursor is on (the body row starting with {@code >}), if any. */
@@ -135,7 +193,7 @@ public record Lcd(List<String> rows) {
 
   /** The braced field on the cursor row, if the cursor sits on one. */
   public java.util.Optional<FieldSpan> cursorField() {
-    for (int r = 3; r < 3 + BODY_ROWS; r++) {
+    for (int r = 2 + alarmRows; r < HEIGHT - 1 - promptRows; r++) {
       String row = rows.get(r);
       if (row.startsWith(">")) {
         int open = row.indexOf('{');

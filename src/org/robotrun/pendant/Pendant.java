@@ -379,7 +379,13 @@ public final class Pendant {
       }
     }
     Result r = control.run(from, name, line, forward);
+    boolean fromLastLine = forward && line == count && count > 1;
+    int startLine = line;
     message = switch (r) {
+      case Result.Ok ok when ok.message().isEmpty() && fromLastLine ->
+          // the cursor stayed on the last line after a run: only that line runs, which a student
+          // takes for nothing happening; say so (a deliberate addition, docs/pendant.md)
+          "Started at line " + startLine + ", the last line of " + name + ": for the whole program put the cursor on line 1";
       case Result.Ok ok -> ok.message();
       case Result.Refused no -> no.reason();
     };
@@ -528,6 +534,36 @@ public final class Pendant {
 
   void choose(String title, List<String> options, IntConsumer onChoose) {
     modal = new Modal.Choice(title, options, onChoose);
+  }
+
+  /** A choice list opening on item {@code current} (the field's value now), as a controller's does. */
+  void choose(String title, List<String> options, int current, IntConsumer onChoose) {
+    Modal.Choice c = new Modal.Choice(title, options, onChoose);
+    c.cursor = Math.max(0, Math.min(current, options.size() - 1));
+    modal = c;
+  }
+
+  /**
+   * The item of {@code options} a field showing {@code text} holds: the same text, else the
+   * longest item the text starts with ({@code CNT50} is {@code CNT}), else 0.
+   */
+  static int currentChoice(List<String> options, String text) {
+    String t = text.strip().toUpperCase(Locale.ROOT);
+    // an item field DO[3] matches the item DO[...]
+    String kind = t.indexOf('[') > 0 ? t.substring(0, t.indexOf('[')) : t;
+    int best = -1;
+    int bestLength = 0;
+    for (int i = 0; i < options.size(); i++) {
+      String o = options.get(i).strip().toUpperCase(Locale.ROOT).replace("[...]", "");
+      if (o.equals(t) || o.equals(kind)) {
+        return i;
+      }
+      if (!o.isEmpty() && t.startsWith(o) && o.length() > bestLength) {
+        best = i;
+        bestLength = o.length();
+      }
+    }
+    return Math.max(best, 0);
   }
 
   /** An entry offering {@code initial}: the first typed character replaces it, ENTER keeps it. */

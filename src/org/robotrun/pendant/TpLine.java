@@ -312,7 +312,7 @@ public final class TpLine {
     f.add(new Field(speed, Field.Edit.entry(speed, t -> withSpeed(m, checkedSpeed(new Motion.Speed(speedValue(t), m.speed().unit()))))));
     List<Motion.SpeedUnit> units = Arrays.stream(Motion.SpeedUnit.values()).filter(u -> u.fits(m.type())).toList();
     f.add(new Field(unit(m.speed().unit()), Field.Edit.choice(units.stream().map(TpLine::unit).toList(),
-        k -> withSpeed(m, new Motion.Speed(m.speed().value(), units.get(k))))));
+        k -> withSpeed(m, speedInRange(new Motion.Speed(m.speed().value(), units.get(k)))))));
     f.add(Field.fixed(" "));
     String term = switch (m.termination()) {
       case Motion.Fine x -> "FINE";
@@ -377,8 +377,9 @@ public final class TpLine {
     Motion.Speed speed = m.speed();
     if (!speed.unit().fits(type)) {
       // J uses % of the joints' top speed, L/C/A a TCP speed: a unit that does not fit becomes the
-      // new type's default unit, keeping the number (as the controller does when retyping).
-      speed = new Motion.Speed(speed.value(), type == Motion.Type.J ? Motion.SpeedUnit.PERCENT : Motion.SpeedUnit.MM_PER_SEC);
+      // new type's default unit, keeping the number (as the controller does when retyping), within
+      // the unit's range (L 2000mm/sec becomes J 100%).
+      speed = speedInRange(new Motion.Speed(speed.value(), type == Motion.Type.J ? Motion.SpeedUnit.PERCENT : Motion.SpeedUnit.MM_PER_SEC));
     }
     Optional<Motion.Target> end = Optional.empty();
     if (type == Motion.Type.C) {
@@ -389,12 +390,44 @@ public final class TpLine {
   }
 
   /**
-   * A typed speed as the .LS reader would accept it: a percentage is 1..100 (a program saved
-   * with 300% would not read back).
+   * The range a controller takes for a motion speed in {@code unit} (R-30iB operator's manual,
+   * motion speed table, recalled: % 1-100, mm/sec 1-2000 (the robot's default maximum Cartesian
+   * speed, $MRR_GRP.$SPEEDLIM), cm/min 1-12000, inch/min 0.1-4724.4, deg/sec 1-520 (the default
+   * $ROTSPEEDLIM), sec 0.1-3200, msec 1-32000): {@code {lo, hi}}.
+   */
+  static double[] speedRange(Motion.SpeedUnit unit) {
+    return switch (unit) {
+      case PERCENT -> new double[] {1, 100};
+      case MM_PER_SEC -> new double[] {1, 2000};
+      case CM_PER_MIN -> new double[] {1, 12000};
+      case INCH_PER_MIN -> new double[] {0.1, 4724.4};
+      case DEG_PER_SEC -> new double[] {1, 520};
+      case SEC -> new double[] {0.1, 3200};
+      case MSEC -> new double[] {1, 32000};
+    };
+  }
+
+  /**
+   * A typed speed as the controller takes it: within {@link #speedRange} of its unit, else
+   * "Value out of range" with the range, and the caller keeps the old speed (a speed register
+   * is checked when the line runs).
    */
   static Motion.Speed checkedSpeed(Motion.Speed s) throws BadText {
-    if (s.unit() == Motion.SpeedUnit.PERCENT && s.value() instanceof Motion.SpeedConst c && c.value() > 100) {
-      throw new BadText("Speed " + ExprText.plain(c.value()) + "%: enter 1 to 100");
+    if (s.value() instanceof Motion.SpeedConst c) {
+      double[] r = speedRange(s.unit());
+      if (!(c.value() >= r[0] && c.value() <= r[1])) {
+        throw new BadText("Speed " + ExprText.plain(c.value()) + unit(s.unit()) + ": Value out of range, enter "
+            + ExprText.plain(r[0]) + " to " + ExprText.plain(r[1]) + " " + unit(s.unit()), true);
+      }
+    }
+    return s;
+  }
+
+  /** {@code s} with its constant moved into its unit's range (a unit chosen from the list). */
+  static Motion.Speed speedInRange(Motion.Speed s) {
+    if (s.value() instanceof Motion.SpeedConst c) {
+      double[] r = speedRange(s.unit());
+      return new Motion.Speed(new Motion.SpeedConst(Math.max(r[0], Math.min(r[1], c.value()))), s.unit());
     }
     return s;
   }

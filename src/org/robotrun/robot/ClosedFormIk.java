@@ -36,7 +36,9 @@ import org.robotrun.math.Transform;
  *
  * <p>Not thread-safe (scratch arrays); allocation-free apart from the result object.
  */
-public final class ClosedFormIk {
+public final class ClosedFormIk implements IkSolver {
+  /** {@link IkSolver#kind()} of this solver. */
+  public static final String KIND = "closed-form";
   /** Base solutions before turn variants: four arms times two wrists. */
   public static final int BASE_SOLUTIONS = 8;
 
@@ -97,12 +99,21 @@ public final class ClosedFormIk {
     }
   }
 
+  @Override
   public RobotModel model() {
     return model;
   }
 
-  /** A labelled solution. */
-  public record Solution(double[] q, Config config) {}
+  @Override
+  public String kind() {
+    return KIND;
+  }
+
+  /** OPW branches are told apart by their CONFIG alone, so {@code qNear} is not needed. */
+  @Override
+  public IkResult solve(Transform X_BF, Config config, double[] qNear) {
+    return solve(X_BF, config);
+  }
 
   /**
    * The flange pose to ask for so that the tool frame T reaches {@code X_BT}:
@@ -113,6 +124,7 @@ public final class ClosedFormIk {
   }
 
   /** The CONFIG of a joint vector (see the class comment for the definitions). */
+  @Override
   public Config configOf(double[] q) {
     return new Config(flipMargin(q) > 0, upMargin(q) > 0, topMargin(q) > 0,
         Config.turnOf(q[0]), Config.turnOf(q[3]), Config.turnOf(q[5]));
@@ -172,6 +184,7 @@ public final class ClosedFormIk {
    * The solution nearest to {@code qCurrent} (jogging): over every branch and every turn
    * variant inside the limits, the least sum of squared joint differences.
    */
+  @Override
   public IkResult solveNearest(Transform X_BF, double[] qCurrent) {
     KinematicChain.pack(X_BF, target, 0);
     return solveNearest(target, qCurrent);
@@ -278,6 +291,7 @@ public final class ClosedFormIk {
    * Every solution inside the joint limits, each turn variant separately, labelled with its
    * CONFIG. Empty when out of reach or only outside the limits. Allocates (not for hot loops).
    */
+  @Override
   public List<Solution> allSolutions(Transform X_BF) {
     KinematicChain.pack(X_BF, target, 0);
     int valid = solveBase(target, 0);

@@ -7,9 +7,9 @@ import java.util.regex.Pattern;
  * A FANUC arm configuration, as a taught position's {@code CONFIG:'N U T, 0, 0, 0'}: which of
  * the up to eight closed-form branches, plus the turn numbers of J1, J4 and J6.
  *
- * <p>How each flag follows from the joint values is defined once, in
- * {@link ClosedFormIk#configOf(double[])} (it needs the arm's OPW geometry); the turn numbers
- * follow {@link #turnOf(double)}.
+ * <p>How each flag follows from the joint values is defined by the arm's solver
+ * ({@link IkSolver#configOf(double[])}: the closed form's formulas on OPW arms, the same
+ * definitions from the link geometry on others); the turn numbers follow {@link #turnOf(double)}.
  *
  * @param flip F (true) or N: the sign of J5 (F when J5 &gt; 0)
  * @param up U (true) or D: elbow up or down

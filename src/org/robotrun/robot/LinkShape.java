@@ -12,7 +12,7 @@ public sealed interface LinkShape {
   /** Placement of the shape's centre in the link frame. */
   Transform X_LS();
 
-  /** Display colour name: "body" (the arm's yellow), "joint" (dark), "base" or "flange". */
+  /** Display colour name: "body" (the arm's yellow), "white" (collaborative arms), "joint" (dark), "base" or "flange". */
   String color();
 
   /** A box with full edge lengths {@code size} (mm), centred on its pose. */

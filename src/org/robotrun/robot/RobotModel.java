@@ -45,6 +45,23 @@ public record RobotModel(
     }
   }
 
+  /**
+   * A model from its chain alone: the closed-form parameters are derived from the joints and
+   * checked against the chain's FK ({@link OpwDerivation}), empty when the arm is not OPW. Every
+   * loader (library file, imported URDF) builds its model here.
+   */
+  public static RobotModel fromChain(String id, String displayName, List<JointSpec> joints, Transform X_6F,
+      Transform X_WB, List<LinkSpec> links, boolean coupledJ3) {
+    RobotModel bare = new RobotModel(id, displayName, joints, X_6F, X_WB, links, Optional.empty(), coupledJ3);
+    Optional<OpwParameters> opw = OpwDerivation.derive(bare);
+    return opw.isEmpty() ? bare : new RobotModel(id, displayName, joints, X_6F, X_WB, links, opw, coupledJ3);
+  }
+
+  /** "spherical" (the OPW closed form applies), "offset" (the CRX layout) or "other". */
+  public String wristKind() {
+    return opw.isPresent() ? "spherical" : OffsetWristIk.applies(this) ? "offset" : "other";
+  }
+
   public JointSpec joint(int i) {
     return joints.get(i);
   }

@@ -130,6 +130,36 @@ public final class BgLogic {
   }
 
   /**
+   * What a BG Logic list offers: the programs a slot would take (not in one already), and, for
+   * each other program, why it is not offered (its {@link #refusal}).
+   */
+  public record Offer(List<String> programs, List<String> notOffered) {
+    public Offer {
+      programs = List.copyOf(programs);
+      notOffered = List.copyOf(notOffered);
+    }
+  }
+
+  /** The programs of {@code names} a BG slot can take, and why the others are missing. */
+  public Offer offer(List<String> names) {
+    List<String> ok = new java.util.ArrayList<>();
+    List<String> why = new java.util.ArrayList<>();
+    for (String n : names) {
+      if (slots.stream().anyMatch(s -> s.program.equals(n))) {
+        continue;
+      }
+      Optional<Program> p = store.find(n);
+      Optional<String> bad = p.isEmpty() ? Optional.of("program " + n + " does not exist") : refusal(p.get());
+      if (bad.isPresent()) {
+        why.add(bad.get());
+      } else {
+        ok.add(n);
+      }
+    }
+    return new Offer(ok, why);
+  }
+
+  /**
    * Puts {@code program} in the next free slot, running.
    *
    * @return why not, or empty when it is in

@@ -13,6 +13,8 @@ public final class RobotDrawList {
   /** FANUC-style yellow, dark joint housings, grey base, bright flange. */
   public static final DrawItem.Color BODY = DrawItem.Color.rgb(0.95, 0.74, 0.06);
   public static final DrawItem.Color JOINT = DrawItem.Color.rgb(0.16, 0.16, 0.18);
+  /** The collaborative arms' white (CRX). */
+  public static final DrawItem.Color WHITE = DrawItem.Color.rgb(0.92, 0.93, 0.92);
   public static final DrawItem.Color BASE = DrawItem.Color.rgb(0.22, 0.22, 0.24);
   public static final DrawItem.Color FLANGE = DrawItem.Color.rgb(0.62, 0.63, 0.66);
 
@@ -68,6 +70,7 @@ public final class RobotDrawList {
       case "joint" -> JOINT;
       case "base" -> BASE;
       case "flange" -> FLANGE;
+      case "white" -> WHITE;
       default -> BODY;
     };
   }

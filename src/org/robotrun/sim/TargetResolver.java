@@ -13,11 +13,10 @@ import org.robotrun.program.Motion;
 import org.robotrun.program.MotionPort;
 import org.robotrun.program.MotionRequest;
 import org.robotrun.program.Position;
-import org.robotrun.robot.ClosedFormIk;
+import org.robotrun.robot.IkSolver;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.JointConvention;
-import org.robotrun.robot.NumericIk;
 import org.robotrun.robot.RobotModel;
 
 /**
@@ -33,21 +32,19 @@ import org.robotrun.robot.RobotModel;
  */
 final class TargetResolver {
   private final RobotModel model;
-  /** The closed form where the arm has OPW geometry (CONFIG honoured), else the numeric solver (nearest solution). */
-  private final Optional<ClosedFormIk> ik;
-  private final NumericIk numeric;
+  /** The arm's solver, chosen from its chain (CONFIG honoured except by the numeric last resort). */
+  private final IkSolver ik;
   private final Transform X_BW;
 
   TargetResolver(RobotModel model) {
     this.model = model;
-    this.ik = model.opw().map(p -> new ClosedFormIk(model));
-    this.numeric = new NumericIk(model);
+    this.ik = IkSolver.forModel(model);
     this.X_BW = model.X_WB().inverse();
   }
 
-  /** Joints for a flange pose in B: in {@code config} with the closed form, else nearest to {@code q}. */
+  /** Joints for a flange pose in B in {@code config} (nearest {@code q} where two share it; the numeric solver: from {@code q}). */
   private IkResult solve(Transform X_BF, Config config, double[] q) {
-    return ik.isPresent() ? ik.get().solve(X_BF, robotConfig(config)) : numeric.solve(X_BF, q);
+    return ik.solve(X_BF, robotConfig(config), q);
   }
 
   /** A resolved move or the reason it cannot run. */
@@ -215,7 +212,7 @@ final class TargetResolver {
   /** LPOS: the TCP of {@code X_FT} in the user frame {@code X_WU}, with the current CONFIG. */
   Position.Cartesian lpos(double[] q, Transform X_WU, Transform X_FT) {
     Transform X_UT = X_WU.inverse().compose(tcp(q, X_FT));
-    Config config = ik.map(k -> programConfig(k.configOf(q))).orElse(Config.DEFAULT);
+    Config config = programConfig(ik.configOf(q));
     return Position.Cartesian.of(Xyzwpr.fromTransform(X_UT), config);
   }
 

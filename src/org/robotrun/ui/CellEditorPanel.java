@@ -43,6 +43,12 @@ public final class CellEditorPanel {
   private String selected = "";
   private String message = "";
   private boolean messageIsError;
+  /** When the last message came (nanoseconds of {@link #clock}). */
+  private long messageNanos;
+  private java.util.function.LongSupplier clock = System::nanoTime;
+  /** How long the 3D view's strip shows a confirmation, and a refusal (the panel keeps both). */
+  static final double STRIP_DONE_SECONDS = 5;
+  static final double STRIP_ERROR_SECONDS = 15;
   private long shownRevision = -1;
 
   /** Whether edits are saved with a workspace (then the file row only exports a copy). */
@@ -77,7 +83,12 @@ public final class CellEditorPanel {
 
   /** Selects an object (a click in the 3D view); "" selects nothing. */
   public void select(String name) {
-    selected = name == null ? "" : name;
+    String now = name == null ? "" : name;
+    if (!now.equals(selected)) {
+      // a message about the object selected before no longer applies in the 3D view
+      messageNanos = Long.MIN_VALUE / 2;
+    }
+    selected = now;
   }
 
   /** The last edit's message for a status line, "" when none. */
@@ -89,8 +100,28 @@ public final class CellEditorPanel {
     return messageIsError;
   }
 
+  /** The clock the strip's time-outs read (tests pass their own). */
+  void setClock(java.util.function.LongSupplier nanos) {
+    clock = nanos;
+  }
+
+  /**
+   * The message the strip along the bottom of the 3D view shows now: the last edit's answer, a
+   * confirmation for {@link #STRIP_DONE_SECONDS} and a refusal for {@link #STRIP_ERROR_SECONDS}
+   * (or until the next edit or another selection), so nothing stays there once it no longer
+   * applies; the panel's own line keeps the last message.
+   */
+  public Optional<String> stripMessage() {
+    if (message.isEmpty()) {
+      return Optional.empty();
+    }
+    double age = (clock.getAsLong() - messageNanos) / 1e9;
+    return age < (messageIsError ? STRIP_ERROR_SECONDS : STRIP_DONE_SECONDS) ? Optional.of(message) : Optional.empty();
+  }
+
   /** Applies an edit's result: remembers the message, forgets field texts so they show the model. */
   public void report(Result r) {
+    messageNanos = clock.getAsLong();
     switch (r) {
       case Result.Done d -> {
         message = d.message();
@@ -128,6 +159,7 @@ public final class CellEditorPanel {
       keepSelection();
     }
     drawScenarios();
+    drawRobotModels();
     ImGui.separator();
     if (ImGui.button("Add box")) {
       addAndSelect(editor.addBox());
@@ -171,6 +203,46 @@ public final class CellEditorPanel {
       List<WorldObject> all = editor.world().objects();
       selected = all.get(all.size() - 1).name();
     }
+  }
+
+  /** One model choice per robot of the active scenario (only in a workspace: the cell is opened again). */
+  private void drawRobotModels() {
+    if (!inWorkspace) {
+      return;
+    }
+    var robots = editor.active().robots();
+    for (int i = 0; i < robots.size(); i++) {
+      var r = robots.get(i);
+      Txt.disabled("Robot " + r.name());
+      ImGui.setNextItemWidth(-1);
+      if (ImGui.beginCombo("##model" + i, modelName(r.modelId()))) {
+        for (org.robotrun.io.RobotDefinitions.Entry e : org.robotrun.io.RobotDefinitions.library()) {
+          if (ImGui.selectable(e.name() + "##m" + i + e.id(), e.id().equals(r.modelId()))) {
+            report(editor.setRobotModel(i, e.id(), jointsFor(e.id(), r.initialJointsRad())));
+          }
+        }
+        ImGui.endCombo();
+      }
+      if (ImGui.isItemHovered()) {
+        Txt.tooltip("Choosing another model opens the cell again with it (the robot starts at its scenario joints,"
+            + " or at HOME where those are outside the new model's limits). Your programs stay.");
+      }
+    }
+  }
+
+  private static String modelName(String id) {
+    return org.robotrun.io.RobotDefinitions.library().stream().filter(e -> e.id().equals(id)).map(e -> e.name())
+        .findFirst().orElse(id);
+  }
+
+  /** The robot's joints if the new model allows them, else HOME (pendant convention, rad). */
+  private static List<Double> jointsFor(String modelId, List<Double> pendantRad) {
+    org.robotrun.robot.RobotModel m = org.robotrun.io.RobotDefinitions.load(modelId);
+    double[] p = pendantRad.stream().mapToDouble(Double::doubleValue).toArray();
+    if (m.firstJointOutsideLimits(org.robotrun.robot.JointConvention.pendantToKinematic(m, p)) < 0) {
+      return pendantRad;
+    }
+    return List.of(0.0, 0.0, 0.0, 0.0, -Math.PI / 2, 0.0);
   }
 
   private void drawScenarios() {

@@ -150,8 +150,8 @@ public final class PendantPanel {
         ImGui.getWindowHeight(), LCD_BG_R, LCD_BG_G, LCD_BG_B);
     for (int i = 0; i < Lcd.HEIGHT; i++) {
       String row = lcd.row(i);
-      if (i == 1 && !row.isBlank()) {
-        // the alarm line
+      if (lcd.isAlarmRow(i) && !row.isBlank()) {
+        // the alarm line (a long alarm wraps onto the rows below)
         ImGui.pushStyleColor(ImGuiCol.Text, 0.75f, 0.05f, 0.05f, 1f);
         ImGui.textUnformatted(row);
         ImGui.popStyleColor();

@@ -147,7 +147,12 @@ public final class PlcPanel {
         controller.bgLogic().remove(s.program());
       }
     }
-    List<String> names = controller.programNames();
+    // only what the controller takes as background logic; the rest are listed with the reason
+    BgLogic.Offer offer = controller.bgLogic().offer(controller.programNames());
+    List<String> names = offer.programs();
+    if (names.isEmpty()) {
+      Txt.disabled("No program can run as BG Logic (see why below)");
+    }
     if (!names.isEmpty()) {
       bgChoice = Math.max(0, Math.min(bgChoice, names.size() - 1));
       ImGui.setNextItemWidth(160);
@@ -163,6 +168,12 @@ public final class PlcPanel {
       if (ImGui.button("Add to BG")) {
         bgMessage = controller.bgLogic().add(names.get(bgChoice)).orElse(names.get(bgChoice) + " runs every scan");
       }
+    }
+    if (!offer.notOffered().isEmpty() && ImGui.treeNode("Not offered (" + offer.notOffered().size() + ")##bgwhy")) {
+      for (String why : offer.notOffered()) {
+        Txt.wrapped(why);
+      }
+      ImGui.treePop();
     }
     if (!bgMessage.isEmpty()) {
       Txt.wrapped(bgMessage);

@@ -8,14 +8,21 @@ public final class RobotStatusPanel {
   private RobotStatusPanel() {}
 
   /**
+   * @param modelName the robot's model (shown on top; empty: not shown)
+   * @param jointNames the joints' names, base to wrist
    * @param pendantDeg joint values in degrees, pendant convention
    * @param flangeInWorld the flange pose in WORLD (mm, rad)
    */
-  public static void drawContents(double[] pendantDeg, Xyzwpr flangeInWorld) {
+  public static void drawContents(String modelName, java.util.List<String> jointNames, double[] pendantDeg, Xyzwpr flangeInWorld) {
     {
+      if (!modelName.isEmpty()) {
+        ImGui.textUnformatted(modelName);
+        ImGui.separator();
+      }
       ImGui.textUnformatted("JOINT (deg)");
       for (int i = 0; i < pendantDeg.length; i++) {
-        ImGui.textUnformatted(String.format(java.util.Locale.ROOT, "  J%d %9.3f", i + 1, shown(pendantDeg[i])));
+        String name = i < jointNames.size() ? jointNames.get(i) : "J" + (i + 1);
+        ImGui.textUnformatted(String.format(java.util.Locale.ROOT, "  %-2s %9.3f", name, shown(pendantDeg[i])));
       }
       ImGui.separator();
       ImGui.textUnformatted("WORLD, flange (mm, deg)");

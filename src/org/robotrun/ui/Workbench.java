@@ -47,6 +47,16 @@ public final class Workbench implements SimulatorWindow.Panels {
     double[] pendantDeg();
 
     Xyzwpr flangeInWorld();
+
+    /** The robot's model name (e.g. "FANUC CRX-10iA"); empty when unknown. */
+    default String modelName() {
+      return "";
+    }
+
+    /** The joints' names as the model's file gives them (J1..J6 on FANUC arms). */
+    default java.util.List<String> jointNames() {
+      return java.util.List.of("J1", "J2", "J3", "J4", "J5", "J6");
+    }
   }
 
   private final OrbitCamera camera;
@@ -402,7 +412,7 @@ public final class Workbench implements SimulatorWindow.Panels {
       }
       state.robotOpen = section("Robot", state.robotOpen);
       if (state.robotOpen) {
-        RobotStatusPanel.drawContents(robot.pendantDeg(), robot.flangeInWorld());
+        RobotStatusPanel.drawContents(robot.modelName(), robot.jointNames(), robot.pendantDeg(), robot.flangeInWorld());
       }
       state.cellOpen = section("Cell", state.cellOpen);
       if (state.cellOpen) {
@@ -425,9 +435,10 @@ public final class Workbench implements SimulatorWindow.Panels {
     return ImGui.collapsingHeader(title, ImGuiTreeNodeFlags.None);
   }
 
-  /** The cell editor's last message along the bottom of the 3D view, where the student looks. */
+  /** The cell editor's last message along the bottom of the 3D view, where the student looks, while it applies. */
   private void drawPromptStrip() {
-    if (editorPanel == null || editorPanel.message().isEmpty() || !editorPanel.messageIsError()) {
+    java.util.Optional<String> shown = editorPanel == null ? java.util.Optional.empty() : editorPanel.stripMessage();
+    if (shown.isEmpty()) {
       return;
     }
     WindowLayout.Rect v = layout.view();
@@ -436,7 +447,11 @@ public final class Workbench implements SimulatorWindow.Panels {
     ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), ImGui.getFontSize() * 15);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
         | ImGuiWindowFlags.NoFocusOnAppearing | ImGuiWindowFlags.NoNav | ImGuiWindowFlags.NoInputs)) {
-      Txt.colored(1f, 0.55f, 0.45f, 1f, editorPanel.message());
+      if (editorPanel.messageIsError()) {
+        Txt.colored(1f, 0.55f, 0.45f, 1f, shown.get());
+      } else {
+        Txt.colored(0.55f, 0.9f, 0.55f, 1f, shown.get());
+      }
     }
     ImGui.end();
   }

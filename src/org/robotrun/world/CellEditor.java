@@ -214,7 +214,8 @@ public final class CellEditor {
     String stem = f.substring(0, f.length() - 4).replaceAll("[^A-Za-z0-9_]", "_");
     WorldObject o = WorldObject.of(freeName(stem.isEmpty() ? "mesh" : stem), ObjectKind.FIXTURE,
         new Shape.Mesh(file, scale, mesh), Rgb.GREY, Transform.IDENTITY, Optional.empty());
-    return apply(withWorld(append(o)), "added " + o.name());
+    return apply(withWorld(append(o)), "imported " + f + " as fixture " + o.name() + " (" + mesh.triangleCount()
+        + " triangles, scale " + fmt(scale) + ")");
   }
 
   private Result addObject(String name, Shape shape) {
@@ -448,6 +449,27 @@ public final class CellEditor {
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.add(copy);
     return apply(new State(List.copyOf(out), out.size() - 1), "scenario " + n + " added");
+  }
+
+  /**
+   * Robot {@code index} (cell order) of the active scenario becomes model {@code modelId} (a
+   * library id), standing at {@code jointsRad} (pendant convention; the caller knows the new
+   * model's limits). The window then opens the cell again with it.
+   */
+  public Result setRobotModel(int index, String modelId, List<Double> jointsRad) {
+    Scenario a = active();
+    if (index < 0 || index >= a.robots().size()) {
+      return refused("robot: expected 1 to " + a.robots().size() + ", got " + (index + 1));
+    }
+    RobotSetup r = a.robots().get(index);
+    if (r.modelId().equals(modelId)) {
+      return new Result.Done("");
+    }
+    List<RobotSetup> robots = new ArrayList<>(a.robots());
+    robots.set(index, r.withModel(modelId).withJoints(jointsRad));
+    List<Scenario> out = new ArrayList<>(state.scenarios);
+    out.set(state.active, a.withRobots(robots));
+    return apply(new State(List.copyOf(out), state.active), r.name() + " is now " + modelId);
   }
 
   /** Makes scenario {@code index} the active one. */

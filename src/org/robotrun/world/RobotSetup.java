@@ -89,6 +89,12 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
         registers, toolFrames, userFrames, mode);
   }
 
+  /** This robot as another model (a library id or a robot file's absolute path); everything else kept. */
+  public RobotSetup withModel(String model) {
+    return new RobotSetup(name, model, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, macros,
+        registers, toolFrames, userFrames, mode);
+  }
+
   /** This robot with other programs of its own and main program. */
   public RobotSetup withPrograms(List<java.nio.file.Path> files, java.util.Optional<String> main) {
     return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main, macros,

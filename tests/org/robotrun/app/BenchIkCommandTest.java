@@ -42,11 +42,34 @@ class BenchIkCommandTest {
     assertThat(r.code()).isZero();
     assertThat(r.out().lines()).hasSize(1);
     assertThat(r.out()).matches(
-        "solved=50/50 in_limits=50/50 same_config=50/50 median_us=[0-9.]+ p99_us=[0-9.]+\\R");
+        "solved=50/50 in_limits=50/50 same_config=50/50 median_us=[0-9.]+ p99_us=[0-9.]+ robot=lrmate200id solver=closed-form\\R");
     List<String> written = Files.readAllLines(out);
     assertThat(written).hasSize(51);
     assertThat(written.get(0)).isEqualTo("id,q1,q2,q3,q4,q5,q6");
     assertThat(written.get(1).split(",")).hasSize(7);
+  }
+
+  @Test
+  void everyLibraryArmSolvesGeneratedTargetsWithItsOwnSolverInTheGroundTruthConfig() throws Exception {
+    for (String id : org.robotrun.io.RobotDefinitions.LIBRARY) {
+      Path t = dir.resolve(id + ".csv");
+      Run r = run("bench", "ik", "--robot", id, "--generate", "200", "--seed", "7", "--write-targets", t.toString(),
+          "--warmup", "1", "--warmup-ms", "0");
+      assertThat(r.code()).as(id + r.err()).isZero();
+      String kind = id.startsWith("crx") ? "offset-wrist" : "closed-form";
+      assertThat(r.out()).as(id).matches("solved=200/200 in_limits=200/200 same_config=200/200 median_us=[0-9.]+ p99_us=[0-9.]+ robot="
+          + id + " solver=" + kind + "\\R");
+      // The written file reads back as --targets and gives the same counts.
+      Run again = run("bench", "ik", "--robot", id, "--targets", t.toString(), "--warmup", "0", "--warmup-ms", "0");
+      assertThat(again.out()).as(id).startsWith("solved=200/200 in_limits=200/200 same_config=200/200 ");
+    }
+  }
+
+  @Test
+  void aClosedFormAskedOfAnOffsetWristArmIsOneLine() {
+    Run r = run("bench", "ik", "--robot", "crx10ia", "--generate", "5", "--solver", "closed-form");
+    assertThat(r.code()).isEqualTo(1);
+    assertThat(r.err().strip()).isEqualTo("robotrun: crx10ia is not an OPW arm (no closed form): use --solver auto or numeric");
   }
 
   @Test
@@ -100,7 +123,7 @@ class BenchIkCommandTest {
   void unknownSolverIsABadArgument() throws Exception {
     Run r = run("bench", "ik", "--targets", smallTargets(1).toString(), "--solver", "magic");
     assertThat(r.code()).isEqualTo(2);
-    assertThat(r.err()).contains("--solver: expected closed-form, numeric or resolved-rate");
+    assertThat(r.err()).contains("--solver: expected auto, closed-form, offset-wrist, numeric or resolved-rate");
   }
 
   @Test

@@ -64,6 +64,48 @@ class PendantOnSimControllerTest {
   }
 
   @Test
+  void startingOnTheLastLineSaysSoFromThePanelAndThePendant() {
+    keys("""
+        HOLD DEADMAN
+        SELECT
+        F1
+        TYPE PICK1
+        ENTER
+        SHIFT+F1
+        HOLD SHIFT
+        HOLD +X/J1
+        WAIT 0.5
+        RELEASE +X/J1
+        RELEASE SHIFT
+        SHIFT+F1
+        RELEASE DEADMAN
+        RESET
+        TP OFF
+        MODE AUTO
+        CYCLE START
+        """);
+    assertThat(p.lcd().promptLine()).contains("the last line of PICK1").contains("line 1");
+    keys("""
+        WAIT 10
+        MODE T1
+        TP ON
+        HOLD DEADMAN
+        UP
+        HOLD SHIFT
+        FWD
+        """);
+    // from line 1 it is an ordinary start: no notice
+    assertThat(p.lcd().promptLine()).doesNotContain("last line");
+    keys("""
+        WAIT 10
+        RELEASE SHIFT
+        HOLD SHIFT
+        FWD
+        """);
+    assertThat(p.lcd().promptLine()).contains("the last line of PICK1");
+  }
+
+  @Test
   void aWorldJogToTheEdgeOfReachSaysWhyItStopped() {
     keys("""
         HOLD DEADMAN

@@ -27,6 +27,28 @@ class ScenarioSwitchTest {
   }
 
   @Test
+  void anotherRobotModelChosenInTheEditorReopensTheCellWithIt(@TempDir Path tmp) throws Exception {
+    Path dir;
+    try (WorkspaceSession s = openCopyOfPickAndPlace(tmp)) {
+      dir = s.workspace.folder();
+      CellEditor ed = new CellEditor(List.of(s.workspace.scenario()), 0, NO_MESHES);
+      s.otherScenarios = () -> List.of();
+      assertThat(ScenarioSwitch.wanted(s, ed)).isFalse();
+      List<Double> home = List.of(0.0, 0.0, 0.0, 0.0, -Math.PI / 2, 0.0);
+      assertThat(ed.setRobotModel(0, "crx10ia", home)).isInstanceOf(CellEditor.Result.Done.class);
+      assertThat(ed.setRobotModel(1, "crx10ia", home)).isInstanceOf(CellEditor.Result.Refused.class);
+      assertThat(ScenarioSwitch.wanted(s, ed)).isTrue();
+      assertThat(ScenarioSwitch.prepare(s, ed, Optional.empty())).isEmpty();
+    }
+    try (Workspace ws = Workspace.open(dir, WorkspaceSession.newCell())) {
+      assertThat(ws.problems()).isEmpty();
+      assertThat(ws.scenario().name()).isEqualTo("Pick and place");
+      assertThat(ws.scenario().robots().get(0).modelId()).isEqualTo("crx10ia");
+      assertThat(ws.programs()).extracting(Program::name).contains("PICKPLACE");
+    }
+  }
+
+  @Test
   void theChosenScenarioBecomesTheCellAndTheOneLeftIsKeptAsItStands(@TempDir Path tmp) throws Exception {
     Path dir;
     try (WorkspaceSession s = openCopyOfPickAndPlace(tmp)) {

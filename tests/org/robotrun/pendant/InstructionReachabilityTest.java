@@ -32,6 +32,10 @@ class InstructionReachabilityTest {
 
   /** Picks item {@code n} (1-based) of the open choice list with arrows and ENTER. */
   private void pick(int n) {
+    // a list opens on the field's current value: go to its top first
+    for (int i = 0; i < 100; i++) {
+      p.tap(Key.UP);
+    }
     for (int i = 1; i < n; i++) {
       p.tap(Key.DOWN);
     }

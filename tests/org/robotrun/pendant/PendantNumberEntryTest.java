@@ -13,6 +13,7 @@ import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Item;
+import org.robotrun.program.Motion;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 
@@ -190,6 +191,71 @@ class PendantNumberEntryTest {
     Instruction pulse = new Instruction.Pulse(IoKind.DO, Item.of(1), OptionalDouble.of(0.5));
     assertThatThrownBy(() -> type(pulse, 3, "NaN")).hasMessage("Pulse width NaN: not a number, enter a number above 0");
     assertThatThrownBy(() -> type(pulse, 3, "0")).hasMessage("Pulse width 0: out of range, enter a number above 0");
+  }
+
+  private static Instruction.Move move(Motion.Type type, double value, Motion.SpeedUnit unit) {
+    return new Instruction.Move(type, new Motion.Local(1, ""), java.util.Optional.empty(),
+        new Motion.Speed(new Motion.SpeedConst(value), unit), new Motion.Fine(), List.of());
+  }
+
+  /** Field 4 of a motion line is its speed (type, blank, target, blank, speed, unit). */
+  private static final int SPEED_FIELD = 4;
+
+  @Test
+  void aMotionSpeedBeyondTheControllersRangeIsValueOutOfRangeInEveryUnit() throws ExprText.BadText {
+    record Case(Motion.Type type, Motion.SpeedUnit unit, String over, double max, String under, double min) {}
+    List<Case> cases = List.of(
+        new Case(Motion.Type.J, Motion.SpeedUnit.PERCENT, "101", 100, "0.5", 1),
+        new Case(Motion.Type.L, Motion.SpeedUnit.MM_PER_SEC, "999999", 2000, "0.5", 1),
+        new Case(Motion.Type.L, Motion.SpeedUnit.CM_PER_MIN, "12001", 12000, "0.5", 1),
+        new Case(Motion.Type.L, Motion.SpeedUnit.INCH_PER_MIN, "4724.5", 4724.4, "0.05", 0.1),
+        new Case(Motion.Type.L, Motion.SpeedUnit.DEG_PER_SEC, "521", 520, "0.5", 1),
+        new Case(Motion.Type.J, Motion.SpeedUnit.SEC, "3201", 3200, "0.05", 0.1),
+        new Case(Motion.Type.L, Motion.SpeedUnit.MSEC, "32001", 32000, "0.5", 1));
+    for (Case c : cases) {
+      Instruction.Move m = move(c.type(), 50, c.unit());
+      String unit = TpLine.unit(c.unit());
+      assertThatThrownBy(() -> type(m, SPEED_FIELD, c.over())).as(unit)
+          .hasMessageStartingWith("Speed " + c.over() + unit + ": Value out of range, enter ")
+          .hasMessageEndingWith(" to " + ExprText.plain(c.max()) + " " + unit);
+      assertThatThrownBy(() -> type(m, SPEED_FIELD, c.under())).as(unit).hasMessageContaining("Value out of range");
+      assertThat(((Instruction.Move) type(m, SPEED_FIELD, ExprText.plain(c.max()))).speed())
+          .isEqualTo(new Motion.Speed(new Motion.SpeedConst(c.max()), c.unit()));
+      assertThat(((Instruction.Move) type(m, SPEED_FIELD, ExprText.plain(c.min()))).speed())
+          .isEqualTo(new Motion.Speed(new Motion.SpeedConst(c.min()), c.unit()));
+    }
+    assertThatThrownBy(() -> DefaultMotion.parse("L 999999mm/sec FINE")).hasMessageContaining("Value out of range");
+    assertThatCode(() -> DefaultMotion.parse("L 2000mm/sec FINE")).doesNotThrowAnyException();
+  }
+
+  @Test
+  void thePendantKeepsTheOldSpeedAndSaysValueOutOfRange() {
+    run(p, """
+        SELECT
+        F1
+        TYPE N
+        ENTER
+        F1
+        ENTER
+        """);
+    Program before = control.program("N").orElseThrow();
+    assertThat(before.lines()).isNotEmpty();
+    // from the line number to the speed field: type, target, speed
+    run(p, "RIGHT *3\nTYPE 999999\nENTER\n");
+    assertThat(prompt()).contains("Value out of range");
+    assertThat(control.program("N").orElseThrow()).isEqualTo(before);
+  }
+
+  @Test
+  void choosingAUnitOrTypeBringsTheSpeedIntoItsRange() {
+    Instruction.Move l = move(Motion.Type.L, 2000, Motion.SpeedUnit.MM_PER_SEC);
+    assertThat(TpLine.withType(l, Motion.Type.J).speed())
+        .isEqualTo(new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.PERCENT));
+    Program prog = Program.of("X", List.of(l), List.of());
+    Field unit = TpLine.fields(l, prog, List.of()).get(SPEED_FIELD + 1);
+    int deg = unit.edit().orElseThrow().choices().indexOf("deg/sec");
+    assertThat(((Instruction.Move) unit.edit().orElseThrow().choose().apply(deg)).speed())
+        .isEqualTo(new Motion.Speed(new Motion.SpeedConst(520), Motion.SpeedUnit.DEG_PER_SEC));
   }
 
   @Test

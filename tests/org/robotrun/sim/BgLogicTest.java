@@ -39,6 +39,25 @@ class BgLogicTest {
   }
 
   @Test
+  void theBgListOffersOnlyWhatASlotTakesAndSaysWhyTheOthersAreMissing() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("MAIN", true, "R[1]=1"));
+    c.saveProgram(program("BGWAIT", false, "WAIT 1.0(sec)"));
+    c.saveProgram(program("BGOK", false, "R[2]=R[2]+1"));
+    c.saveProgram(program("BGIN", false, "R[3]=1"));
+    assertThat(c.bgLogic().add("BGIN")).isEmpty();
+    BgLogic.Offer o = c.bgLogic().offer(List.of("BGIN", "BGOK", "BGWAIT", "MAIN", "GONE"));
+    assertThat(o.programs()).containsExactly("BGOK");
+    assertThat(o.notOffered()).hasSize(3);
+    assertThat(o.notOffered().get(0)).startsWith("BGWAIT line 1: ").endsWith("is not allowed in background logic");
+    assertThat(o.notOffered().get(1)).startsWith("MAIN has motion group 1");
+    assertThat(o.notOffered().get(2)).isEqualTo("program GONE does not exist");
+    // what it offers, a slot takes
+    assertThat(c.bgLogic().add(o.programs().get(0))).isEmpty();
+  }
+
+  @Test
   void aPulseSetByABgProgramEndsAfterItsWidth() {
     // The BG interpreter was stepped with no time, so its PULSE never switched the output off.
     Simulation sim = ControllerTest.cell();

@@ -171,6 +171,9 @@ class CellEditorTest {
     assertThat(refusal(ed.addMesh(Path.of("broken.stl"), 1))).startsWith("STL file broken.stl: line 3");
     assertThat(refusal(ed.addMesh(Path.of("ok.stl"), -1))).startsWith("scale: expected");
     assertThat(ed.addMesh(Path.of("bracket.stl"), 1000)).isInstanceOf(Result.Done.class);
+    // an import confirms what it made, from the file it read
+    assertThat(((Result.Done) ed.addMesh(Path.of("bracket.stl"), 1000)).message())
+        .startsWith("imported bracket.stl as fixture bracket").contains(" triangles, scale 1000)");
     assertThat(ed.world().find("bracket1").orElseThrow().shape()).isInstanceOf(Shape.Mesh.class);
     assertThat(ed.number("bracket1", NumberField.SCALE)).isEqualTo(1000);
   }
