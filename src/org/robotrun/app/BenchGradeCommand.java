@@ -12,6 +12,7 @@ import org.robotrun.grade.GradeResult;
 import org.robotrun.grade.Grader;
 import org.robotrun.grade.Grading;
 import org.robotrun.grade.SubmissionLoader;
+import org.robotrun.grade.Task;
 import org.robotrun.grade.TaskLoad;
 import org.robotrun.grade.TaskReader;
 import picocli.CommandLine.Command;
@@ -24,7 +25,8 @@ import picocli.CommandLine.Parameters;
     mixinStandardHelpOptions = true,
     description = {
       "Grade --count submissions (the given ones, repeated in turn) against a task on --jobs threads, after one "
-          + "warm-up submission, as robotrun grade does without writing reports.",
+          + "warm-up submission, as robotrun grade does without writing reports (--variations N: with N seeded "
+          + "variations instead of the task's).",
       "Prints the wall-clock time, the process's CPU time (all threads, GC included: the figure that does not "
           + "depend on what else the machine runs), the time per submission, simulated runs, the mean score, and the peak heap "
           + "used (sum of the heap pools' peaks since the start of the measured part).",
@@ -45,6 +47,10 @@ public final class BenchGradeCommand implements Callable<Integer> {
   @Option(names = "--jobs", paramLabel = "N", description = "Threads (default: the number of cores).")
   Integer jobs;
 
+  @Option(names = "--variations", paramLabel = "N",
+      description = "Grade with N seeded variations instead of the task's count (0..100).")
+  Integer variations;
+
   /** CPU time of the whole process (all threads, GC included), or -1 where the JVM does not say. */
   private static long processCpuNanos() {
     return ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os
@@ -64,7 +70,14 @@ public final class BenchGradeCommand implements Callable<Integer> {
       case TaskLoad.Loaded l -> l;
       case TaskLoad.Failed f -> throw new UserError(f.message());
     };
-    Grader grader = new Grader(loaded.task(), loaded.scenario());
+    Task t = loaded.task();
+    if (variations != null) {
+      if (variations < 0 || variations > TaskReader.MAX_VARIATIONS) {
+        throw new UserError("--variations: expected 0.." + TaskReader.MAX_VARIATIONS + ", got " + variations);
+      }
+      t = t.withVariations(t.variations().withCount(variations));
+    }
+    Grader grader = new Grader(t, loaded.scenario());
     SubmissionLoader loader = new SubmissionLoader();
     Grading.gradeOne(grader, loader, submissions.get(0), true);
     List<Path> all = new ArrayList<>();
@@ -77,11 +90,13 @@ public final class BenchGradeCommand implements Callable<Integer> {
     heap.forEach(MemoryPoolMXBean::resetPeakUsage);
     long t0 = System.nanoTime();
     long cpu0 = processCpuNanos();
-    List<GradeResult> results = Grading.gradeAll(grader, loader, all, threads, true, r -> { });
+    java.util.concurrent.atomic.AtomicInteger runCount = new java.util.concurrent.atomic.AtomicInteger();
+    List<GradeResult> results = Grading.gradeAll(grader, loader, all, threads, true, false,
+        r -> runCount.addAndGet(r.runs().size()));
     double wall = (System.nanoTime() - t0) / 1e9;
     double cpu = (processCpuNanos() - cpu0) / 1e9;
     long peak = heap.stream().mapToLong(p -> p.getPeakUsage().getUsed()).sum();
-    int runs = results.stream().mapToInt(r -> r.runs().size()).sum();
+    int runs = runCount.get();
     double mean = results.stream().mapToDouble(GradeResult::score).average().orElse(0);
     spec.commandLine().getOut().printf(Locale.ROOT,
         "task=%s submissions=%d jobs=%d runs=%d wall_s=%.2f cpu_s=%.2f per_submission_ms=%.1f mean_score=%.1f "

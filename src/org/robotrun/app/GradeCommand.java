@@ -67,6 +67,11 @@ public final class GradeCommand implements Callable<Integer> {
       description = "Write the one submission's Gradescope results.json here (e.g. /autograder/results/results.json).")
   Path gradescope;
 
+  @Option(names = "--csv-for", paramLabel = "LMS",
+      description = "With --out: also write DIR/LMS.csv, the gradebook import file of canvas or moodle "
+          + "(their column names; docs/grading.md).")
+  String csvFor;
+
   @Option(names = "--jobs", paramLabel = "N", description = "Submissions graded at once (default: the number of cores).")
   Integer jobs;
 
@@ -102,6 +107,12 @@ public final class GradeCommand implements Callable<Integer> {
       }
       checkOutput("--out", out.resolve("summary.csv"));
     }
+    if (csvFor != null && !List.of("canvas", "moodle").contains(csvFor)) {
+      throw new UserError("--csv-for: expected canvas or moodle, got \"" + csvFor + "\"");
+    }
+    if (csvFor != null && out == null) {
+      throw new UserError("--csv-for: give --out DIR too (the file is written there)");
+    }
     if (gradescope != null) {
       Path dir = gradescope.toAbsolutePath().getParent();
       if (dir == null || !Files.isDirectory(dir)) {
@@ -116,8 +127,10 @@ public final class GradeCommand implements Callable<Integer> {
     Task task = loaded.task();
     Grader grader = new Grader(task, loaded.scenario());
     AtomicInteger done = new AtomicInteger();
+    // The runs are kept only for the reports' pictures and a Gradescope leaderboard (the cycle time).
+    boolean keepRuns = out != null && !noPictures || task.autograder().leaderboard();
     List<GradeResult> results = Grading.gradeAll(grader, new SubmissionLoader(), submissions, threads, !studentView,
-        r -> {
+        keepRuns, r -> {
           int n = done.incrementAndGet();
           if (submissions.size() > 10 && n % 10 == 0) {
             System.err.printf(Locale.ROOT, "graded %d of %d%n", n, submissions.size());
@@ -180,7 +193,9 @@ public final class GradeCommand implements Callable<Integer> {
     Files.createDirectories(out);
     List<String> folders = new ArrayList<>();
     Set<String> used = new HashSet<>();
-    used.add("summary.csv");  // the class summary lives beside the folders
+    used.add("summary.csv");  // the class summary and the gradebook files live beside the folders
+    used.add("canvas.csv");
+    used.add("moodle.csv");
     for (GradeResult r : results) {
       folders.add(uniqueFolder(r.submission(), used));
     }
@@ -221,6 +236,15 @@ public final class GradeCommand implements Callable<Integer> {
     }
     AtomicFiles.write(out.resolve("summary.csv"), GradeReports.summaryCsv(task, results, folders));
     w.println("wrote " + out.resolve("summary.csv") + " and " + results.size() + " report folder(s)");
+    if (csvFor != null) {
+      Path lms = out.resolve(csvFor + ".csv");
+      AtomicFiles.write(lms, csvFor.equals("canvas") ? GradeReports.canvasCsv(task, results)
+          : GradeReports.moodleCsv(task, results));
+      long unmatched = results.stream().filter(r -> csvFor.equals("canvas") ? r.student().isBlank()
+          : !r.student().contains("@")).count();
+      w.println("wrote " + lms + (unmatched == 0 ? "" : " (" + unmatched + " row(s) " + (csvFor.equals("canvas")
+          ? "name no student" : "have no email address") + ": fill them in before importing)"));
+    }
   }
 
   /** A folder name made of safe characters from the submission's name, unique in this run. */

@@ -1,9 +1,5 @@
 package org.robotrun.app;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.SerializationFeature;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.charset.StandardCharsets;
 import org.robotrun.io.TerminalText;
 import java.util.List;
@@ -13,34 +9,14 @@ import org.robotrun.grade.CheckResult;
 import org.robotrun.grade.GradeResult;
 import org.robotrun.grade.Task;
 
-/** The grading outputs as bytes: Gradescope results.json, the class CSV and the HTML report. */
+/** The grading outputs as bytes: Gradescope results.json, the class CSV, the gradebook CSVs and the HTML report. */
 final class GradeReports {
-  private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
 
   private GradeReports() {}
 
-  /**
-   * The Gradescope autograder format (score, output, tests[] with name, score, max_score,
-   * status, output, visibility); hidden checks get visibility "hidden".
-   */
+  /** The Gradescope autograder format ({@link PlatformResults#gradescope}), the student from the manifest. */
   static byte[] gradescope(Task task, GradeResult r) throws java.io.IOException {
-    ObjectNode root = JSON.createObjectNode();
-    root.put("score", round(r.score()));
-    root.put("output", task.title() + ": " + fmt(r.score()) + " of " + fmt(r.maxScore()) + " points"
-        + (r.student().isEmpty() ? "" : " (" + r.student() + ")"));
-    root.put("visibility", "visible");
-    root.put("stdout_visibility", "hidden");
-    ArrayNode tests = root.putArray("tests");
-    for (CheckResult c : r.checks()) {
-      ObjectNode t = tests.addObject();
-      t.put("name", c.name());
-      t.put("score", round(c.score()));
-      t.put("max_score", round(c.maxScore()));
-      t.put("status", c.passed() ? "passed" : "failed");
-      t.put("output", c.feedback());
-      t.put("visibility", c.hidden() ? "hidden" : "visible");
-    }
-    return JSON.writeValueAsBytes(root);
+    return PlatformResults.gradescope(task, r, r.student(), List.of(), r.wallSec());
   }
 
   /** One row per submission, one column per check (points given), RFC 4180 quoting. */
@@ -60,6 +36,42 @@ final class GradeReports {
         b.append(',').append(cr == null ? "" : fmt(cr.score()));
       }
       b.append("\r\n");
+    }
+    return b.toString().getBytes(StandardCharsets.UTF_8);
+  }
+
+  /**
+   * Canvas's gradebook import: its columns {@code Student, ID, SIS User ID, SIS Login ID, Section},
+   * then one column named after the assignment (the task's title), a {@code Points Possible} row,
+   * one row per submission. Canvas matches a row by ID or SIS ID, else by the student's name as
+   * Canvas shows it; only the name is known here (the hand-in's manifest), so the ID columns are
+   * left for the instructor to fill when names do not match.
+   */
+  static byte[] canvasCsv(Task task, List<GradeResult> results) {
+    StringBuilder b = new StringBuilder();
+    String title = task.title().isEmpty() ? "RobotRun task" : task.title();
+    b.append("Student,ID,SIS User ID,SIS Login ID,Section,").append(csv(title)).append("\r\n");
+    b.append("    Points Possible,,,,,").append(fmt(task.maxPoints())).append("\r\n");
+    for (GradeResult r : results) {
+      b.append(csv(r.student())).append(",,,,,").append(fmt(r.score())).append("\r\n");
+    }
+    return b.toString().getBytes(StandardCharsets.UTF_8);
+  }
+
+  /**
+   * Moodle's grade import (CSV): {@code Email address} (Moodle matches users by email, username or
+   * ID number, never by name: the manifest's student when it is an email address), {@code Full
+   * name}, and one column named after the grade item (the task's title), to map on import.
+   */
+  static byte[] moodleCsv(Task task, List<GradeResult> results) {
+    StringBuilder b = new StringBuilder();
+    String title = task.title().isEmpty() ? "RobotRun task" : task.title();
+    b.append("Email address,Full name,").append(csv(title)).append("\r\n");
+    for (GradeResult r : results) {
+      String who = r.student().strip();
+      boolean email = who.matches("[^\\s@,;]+@[^\\s@,;]+\\.[^\\s@,;]+");
+      b.append(email ? csv(who) : "").append(',').append(csv(email ? "" : who)).append(',').append(fmt(r.score()))
+          .append("\r\n");
     }
     return b.toString().getBytes(StandardCharsets.UTF_8);
   }

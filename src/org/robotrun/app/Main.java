@@ -26,6 +26,7 @@ import picocli.CommandLine.Command;
       PendantCommand.class,
       RunCommand.class,
       GradeCommand.class,
+      AutograderCommand.class,
       BenchCommand.class,
       RobotCommand.class,
       RobotsCommand.class,

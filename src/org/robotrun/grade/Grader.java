@@ -78,8 +78,9 @@ public final class Grader {
     Map<Integer, Position> positionRegisters = new TreeMap<>();
     Map<String, RobotRegisters> others = new TreeMap<>();
     Scenario cell = overlay(sub, cellNotes, positionRegisters, others);
-    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), cellNotes, cell, positionRegisters,
-        others, checks, t0);
+    String ignored = org.robotrun.io.HandInDroppings.note(sub.droppings());
+    return gradeLoaded(sub.name(), sub.student(), loaded, sub.handInProblems(), ignored, cellNotes, cell,
+        positionRegisters, others, checks, t0);
   }
 
   /**
@@ -138,7 +139,7 @@ public final class Grader {
     Scenario cell = scenario.withPresets(regs, tool, user);
     Map<String, List<Program>> others = new LinkedHashMap<>();
     otherPrograms.forEach((r, ps) -> others.put(r, List.copyOf(ps)));
-    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of(), others), List.of(), List.of(),
+    return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of(), others), List.of(), "", List.of(),
         cell, Map.copyOf(positionRegisters), Map.copyOf(otherRegisters), checks, t0);
   }
 
@@ -147,7 +148,7 @@ public final class Grader {
    *     then come from the task): shown with the hand-in and frame checks, failing neither by itself
    */
   private GradeResult gradeLoaded(String name, String student, Loaded loaded, List<String> handInProblems,
-      List<String> cellNotes, Scenario cell, Map<Integer, Position> positionRegisters,
+      String ignored, List<String> cellNotes, Scenario cell, Map<Integer, Position> positionRegisters,
       Map<String, RobotRegisters> otherRegisters, List<Check> checks, long t0) {
     long deadline = t0 + (long) (task.limits().wallSeconds() * 1e9);
     // The runs, nominal first; a run that could not happen leaves its reason.
@@ -186,7 +187,7 @@ public final class Grader {
     } else {
       notRun.add(cannotRun.get());
     }
-    Context ctx = new Context(loaded, handInProblems, cellNotes, runs, notRun, cell, positionRegisters);
+    Context ctx = new Context(loaded, handInProblems, ignored, cellNotes, runs, notRun, cell, positionRegisters);
     List<CheckResult> out = new ArrayList<>();
     for (Check c : checks) {
       out.add(evaluate(c, ctx));
@@ -195,8 +196,13 @@ public final class Grader {
   }
 
   /** What a grade needs besides the check. */
-  private record Context(Loaded loaded, List<String> handInProblems, List<String> cellNotes, List<RunOutcome> runs,
-      List<String> notRun, Scenario cell, Map<Integer, Position> positionRegisters) {
+  private record Context(Loaded loaded, List<String> handInProblems, String ignored, List<String> cellNotes,
+      List<RunOutcome> runs, List<String> notRun, Scenario cell, Map<Integer, Position> positionRegisters) {
+    /** The hand-in check's notes: the files ignored, then why the cell.json was not used. */
+    String handInNotes() {
+      return (ignored.isEmpty() ? "" : "\nnote: " + ignored) + notes();
+    }
+
     String notes() {
       return cellNotes.isEmpty() ? "" : "\nnote: " + String.join("\nnote: ", cellNotes);
     }
@@ -244,8 +250,8 @@ public final class Grader {
   private CheckResult evaluateOne(Check c, Context ctx) {
     return switch (c) {
       case Check.HandIn h -> ctx.handInProblems().isEmpty()
-          ? pass(c, "a valid hand-in: every file matches its SHA-256 in manifest.json" + ctx.notes())
-          : fail(c, String.join("\n", ctx.handInProblems()) + ctx.notes());
+          ? pass(c, "a valid hand-in: every file matches its SHA-256 in manifest.json" + ctx.handInNotes())
+          : fail(c, String.join("\n", ctx.handInProblems()) + ctx.handInNotes());
       case Check.ProgramsCheck p -> ctx.loaded().programs().isEmpty() && ctx.loaded().errors().isEmpty()
           ? fail(c, "no .LS program found in the submission")
           : ctx.loaded().errors().isEmpty()
@@ -418,7 +424,9 @@ public final class Grader {
     List<Path> files = new ArrayList<>();
     try (DirectoryStream<Path> s = Files.newDirectoryStream(folder)) {
       for (Path p : s) {
-        if (SubmissionLoader.isLs(p.getFileName().toString()) && Files.isRegularFile(p)) {
+        String fileName = p.getFileName().toString();
+        if (SubmissionLoader.isLs(fileName) && !org.robotrun.io.HandInDroppings.isDropping(fileName)
+            && Files.isRegularFile(p)) {
           files.add(p);
           if (files.size() > SubmissionLoader.DEFAULT_LIMITS.entries()) {
             errors.add(shown + ": more than " + SubmissionLoader.DEFAULT_LIMITS.entries() + " .LS files");

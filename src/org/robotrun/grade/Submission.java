@@ -21,12 +21,22 @@ import java.util.stream.Stream;
  * @param handInProblems why this is not a valid hand-in (empty: it is)
  * @param fatal why the submission cannot be graded at all (a malformed zip, too many files)
  * @param tempDir the folder to remove on close, if the zip was unpacked
+ * @param droppings files that came with it but are not part of a hand-in (operating system and
+ *     platform files, {@link org.robotrun.io.HandInDroppings}): ignored, and listed by the hand-in check
  */
 public record Submission(String name, Kind kind, Path programsDir, Optional<Path> cell, String student,
-    List<String> handInProblems, Optional<String> fatal, Optional<Path> tempDir) implements AutoCloseable {
+    List<String> handInProblems, Optional<String> fatal, Optional<Path> tempDir, List<String> droppings)
+    implements AutoCloseable {
 
   public Submission {
     handInProblems = List.copyOf(handInProblems);
+    droppings = List.copyOf(droppings);
+  }
+
+  /** A submission with nothing ignored. */
+  public Submission(String name, Kind kind, Path programsDir, Optional<Path> cell, String student,
+      List<String> handInProblems, Optional<String> fatal, Optional<Path> tempDir) {
+    this(name, kind, programsDir, cell, student, handInProblems, fatal, tempDir, List.of());
   }
 
   /** What a submission was given as. */

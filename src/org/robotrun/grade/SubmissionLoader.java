@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
 import org.robotrun.io.HandIn;
+import org.robotrun.io.HandInDroppings;
 import org.robotrun.io.HandInException;
 import org.robotrun.io.HandInFiles;
 import org.robotrun.io.Workspace;
@@ -75,12 +76,17 @@ public final class SubmissionLoader {
     boolean programs = Files.exists(dir.resolve(Workspace.PROGRAMS), LinkOption.NOFOLLOW_LINKS);
     HandInFiles.Contents c;
     List<String> problems = new ArrayList<>();
+    List<String> droppings = new ArrayList<>();
     String student = "";
     Submission.Kind kind = cell || programs ? Submission.Kind.WORKSPACE : Submission.Kind.PROGRAMS;
     try {
       if (cell || manifest || programs) {
         List<String> others = new ArrayList<>();
         c = HandInFiles.readFolder(dir, limits, others);
+        // What an operating system or a platform left (__MACOSX/, ._X.LS, .DS_Store): listed, not failed.
+        droppings.addAll(others.stream().filter(HandInDroppings::isDropping).toList());
+        others.removeIf(HandInDroppings::isDropping);
+        droppings.addAll(topLevelDroppings(dir));
         if (manifest) {
           HandInFiles.Verified v = HandInFiles.verify(c);
           student = v.student();
@@ -99,7 +105,26 @@ public final class SubmissionLoader {
     } catch (HandInException e) {
       return Submission.failed(name, kind, e.getMessage(), Optional.empty());
     }
-    return copied(name, kind, c, student, problems);
+    return copied(name, kind, c, student, problems, droppings);
+  }
+
+  /** The droppings at the top of an unpacked hand-in (a folder named as a whole: {@code __MACOSX/}). */
+  private List<String> topLevelDroppings(Path dir) throws IOException {
+    List<String> out = new ArrayList<>();
+    try (java.nio.file.DirectoryStream<Path> s = Files.newDirectoryStream(dir)) {
+      int n = 0;
+      for (Path p : s) {
+        if (++n > limits.entries()) {
+          break;
+        }
+        String top = p.getFileName().toString() + (Files.isDirectory(p, LinkOption.NOFOLLOW_LINKS) ? "/" : "");
+        if (HandInDroppings.isDropping(top)) {
+          out.add(top);
+        }
+      }
+    }
+    out.sort(null);
+    return out;
   }
 
   private Submission zip(Path file, String name) throws IOException {
@@ -110,7 +135,7 @@ public final class SubmissionLoader {
       return Submission.failed(name, Submission.Kind.ZIP, e.getMessage(), Optional.empty());
     }
     HandInFiles.Verified v = HandInFiles.verify(c);
-    return copied(name, Submission.Kind.ZIP, c, v.student(), v.problems());
+    return copied(name, Submission.Kind.ZIP, c, v.student(), v.problems(), c.droppings());
   }
 
   /**
@@ -119,7 +144,7 @@ public final class SubmissionLoader {
    * here. Only called once the whole submission has passed: a hostile one costs no disk writes.
    */
   private static Submission copied(String name, Submission.Kind kind, HandInFiles.Contents c, String student,
-      List<String> problems) throws IOException {
+      List<String> problems, List<String> droppings) throws IOException {
     Map<String, byte[]> used = new TreeMap<>();
     c.files().forEach((entry, bytes) -> {
       if (entry.equals(Workspace.CELL) || entry.startsWith(Workspace.PROGRAMS + "/")) {
@@ -137,7 +162,7 @@ public final class SubmissionLoader {
     }
     Optional<Path> cell = used.containsKey(Workspace.CELL) ? Optional.of(temp.resolve(Workspace.CELL)) : Optional.empty();
     return new Submission(name, kind, temp.resolve(Workspace.PROGRAMS), cell, student, problems, Optional.empty(),
-        Optional.of(temp));
+        Optional.of(temp), droppings);
   }
 
   static boolean isLs(String name) {

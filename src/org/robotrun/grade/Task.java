@@ -18,12 +18,43 @@ import java.util.Optional;
  * @param checks in the order they are reported
  * @param otherPrograms in a cell of several robots: the program each robot after the first runs,
  *     by robot name in scenario order (a robot not listed does not run); empty for one robot
+ * @param autograder what the course platforms' autograders do beyond the checks
  */
 public record Task(String file, String title, Path scenario, String program, Limits limits, Variations variations,
-    List<Check> checks, Map<String, String> otherPrograms) {
+    List<Check> checks, Map<String, String> otherPrograms, Autograder autograder) {
   public Task {
     checks = List.copyOf(checks);
     otherPrograms = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(otherPrograms));
+  }
+
+  /** A task with the default autograder settings. */
+  public Task(String file, String title, Path scenario, String program, Limits limits, Variations variations,
+      List<Check> checks, Map<String, String> otherPrograms) {
+    this(file, title, scenario, program, limits, variations, checks, otherPrograms, Autograder.DEFAULT);
+  }
+
+  /** The same task with other variations (e.g. {@code bench grade --variations}). */
+  public Task withVariations(Variations v) {
+    return new Task(file, title, scenario, program, limits, v, checks, otherPrograms, autograder);
+  }
+
+  /** The same task with other limits. */
+  public Task withLimits(Limits l) {
+    return new Task(file, title, scenario, program, l, variations, checks, otherPrograms, autograder);
+  }
+
+  /**
+   * The task's {@code "autograder"} section (docs/grading.md).
+   *
+   * @param hiddenVisibility the Gradescope visibility of hidden checks: {@code hidden} (never shown to
+   *     students), {@code after_due_date} or {@code after_published}
+   * @param leaderboard whether the Gradescope results carry a leaderboard of the first robot's cycle
+   *     time in the nominal run (ascending: faster ranks higher)
+   */
+  public record Autograder(String hiddenVisibility, boolean leaderboard) {
+    public static final Autograder DEFAULT = new Autograder("hidden", false);
+    /** The visibilities Gradescope offers for a test that students do not always see. */
+    public static final List<String> HIDDEN_VISIBILITIES = List.of("hidden", "after_due_date", "after_published");
   }
 
   /** A task for a one-robot cell (or one that runs only the first robot). */
@@ -62,6 +93,11 @@ public record Task(String file, String title, Path scenario, String program, Lim
 
     public Variations {
       parts = List.copyOf(parts);
+    }
+
+    /** The same variations, {@code n} of them. */
+    public Variations withCount(int n) {
+      return new Variations(n, seed, parts, overrideMinPct, overrideMaxPct);
     }
   }
 

@@ -49,7 +49,8 @@ public final class TaskReader {
   public static final int MAX_VARIATIONS = 100;
 
   private static final Set<String> TOP = Set.of(
-      "format", "title", "scenario", "program", "robots", "limits", "variations", "checks");
+      "format", "title", "scenario", "program", "robots", "limits", "variations", "checks", "autograder");
+  private static final Set<String> AUTOGRADER = Set.of("hiddenVisibility", "leaderboard");
   private static final Set<String> ROBOT = Set.of("program");
   /** The check types that look at one robot (the others look at the whole cell). */
   private static final Set<String> ROBOT_TYPES = Set.of("runsToEnd", "noMotionStop", "cycleTime", "programUse",
@@ -147,6 +148,7 @@ public final class TaskReader {
       Task.Limits limits = limits(top);
       Task.Variations variations = variations(top, scenario);
       List<Check> checks = checks(top, scenario);
+      Task.Autograder autograder = autograder(top);
       // A task whose checks look only at files, frames and recorded registers runs nothing (a pendant lab).
       boolean runs = checks.stream().anyMatch(c -> !(c instanceof Check.HandIn || c instanceof Check.ProgramsCheck
           || c instanceof Check.ProgramUse || c instanceof Check.Frame || c instanceof Check.PositionRegister));
@@ -161,7 +163,8 @@ public final class TaskReader {
         return new TaskLoad.Failed(errors);
       }
       Path scenarioFile = dir.resolve(((JString) top.members().get("scenario")).value()).normalize();
-      return new TaskLoad.Loaded(new Task(file, title, scenarioFile, program, limits, variations, checks, others),
+      return new TaskLoad.Loaded(new Task(file, title, scenarioFile, program, limits, variations, checks, others,
+          autograder),
           scenario);
     }
 
@@ -233,6 +236,20 @@ public final class TaskReader {
         }
       }
       return out;
+    }
+
+    private Task.Autograder autograder(JObject top) {
+      JObject o = member(top, "autograder", "", AUTOGRADER, false);
+      if (o == null) {
+        return Task.Autograder.DEFAULT;
+      }
+      String hidden = string(o, "hiddenVisibility", "autograder", false).orElse(Task.Autograder.DEFAULT.hiddenVisibility());
+      if (!Task.Autograder.HIDDEN_VISIBILITIES.contains(hidden)) {
+        error(o.members().get("hiddenVisibility").line(), "autograder.hiddenVisibility", "expected one of "
+            + String.join(", ", Task.Autograder.HIDDEN_VISIBILITIES) + " (Gradescope's visibilities), got \"" + hidden + "\"");
+      }
+      boolean leaderboard = bool(o, "leaderboard", "autograder").orElse(false);
+      return new Task.Autograder(hidden, leaderboard);
     }
 
     private Task.Limits limits(JObject top) {

@@ -71,8 +71,19 @@ public final class HandInFiles {
    *
    * @param manifest the bytes of {@code manifest.json}, null when there is none
    * @param files every other file, by its name in the hand-in, sorted
+   * @param droppings files of a zip that are not part of any hand-in ({@link HandInDroppings}):
+   *     skipped (their bytes still counted against the limits) and listed
    */
-  public record Contents(byte[] manifest, Map<String, byte[]> files) {}
+  public record Contents(byte[] manifest, Map<String, byte[]> files, List<String> droppings) {
+    public Contents {
+      droppings = List.copyOf(droppings);
+    }
+
+    /** A hand-in with nothing skipped. */
+    public Contents(byte[] manifest, Map<String, byte[]> files) {
+      this(manifest, files, List.of());
+    }
+  }
 
   /** What {@link #verify} found: the student's name and what makes this not a valid hand-in. */
   public record Verified(String student, List<String> problems) {}
@@ -98,6 +109,7 @@ public final class HandInFiles {
       throw new HandInException("the file is " + size + " bytes; a hand-in is at most " + sizeText(limits.totalBytes()));
     }
     TreeMap<String, byte[]> files = new TreeMap<>();
+    List<String> droppings = new ArrayList<>();
     byte[] manifest = null;
     int entries = 0;
     long total = 0;
@@ -120,6 +132,14 @@ public final class HandInFiles {
         Optional<String> bad = badName(name);
         if (bad.isPresent()) {
           throw new HandInException("the zip entry \"" + printable(name) + "\" " + bad.get());
+        }
+        if (HandInDroppings.isDropping(name)) {
+          // __MACOSX/, .DS_Store and the like: not part of the hand-in, read within the limits and left out.
+          if (!e.isDirectory()) {
+            total += readBounded(z, name, limits, limits.totalBytes() - total).length;
+            droppings.add(name);
+          }
+          continue;
         }
         if (e.isDirectory()) {
           if (name.equals(Workspace.PROGRAMS + "/") || ROBOT_FOLDER.matcher(name).matches()
@@ -156,7 +176,7 @@ public final class HandInFiles {
       throw new HandInException("not a zip file, or an empty one");
     }
     requireNoFileInsideAFile(files.keySet());
-    return new Contents(manifest, files);
+    return new Contents(manifest, files, droppings);
   }
 
   /**

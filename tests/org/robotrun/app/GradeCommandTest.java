@@ -71,6 +71,32 @@ class GradeCommandTest {
   }
 
   @Test
+  void writesTheGradebookImportFilesOfCanvasAndMoodle(@TempDir Path dir) throws Exception {
+    Path ada = dir.resolve("ada.zip");
+    Path bob = dir.resolve("bob.zip");
+    org.robotrun.io.HandIn.write(Path.of(SUBS + "reference"), ada, "Lovelace, Ada", "test", false);
+    org.robotrun.io.HandIn.write(Path.of(SUBS + "two-parts"), bob, "bob@example.edu", "test", false);
+    Path out = dir.resolve("out");
+    Run r = run("grade", "--task", TASK, "--out", out.toString(), "--no-pictures", "--csv-for", "canvas", "-q",
+        ada.toString(), bob.toString());
+    assertThat(r.exit()).as(r.err()).isZero();
+    assertThat(Files.readAllLines(out.resolve("canvas.csv"))).containsExactly(
+        "Student,ID,SIS User ID,SIS Login ID,Section,Pick and place: the three parts onto the tray",
+        "    Points Possible,,,,,105",
+        "\"Lovelace, Ada\",,,,,105",
+        "bob@example.edu,,,,,90");
+    r = run("grade", "--task", TASK, "--out", out.toString(), "--no-pictures", "--csv-for", "moodle", "-q",
+        ada.toString(), bob.toString());
+    assertThat(r.out()).contains("moodle.csv (1 row(s) have no email address: fill them in before importing)");
+    assertThat(Files.readAllLines(out.resolve("moodle.csv"))).containsExactly(
+        "Email address,Full name,Pick and place: the three parts onto the tray",
+        ",\"Lovelace, Ada\",105",
+        "bob@example.edu,,90");
+    assertThat(run("grade", "--task", TASK, "--csv-for", "blackboard", ada.toString()).err())
+        .startsWith("robotrun: --csv-for: expected canvas or moodle, got \"blackboard\"");
+  }
+
+  @Test
   void writesOneGradescopeFileForTheAutograder(@TempDir Path dir) throws Exception {
     Path results = dir.resolve("results.json");
     Run r = run("grade", "--task", TASK, "--gradescope", results.toString(), "-q", SUBS + "slow");

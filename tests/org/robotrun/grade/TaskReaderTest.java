@@ -33,6 +33,23 @@ class TaskReaderTest {
   }
 
   @Test
+  void theAutograderSectionIsReadStrictly() throws Exception {
+    assertThat(read("{\"format\":1,\"scenario\":\"cell.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\",\"points\":1}],\n"
+        + "\"autograder\": {\"hiddenVisibility\": \"later\", \"leaderboard\": 1, \"colour\": 2}}").lines().toList())
+        .containsExactly(
+            "t.task.json:2: autograder.colour: unknown field (expected one of: hiddenVisibility, leaderboard)",
+            "t.task.json:2: autograder.hiddenVisibility: expected one of hidden, after_due_date, after_published "
+                + "(Gradescope's visibilities), got \"later\"",
+            "t.task.json:2: autograder.leaderboard: expected true or false, got the number 1");
+  }
+
+  @Test
+  void aGoodAutograderSectionLoads() throws Exception {
+    assertThat(read("{\"format\":1,\"scenario\":\"cell.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\",\"points\":1}],"
+        + "\"autograder\": {\"hiddenVisibility\": \"after_due_date\", \"leaderboard\": true}}")).isEqualTo("loaded");
+  }
+
+  @Test
   void aMinimalTaskUsesTheScenariosMainProgramAndDefaults() throws Exception {
     assertThat(read("{\"format\":1,\"scenario\":\"cell.json\",\"checks\":[{\"name\":\"end\",\"type\":\"runsToEnd\",\"points\":1}]}"))
         .isEqualTo("loaded");
@@ -54,7 +71,7 @@ class TaskReaderTest {
          ]}
         """);
     assertThat(msg.lines().toList()).containsExactly(
-        "t.task.json:1: colour: unknown field (expected one of: checks, format, limits, program, robots, scenario, title, variations)",
+        "t.task.json:1: colour: unknown field (expected one of: autograder, checks, format, limits, program, robots, scenario, title, variations)",
         "t.task.json:2: variations.count: expected a whole number 0..100, got 3.5",
         "t.task.json:2: variations.parts[0].part: the scenario has no part named 'part9'",
         "t.task.json:2: variations.parts[0].xMm: expected 0 to 1000, got -1",
