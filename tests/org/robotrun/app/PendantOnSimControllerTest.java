@@ -449,13 +449,13 @@ class PendantOnSimControllerTest {
     int records = 0;
     int runsThatMoved = 0;
     java.util.Set<String> codes = new java.util.TreeSet<>();
-    for (int i = 0; i < 1500; i++) {
+    for (int i = 0; i < 500; i++) {
       int what = rnd.nextInt(100);
       if (what < 30) { // jog burst
         org.robotrun.pendant.Key k = jogs[rnd.nextInt(jogs.length)];
         p.press(org.robotrun.pendant.Key.SHIFT);
         p.press(k);
-        for (int t = rnd.nextInt(10) + 1; t > 0; t--) {
+        for (int t = rnd.nextInt(6) + 1; t > 0; t--) {
           p.advance(0.05);
         }
         p.release(k);
@@ -473,7 +473,7 @@ class PendantOnSimControllerTest {
         p.press(org.robotrun.pendant.Key.SHIFT);
         p.press(org.robotrun.pendant.Key.FWD);
         p.release(org.robotrun.pendant.Key.FWD);
-        for (int t = rnd.nextInt(40) + 5; t > 0; t--) {
+        for (int t = rnd.nextInt(20) + 5; t > 0; t--) {
           p.advance(0.05);
           if (controller.status().state() == org.robotrun.sim.ExecutionStatus.State.RUNNING) {
             runningTicks++;
@@ -519,8 +519,8 @@ class PendantOnSimControllerTest {
     assertThat(codes).as("alarm codes raised").allSatisfy(c ->
         assertThat(org.robotrun.program.AlarmCode.of(c)).as("%s is in the alarm table", c).isPresent());
     assertThat(farthest).as("the TCP moved away from where it started (mm)").isGreaterThan(100);
-    assertThat(records).isGreaterThan(10);
-    assertThat(runs).isGreaterThan(10);
+    assertThat(records).isGreaterThan(5);
+    assertThat(runs).isGreaterThan(5);
     assertThat(runningTicks).as("steps in which the program was RUNNING").isGreaterThan(20);
     assertThat(runsThatMoved).as("runs in which a motion line of the program finished").isGreaterThan(2);
   }
