@@ -11,6 +11,7 @@ if "%RR_TOOL%"=="" set "RR_TOOL=javac"
 set "RR_FOUND="
 set "RR_BEST="
 set "RR_BEST_M=0"
+set "RR_OK="
 
 if defined JAVA_HOME call :rr_check "%JAVA_HOME%"
 if defined RR_OK set "RR_FOUND=%JAVA_HOME%"
