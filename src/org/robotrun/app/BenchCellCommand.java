@@ -33,7 +33,8 @@ import picocli.CommandLine.Option;
 public final class BenchCellCommand implements Callable<Integer> {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;
 
-  @Option(names = "--scenario", required = true, paramLabel = "FILE.json", description = "The scenario; it must name a mainProgram (a cell of several robots: each robot's runs at once).")
+  @Option(names = "--scenario", required = true, paramLabel = "FILE.json", description = "The scenario; it must name a mainProgram (a cell of several robots: each robot's runs at once) "
+      + "or start from its PLC (production runStartsFromPlc, as run does).")
   Path scenario;
 
   @Option(names = "--repeats", defaultValue = "5", description = "Measured runs with and without collisions (default: ${DEFAULT-VALUE}).")
@@ -50,13 +51,16 @@ public final class BenchCellCommand implements Callable<Integer> {
     List<List<Program>> own = new java.util.ArrayList<>();
     for (int i = 0; i < sc.robots().size(); i++) {
       var r = sc.robots().get(i);
-      mains.add(i == 0 ? r.mainProgram().or(sc::mainProgram).orElse(null) : r.mainProgram().orElse(null));
+      mains.add(sc.preload(i).mainProgram().orElse(null));
       own.add(RunCommand.loadPrograms(r.programs()));
     }
-    if (mains.stream().allMatch(java.util.Objects::isNull)) {
+    // A cell whose PLC starts the first robot's program runs as run does it (ProductionRun), not by mainProgram.
+    boolean fromPlc = sc.production().of(sc.robots().get(0).name())
+        .filter(org.robotrun.world.ProductionSetup.Robot::startFromPlc).isPresent();
+    if (!fromPlc && mains.stream().allMatch(java.util.Objects::isNull)) {
       throw new UserError("--scenario: " + scenario + " names no mainProgram");
     }
-    String program = String.join("+", mains.stream().filter(java.util.Objects::nonNull).toList());
+    String program = fromPlc ? "PLC" : String.join("+", mains.stream().filter(java.util.Objects::nonNull).toList());
     List<Program> programs = RunCommand.loadPrograms(sc.programs());
     double cycle = 0;
     long ticks = 0;
@@ -81,7 +85,9 @@ public final class BenchCellCommand implements Callable<Integer> {
           }
         }
         long t0 = BenchClock.CPU.nanos();
-        HeadlessRun.CellResult r = HeadlessRun.runCell(sim, toRun, 600, s -> {}, () -> false, "");
+        HeadlessRun.CellResult r = fromPlc
+            ? org.robotrun.sim.ProductionRun.run(sim, sim.controllers().get(0), 600, s -> {}, () -> false, "")
+            : HeadlessRun.runCell(sim, toRun, 600, s -> {}, () -> false, "");
         long ns = BenchClock.CPU.nanos() - t0;
         if (r.status() != HeadlessRun.Status.FINISHED) {
           throw new UserError(program + " did not finish: " + r.alarm().map(a -> a.display()).orElse("?"), Main.EXIT_FAILED);

@@ -20,6 +20,7 @@ import picocli.CommandLine.Command;
       BenchCellCommand.class,
       BenchWorkspaceCommand.class,
       BenchVisionCommand.class,
+      BenchImportCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

@@ -13,7 +13,10 @@ import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.Callable;
 import java.util.stream.Stream;
+import org.robotrun.io.ControllerCompat;
 import org.robotrun.io.Diagnostic;
+import org.robotrun.io.FileFormatException;
+import org.robotrun.io.MacroTables;
 import org.robotrun.program.SimulatorEffects;
 import org.robotrun.io.LsProgramSet;
 import org.robotrun.io.LsReadResult;
@@ -60,6 +63,18 @@ public final class CheckCommand implements Callable<Integer> {
       description = "Further program names CALL may use (programs already on the controller), comma separated.")
   List<String> known = List.of();
 
+  @Option(names = "--macros", paramLabel = "FILE|SCENARIO",
+      description = "The cell's macro table: a scenario (.json, its robots' \"macros\") or a text file of "
+          + "'MACRO NAME = PROGRAM' lines. Macro lines are then checked against the programs they run; "
+          + "without it a macro of several words is reported as not in the macro table.")
+  Path macros;
+
+  @Option(names = "--controller", paramLabel = "R-30iA|R-30iB|R-30iB-Plus",
+      description = "Also say, line by line, what that controller would refuse (options a standard controller "
+          + "lacks, statements of a newer system) or treat differently (comments longer than it keeps), before "
+          + "the program goes to the lab's robot (docs/to-the-robot.md).")
+  String controller;
+
   @Option(names = {"-q", "--quiet"}, description = "Print errors only, not warnings.")
   boolean quiet;
 
@@ -75,6 +90,8 @@ public final class CheckCommand implements Callable<Integer> {
     PrintWriter out = spec.commandLine().getOut();
     PrintWriter err = spec.commandLine().getErr();
     boolean unreadable = false;
+    // files that could not be read at all: on stderr, and in the JSON too (line 0: the whole file)
+    List<Diagnostic> fileErrors = new ArrayList<>();
     List<LsReadResult> results = new ArrayList<>();
     for (Path given : files) {
       List<Path> programs;
@@ -83,11 +100,13 @@ public final class CheckCommand implements Callable<Integer> {
       } catch (IOException e) {
         err.println(TerminalText.safe(given + ": cannot read: " + reason(e)));
         unreadable = true;
+        fileErrors.add(Diagnostic.error(given.toString(), 0, "cannot read: " + reason(e)));
         continue;
       }
       if (programs.isEmpty()) {
         err.println(TerminalText.safe(given + ": no .LS files in this directory"));
         unreadable = true;
+        fileErrors.add(Diagnostic.error(given.toString(), 0, "no .LS files in this directory"));
       }
       for (Path f : programs) {
         try {
@@ -95,14 +114,42 @@ public final class CheckCommand implements Callable<Integer> {
         } catch (IOException e) {
           err.println(TerminalText.safe(f + ": cannot read: " + reason(e)));
           unreadable = true;
+          fileErrors.add(Diagnostic.error(f.toString(), 0, "cannot read: " + reason(e)));
         }
       }
     }
 
+    ControllerCompat.Model model = null;
+    if (controller != null) {
+      java.util.Optional<ControllerCompat.Model> m = ControllerCompat.Model.of(controller);
+      if (m.isEmpty()) {
+        err.println(TerminalText.safe("--controller: unknown controller '" + controller
+            + "': expected R-30iA, R-30iB or R-30iB-Plus"));
+        return Main.EXIT_BAD_INPUT;
+      }
+      model = m.get();
+    }
+    java.util.Map<String, String> table = java.util.Map.of();
+    if (macros != null) {
+      try {
+        table = MacroTables.read(macros);
+      } catch (FileFormatException e) {
+        err.println(TerminalText.safe("--macros: " + e.getMessage()));
+        return Main.EXIT_BAD_INPUT;
+      } catch (IOException e) {
+        err.println(TerminalText.safe("--macros: " + macros + ": cannot read: " + reason(e)));
+        return Main.EXIT_BAD_INPUT;
+      }
+    }
     boolean errors = false;
-    List<Diagnostic> shown = new ArrayList<>();
-    for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known))) {
-      for (Diagnostic d : withSimulatorWarnings(r)) {
+    List<Diagnostic> shown = new ArrayList<>(format == Format.json ? fileErrors : List.of());
+    for (LsReadResult r : LsProgramSet.crossCheck(results, Set.copyOf(known), table)) {
+      List<Diagnostic> all = new ArrayList<>(withSimulatorWarnings(r));
+      if (model != null) {
+        all.addAll(ControllerCompat.check(r, model));
+        all.sort(Comparator.comparingInt(Diagnostic::line));
+      }
+      for (Diagnostic d : all) {
         errors |= d.isError();
         if (d.isError() || !quiet) {
           shown.add(d);

@@ -46,7 +46,9 @@ import picocli.CommandLine.Spec;
           + "robot after the first are in programs/ROBOT/*.LS, and robot checks name their robot.",
       "Submissions are graded in parallel, each in its own simulation, with the task's simulated-time and "
           + "wall-clock limits; a broken or hostile submission fails its checks and never stops the others.",
-      "Exit codes: 0 every submission graded (whatever its score), 2 bad task file or options."
+      "Exit codes: 0 every submission graded (whatever its score), 1 the reports could not be written after "
+          + "grading, 2 bad task file or options, or an output (--out, --gradescope) that cannot be written (checked "
+          + "before any grading)."
     })
 public final class GradeCommand implements Callable<Integer> {
   @Spec CommandSpec spec;
@@ -88,14 +90,24 @@ public final class GradeCommand implements Callable<Integer> {
     if (gradescope != null && submissions.size() != 1) {
       throw new UserError("--gradescope: grade exactly one submission (got " + submissions.size() + ")");
     }
-    if (out != null && Files.exists(out) && !Files.isDirectory(out)) {
-      throw new UserError("--out: " + out + " is a file; give a folder");
+    // Every output is checked before any grading: a class is never graded into nowhere.
+    if (out != null) {
+      if (Files.exists(out) && !Files.isDirectory(out)) {
+        throw new UserError("--out: " + out + " is a file; give a folder");
+      }
+      try {
+        Files.createDirectories(out);
+      } catch (IOException | RuntimeException e) {
+        throw new UserError("--out: cannot create the folder " + out + " (" + why(e) + ")");
+      }
+      checkOutput("--out", out.resolve("summary.csv"));
     }
     if (gradescope != null) {
       Path dir = gradescope.toAbsolutePath().getParent();
       if (dir == null || !Files.isDirectory(dir)) {
         throw new UserError("--gradescope: the folder " + dir + " does not exist");
       }
+      checkOutput("--gradescope", gradescope);
     }
     TaskLoad.Loaded loaded = switch (TaskReader.read(taskFile)) {
       case TaskLoad.Loaded l -> l;
@@ -115,13 +127,37 @@ public final class GradeCommand implements Callable<Integer> {
       print(w, r);
     }
     w.flush();
-    if (gradescope != null) {
-      AtomicFiles.write(gradescope, GradeReports.gradescope(task, results.get(0)));
-    }
-    if (out != null) {
-      writeOut(task, loaded.scenario(), results, w);
+    try {
+      if (gradescope != null) {
+        AtomicFiles.write(gradescope, GradeReports.gradescope(task, results.get(0)));
+      }
+      if (out != null) {
+        writeOut(task, loaded.scenario(), results, w);
+      }
+    } catch (IOException | java.io.UncheckedIOException e) {
+      // the disk filled (or the folder went away) while grading: the scores printed above stand
+      throw new UserError("could not write the reports (" + why(e) + "); the scores are printed above", Main.EXIT_FAILED);
     }
     return Main.EXIT_OK;
+  }
+
+  /** Refuses an output that cannot be written (read-only folder, full disk, /proc), before any grading. */
+  private static void checkOutput(String option, Path file) {
+    try {
+      AtomicFiles.checkWritable(file);
+    } catch (IOException e) {
+      throw new UserError(option + ": cannot write " + e.getMessage());
+    }
+  }
+
+  private static String why(Throwable e) {
+    Throwable t = e instanceof java.io.UncheckedIOException u ? u.getCause() : e;
+    return switch (t) {
+      case java.nio.file.AccessDeniedException x -> "permission denied";
+      case java.nio.file.NoSuchFileException x -> "a folder on the way does not exist or cannot hold new folders";
+      case java.nio.file.FileSystemException x when x.getReason() != null -> x.getReason();
+      default -> t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
+    };
   }
 
   /** Submission names, student names and messages come from students' files: escaped for the terminal. */

@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.charset.StandardCharsets;
+import org.robotrun.io.TerminalText;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -123,7 +124,10 @@ final class GradeReports {
     return b.toString();
   }
 
-  static String csv(String s) {
+  static String csv(String raw) {
+    // Names come from students' files: control characters (NUL, ESC, CR, LF) are escaped as the
+    // terminal and the HTML report do, so a row stays one row and no byte can drive a viewer.
+    String s = TerminalText.safe(raw.replace("\r", "\\r").replace("\n", "\\n"));
     // A leading = + - @ would be a formula in a spreadsheet; a quote before it keeps it text.
     String v = !s.isEmpty() && "=+-@".indexOf(s.charAt(0)) >= 0 ? "'" + s : s;
     if (v.contains(",") || v.contains("\"") || v.contains("\n") || v.contains("\r")) {
@@ -133,8 +137,7 @@ final class GradeReports {
   }
 
   static String fmt(double d) {
-    double r = round(d);
-    return r == Math.rint(r) ? Long.toString((long) r) : Double.toString(r);
+    return org.robotrun.math.DecimalText.plain(round(d));
   }
 
   private static double round(double d) {

@@ -20,7 +20,10 @@ import org.robotrun.render.GlUnavailableException;
 import org.robotrun.robot.ForwardKinematics;
 import org.robotrun.robot.JointConvention;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.sim.CellStepper;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerPort;
+import org.robotrun.grade.Course;
 import org.robotrun.grade.Grader;
 import org.robotrun.grade.TaskLoad;
 import org.robotrun.grade.TaskReader;
@@ -54,7 +57,7 @@ import picocli.CommandLine.Option;
       "Open the simulator window (what 'robotrun' with no subcommand does): the cell in 3D and the teach pendant side by side.",
       "The window works in a workspace, a folder with cell.json and programs/NAME.LS (docs/workspace.md): with no option "
           + "it opens the last workspace, or creates the default one (Linux ~/.local/share/robotrun/workspace, Windows "
-          + "%APPDATA%\\RobotRun\\workspace, macOS ~/Library/Application Support/RobotRun/workspace). Every change is saved "
+          + "%%APPDATA%%\\RobotRun\\workspace, macOS ~/Library/Application Support/RobotRun/workspace). Every change is saved "
           + "within 2 s and on close; File menu: New/Open workspace (Ctrl+O), Open scenario, Save now (Ctrl+S), Save a copy, "
           + "Import/Export .LS, Recent, Hand in, Quit (Ctrl+Q).",
       "Mouse: left drag orbits, right or middle drag pans, wheel zooms, a click selects an object; Home resets the view.",
@@ -79,9 +82,16 @@ public final class GuiCommand implements Callable<Integer> {
           + "the RobotRun data folder, workspaces/NAME); its cell can then be edited.")
   Path scenario;
 
+  @Option(names = "--course", paramLabel = "DIR|course.json",
+      description = "The course whose labs the Labs menu lists (docs/labs/README.md); default: the shipped one, "
+          + "scenarios/labs. Each lab's workspace is in ~/robotrun-labs/ID (ROBOTRUN_LABS_HOME sets another folder).")
+  Path courseFile;
+
   @Option(names = "--task", paramLabel = "TASK.json",
       description = "A grading task (docs/grading.md): adds a Check menu whose 'Check my work' runs the task's visible "
-          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario.")
+          + "checks on your programs and frames. Without --workspace or --scenario, starts from the task's scenario; "
+          + "with a --workspace folder that is new or empty, makes it from the task's scenario (a lab's own workspace, "
+          + "reopened the next time).")
   Path task;
 
   @Option(names = "--program", paramLabel = "FILE.LS",
@@ -97,7 +107,8 @@ public final class GuiCommand implements Callable<Integer> {
    * is null when the window shows a scenario without a workspace (tests).
    */
   public record Session(SimulatorWindow window, Workbench bench, Simulation sim, Controller controller, Pendant pendant,
-      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots) {}
+      CellEditor editor, WindowSettings settings, WindowCell workspace, org.robotrun.ui.RobotSelector robots,
+      CellStepper stepper, java.util.concurrent.atomic.AtomicReference<org.robotrun.sim.SceneSnapshot> frameScene) {}
 
   @Override
   public Integer call() {
@@ -153,9 +164,15 @@ public final class GuiCommand implements Callable<Integer> {
       throw new UserError("--program: cannot read a program (" + e.getMessage() + ")");
     }
     UserDirs dirs = UserDirs.fromSystem();
+    Course course = course(courseFile);
+    Path labsHome = labsHome();
     Path next;
     if (scenario != null) {
       next = WorkspaceFiles.createFromScenario(scenario, dirs.newWorkspaceFor(stem(scenario)));
+    } else if (taskLoaded != null && workspace != null
+        && (!java.nio.file.Files.exists(workspace) || WorkspaceFiles.isEmptyFolder(workspace))) {
+      // A lab: the student's own workspace for the task, made from the task's cell the first time and reopened after.
+      next = WorkspaceFiles.createFromScenario(taskLoaded.task().scenario(), workspace);
     } else {
       next = workspace != null ? workspace : WorkspaceSession.lastOrDefault(dirs);
     }
@@ -174,9 +191,33 @@ public final class GuiCommand implements Callable<Integer> {
         if (log) {
           stage("cell and window ready");
         }
-        if (taskLoaded != null) {
-          s.bench().addMenus(new CheckWorkPanel(new Grader(taskLoaded.task(), taskLoaded.scenario()),
-              s.sim().controllers()));
+        // The Labs menu: the course's labs; a workspace in the labs folder is its lab's, with its task.
+        java.util.Optional<Course.Lab> lab = course == null ? java.util.Optional.empty()
+            : labOf(course, labsHome, next);
+        TaskLoad.Loaded sessionTask = taskLoaded;
+        if (sessionTask == null && lab.isPresent() && TaskReader.read(lab.get().task()) instanceof TaskLoad.Loaded l) {
+          sessionTask = l;
+        }
+        org.robotrun.ui.LabsPanel labs = null;
+        if (course != null) {
+          SimulatorWindow sw = s.window();
+          labs = new org.robotrun.ui.LabsPanel(course, labsHome, lab, chosen -> {
+            Path dir = labsHome.resolve(chosen.id());
+            if (!java.nio.file.Files.exists(dir) || WorkspaceFiles.isEmptyFolder(dir)) {
+              WorkspaceFiles.createFromScenario(chosen.cell(), dir);
+            }
+            switchTo[0] = dir;
+            sw.requestClose();
+          });
+          s.bench().addMenus(labs);
+        }
+        if (sessionTask != null) {
+          CheckWorkPanel check = new CheckWorkPanel(new Grader(sessionTask.task(), sessionTask.scenario()),
+              s.sim().controllers());
+          if (labs != null) {
+            check.onResult(labs::checked);
+          }
+          s.bench().addMenus(check);
         }
         SimulatorWindow w = s.window();
         if (System.getenv("ROBOTRUN_FRAME_LOG") != null) {
@@ -301,15 +342,19 @@ public final class GuiCommand implements Callable<Integer> {
       stage("cell built");
     }
     Controller controller = sim.controllers().get(0);
+    // the scene the window drew this frame (set by run), for the views that draw it again
+    java.util.concurrent.atomic.AtomicReference<org.robotrun.sim.SceneSnapshot> frameScene = new java.util.concurrent.atomic.AtomicReference<>();
     // Every robot has its own controller port and pendant; the robot selector picks the one the
     // window drives. A fresh window is a cold start for each: mode T1 (the port's default, or the
     // scenario's), override $SCR.$COLDOVRD = 10%.
     List<Pendant> pendants = new java.util.ArrayList<>();
-    for (Controller c : sim.controllers()) {
-      SimRobotControl rc = new SimRobotControl(sim, c);
+    for (int i = 0; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
+      ControllerPort rc = new ControllerPort(c);
       rc.setOverridePct(PendantCommand.COLD_START_OVERRIDE_PCT);
-      if (sc != null && sc.mode().isPresent()) {
-        rc.setMode(org.robotrun.pendant.RobotControl.Mode.valueOf(sc.mode().get()));
+      java.util.Optional<String> mode = sc != null && i < sc.robots().size() ? sc.preload(i).mode() : java.util.Optional.empty();
+      if (mode.isPresent()) {
+        rc.setMode(org.robotrun.control.RobotControl.Mode.valueOf(mode.get()));
       }
       Pendant p = new Pendant(rc, new LsLineParser());
       if (sim.controllers().size() > 1) {
@@ -409,7 +454,10 @@ public final class GuiCommand implements Callable<Integer> {
     }
     if (sim.vision().isPresent()) {
       // Vision (issue 16): camera views in the Vision menu, Reset with a seed in the side panel.
-      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim);
+      org.robotrun.ui.VisionPanel vision = new org.robotrun.ui.VisionPanel(sim, () -> {
+        org.robotrun.sim.SceneSnapshot shown = frameScene.get();
+        return shown != null ? shown : sim.snapshot().scene();
+      });
       bench.addSection(org.robotrun.ui.VisionPanel.TITLE, vision::drawContents);
       bench.addMenus(vision);
     }
@@ -419,7 +467,61 @@ public final class GuiCommand implements Callable<Integer> {
       keyboard.releaseAll();
       pendantPanel.releaseLatched();
     });
-    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector);
+    return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim), frameScene);
+  }
+
+  /** The course the Labs menu lists: {@code --course}, else the shipped one when it is there (null: no Labs menu). */
+  static Course course(Path given) {
+    if (given != null) {
+      try {
+        return Course.read(given);
+      } catch (Course.CourseException e) {
+        throw new UserError("--course: " + e.getMessage());
+      }
+    }
+    for (Path p : shippedCourses()) {
+      if (java.nio.file.Files.isRegularFile(p)) {
+        try {
+          return Course.read(p);
+        } catch (Course.CourseException e) {
+          System.err.println("robotrun: the Labs menu is off: " + e.getMessage());
+          return null;
+        }
+      }
+    }
+    return null;
+  }
+
+  /** Where the shipped course may be: beside the application (scenarios/labs), or in the current folder. */
+  private static List<Path> shippedCourses() {
+    List<Path> out = new java.util.ArrayList<>();
+    try {
+      Path jar = Path.of(GuiCommand.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+      Path dir = jar.getParent();
+      for (int up = 0; dir != null && up < 3; up++, dir = dir.getParent()) {
+        out.add(dir.resolve("scenarios/labs/course.json"));
+      }
+    } catch (java.net.URISyntaxException | RuntimeException e) {
+      // no code source: the current folder only
+    }
+    out.add(Path.of("scenarios/labs/course.json"));
+    return out;
+  }
+
+  /** The student's labs folder: ROBOTRUN_LABS_HOME, else ~/robotrun-labs. */
+  static Path labsHome() {
+    String env = System.getenv("ROBOTRUN_LABS_HOME");
+    return (env != null && !env.isBlank() ? Path.of(env) : Path.of(System.getProperty("user.home"), "robotrun-labs"))
+        .toAbsolutePath().normalize();
+  }
+
+  /** The lab whose workspace {@code dir} is: a folder of the labs folder named after a lab's id. */
+  static java.util.Optional<Course.Lab> labOf(Course course, Path home, Path dir) {
+    Path d = dir.toAbsolutePath().normalize();
+    if (d.getParent() == null || !d.getParent().equals(home)) {
+      return java.util.Optional.empty();
+    }
+    return course.lab(d.getFileName().toString());
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
@@ -475,8 +577,10 @@ public final class GuiCommand implements Callable<Integer> {
     long[] lastSave = {System.nanoTime()};
     s.bench().setLayoutChangeHandler(() -> dirty[0] = true);
     s.window().run(t -> {
-          // Real time drives the simulation; a stalled frame never makes it jump more than 0.1 s.
-          s.pendant().advance(Math.min(0.1, t - last[0]));
+          // Real time drives the simulation (a stalled frame never makes it jump more than 0.1 s);
+          // then the pendant in hand catches up with its controller.
+          s.stepper().advanceRealTime(t - last[0]);
+          s.robots().get().follow();
           last[0] = t;
           if (s.workspace() != null) {
             s.workspace().session.autosave.poll(System.nanoTime());
@@ -494,7 +598,10 @@ public final class GuiCommand implements Callable<Integer> {
             lastSave[0] = System.nanoTime();
             warn(s.settings().save(s.bench().layoutState()));
           }
-          return s.sim().snapshot().scene();
+          // the one snapshot of this frame: the 3D view and the camera views draw it
+          org.robotrun.sim.SceneSnapshot scene = s.sim().snapshot().scene();
+          s.frameScene().set(scene);
+          return scene;
         },
         s.bench(),
         () -> {

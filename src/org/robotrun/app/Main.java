@@ -27,6 +27,7 @@ import picocli.CommandLine.Command;
       RunCommand.class,
       GradeCommand.class,
       BenchCommand.class,
+      RobotCommand.class,
       CommandLine.HelpCommand.class
     })
 public final class Main implements java.util.concurrent.Callable<Integer> {

@@ -7,21 +7,23 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.robotrun.control.RobotControl;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.FileFormatException;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.LsWriter;
-import org.robotrun.io.TerminalText;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.TerminalText;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.RobotControl;
 import org.robotrun.program.Program;
-import org.robotrun.world.Scenario;
+import org.robotrun.sim.CellStepper;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.ScenarioCell;
 import org.robotrun.sim.Simulation;
+import org.robotrun.world.Scenario;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -37,7 +39,9 @@ import picocli.CommandLine.Spec;
       "The script starts like a student picking up the pendant of a cold-started controller: TP ON, DEADMAN released, mode T1, override 10%% (--mode and --override change the start). Jogging and SHIFT+FWD need TP ON, DEADMAN and SHIFT held; in T1/T2 a program runs only while SHIFT and DEADMAN are held.",
       "The pendant drives the simulation's controller: the scenario's first robot, or without --scenario the default cell (default robot at HOME, UTOOL 1 a 100 mm pointer, UFRAME 1 = WORLD). In a cell of several robots each has its own controller and pendant (the status line starts with its name); ROBOT 2 or ROBOT name switches to another; --program and --save concern the first robot's programs; --mode and --override set every robot's start.",
       "With --workspace DIR the workspace is opened (or created) first and everything the script changes is saved back to it when the script ends (and at each SHOW); a second RobotRun on the same workspace opens it read-only. Opening it is a cold start too (T1, 10%%).",
-      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written, 2 bad option, unreadable program or malformed script (file:line)."
+      "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written "
+          + "(a --workspace that cannot be saved to: held by another RobotRun for more than 10 s, read-only, a hand-in "
+          + "zip: the script is not run), 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   /** The override a cold start sets ($SCR.$COLDOVRD on a controller): 10%. */
@@ -121,8 +125,7 @@ public final class PendantCommand implements Callable<Integer> {
     Simulation sim;
     Scenario cell = null;
     if (workspace != null) {
-      session = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
-          m -> System.err.println("robotrun: " + m));
+      session = openForWriting(workspace);
       if (!session.problems().isEmpty()) {
         System.err.println("robotrun: " + session.problems());
       }
@@ -134,22 +137,22 @@ public final class PendantCommand implements Callable<Integer> {
       } catch (FileFormatException | IllegalArgumentException e) {
         throw new UserError(scenario + ": " + e.getMessage());
       }
-      programFiles.addAll(sc.programs());
-      programFiles.addAll(sc.robots().get(0).programs());
+      programFiles.addAll(sc.preload(0).programs());
       cell = sc;
-      if (mode == null && sc.mode().isPresent()) {
-        startMode = RobotControl.Mode.valueOf(sc.mode().get());
-      }
     } else {
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
     }
     // One pendant per robot, each like a cold-started controller's; the script starts on the first (ROBOT switches).
     List<String> robotNames = sim.controllers().stream().map(org.robotrun.sim.Controller::name).toList();
-    List<SimRobotControl> controls = new java.util.ArrayList<>();
+    List<ControllerPort> controls = new java.util.ArrayList<>();
     List<Pendant> pendants = new java.util.ArrayList<>();
     for (org.robotrun.sim.Controller c : sim.controllers()) {
-      SimRobotControl rc = new SimRobotControl(sim, c);
-      rc.setMode(startMode);
+      ControllerPort rc = new ControllerPort(c);
+      int k = controls.size();
+      // --mode for every robot; else each robot's own mode switch (the scenario's, or T1)
+      java.util.Optional<String> own = mode != null || cell == null || k >= cell.robots().size()
+          ? java.util.Optional.empty() : cell.preload(k).mode();
+      rc.setMode(own.map(RobotControl.Mode::valueOf).orElse(startMode));
       rc.setOverridePct(overridePct);
       controls.add(rc);
       Pendant p = new Pendant(rc, new LsLineParser());
@@ -158,7 +161,7 @@ public final class PendantCommand implements Callable<Integer> {
       }
       pendants.add(p);
     }
-    SimRobotControl control = controls.get(0);
+    ControllerPort control = controls.get(0);
     programFiles.addAll(programs);
     for (Path file : programFiles) {
       control.saveProgram(readProgram(file));
@@ -184,20 +187,25 @@ public final class PendantCommand implements Callable<Integer> {
       }
     };
     int[] stopped = {0};
+    CellStepper stepper = new CellStepper(sim);
     if (trace == null) {
-      stopped[0] = script.run(pendants, robotNames, show, clock::expired);
+      stopped[0] = script.run(pendants, robotNames, stepper::advance, show, clock::expired);
     } else {
       try {
         org.robotrun.io.AtomicFiles.write(trace, stream -> {
           java.io.Writer w = new java.io.BufferedWriter(new java.io.OutputStreamWriter(stream, StandardCharsets.UTF_8));
           org.robotrun.sim.TraceWriter tw = new org.robotrun.sim.TraceWriter(w, sim.controllers());
           tw.write(sim);
-          controls.forEach(rc -> rc.setAfterTick(tw::write));
-          stopped[0] = script.run(pendants, robotNames, show, clock::expired);
+          stepper.setAfterTick(tw::write);
+          stopped[0] = script.run(pendants, robotNames, stepper::advance, show, clock::expired);
           w.flush();
         });
-      } catch (IOException e) {
-        throw new UserError("--trace: cannot write " + trace + " (" + e.getMessage() + ")", Main.EXIT_FAILED);
+      } catch (IOException | java.io.UncheckedIOException e) {
+        // as run says it: a full disk while tracing is one line, never an internal error
+        Throwable t = e instanceof java.io.UncheckedIOException u ? u.getCause() : e;
+        String why = t.getMessage() == null ? t.getClass().getSimpleName() : t.getMessage();
+        throw new UserError("--trace: could not write " + trace + " (" + why + "); the old file, if any, is unchanged",
+            Main.EXIT_FAILED);
       }
     }
     int stoppedAt = stopped[0];
@@ -224,6 +232,47 @@ public final class PendantCommand implements Callable<Integer> {
       }
     }
     return Main.EXIT_OK;
+  }
+
+  /** How long a script waits for another RobotRun to let go of the workspace. */
+  static volatile double lockWaitSeconds = 10;
+
+  /**
+   * Opens the workspace for the script, which must be able to save what it does: while another
+   * RobotRun holds it, waits up to {@link #lockWaitSeconds} for it; when it still cannot be
+   * written (held, a read-only folder or disk, a lock file that is not a file, a hand-in zip),
+   * fails before the script runs, exit 1, saying why. A script whose result cannot be saved is
+   * never run.
+   */
+  private static WorkspaceSession openForWriting(Path workspace) {
+    long deadline = System.nanoTime() + (long) (lockWaitSeconds * 1e9);
+    boolean said = false;
+    while (true) {
+      WorkspaceSession s = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
+          m -> System.err.println("robotrun: " + m));
+      if (!s.workspace.readOnly()) {
+        return s;
+      }
+      String why = s.workspace.readOnlyReason();
+      boolean busy = s.workspace.lockBusy();
+      s.close();
+      if (busy && System.nanoTime() < deadline) {
+        if (!said) {
+          System.err.println("robotrun: " + workspace + ": another RobotRun has this workspace open; waiting up to "
+              + WallClock.format(lockWaitSeconds) + " s for it");
+          said = true;
+        }
+        try {
+          Thread.sleep(200);
+        } catch (InterruptedException e) {
+          Thread.currentThread().interrupt();
+          throw new UserError("--workspace: interrupted while waiting for " + workspace, Main.EXIT_FAILED);
+        }
+        continue;
+      }
+      throw new UserError("--workspace: " + workspace + ": " + why.replace(": opened read-only, nothing is saved", "")
+          + "; the script was not run, since nothing it did could be saved", Main.EXIT_FAILED);
+    }
   }
 
   private static Program readProgram(Path file) {

@@ -22,7 +22,6 @@ import org.robotrun.io.BoundedFiles;
 import org.robotrun.io.Diagnostic;
 import org.robotrun.io.UnreadableFileException;
 import org.robotrun.io.FileFormatException;
-import org.robotrun.io.ScenarioLoad;
 import org.robotrun.io.ScenarioReader;
 import org.robotrun.world.Scenario;
 import org.robotrun.sim.ScenarioCell;
@@ -111,10 +110,14 @@ public final class RunCommand implements Callable<Integer> {
   @Option(names = "--trace", paramLabel = "out.csv", description = "Write one CSV row per tick here.")
   Path trace;
 
-  /** A workspace's cell with the --seed placement and vision noise. */
-  private void reseed(Simulation sim) {
+  /**
+   * --seed, the one place it is handled: the cell's parts placed and its vision noise drawn from
+   * the seed instead of the cell's {@code vision.seed}; a warning names {@code cellName} when the
+   * cell has no vision section.
+   */
+  private void reseed(Simulation sim, String cellName) {
     if (sim.vision().isEmpty()) {
-      System.err.println("robotrun: warning: --seed: the workspace's cell has no vision section: the seed changes nothing");
+      System.err.println("robotrun: warning: --seed: " + cellName + " has no vision section: the seed changes nothing");
       return;
     }
     org.robotrun.sim.VisionSystem.reseed(sim, sim.vision().get().setup(), seed);
@@ -122,6 +125,22 @@ public final class RunCommand implements Callable<Integer> {
 
   @Override
   public Integer call() throws IOException {
+    try {
+      return runCommand();
+    } finally {
+      if (openSession != null) {
+        openSession.close();  // the hand-in's temporary copy goes, whatever happened
+      }
+    }
+  }
+
+  /** The workspace this run opened, closed by {@link #call} whatever happens. */
+  private WorkspaceSession openSession;
+
+  private Integer runCommand() throws IOException {
+    if (seed != null && !org.robotrun.io.VisionJson.isValidSeed(seed)) {
+      throw new UserError("--seed: expected a whole number of at most 15 digits (as vision.seed), got " + seed);
+    }
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);
     }
@@ -137,6 +156,7 @@ public final class RunCommand implements Callable<Integer> {
       throw new UserError("--report and --trace name the same file " + report);
     }
     Simulation sim;
+    String cellName;
     Scenario cell = null;
     // a production setup may say the run starts from its PLC sequence (docs/production.md)
     java.util.Optional<ProductionSetup.Robot> plcStart = java.util.Optional.empty();
@@ -148,6 +168,7 @@ public final class RunCommand implements Callable<Integer> {
         throw new UserError("--workspace and --scenario: give one of them (a workspace has its own cell)");
       }
       session = WorkspaceSession.open(workspace, true, java.util.Optional::empty, m -> {});
+      openSession = session;
       if (session.workspace.cellBlocked()) {
         String why = session.problems();
         session.close();
@@ -157,54 +178,50 @@ public final class RunCommand implements Callable<Integer> {
         System.err.println("robotrun: warning: " + session.problems());
       }
       sim = session.sim;
-      if (seed != null) {
-        reseed(sim);
-      }
+      cellName = "the workspace's cell";
       fromWorkspace.addAll(session.workspace.programs());
       Scenario wsCell = session.workspace.scenario();
       plcStart = wsCell.production().of(wsCell.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
       if (program == null && plcStart.isEmpty()) {
         String ws = workspace.toString();
-        program = wsCell.robots().get(0).mainProgram().or(wsCell::mainProgram).orElse(null);
+        program = wsCell.preload(0).mainProgram().orElse(null);
         if (program == null && wsCell.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
           throw new UserError("--program: name the program to run (the workspace " + ws + " names no main program)");
         }
       }
       cell = wsCell;
     } else if (scenario != null) {
-      Scenario sc = switch (ScenarioReader.read(scenario)) {
-        case ScenarioLoad.Loaded l -> l.scenario();
-        case ScenarioLoad.Failed f -> throw new UserError(f.message());
+      org.robotrun.io.CellLoad.Loaded load = switch (ScenarioReader.readWithState(scenario)) {
+        case org.robotrun.io.CellLoad.Loaded l -> l;
+        case org.robotrun.io.CellLoad.Failed f -> throw new UserError(f.message());
       };
-      if (seed != null) {
-        if (sc.vision().isEmpty()) {
-          System.err.println("robotrun: warning: --seed: " + scenario + " has no vision section: the seed changes nothing");
-        }
-        sc = sc.withVision(sc.vision().withSeed(seed));
-      }
+      Scenario sc = load.scenario();
+      cellName = scenario.toString();
       try {
         sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
       } catch (FileFormatException | IllegalArgumentException e) {
         throw new UserError(scenario + ": " + e.getMessage());
       }
-      programFiles.addAll(sc.programs());
-      programFiles.addAll(sc.robots().get(0).programs());
+      // A saved controller state ("state", as a workspace keeps it) goes into every robot it names.
+      load.state().ifPresent(st -> st.applyToCell(sim.controllers()));
+      programFiles.addAll(sc.preload(0).programs());
       cell = sc;
       plcStart = sc.production().of(sc.robots().get(0).name()).filter(ProductionSetup.Robot::startFromPlc);
       if (program == null && plcStart.isEmpty()) {
-        program = sc.robots().get(0).mainProgram().or(sc::mainProgram).orElse(null);
+        program = sc.preload(0).mainProgram().orElse(null);
         if (program == null && sc.robots().stream().allMatch(r -> r.mainProgram().isEmpty())) {
           throw new UserError("--program: name the program to run (the scenario " + scenario + " names no main program)");
         }
       }
     } else {
-      if (seed != null) {
-        System.err.println("robotrun: warning: --seed: the default cell has no vision section: the seed changes nothing");
-      }
       sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+      cellName = "the default cell";
       if (program == null) {
         throw new UserError("--program: name the program to run (required without --scenario)");
       }
+    }
+    if (seed != null) {
+      reseed(sim, cellName);
     }
     if (plcStart.isPresent() && program != null) {
       System.err.println("robotrun: warning: --program " + TerminalText.safe(program) + " is not used: the cell starts "

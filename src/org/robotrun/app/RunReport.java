@@ -73,6 +73,12 @@ final class RunReport {
       }
       ObjectNode part = parts.addObject();
       part.put("name", o.name());
+      // what the part became (a vision cell may draw its kind): shape, colour and the vision models it matches
+      part.put("shape", org.robotrun.world.VisionSetup.Model.shapeKind(o.shape()));
+      part.put("colour", o.colour().hex());
+      ArrayNode models = part.putArray("models");
+      sim.vision().ifPresent(v -> v.setup().models().stream().filter(m -> m.matches(o))
+          .forEach(m -> models.add(m.name())));
       Xyzwpr p = Xyzwpr.fromTransform(world.poseInCell(o.name()));
       ObjectNode pose = part.putObject("pose_cell");
       pose.put("x", round(p.x(), 4));

@@ -56,8 +56,7 @@ final class ScenarioFiles {
       double[] q = JointConvention.kinematicToPendant(model(first), JointsOption.parseToKinematic(jointsOverride, model(first)));
       List<RobotSetup> robots = new ArrayList<>(sc.robots());
       robots.set(0, first.withJoints(java.util.Arrays.stream(q).boxed().toList()));
-      s = new Scenario(sc.name(), sc.description(), robots, sc.world(), sc.programs(), sc.mainProgram(), sc.registers(),
-          sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode()).withExtrasOf(sc);
+      s = sc.withRobots(robots);
     }
     Simulation sim;
     try {

@@ -66,8 +66,7 @@ final class WorkspaceFiles {
     // In a workspace the programs are its files: the robots keep their main programs, not the paths.
     List<org.robotrun.world.RobotSetup> robots = sc.robots().stream().map(r -> r.withPrograms(List.of(), r.mainProgram()))
         .toList();
-    Scenario cell = new Scenario(sc.name(), sc.description(), robots, sc.world(), List.of(), sc.mainProgram(),
-        sc.registers(), sc.toolFrames(), sc.userFrames(), sc.camera(), sc.onCollision(), sc.mode()).withExtrasOf(sc);
+    Scenario cell = sc.withRobots(robots).withPrograms(List.of(), sc.mainProgram());
     try (Workspace ws = Workspace.open(dir, cell)) {
       return ws.folder();
     } catch (WorkspaceException e) {

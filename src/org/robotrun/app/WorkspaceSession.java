@@ -40,6 +40,8 @@ final class WorkspaceSession implements AutoCloseable {
   final Simulation sim;
   final Autosave autosave;
   private final Path unpackedZip;
+  /** The folder or zip the user gave: named in messages instead of a temporary copy. */
+  private Path given;
   /** The other named scenarios to save (the window's cell editor); null: {@code scenarios/} is left as it is. */
   volatile Supplier<List<Scenario>> otherScenarios;
   /** When set, what every later save writes instead of the running cell (a scenario switch in progress). */
@@ -71,17 +73,18 @@ final class WorkspaceSession implements AutoCloseable {
         unpacked = Files.createTempDirectory("robotrun-handin");
         HandIn.unpack(dir, unpacked);
       } catch (IOException e) {
-        throw new UserError("--workspace: cannot make a temporary folder (" + e.getMessage() + ")", Main.EXIT_FAILED);
-      } catch (HandInException e) {
         deleteTree(unpacked);
-        throw new UserError(e.getMessage());
+        throw new UserError("--workspace: cannot make a temporary folder (" + e.getMessage() + ")", Main.EXIT_FAILED);
+      } catch (HandInException | RuntimeException e) {
+        deleteTree(unpacked);
+        throw e instanceof HandInException h ? new UserError(h.getMessage()) : (RuntimeException) e;
       }
       folder = unpacked;
       readOnly = true;
     }
     Workspace ws;
     try {
-      ws = Workspace.open(folder, newCell(), readOnly);
+      ws = unpacked != null ? Workspace.openHandIn(folder, newCell()) : Workspace.open(folder, newCell(), readOnly);
     } catch (WorkspaceException e) {
       deleteTree(unpacked);
       throw new UserError(e.getMessage());
@@ -89,12 +92,17 @@ final class WorkspaceSession implements AutoCloseable {
     Simulation sim;
     try {
       sim = ScenarioCell.build(ws.scenario(), RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      WorkspaceCapture.restore(ws, sim);
     } catch (IllegalArgumentException e) {
       ws.close();
       deleteTree(unpacked);
-      throw new UserError(ws.folder().resolve(Workspace.CELL) + ": " + e.getMessage());
+      throw new UserError((unpacked != null ? dir.resolve(Workspace.CELL) : ws.folder().resolve(Workspace.CELL)) + ": "
+          + e.getMessage());
+    } catch (RuntimeException | Error e) {
+      ws.close();
+      deleteTree(unpacked);
+      throw e;
     }
-    WorkspaceCapture.restore(ws, sim);
     String created = ws.state().map(s -> s.created()).orElse("");
     WorkspaceSession[] self = {null};
     Autosave autosave = new Autosave(ws, () -> {
@@ -107,6 +115,7 @@ final class WorkspaceSession implements AutoCloseable {
       return others == null ? snap : snap.withOtherScenarios(others.get());
     }, report);
     self[0] = new WorkspaceSession(ws, sim, autosave, unpacked);
+    self[0].given = dir;
     return self[0];
   }
 
@@ -141,11 +150,19 @@ final class WorkspaceSession implements AutoCloseable {
       all.add(workspace.folder() + ": " + workspace.readOnlyReason());
     }
     all.addAll(workspace.problems());
-    return String.join("\n", all);
+    String text = String.join("\n", all);
+    // a hand-in is read from a temporary copy: name what the user gave, not the copy
+    return unpackedZip == null ? text : text.replace(unpackedZip.toAbsolutePath().normalize().toString(), given + "!");
   }
 
+  private final java.util.concurrent.atomic.AtomicBoolean closed = new java.util.concurrent.atomic.AtomicBoolean();
+
+  /** Saves what is left and closes; the second call does nothing. */
   @Override
   public void close() {
+    if (closed.getAndSet(true)) {
+      return;
+    }
     autosave.close();
     workspace.close();
     deleteTree(unpackedZip);

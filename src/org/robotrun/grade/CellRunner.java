@@ -59,7 +59,10 @@ final class CellRunner {
     return new Variant(0, base, 100, regs);
   }
 
-  /** Variation {@code i} (1-based) drawn with seed {@code seed + i}: the same every time. */
+  /**
+   * Variation {@code i} (1-based) drawn with seed {@code seed + i}: the same every time. The
+   * offset registers are written into every robot's controller.
+   */
   static Variant variation(Scenario base, Task.Variations v, int i) {
     SplittableRandom rng = new SplittableRandom(v.seed() + i);
     World world = base.world();
@@ -72,14 +75,12 @@ final class CellRunner {
       // Moved in its parent's frame, turned about its own vertical axis.
       Transform moved = Transform.translation(dx, dy, 0).compose(o.startPose())
           .compose(Transform.rotation(0, 0, 1, Math.toRadians(drDeg)));
-      world = world.with(WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), moved, o.startParent()));
+      world = world.with(WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), moved, o.startParent()).withTouchable(o.touchable()));
       j.offsetRegister().ifPresent(n -> regs.put(n, new Position.Cartesian(dx, dy, 0, 0, 0, drDeg, Config.DEFAULT)));
     }
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
         : rng.nextInt(v.overrideMinPct(), v.overrideMaxPct() + 1);
-    Scenario s = new Scenario(base.name(), base.description(), base.robots(), world, base.programs(), base.mainProgram(),
-        base.registers(), base.toolFrames(), base.userFrames(), base.camera(), base.onCollision()).withExtrasOf(base);
-    return new Variant(i, s, override, regs);
+    return new Variant(i, base.withWorld(world), override, regs);
   }
 
   private static double draw(SplittableRandom rng, double range) {
@@ -133,13 +134,20 @@ final class CellRunner {
       rs.positionRegisters().forEach((n, p) -> o.registers().setPosition(n, p));
       mains.put(o, rs.program());
     }
+    // Every robot of the cell sees where the parts were found (its own PRs first, as the first's).
+    for (Controller o : sim.controllers().subList(1, sim.controllers().size())) {
+      v.offsetRegisters().forEach((n, p) -> o.registers().setPosition(n, p));
+    }
     Map<String, Optional<String>> startParents = new HashMap<>();
     for (WorldObject o : sim.world().objects()) {
       if (o.kind() == ObjectKind.PART) {
         startParents.put(o.name(), o.parent());
       }
     }
+    List<org.robotrun.math.Vec3> path = new ArrayList<>();
     HeadlessRun.CellResult r = HeadlessRun.runCell(sim, mains, maxSimSec, s -> {
+      org.robotrun.math.Xyzwpr t = c.tcpInWorld();
+      path.add(new org.robotrun.math.Vec3(t.x(), t.y(), t.z()));
       if ((s.ticks() & 63) == 0 && System.nanoTime() - deadlineNanos > 0) {
         throw new WallClockExceeded();
       }
@@ -158,6 +166,6 @@ final class CellRunner {
     Optional<ControllerAlarm> alarm = sim.controllers().size() == 1 ? one.alarm() : r.alarm();
     return new RunOutcome(v.label(), finished, alarm, r.cycleTimeSec(),
         sim.world(), Map.copyOf(sim.heldParts()), new ArrayList<>(sim.collisionEvents()), c.registers(), c.frames(),
-        sim.snapshot().scene(), startParents, List.copyOf(robots));
+        sim.snapshot().scene(), startParents, List.copyOf(robots), List.copyOf(path));
   }
 }

@@ -83,6 +83,23 @@ public sealed interface Check {
   record Frame(Meta meta, boolean tool, int number, Transform truth, double toleranceMm, double toleranceDeg)
       implements Check {}
 
+  /**
+   * A position register as the student recorded it (the submission's saved state, or what the
+   * window holds), not as a run leaves it: its X, Y, Z within {@code toleranceMm} of
+   * {@code position} (mm, in the frame the task says it is recorded in).
+   */
+  record PositionRegister(Meta meta, int number, Vec3 position, double toleranceMm) implements Check {}
+
+  /**
+   * The first robot's active TCP passes within {@code toleranceMm} of each of {@code points_W}
+   * (mm, WORLD) at some time during the run, in any order.
+   */
+  record TcpVisits(Meta meta, List<Vec3> points_W, double toleranceMm) implements Check {
+    public TcpVisits {
+      points_W = List.copyOf(points_W);
+    }
+  }
+
   /** Program features a {@link ProgramUse} check can require or forbid. */
   enum Feature {
     /** A motion with {@code Offset,PR[i]}. */
@@ -97,7 +114,21 @@ public sealed interface Check {
     JMP_BACKWARD("jmpBackward", "a JMP to a label above it"),
     WAIT("wait", "a WAIT"),
     IF("if", "an IF"),
-    SELECT("select", "a SELECT");
+    SELECT("select", "a SELECT"),
+    /** A joint motion (J). */
+    JOINT_MOTION("joint", "a joint motion (J)"),
+    /** A linear motion (L). */
+    LINEAR_MOTION("linear", "a linear motion (L)"),
+    /** A circular motion (C or A). */
+    CIRCULAR_MOTION("circular", "a circular motion (C or A)"),
+    /** A motion ending CNT (a blended corner). */
+    CNT("cnt", "a motion ending CNT"),
+    /** A motion ending FINE. */
+    FINE("fine", "a motion ending FINE"),
+    /** RUN of another program (a task beside the main one). */
+    RUN("run", "a RUN of another program"),
+    /** A motion with {@code VOFFSET,VR[i]} (a vision offset). */
+    VOFFSET("voffset", "a motion with VOFFSET,VR[...]");
 
     final String key;
     final String words;

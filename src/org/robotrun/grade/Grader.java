@@ -135,8 +135,7 @@ public final class Grader {
     tool.putAll(toolFrames);
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
     user.putAll(userFrames);
-    Scenario cell = new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
-        scenario.programs(), scenario.mainProgram(), regs, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
+    Scenario cell = scenario.withPresets(regs, tool, user);
     Map<String, List<Program>> others = new LinkedHashMap<>();
     otherPrograms.forEach((r, ps) -> others.put(r, List.copyOf(ps)));
     return gradeLoaded("your workspace", "", new Loaded(List.copyOf(programs), List.of(), others), List.of(), List.of(),
@@ -163,7 +162,9 @@ public final class Grader {
     });
     boolean needVariations = checks.stream().anyMatch(c -> c.meta().runs() != Check.Runs.NOMINAL);
     int count = needVariations ? task.variations().count() : 0;
-    if (cannotRun.isEmpty()) {
+    if (task.program().isEmpty()) {
+      notRun.add("the task runs no program");
+    } else if (cannotRun.isEmpty()) {
       for (int i = 0; i <= count; i++) {
         CellRunner.Variant v = i == 0 ? CellRunner.nominal(cell, task.variations())
             : CellRunner.variation(cell, task.variations(), i);
@@ -185,7 +186,7 @@ public final class Grader {
     } else {
       notRun.add(cannotRun.get());
     }
-    Context ctx = new Context(loaded, handInProblems, cellNotes, runs, notRun, cell);
+    Context ctx = new Context(loaded, handInProblems, cellNotes, runs, notRun, cell, positionRegisters);
     List<CheckResult> out = new ArrayList<>();
     for (Check c : checks) {
       out.add(evaluate(c, ctx));
@@ -195,7 +196,7 @@ public final class Grader {
 
   /** What a grade needs besides the check. */
   private record Context(Loaded loaded, List<String> handInProblems, List<String> cellNotes, List<RunOutcome> runs,
-      List<String> notRun, Scenario cell) {
+      List<String> notRun, Scenario cell, Map<Integer, Position> positionRegisters) {
     String notes() {
       return cellNotes.isEmpty() ? "" : "\nnote: " + String.join("\nnote: ", cellNotes);
     }
@@ -207,6 +208,16 @@ public final class Grader {
   }
 
   /** The robot a robot check looks at, by name. */
+  /** The index of the robot named {@code name} in {@code cell}, or -1. */
+  private static int robotIndex(Scenario cell, String name) {
+    for (int i = 0; i < cell.robots().size(); i++) {
+      if (cell.robots().get(i).name().equals(name)) {
+        return i;
+      }
+    }
+    return -1;
+  }
+
   private String robotOf(Check c) {
     return c.meta().robot().orElse(scenario.robots().get(0).name());
   }
@@ -243,6 +254,7 @@ public final class Grader {
       case Check.ProgramUse u -> ProgramUse.evaluate(u, ctx.loaded().programsOf(robotOf(u)), mainOf(robotOf(u)))
           .map(why -> fail(c, why)).orElseGet(() -> pass(c, ProgramUse.describe(u)));
       case Check.Frame f -> frame(f, ctx);
+      case Check.PositionRegister r -> positionRegister(r, ctx);
       default -> overRuns(c, ctx);
     };
   }
@@ -283,14 +295,15 @@ public final class Grader {
 
   private CheckResult frame(Check.Frame f, Context ctx) {
     FrameTable frames;
-    boolean first = robotOf(f).equals(scenario.robots().get(0).name());
     if (!ctx.runs().isEmpty()) {
       frames = ctx.runs().get(0).robot(f.meta().robot()).frames();
     } else {
       frames = new FrameTable();
-      if (first) {
-        ctx.cell().toolFrames().forEach((n, t) -> frames.setTransform(FrameKind.TOOL, n, t));
-        ctx.cell().userFrames().forEach((n, t) -> frames.setTransform(FrameKind.USER, n, t));
+      int robot = robotIndex(ctx.cell(), robotOf(f));
+      if (robot >= 0) {
+        Scenario.Preload preload = ctx.cell().preload(robot);
+        preload.toolFrames().forEach((n, t) -> frames.setTransform(FrameKind.TOOL, n, t));
+        preload.userFrames().forEach((n, t) -> frames.setTransform(FrameKind.USER, n, t));
       }
     }
     Transform taught = frames.transform(f.tool() ? FrameKind.TOOL : FrameKind.USER, f.number());
@@ -301,6 +314,22 @@ public final class Grader {
         name, d, a, fmt(f.toleranceMm()), fmt(f.toleranceDeg()));
     m += ctx.notes();
     return d <= f.toleranceMm() && a <= f.toleranceDeg() ? pass(f, m) : fail(f, m);
+  }
+
+  private CheckResult positionRegister(Check.PositionRegister r, Context ctx) {
+    String name = "PR[" + r.number() + "]";
+    Position p = ctx.positionRegisters().get(r.number());
+    if (p == null) {
+      return fail(r, name + " was never recorded (it holds zeros)" + ctx.notes());
+    }
+    if (!(p instanceof Position.Cartesian c)) {
+      return fail(r, name + " holds joint angles, not X, Y, Z: record it with the pendant in a Cartesian "
+          + "representation (DATA, Position Reg, SHIFT+F3 RECORD)" + ctx.notes());
+    }
+    double d = new Vec3(c.xMm(), c.yMm(), c.zMm()).minus(r.position()).norm();
+    String m = String.format(Locale.ROOT, "%s is %.2f mm from the point (X %.1f Y %.1f Z %.1f, allowed %s mm)",
+        name, d, c.xMm(), c.yMm(), c.zMm(), fmt(r.toleranceMm())) + ctx.notes();
+    return d <= r.toleranceMm() ? pass(r, m) : fail(r, m);
   }
 
   // ---- programs and cell -------------------------------------------------------------------
@@ -391,8 +420,8 @@ public final class Grader {
       for (Path p : s) {
         if (SubmissionLoader.isLs(p.getFileName().toString()) && Files.isRegularFile(p)) {
           files.add(p);
-          if (files.size() > SubmissionLoader.Limits.DEFAULT.entries()) {
-            errors.add(shown + ": more than " + SubmissionLoader.Limits.DEFAULT.entries() + " .LS files");
+          if (files.size() > SubmissionLoader.DEFAULT_LIMITS.entries()) {
+            errors.add(shown + ": more than " + SubmissionLoader.DEFAULT_LIMITS.entries() + " .LS files");
             return List.of();
           }
         }
@@ -406,8 +435,8 @@ public final class Grader {
     for (Path f : files) {
       String name = shown + f.getFileName();
       try {
-        if (Files.size(f) > SubmissionLoader.Limits.DEFAULT.entryBytes()) {
-          errors.add(name + ": larger than " + (SubmissionLoader.Limits.DEFAULT.entryBytes() >> 20) + " MB; not a program");
+        if (Files.size(f) > SubmissionLoader.DEFAULT_LIMITS.entryBytes()) {
+          errors.add(name + ": larger than " + (SubmissionLoader.DEFAULT_LIMITS.entryBytes() >> 20) + " MB; not a program");
           continue;
         }
         read.add(LsReader.readCheckingFileName(f));
@@ -442,7 +471,7 @@ public final class Grader {
     }
     Scenario own;
     TreeMap<Integer, Double> stateRegisters = new TreeMap<>();
-    switch (ScenarioReader.readCell(sub.cell().get())) {
+    switch (ScenarioReader.readHandInCell(sub.cell().get())) {
       case CellLoad.Loaded l -> {
         own = l.scenario();
         // A workspace's saved controller state (docs/scenario-format.md, "state"): its R[] and PR[].
@@ -471,8 +500,7 @@ public final class Grader {
     tool.putAll(own.toolFrames());
     TreeMap<Integer, Transform> user = new TreeMap<>(scenario.userFrames());
     user.putAll(own.userFrames());
-    return new Scenario(scenario.name(), scenario.description(), scenario.robots(), scenario.world(),
-        scenario.programs(), scenario.mainProgram(), registers, tool, user, scenario.camera(), scenario.onCollision()).withExtrasOf(scenario);
+    return scenario.withPresets(registers, tool, user);
   }
 
   // ---- helpers -----------------------------------------------------------------------------

@@ -69,11 +69,23 @@ final class ProgramUse {
       switch (ins) {
         case Instruction.Move m -> {
           motions++;
+          found.add(switch (m.type()) {
+            case J -> Check.Feature.JOINT_MOTION;
+            case L -> Check.Feature.LINEAR_MOTION;
+            case C, A -> Check.Feature.CIRCULAR_MOTION;
+          });
+          if (m.termination() instanceof Motion.Fine) {
+            found.add(Check.Feature.FINE);
+          } else {
+            found.add(Check.Feature.CNT);
+          }
           for (Motion.Option o : m.options()) {
             if (o instanceof Motion.OffsetPr) {
               found.add(Check.Feature.OFFSET_PR);
             } else if (o instanceof Motion.ToolOffsetPr) {
               found.add(Check.Feature.TOOL_OFFSET_PR);
+            } else if (o instanceof Motion.RawOption r && r.text().toUpperCase(java.util.Locale.ROOT).startsWith("VOFFSET")) {
+              found.add(Check.Feature.VOFFSET);
             }
           }
           if (m.target() instanceof Motion.Register || m.circularEnd().filter(Motion.Register.class::isInstance).isPresent()) {
@@ -81,6 +93,7 @@ final class ProgramUse {
           }
         }
         case Instruction.For f -> found.add(Check.Feature.FOR);
+        case Instruction.Run r -> found.add(Check.Feature.RUN);
         case Instruction.Jump j -> branch(j, line, labelLine, found);
         case Instruction.Call c -> found.add(Check.Feature.CALL);
         case Instruction.If f -> {

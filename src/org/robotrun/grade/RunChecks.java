@@ -43,10 +43,12 @@ final class RunChecks {
           .orElseGet(() -> Eval.of(true, "no joint-limit, reach or singularity stop"));
       case Check.CycleTime t -> cycleTime(t, run);
       case Check.EndState s -> endState(s, run);
+      case Check.TcpVisits t -> tcpVisits(t, run);
       case Check.HandIn h -> throw new IllegalArgumentException("not a run check");
       case Check.ProgramsCheck h -> throw new IllegalArgumentException("not a run check");
       case Check.ProgramUse h -> throw new IllegalArgumentException("not a run check");
       case Check.Frame h -> throw new IllegalArgumentException("not a run check");
+      case Check.PositionRegister h -> throw new IllegalArgumentException("not a run check");
     };
   }
 
@@ -64,6 +66,27 @@ final class RunChecks {
           .orElse(""));
     }
     return Optional.empty();
+  }
+
+  private static Eval tcpVisits(Check.TcpVisits t, RunOutcome run) {
+    List<String> missed = new ArrayList<>();
+    double worst = 0;
+    for (int i = 0; i < t.points_W().size(); i++) {
+      Vec3 p = t.points_W().get(i);
+      double best = Double.POSITIVE_INFINITY;
+      for (Vec3 q : run.tcpPath()) {
+        best = Math.min(best, q.distanceTo(p));
+      }
+      worst = Math.max(worst, best);
+      if (best > t.toleranceMm()) {
+        missed.add(String.format(Locale.ROOT, "point %d (X %.1f Y %.1f Z %.1f): closest %s", i + 1, p.x(), p.y(), p.z(),
+            Double.isInfinite(best) ? "never (the arm did not move)" : String.format(Locale.ROOT, "%.1f mm", best)));
+      }
+    }
+    String allowed = " (allowed " + Grader.fmt(t.toleranceMm()) + " mm)";
+    return missed.isEmpty()
+        ? Eval.of(true, String.format(Locale.ROOT, "the TCP passed within %.2f mm of every point", worst) + allowed)
+        : Eval.of(false, "the TCP never came near " + String.join("; ", missed) + allowed);
   }
 
   private static Eval runsToEnd(Check.RunsToEnd r, RunOutcome run) {

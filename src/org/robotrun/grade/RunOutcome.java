@@ -26,10 +26,12 @@ import org.robotrun.world.World;
  * @param scene the final state as a draw list, for the report's pictures
  * @param startParents each part's parent at the start, to tell a moved part
  * @param robots every robot of the cell, in scenario order
+ * @param tcpPath the first robot's active TCP in WORLD at every tick, for {@link Check.TcpVisits}
  */
 public record RunOutcome(String label, boolean finished, Optional<ControllerAlarm> alarm, double cycleTimeSec,
     World world, Map<String, String> heldParts, List<CollisionEvent> collisions, Registers registers,
-    FrameTable frames, SceneSnapshot scene, Map<String, Optional<String>> startParents, List<RobotOutcome> robots) {
+    FrameTable frames, SceneSnapshot scene, Map<String, Optional<String>> startParents, List<RobotOutcome> robots,
+    List<org.robotrun.math.Vec3> tcpPath) {
 
   /** The robot a check looks at: by name, or the first robot when none is named. */
   public RobotOutcome robot(Optional<String> name) {

@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 
 /**
  * A submission as found on disk, ready to grade: its programs and, for a workspace or a hand-in,
- * its cell.json. A hand-in zip is unpacked (within {@link SubmissionLoader}'s limits) into a
+ * its cell.json. Its files are copied (within {@link SubmissionLoader}'s limits) into a
  * private temporary folder that {@link #close} removes.
  *
  * @param name what reports call it (the zip's or folder's file name)
@@ -44,18 +44,24 @@ public record Submission(String name, Kind kind, Path programsDir, Optional<Path
     return new Submission(name, kind, null, Optional.empty(), "", List.of(reason), Optional.of(reason), tempDir);
   }
 
-  /** Removes the unpacked copy of a zip, if any (best effort: a temp folder left over is harmless). */
+  /** Removes the copy of the submission's files, if any. */
   @Override
   public void close() {
-    if (tempDir.isEmpty()) {
-      return;
-    }
-    try (Stream<Path> s = Files.walk(tempDir.get())) {
+    tempDir.ifPresent(Submission::deleteTree);
+  }
+
+  /** Removes a folder and all in it, without following links (best effort: grading goes on). */
+  static void deleteTree(Path dir) {
+    try (Stream<Path> s = Files.walk(dir)) {
       for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
-        Files.deleteIfExists(p);
+        try {
+          Files.deleteIfExists(p);
+        } catch (IOException e) {
+          // the rest is still removed
+        }
       }
     } catch (IOException e) {
-      // the OS cleans its temporary folder; grading goes on
+      // the OS cleans its temporary folder
     }
   }
 }

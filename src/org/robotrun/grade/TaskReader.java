@@ -75,6 +75,8 @@ public final class TaskReader {
     TYPES.put("programUse", Set.of("requires", "forbids", "maxMotionLines"));
     TYPES.put("endState", Set.of("values", "tolerance"));
     TYPES.put("frame", Set.of("frame", "pose", "toleranceMm", "toleranceDeg"));
+    TYPES.put("positionRegister", Set.of("register", "position", "toleranceMm"));
+    TYPES.put("tcpVisits", Set.of("targets", "toleranceMm"));
   }
 
   private TaskReader() {}
@@ -139,16 +141,22 @@ public final class TaskReader {
       Scenario scenario = scenario(top);
       String program = string(top, "program", "", false).map(s -> s.toUpperCase(Locale.ROOT))
           // As robotrun run: the first robot's own mainProgram, else the scenario's.
-          .or(() -> scenario == null || scenario.robots().isEmpty() ? Optional.empty() : scenario.robots().get(0).mainProgram())
-          .or(() -> scenario == null ? Optional.empty() : scenario.mainProgram())
+          .or(() -> scenario == null ? Optional.empty() : scenario.preload(0).mainProgram())
           .map(s -> s.toUpperCase(Locale.ROOT)).orElse(null);
-      if (program == null && scenario != null) {
-        error(top.line(), "program", "missing: name the program to run (the scenario names no main program)");
-      }
       Map<String, String> others = robots(top, scenario, program);
       Task.Limits limits = limits(top);
       Task.Variations variations = variations(top, scenario);
       List<Check> checks = checks(top, scenario);
+      // A task whose checks look only at files, frames and recorded registers runs nothing (a pendant lab).
+      boolean runs = checks.stream().anyMatch(c -> !(c instanceof Check.HandIn || c instanceof Check.ProgramsCheck
+          || c instanceof Check.ProgramUse || c instanceof Check.Frame || c instanceof Check.PositionRegister));
+      if (program == null && scenario != null) {
+        if (runs) {
+          error(top.line(), "program", "missing: name the program to run (the scenario names no main program)");
+        } else {
+          program = "";
+        }
+      }
       if (!errors.isEmpty() || scenario == null) {
         return new TaskLoad.Failed(errors);
       }
@@ -170,8 +178,14 @@ public final class TaskReader {
         error(line, "scenario", "not a valid path: \"" + rel.get() + "\"");
         return null;
       }
-      if (!Files.isRegularFile(p)) {
+      if (!Files.exists(p)) {
         error(line, "scenario", "scenario file not found: " + p + " (paths are relative to the task file)");
+        return null;
+      }
+      try {
+        org.robotrun.io.BoundedFiles.requireRegularFile(p);  // a device or FIFO is named, never opened
+      } catch (org.robotrun.io.UnreadableFileException e) {
+        error(line, "scenario", "cannot read the scenario " + p + ": " + e.getMessage());
         return null;
       }
       return switch (ScenarioReader.read(p)) {
@@ -402,6 +416,12 @@ public final class TaskReader {
         }
         case "endState" -> new Check.EndState(m, values(o, at), number(o, "tolerance", at, 0, 1e6).orElse(1e-6));
         case "frame" -> frame(m, o, at);
+        case "tcpVisits" -> new Check.TcpVisits(m, points(o, at), number(o, "toleranceMm", at, 0, 1000).orElse(2.0));
+        case "positionRegister" -> {
+          long n = integer(o, "register", at, 1, 100, true).orElse(1L);
+          Vec3 p = position(o, at);
+          yield new Check.PositionRegister(m, (int) n, p, number(o, "toleranceMm", at, 0, 1000).orElse(1.0));
+        }
         default -> throw new IllegalStateException(type);
       };
     }
@@ -435,6 +455,26 @@ public final class TaskReader {
       double tolDeg = number(o, "toleranceDeg", at, 0, 180).orElse(1.0);
       return new Check.Frame(m, tool, number, Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform(),
           tolMm, tolDeg);
+    }
+
+    private List<Vec3> points(JObject o, String at) {
+      LocatedJson v = o.members().get("targets");
+      List<Vec3> out = new ArrayList<>();
+      if (!(v instanceof LocatedJson.JArray a) || a.items().isEmpty()) {
+        error(v == null ? o.line() : v.line(), at + ".targets", "expected a non-empty array of {x, y, z} (mm, WORLD)");
+        return out;
+      }
+      double lim = PoseLimits.MAX_COORDINATE_MM;
+      for (int i = 0; i < a.items().size(); i++) {
+        String pat = at + ".targets[" + i + "]";
+        JObject q = object(a.items().get(i), pat, Set.of("x", "y", "z"));
+        if (q == null) {
+          continue;
+        }
+        out.add(new Vec3(number(q, "x", pat, -lim, lim).orElse(0.0), number(q, "y", pat, -lim, lim).orElse(0.0),
+            number(q, "z", pat, -lim, lim).orElse(0.0)));
+      }
+      return out;
     }
 
     private Vec3 position(JObject o, String at) {
@@ -557,7 +597,7 @@ public final class TaskReader {
     }
 
     private static String plain(double d) {
-      return d == Math.rint(d) ? Long.toString((long) d) : Double.toString(d);
+      return org.robotrun.math.DecimalText.plain(d);
     }
   }
 }

@@ -115,6 +115,15 @@ public final class AtomicFiles {
           : e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
       throw new IOException(abs + ": cannot create a file in " + dir + " (" + why + ")");
     }
+    // An empty file fits on a full disk: a block written and forced does not.
+    try (FileChannel ch = FileChannel.open(probe, StandardOpenOption.WRITE)) {
+      ch.write(java.nio.ByteBuffer.allocate(4096));
+      ch.force(true);
+    } catch (IOException e) {
+      Files.deleteIfExists(probe);
+      String why = e.getMessage() == null ? e.getClass().getSimpleName() : e.getMessage();
+      throw new IOException(abs + ": cannot write in " + dir + " (" + why + ")");
+    }
     Files.deleteIfExists(probe);
   }
 
@@ -128,6 +137,14 @@ public final class AtomicFiles {
       String kind = BoundedFiles.kind(abs, Files.readAttributes(abs, java.nio.file.attribute.BasicFileAttributes.class));
       throw new IOException(abs + ": is " + kind + ", not a regular file");
     }
+  }
+
+  /** The temporary files {@link #write} makes: {@code .NAME.0123456789ab.tmp}. */
+  private static final java.util.regex.Pattern TEMPORARY = java.util.regex.Pattern.compile("\\..{1,60}\\.[0-9a-f]{12}\\.tmp");
+
+  /** Whether {@code fileName} is one of the temporary files this class makes (a crash may leave one). */
+  public static boolean isTemporaryName(String fileName) {
+    return fileName.length() <= 80 && TEMPORARY.matcher(fileName).matches();
   }
 
   /** Creates an empty, unique temporary file beside the target, with umask permissions. */

@@ -47,19 +47,10 @@ import java.util.zip.ZipOutputStream;
 public final class HandIn {
   public static final String MANIFEST = "manifest.json";
   public static final int FORMAT = 1;
-  /** Largest zip read, and largest total of its unpacked files. */
-  public static final long MAX_TOTAL_BYTES = 64L << 20;
-  /** Largest single file inside. */
-  public static final long MAX_ENTRY_BYTES = 16L << 20;
-  /** Most files inside. */
-  public static final int MAX_ENTRIES = 2000;
   /** programs/NAME.LS, or programs/ROBOT/NAME.LS for a later robot of the cell (no "..", no deeper folders). */
-  private static final Pattern PROGRAM_ENTRY = Pattern.compile(
-      "programs/(?:[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}/)?[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}\\.(?i:ls)");
-  /** The folder of a later robot's programs. */
-  private static final Pattern ROBOT_FOLDER = Pattern.compile("programs/[A-Za-z0-9_][A-Za-z0-9_.\\-]{0,63}/");
+  private static final Pattern PROGRAM_ENTRY = HandInFiles.PROGRAM_ENTRY;
   /** The cell editor's other named scenarios: {@code scenarios/NAME.json}. */
-  private static final Pattern SCENARIO_ENTRY = Pattern.compile(Workspace.SCENARIOS + "/" + Workspace.SCENARIO_FILE.pattern());
+  private static final Pattern SCENARIO_ENTRY = HandInFiles.SCENARIO_ENTRY;
 
   private HandIn() {}
 
@@ -88,6 +79,10 @@ public final class HandIn {
     }
     if (Files.exists(zip) && !replace) {
       throw new HandInException(zip + " already exists: choose another name, or confirm that it should be replaced");
+    }
+    Path parent = zip.toAbsolutePath().getParent();
+    if (parent == null || !Files.isDirectory(parent)) {
+      throw new HandInException("cannot write " + zip + ": the folder " + parent + " does not exist");
     }
     Map<String, byte[]> files = new TreeMap<>();
     FileTime newest = FileTime.fromMillis(0);
@@ -147,6 +142,7 @@ public final class HandIn {
     Map<String, String> sums = new LinkedHashMap<>();
     files.forEach((entry, bytes) -> sums.put(entry, sha256(bytes)));
     Manifest m = new Manifest(name, created, modified, robotrunVersion, scenario, sums);
+    requireWithinLimits(workspaceDir, files, m);
     try {
       ByteArrayOutputStream buf = new ByteArrayOutputStream();
       try (ZipOutputStream z = new ZipOutputStream(buf, StandardCharsets.UTF_8)) {
@@ -160,6 +156,36 @@ public final class HandIn {
       throw new HandInException("cannot write " + zip + ": " + Workspace.describe(e));
     }
     return m;
+  }
+
+  /**
+   * Refuses a hand-in that {@code grade} and {@code run --workspace} would refuse (the one table,
+   * {@link HandInFiles.Limits#DEFAULT}), before anything is written: what RobotRun writes is
+   * always read back.
+   */
+  private static void requireWithinLimits(Path workspaceDir, Map<String, byte[]> files, Manifest m) throws HandInException {
+    HandInFiles.Limits limits = HandInFiles.Limits.DEFAULT;
+    if (files.size() + 1 > limits.entries()) {
+      throw new HandInException("cannot hand in " + workspaceDir + ": it holds " + files.size() + " files; a hand-in holds"
+          + " at most " + (limits.entries() - 1) + " besides its manifest (remove programs you no longer need)");
+    }
+    long total;
+    try {
+      total = manifestJson(m).getBytes(StandardCharsets.UTF_8).length;
+    } catch (IOException e) {
+      throw new HandInException("cannot hand in " + workspaceDir + ": " + Workspace.describe(e));
+    }
+    for (Map.Entry<String, byte[]> e : files.entrySet()) {
+      if (e.getValue().length > limits.entryBytes()) {
+        throw new HandInException("cannot hand in " + workspaceDir + ": " + e.getKey() + " is larger than "
+            + HandInFiles.sizeText(limits.entryBytes()) + ", the most a hand-in file may be");
+      }
+      total += e.getValue().length;
+    }
+    if (total > limits.totalBytes()) {
+      throw new HandInException("cannot hand in " + workspaceDir + ": its files come to more than "
+          + HandInFiles.sizeText(limits.totalBytes()) + ", the most a hand-in may hold");
+    }
   }
 
   private static void put(ZipOutputStream z, String name, byte[] bytes) throws IOException {
@@ -201,111 +227,31 @@ public final class HandIn {
 
   /**
    * Unpacks a hand-in into the empty folder {@code into} (a workspace to open read-only),
-   * after checking every name, size and checksum.
+   * after checking every name, size and checksum ({@link HandInFiles}: the same reader and
+   * limits as {@code grade}). Nothing is written unless all of it passed; when writing fails,
+   * what was written is the caller's to remove with {@code into}.
    *
-   * @throws HandInException naming the zip and the entry at fault
+   * @throws HandInException naming the zip (as the user gave it) and the entry at fault
    */
   public static Manifest unpack(Path zip, Path into) throws HandInException {
     String where = zip.toString();
-    Map<String, byte[]> files = new TreeMap<>();
-    byte[] manifestBytes = null;
+    HandInFiles.Contents c;
     try {
-      long size;
-      try {
-        size = BoundedFiles.requireRegularFile(zip);  // a FIFO or a device is named, never opened
-      } catch (UnreadableFileException e) {
-        throw new HandInException(where + ": " + e.getMessage());
-      }
-      if (size > MAX_TOTAL_BYTES) {
-        throw new HandInException(where + ": the file is " + size + " bytes; hand-ins are limited to " + MAX_TOTAL_BYTES);
-      }
-      long total = 0;
-      int count = 0;
-      try (InputStream in = Files.newInputStream(zip); ZipInputStream z = new ZipInputStream(in, StandardCharsets.UTF_8)) {
-        ZipEntry e;
-        while ((e = z.getNextEntry()) != null) {
-          if (++count > MAX_ENTRIES) {
-            throw new HandInException(where + ": more than " + MAX_ENTRIES + " entries");
-          }
-          String name = e.getName();
-          if (e.isDirectory() && (name.equals(Workspace.PROGRAMS + "/") || ROBOT_FOLDER.matcher(name).matches()
-              || name.equals(Workspace.SCENARIOS + "/"))) {
-            continue;
-          }
-          if (!name.equals(MANIFEST) && !name.equals(Workspace.CELL) && !PROGRAM_ENTRY.matcher(name).matches()
-              && !SCENARIO_ENTRY.matcher(name).matches()) {
-            throw new HandInException(where + ": unexpected entry \"" + name
-                + "\" (a hand-in holds manifest.json, cell.json, programs/NAME.LS, programs/ROBOT/NAME.LS and"
-                + " scenarios/NAME.json only)");
-          }
-          if (files.containsKey(name) || (name.equals(MANIFEST) && manifestBytes != null)) {
-            throw new HandInException(where + ": entry \"" + name + "\" is in the zip twice");
-          }
-          byte[] bytes = readBounded(z, where, name);
-          total += bytes.length;
-          if (total > MAX_TOTAL_BYTES) {
-            throw new HandInException(where + ": unpacks to more than " + MAX_TOTAL_BYTES + " bytes");
-          }
-          if (name.equals(MANIFEST)) {
-            manifestBytes = bytes;
-          } else {
-            files.put(name, bytes);
-          }
-        }
-      }
-    } catch (java.util.zip.ZipException e) {
-      throw new HandInException(where + ": not a readable zip (" + e.getMessage() + ")");
-    } catch (java.nio.file.NoSuchFileException e) {
-      throw new HandInException(where + ": no such file");
-    } catch (IOException e) {
-      throw new HandInException(where + ": cannot read (" + Workspace.describe(e) + ")");
+      c = HandInFiles.readZip(zip, HandInFiles.Limits.DEFAULT);
+    } catch (HandInException e) {
+      throw new HandInException(where + ": " + e.getMessage());
     }
-    if (manifestBytes == null) {
-      throw new HandInException(where + ": no manifest.json (is this a RobotRun hand-in?)");
+    HandInFiles.Verified v = HandInFiles.verify(c);
+    if (!v.problems().isEmpty()) {
+      throw new HandInException(where + ": " + v.problems().get(0));
     }
-    Manifest m = parseManifest(where, manifestBytes);
-    for (Map.Entry<String, String> e : m.files().entrySet()) {
-      byte[] bytes = files.get(e.getKey());
-      if (bytes == null) {
-        throw new HandInException(where + ": manifest.json: files.\"" + e.getKey() + "\" is listed but not in the zip");
-      }
-      if (!sha256(bytes).equals(e.getValue().toLowerCase(Locale.ROOT))) {
-        throw new HandInException(where + ": " + e.getKey() + " does not match its SHA-256 in manifest.json (changed after hand-in?)");
-      }
-    }
-    for (String name : files.keySet()) {
-      if (!m.files().containsKey(name)) {
-        throw new HandInException(where + ": " + name + " is in the zip but not listed in manifest.json");
-      }
-    }
-    if (!files.containsKey(Workspace.CELL)) {
-      throw new HandInException(where + ": no cell.json");
-    }
+    Manifest m = parseManifest(where, c.manifest());
     try {
-      Files.createDirectories(into.resolve(Workspace.PROGRAMS));
-      for (Map.Entry<String, byte[]> e : files.entrySet()) {
-        Files.createDirectories(into.resolve(e.getKey()).getParent());
-        AtomicFiles.write(into.resolve(e.getKey()), e.getValue());
-      }
+      HandInFiles.writeTo(c.files(), into);
     } catch (IOException e) {
-      throw new HandInException("cannot unpack " + where + " into " + into + ": " + Workspace.describe(e));
+      throw new HandInException("cannot unpack " + where + " into a temporary folder: " + Workspace.describe(e));
     }
     return m;
-  }
-
-  private static byte[] readBounded(ZipInputStream z, String where, String name) throws IOException, HandInException {
-    ByteArrayOutputStream out = new ByteArrayOutputStream();
-    byte[] buf = new byte[8192];
-    int n;
-    long total = 0;
-    while ((n = z.read(buf)) > 0) {
-      total += n;
-      if (total > MAX_ENTRY_BYTES) {
-        throw new HandInException(where + ": " + name + " unpacks to more than " + MAX_ENTRY_BYTES + " bytes");
-      }
-      out.write(buf, 0, n);
-    }
-    return out.toByteArray();
   }
 
   private static Manifest parseManifest(String where, byte[] bytes) throws HandInException {

@@ -27,12 +27,32 @@ final class LsPositionParser extends TpTokenCursor {
 
   private static final String[] CARTESIAN = {"X", "Y", "Z", "W", "P", "R"};
   private static final String[] JOINT = {"J1", "J2", "J3", "J4", "J5", "J6"};
+  private static final String[] RAIL = {"RX", "RY", "RZ", "RW", "RP", "RR"};
 
   private final String file;
   private final List<Diagnostic> diagnostics;
 
   private final java.util.Set<String> warned = new java.util.HashSet<>();
   private java.util.Set<Integer> otherGroupsOnly = new java.util.HashSet<>();
+
+  /** Kinds of position block read and kept but not held as a position: kind → index of its diagnostic, and count. */
+  private final Map<String, int[]> keptSeen = new HashMap<>();
+
+  /** Reports a block kept but not simulated, once per kind with a count of the others. */
+  private void keptNotSimulated(TpToken at, String what) {
+    String base = "not supported: " + what + " (kept in the file, not moved to: a motion to it alarms)";
+    int[] seen = keptSeen.get(what);
+    if (seen == null) {
+      keptSeen.put(what, new int[] {diagnostics.size(), 0});
+      diagnostics.add(Diagnostic.of(file, at.line(), at.column(), Diagnostic.Severity.ERROR,
+          Diagnostic.Kind.UNSUPPORTED, base));
+    } else {
+      seen[1]++;
+      Diagnostic d = diagnostics.get(seen[0]);
+      diagnostics.set(seen[0], Diagnostic.of(d.file(), d.line(), d.column(), d.severity(), d.kind(),
+          base + " (and " + seen[1] + " more position" + (seen[1] == 1 ? ")" : "s)")));
+    }
+  }
 
   private void warnOnce(TpToken at, String message) {
     if (warned.add(message)) {
@@ -140,6 +160,9 @@ final class LsPositionParser extends TpTokenCursor {
     expect(Kind.LBRACE, "'{' after " + where);
 
     Map<String, Double> values = new LinkedHashMap<>();
+    // Set when the block holds a form RobotRun reads but cannot hold as a position of its arm.
+    String kept = null;
+    boolean uninitialised = false;
     Integer uf = null;
     Integer ut = null;
     Config config = null;
@@ -189,6 +212,12 @@ final class LsPositionParser extends TpTokenCursor {
       switch (key) {
         case "UF", "UT" -> {
           expect(Kind.COLON, "':' after " + key);
+          if (peek().isWord("F")) {
+            // UF : F, UT : F: a position never taught (its values are listed as ********)
+            next();
+            uninitialised = true;
+            continue;
+          }
           int v = parseInt(expect(Kind.NUMBER, "the frame number after " + key + " :"));
           if (key.equals("UF")) {
             uf = v;
@@ -199,6 +228,12 @@ final class LsPositionParser extends TpTokenCursor {
         case "CONFIG" -> {
           expect(Kind.COLON, "':' after CONFIG");
           TpToken s = expect(Kind.STRING, "a quoted configuration like 'N U T, 0, 0, 0' after CONFIG :");
+          String arm = s.text().split(",", -1)[0].strip().toUpperCase(Locale.ROOT);
+          if (arm.equals("L") || arm.equals("R")) {
+            // SCARA: left- or right-handed arm, 'R, 0, 0, 0'
+            kept = "a SCARA position (CONFIG 'L' or 'R')";
+            continue;
+          }
           config = config(s, where);
         }
         default -> {
@@ -215,6 +250,19 @@ final class LsPositionParser extends TpTokenCursor {
             }
             continue;
           }
+          if (indexOf(RAIL, key) >= 0) {
+            // RX = ... mm, RW = ... deg: a robot with an integrated rail lists its pose this way
+            expect(Kind.EQ, "'=' after " + key);
+            if (peek().is(Kind.MINUS)) {
+              next();
+            }
+            expect(Kind.NUMBER, "a number after " + key + " =");
+            if (peek().isWord("mm") || peek().isWord("deg")) {
+              next();
+            }
+            kept = "a position of a robot on an integrated rail (RX .. RR)";
+            continue;
+          }
           boolean cart = indexOf(CARTESIAN, key) >= 0;
           boolean joint = indexOf(JOINT, key) >= 0;
           if (!cart && !joint) {
@@ -222,6 +270,17 @@ final class LsPositionParser extends TpTokenCursor {
                 + "': expected UF, UT, CONFIG, X, Y, Z, W, P, R or J1..J6");
           }
           expect(Kind.EQ, "'=' after " + key);
+          if (peek().is(Kind.STAR)) {
+            // "X = ********  mm": the controller lists a position never taught this way
+            while (peek().is(Kind.STAR)) {
+              next();
+            }
+            if (peek().isWord("mm") || peek().isWord("deg")) {
+              next();
+            }
+            uninitialised = true;
+            continue;
+          }
           boolean negative = peek().is(Kind.MINUS);
           if (negative) {
             next();
@@ -247,6 +306,18 @@ final class LsPositionParser extends TpTokenCursor {
           }
         }
       }
+    }
+    if (uninitialised && kept == null) {
+      // Loaded as the controller loads it: the position shows uninitialised; a motion to it alarms.
+      diagnostics.add(Diagnostic.of(file, start.line(), start.column(), Diagnostic.Severity.WARNING,
+          Diagnostic.Kind.REFERENCE, where + " is uninitialised (never taught): a motion to it alarms"));
+      otherGroupsOnly.add(number);
+      return null;
+    }
+    if (kept != null) {
+      keptNotSimulated(start, kept);
+      otherGroupsOnly.add(number);
+      return null;
     }
     if (!sawGroup && uf == null && ut == null && values.isEmpty()) {
       otherGroupsOnly.add(number);

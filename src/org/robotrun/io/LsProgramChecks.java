@@ -49,7 +49,9 @@ final class LsProgramChecks {
       }
       for (LabelRef target : labelTargets(lines.get(i))) {
         if (target.index() instanceof Index.Direct d && !labels.containsKey(d.value())) {
-          out.add(Diagnostic.error(file, line, "LBL[" + d.value() + "] is not defined in this program"));
+          // A controller loads such a program; the jump alarms (INTP-310 label not found) when it runs.
+          out.add(Diagnostic.of(file, line, 0, Diagnostic.Severity.WARNING, Diagnostic.Kind.REFERENCE,
+              "LBL[" + d.value() + "] is not defined in this program: the jump alarms when it runs"));
         }
       }
     }
@@ -59,6 +61,15 @@ final class LsProgramChecks {
 
   /** A diagnostic for each CALL whose target is not {@code known} (the program itself always is). */
   static List<Diagnostic> unknownCalls(LsReadResult r, Predicate<String> known) {
+    return unknownCalls(r, known, Map.of());
+  }
+
+  /**
+   * As {@link #unknownCalls(LsReadResult, Predicate)}, with a macro table (macro name as
+   * {@code InterpreterSettings.macroKey} keys it → program): a macro of the table must name a
+   * known program; a macro of several words outside it is reported as not in the table.
+   */
+  static List<Diagnostic> unknownCalls(LsReadResult r, Predicate<String> known, Map<String, String> macros) {
     String self = r.program().name();
     List<Diagnostic> out = new ArrayList<>();
     List<Instruction> lines = r.program().lines();
@@ -66,7 +77,14 @@ final class LsProgramChecks {
       Optional<Instruction.Call> call = callIn(lines.get(i));
       if (call.isPresent()) {
         String target = call.get().program();
-        if (lines.get(i) instanceof Instruction.MacroCall && target.contains(" ")) {
+        String viaTable = lines.get(i) instanceof Instruction.MacroCall
+            ? macros.get(org.robotrun.program.InterpreterSettings.macroKey(target)) : null;
+        if (viaTable != null) {
+          if (!viaTable.equalsIgnoreCase(self) && !known.test(viaTable)) {
+            out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1), "macro " + target + " runs " + viaTable
+                + " (macro table): no program named " + viaTable + " is known"));
+          }
+        } else if (lines.get(i) instanceof Instruction.MacroCall && target.contains(" ")) {
           // A macro of several words names no program: the controller's macro table says what it runs.
           out.add(Diagnostic.error(r.file(), r.sourceLine(i + 1), "macro " + target + ": not in the macro table (a "
               + "robot's \"macros\" in the scenario define it; the line alarms when it runs without one)"));
@@ -128,7 +146,10 @@ final class LsProgramChecks {
 
   private static void requirePosition(Program program, Motion.Target t, String file, int line, List<Diagnostic> out) {
     if (t instanceof Motion.Local l && !program.positions().containsKey(l.number())) {
-      out.add(Diagnostic.error(file, line, "P[" + l.number() + "] is used but /POS has no P[" + l.number() + "]"));
+      // A controller loads it and shows the position uninitialised; the line alarms when it runs.
+      out.add(Diagnostic.of(file, line, 0, Diagnostic.Severity.WARNING, Diagnostic.Kind.REFERENCE,
+          "P[" + l.number() + "] is used but /POS has no P[" + l.number()
+              + "]: the position is uninitialised and the line alarms when it runs"));
     }
   }
 
@@ -171,9 +192,9 @@ final class LsProgramChecks {
       Instruction in = lines.get(i);
       int line = src.get(i);
       Block top = open.isEmpty() ? null : open.peek().kind();
-      if (in instanceof Instruction.IfThen) {
+      if (in instanceof Instruction.IfThen || opensIfThen(in)) {
         open.push(new Open(Block.IF_THEN, i));
-      } else if (in instanceof Instruction.For) {
+      } else if (in instanceof Instruction.For || opensFor(in)) {
         open.push(new Open(Block.FOR, i));
       } else if (in instanceof Instruction.Else) {
         if (top == Block.IF_THEN) {
@@ -204,6 +225,16 @@ final class LsProgramChecks {
       String what = b.kind() == Block.FOR ? "FOR has no ENDFOR" : "IF ... THEN has no ENDIF";
       out.add(Diagnostic.error(file, src.get(b.index()), what));
     }
+  }
+
+  /** An IF ... THEN line kept as not supported (its condition): it still opens a block its ENDIF closes. */
+  static boolean opensIfThen(Instruction in) {
+    return in instanceof Instruction.Unsupported u && u.opensIfThen();
+  }
+
+  /** A FOR line kept as not supported: it still opens a block its ENDFOR closes. */
+  static boolean opensFor(Instruction in) {
+    return in instanceof Instruction.Unsupported u && u.opensFor();
   }
 
   private static String innermost(Deque<Open> open, List<Integer> src) {

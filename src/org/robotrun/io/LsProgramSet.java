@@ -23,6 +23,15 @@ public final class LsProgramSet {
    * @param alsoKnown further program names that exist elsewhere (any case)
    */
   public static List<LsReadResult> crossCheck(List<LsReadResult> results, Set<String> alsoKnown) {
+    return crossCheck(results, alsoKnown, Map.of());
+  }
+
+  /**
+   * As {@link #crossCheck(List, Set)}, with the cell's macro table (macro name → program, keyed
+   * as {@code InterpreterSettings.macroKey} keys it).
+   */
+  public static List<LsReadResult> crossCheck(List<LsReadResult> results, Set<String> alsoKnown,
+      Map<String, String> macros) {
     Set<String> names = new HashSet<>();
     for (String k : alsoKnown) {
       names.add(k.toUpperCase(Locale.ROOT));
@@ -39,7 +48,7 @@ public final class LsProgramSet {
     }
     List<LsReadResult> out = new ArrayList<>(results.size());
     for (LsReadResult r : results) {
-      LsReadResult checked = r.withCallTargetsChecked(names);
+      LsReadResult checked = r.withCallTargetsChecked(names, macros);
       List<Diagnostic> all = new ArrayList<>(checked.diagnostics());
       for (Diagnostic d : duplicates) {
         if (d.file().equals(r.file())) {

@@ -69,6 +69,20 @@ public record LsReadResult(String file, Program program, List<Diagnostic> diagno
     return withCallsCheckedBy(name -> store.find(name).isPresent());
   }
 
+  /**
+   * As {@link #withCallTargetsChecked(Set)}, with the cell's macro table ({@code macroKey} of the
+   * macro name → program): a macro the table holds must run a known program.
+   */
+  public LsReadResult withCallTargetsChecked(Set<String> knownPrograms, java.util.Map<String, String> macros) {
+    Set<String> upper = new HashSet<>();
+    for (String k : knownPrograms) {
+      upper.add(k.toUpperCase(Locale.ROOT));
+    }
+    List<Diagnostic> all = new ArrayList<>(diagnostics);
+    all.addAll(LsProgramChecks.unknownCalls(this, name -> upper.contains(name.toUpperCase(Locale.ROOT)), macros));
+    return new LsReadResult(file, program, all, sourceLines);
+  }
+
   private LsReadResult withCallsCheckedBy(Predicate<String> known) {
     List<Diagnostic> all = new ArrayList<>(diagnostics);
     all.addAll(LsProgramChecks.unknownCalls(this, known));

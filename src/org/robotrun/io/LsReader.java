@@ -343,20 +343,7 @@ public final class LsReader {
      * and the writer lays the whole file out afresh.
      */
     private Program withSource(Program program) {
-      List<String> order = sectionOrder;
-      List<String> usual = new ArrayList<>(List.of("/PROG"));
-      if (order.contains("/ATTR")) {
-        usual.add("/ATTR");
-      }
-      if (order.contains("/APPL")) {
-        usual.add("/APPL");
-      }
-      usual.add("/MN");
-      if (order.contains("/POS")) {
-        usual.add("/POS");
-      }
-      usual.add("/END");
-      if (!order.equals(usual) || bytes == null) {
+      if (!usualOrder(sectionOrder) || bytes == null) {
         return program;
       }
       List<String> raw = rawLines(text);
@@ -367,7 +354,15 @@ public final class LsReader {
       int tailStart = sectionIndex.getOrDefault("/POS", sectionIndex.get("/END"));
       int firstStatement = statementStart.isEmpty() ? tailStart : statementStart.get(0);
       List<String> header = raw.subList(0, firstStatement);
-      List<String> appl = order.contains("/APPL") ? raw.subList(sectionIndex.get("/APPL"), mn) : List.of();
+      // /APPL and any other section between /ATTR and /MN (a controller may list /APPL twice)
+      int applStart = mn;
+      for (String section : sectionOrder) {
+        if (!CORE_SECTIONS.contains(section)) {
+          applStart = Math.min(applStart, sectionIndex.get(section));
+        }
+      }
+      List<String> appl = raw.subList(applStart, mn);
+      String lineEnd = text.contains("\r\n") ? "\r\n" : "\n";
       List<List<String>> statements = new ArrayList<>();
       for (int j = 0; j < statementStart.size(); j++) {
         int from = statementStart.get(j);
@@ -375,13 +370,43 @@ public final class LsReader {
         if (to < from) {
           return program;
         }
+        if (to == from || j > 0 && statementStart.get(j - 1) == from) {
+          // a statement and the remark after its ';' share a line: an edit lays both out afresh
+          statements.add(List.of());
+          continue;
+        }
         statements.add(raw.subList(from, to));
       }
-      String lineEnd = text.contains("\r\n") ? "\r\n" : "\n";
       ProgramSource src = new ProgramSource(bytes, charset, lineEnd, program, header, appl, statements,
           raw.subList(tailStart, raw.size()));
       return new Program(program.name(), program.attributes(), program.comment(), program.lines(),
           program.positions(), java.util.Optional.of(src));
+    }
+
+    private static final Set<String> CORE_SECTIONS = Set.of("/PROG", "/ATTR", "/MN", "/POS", "/END");
+
+    /**
+     * /PROG, optionally /ATTR, any other sections (/APPL, once or more), /MN, optionally /POS,
+     * /END: the shape whose text the writer can keep.
+     */
+    private static boolean usualOrder(List<String> order) {
+      int i = 0;
+      if (order.isEmpty() || !order.get(i++).equals("/PROG")) {
+        return false;
+      }
+      if (i < order.size() && order.get(i).equals("/ATTR")) {
+        i++;
+      }
+      while (i < order.size() && !CORE_SECTIONS.contains(order.get(i))) {
+        i++;
+      }
+      if (i >= order.size() || !order.get(i++).equals("/MN")) {
+        return false;
+      }
+      if (i < order.size() && order.get(i).equals("/POS")) {
+        i++;
+      }
+      return i == order.size() - 1 && order.get(i).equals("/END");
     }
 
     /** The text's lines split as {@link #splitLines} splits them, each keeping its line end. */
@@ -551,32 +576,44 @@ public final class LsReader {
           p++;
         }
         boolean numbered = p > digitsStart && p < text.length() && text.charAt(p) == ':';
-        if (!numbered) {
-          if (p == digitsStart && p < text.length() && text.charAt(p) == ':') {
-            diags.add(Diagnostic.error(file, line, "continuation line ':  ...' without a C motion line before it"));
-          } else {
-            diags.add(Diagnostic.error(file, line,
-                "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
-          }
+        boolean colonOnly = !numbered && p == digitsStart && p < text.length() && text.charAt(p) == ':';
+        int expected = instructions.size() + 1;
+        if (!numbered && !colonOnly) {
+          diags.add(Diagnostic.error(file, line,
+              "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
           continue;
         }
-        int number;
-        try {
-          number = Integer.parseInt(text.substring(digitsStart, p));
-        } catch (NumberFormatException e) {
-          number = -1;
-        }
-        int expected = instructions.size() + 1;
-        if (number != expected) {
-          diags.add(Diagnostic.error(file, line,
-              "line number " + clip(text.substring(digitsStart, p)) + " out of order: expected " + expected));
+        if (colonOnly) {
+          // "    : ! remark ;" after a finished statement: the offline converter numbers it
+          mend(line, "a line with ':' and no number after a finished statement: read as line " + expected);
+        } else {
+          int number;
+          try {
+            number = Integer.parseInt(text.substring(digitsStart, p));
+          } catch (NumberFormatException e) {
+            number = -1;
+          }
+          if (number != expected) {
+            // Hand-edited files repeat or reorder numbers; the offline converter numbers lines in file order.
+            mend(line, "line number " + clip(text.substring(digitsStart, p)) + " out of order or repeated: read as line "
+                + expected);
+          }
         }
         Body body = body(text, p + 1, line);
+        String remarkAfter = null;
+        if (!body.terminated) {
+          int semi = remarkSemicolon(text, p + 1);
+          if (semi > 0) {
+            // "R[1]=2 ; ! why": a remark after the ';' becomes a remark line of its own
+            remarkAfter = text.substring(semi + 1).strip();
+            body = body(text.substring(0, semi + 1), p + 1, line);
+          }
+        }
         List<TpToken> tokens = body.tokens;
         boolean terminated = body.terminated;
         StringBuilder raw = new StringBuilder(body.text);
         int firstLine = k - 1;
-        while (!terminated && k < end && isContinuation(lines[k])) {
+        while (!terminated && k < end && isContinuation(lines[k]) && !isRemarkContinuation(lines[k])) {
           // C motion: "  5:C P[2]" then "    :  P[3] 100mm/sec FINE ;" form one statement;
           // other statements a controller lists over several lines continue the same way.
           String cont = lines[k];
@@ -607,7 +644,7 @@ public final class LsReader {
             }
           }
           if (!terminated) {
-            diags.add(Diagnostic.error(file, line, "expected ';' at the end of the line"));
+            mend(line, "no ';' at the end of the line: read as if it were there");
           }
         } catch (TpSyntaxError e) {
           String rawText = stripSemicolon(raw.toString().strip());
@@ -645,7 +682,50 @@ public final class LsReader {
         instructions.add(in);
         sourceLines.add(line);
         statementStart.add(line - 1);
+        if (remarkAfter != null) {
+          mend(line, "a remark after ';': kept as remark line " + (instructions.size() + 1));
+          // as a '!' line keeps the text after the '!' (its leading space too)
+          String r = remarkAfter.startsWith("//") ? remarkAfter.substring(2) : remarkAfter.substring(1);
+          instructions.add(new Instruction.Comment(stripSemicolon(r.stripTrailing())));
+          sourceLines.add(line);
+          statementStart.add(line - 1);
+        }
       }
+    }
+
+    /**
+     * A warning for text a controller would not write and the offline converter mends. Saved
+     * unedited, the file is written back as read; an edit writes its lines numbered afresh.
+     */
+    private void mend(int line, String what) {
+      diags.add(Diagnostic.warning(file, line, "mended: " + what));
+    }
+
+    /** The index of a ';' followed only by a remark ({@code ! ...} or {@code // ...}), or -1. */
+    private static int remarkSemicolon(String text, int from) {
+      boolean quoted = false;
+      int depth = 0;
+      for (int i = from; i < text.length(); i++) {
+        char c = text.charAt(i);
+        if (c == '\'' || c == '"') {
+          quoted = !quoted;
+        } else if (!quoted && c == '[') {
+          depth++;
+        } else if (!quoted && c == ']') {
+          depth--;
+        } else if (!quoted && depth == 0 && c == ';') {
+          String rest = text.substring(i + 1).strip();
+          return rest.startsWith("!") || rest.startsWith("//") ? i : -1;
+        }
+      }
+      return -1;
+    }
+
+    /** A ':' line holding a remark ({@code "    :  ! why ;"}): a line of its own, never the rest of a statement. */
+    private static boolean isRemarkContinuation(String text) {
+      int colon = text.indexOf(':');
+      int p = skipSpaces(text, colon + 1);
+      return p < text.length() && text.charAt(p) == '!';
     }
 
     private record Body(List<TpToken> tokens, boolean terminated, String text) {}

@@ -101,15 +101,78 @@ public final class LsWriter {
     if (program.positions().equals(was.positions())) {
       src.tail().forEach(sb::append);
     } else {
-      StringBuilder pos = new StringBuilder("/POS\n");
-      for (LocalPosition p : program.positions().values()) {
-        position(p, pos);
-      }
-      pos.append("/END\n");
-      sb.append(pos.toString().replace("\n", eol));
+      positionsKeepingSource(program, was, src.tail(), eol, sb);
     }
     return sb.toString();
   }
+
+  /**
+   * /POS of an edited program read from a file: every block the edit did not change keeps its
+   * text, and so does every block the model does not hold (a SCARA or rail position, one never
+   * taught, another group's): nothing RobotRun cannot hold is lost. Changed and new positions are
+   * laid out afresh; a deleted one is left out.
+   */
+  private static void positionsKeepingSource(Program program, Program was, List<String> tail, String eol,
+      StringBuilder sb) {
+    Map<Integer, LocalPosition> now = program.positions();
+    java.util.Set<Integer> written = new java.util.HashSet<>();
+    StringBuilder out = new StringBuilder();
+    int k = 0;
+    // the /POS header line (when there is one) as read
+    if (k < tail.size() && tail.get(k).strip().toUpperCase(java.util.Locale.ROOT).startsWith("/POS")) {
+      out.append(tail.get(k++));
+    } else {
+      out.append("/POS").append(eol);
+    }
+    while (k < tail.size()) {
+      String line = tail.get(k);
+      String t = line.strip();
+      java.util.regex.Matcher m = BLOCK_START.matcher(t);
+      if (t.toUpperCase(java.util.Locale.ROOT).startsWith("/END")) {
+        break;
+      }
+      if (!m.lookingAt()) {
+        out.append(line);
+        k++;
+        continue;
+      }
+      int n = Integer.parseInt(m.group(1));
+      int end = k;
+      while (end < tail.size() && !tail.get(end).strip().startsWith("};")) {
+        end++;
+      }
+      end = Math.min(end + 1, tail.size());
+      LocalPosition p = now.get(n);
+      boolean keep = p == null ? !was.positions().containsKey(n) : p.equals(was.positions().get(n));
+      if (keep) {
+        for (int j = k; j < end; j++) {
+          out.append(tail.get(j));
+        }
+      } else if (p != null) {
+        StringBuilder one = new StringBuilder();
+        position(p, one);
+        out.append(one.toString().replace("\n", eol));
+      }
+      written.add(n);
+      k = end;
+    }
+    for (LocalPosition p : now.values()) {
+      if (!written.contains(p.number())) {
+        StringBuilder one = new StringBuilder();
+        position(p, one);
+        out.append(one.toString().replace("\n", eol));
+      }
+    }
+    for (; k < tail.size(); k++) {
+      out.append(tail.get(k));
+    }
+    if (!out.toString().contains("/END")) {
+      out.append("/END").append(eol);
+    }
+    sb.append(out);
+  }
+
+  private static final java.util.regex.Pattern BLOCK_START = java.util.regex.Pattern.compile("P\\[(\\d{1,9})");
 
   private static Map<String, String> withoutLineCount(Map<String, String> attrs) {
     Map<String, String> m = new java.util.LinkedHashMap<>(attrs);
@@ -304,6 +367,17 @@ public final class LsWriter {
     }
   }
 
+  /** One term of a position sum: PR[j], P[j], LPOS or JPOS. */
+  private static void posTerm(Instruction.PosSource s, StringBuilder sb) {
+    switch (s) {
+      case Instruction.FromPosReg f -> item("PR", f.register(), sb);
+      case Instruction.FromLocal f -> sb.append("P[").append(f.number()).append(comment(f.comment())).append(']');
+      case Instruction.CurrentLpos c -> sb.append("LPOS");
+      case Instruction.CurrentJpos c -> sb.append("JPOS");
+      default -> throw new IllegalArgumentException("not a position term: " + s);
+    }
+  }
+
   /** The statement text between the line prefix and the closing ';'. */
   static void statement(Instruction in, StringBuilder sb) {
     switch (in) {
@@ -324,7 +398,14 @@ public final class LsWriter {
           case Instruction.FromFrame f -> {
             sb.append(f.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
             index(f.frame(), sb);
-            sb.append(']');
+            sb.append(comment(f.comment())).append(']');
+          }
+          case Instruction.PosSum p -> {
+            posTerm(p.first(), sb);
+            for (Instruction.PosTerm t : p.rest()) {
+              sb.append(t.add() ? '+' : '-');
+              posTerm(t.term(), sb);
+            }
           }
           case Instruction.PosArithmetic p -> {
             item("PR", p.left(), sb);
@@ -336,23 +417,25 @@ public final class LsWriter {
       case Instruction.AssignPosElement a -> {
         sb.append("PR[");
         index(a.register().index(), sb);
-        sb.append(',').append(a.element()).append(comment(a.register().comment())).append("]=");
+        sb.append(',');
+        index(a.element(), sb);
+        sb.append(comment(a.register().comment())).append("]=");
         expr(a.value(), sb);
       }
       case Instruction.SelectFrame s -> {
-        sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME_NUM=" : "UTOOL_NUM=");
+        sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME_NUM" : "UTOOL_NUM").append(s.groupWritten() ? "[GP1]=" : "=");
         numberOrRegister(s.number(), sb);
       }
       case Instruction.SetFrame s -> {
         sb.append(s.kind() == Instruction.FrameKind.USER ? "UFRAME[" : "UTOOL[");
         index(s.frame(), sb);
-        sb.append("]=");
+        sb.append(comment(s.comment())).append("]=");
         item("PR", s.register(), sb);
       }
       case Instruction.Payload p -> {
         sb.append("PAYLOAD[");
         index(p.schedule(), sb);
-        sb.append(']');
+        sb.append(comment(p.comment())).append(']');
       }
       case Instruction.Label l -> sb.append("LBL[").append(l.number()).append(comment(l.comment())).append(']');
       case Instruction.Jump j -> branch(j, sb);
@@ -372,6 +455,12 @@ public final class LsWriter {
         expr(f.condition(), sb);
         sb.append(',');
         branch(f.branch(), sb);
+      }
+      case Instruction.IfAction f -> {
+        sb.append("IF ");
+        expr(f.condition(), sb);
+        sb.append(',');
+        statement(f.action(), sb);
       }
       case Instruction.IfThen f -> {
         sb.append("IF ");
@@ -465,7 +554,19 @@ public final class LsWriter {
           sb.append(']');
         }
       }
-      case Instruction.MacroCall c -> sb.append(c.name());
+      case Instruction.MacroCall c -> {
+        sb.append(c.name());
+        if (!c.args().isEmpty()) {
+          sb.append('(');
+          for (int i = 0; i < c.args().size(); i++) {
+            if (i > 0) {
+              sb.append(',');
+            }
+            expr(c.args().get(i), sb);
+          }
+          sb.append(')');
+        }
+      }
       case Instruction.SetSysVar s -> {
         sb.append(s.name()).append('=');
         expr(s.value(), sb);
@@ -485,7 +586,7 @@ public final class LsWriter {
       case Instruction.UserAlarm u -> {
         sb.append("UALM[");
         index(u.number(), sb);
-        sb.append(']');
+        sb.append(comment(u.comment())).append(']');
       }
       case Instruction.SetOverride o -> {
         sb.append("OVERRIDE=");
@@ -574,7 +675,9 @@ public final class LsWriter {
       case Expr.PosElement p -> {
         sb.append("PR[");
         index(p.register().index(), sb);
-        sb.append(',').append(p.element()).append(comment(p.register().comment())).append(']');
+        sb.append(',');
+        index(p.element(), sb);
+        sb.append(comment(p.register().comment())).append(']');
       }
       case Expr.Io io -> item(io.kind().name(), io.port(), sb);
       case Expr.Timer t -> item("TIMER", t.timer(), sb);
@@ -642,6 +745,7 @@ public final class LsWriter {
     switch (i) {
       case Index.Direct d -> sb.append(d.value());
       case Index.Indirect r -> sb.append("R[").append(r.register()).append(comment(r.comment())).append(']');
+      case Index.ViaArg a -> sb.append("AR[").append(a.arg()).append(']');
     }
   }
 

@@ -8,7 +8,6 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Locale;
 import org.robotrun.collision.Obb;
 
 /**
@@ -157,6 +156,6 @@ public final class ObbPairsCsv {
   }
 
   private static String format(double v) {
-    return v == Math.rint(v) && Math.abs(v) < 1e15 ? String.format(Locale.ROOT, "%d", (long) v) : Double.toString(v);
+    return org.robotrun.math.DecimalText.plain(v);
   }
 }

@@ -12,8 +12,6 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.function.Consumer;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import org.robotrun.io.LocatedJson.JArray;
 import org.robotrun.io.LocatedJson.JBool;
 import org.robotrun.io.LocatedJson.JNumber;
@@ -39,7 +37,6 @@ public final class ProductionJson extends JsonFieldReader {
       "bgScanMs", "plc", "runStartsFromPlc");
   private static final Set<String> REF = Set.of("number", "comment", "jointsDeg", "toleranceDeg", "output");
   private static final Set<String> STEP = Set.of("waitFor", "state", "delayMs", "set", "note");
-  private static final Pattern SIGNAL = Pattern.compile("([A-Z]+)\\[(\\d{1,4})\\]");
   /** Highest program number a PNS/RSR name can carry (four digits). */
   static final int MAX_PROGRAM_NUMBER = 9999;
 
@@ -290,16 +287,16 @@ public final class ProductionJson extends JsonFieldReader {
 
   /** "UI[6]" as a signal of one of {@code kinds} (null: any kind) within its default range; null after an error. */
   private Signal signal(String text, int line, String path, Set<IoKind> kinds) {
-    Matcher m = SIGNAL.matcher(text.strip().toUpperCase(Locale.ROOT));
+    Optional<org.robotrun.program.IoAddress> m = org.robotrun.program.IoAddress.parse(text);
     String expected = kinds == null ? "a signal such as \"UO[1]\" or \"DO[5]\""
         : "a signal " + kinds.stream().map(k -> k.name() + "[i]").sorted().toList();
-    if (!m.matches()) {
+    if (m.isEmpty()) {
       error(line, path, "expected " + expected + ", got \"" + text + "\"");
       return null;
     }
     IoKind kind;
     try {
-      kind = IoRanges.kind(m.group(1));
+      kind = IoRanges.kind(m.get().kind());
     } catch (IllegalArgumentException e) {
       error(line, path, e.getMessage());
       return null;
@@ -308,7 +305,7 @@ public final class ProductionJson extends JsonFieldReader {
       error(line, path, "expected " + expected + ", got \"" + text + "\"");
       return null;
     }
-    int i = Integer.parseInt(m.group(2));
+    int i = m.get().index();
     int size = ranges.size(kind);
     if (i < 1 || i > size) {
       error(line, path, kind + "[" + i + "]: index out of range (expected 1.." + size + ")");

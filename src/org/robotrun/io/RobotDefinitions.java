@@ -11,7 +11,9 @@ import java.util.Optional;
 import org.robotrun.math.Angles;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
+import java.nio.file.Path;
 import org.robotrun.robot.JointSpec;
+import org.robotrun.robot.LinkMesh;
 import org.robotrun.robot.LinkShape;
 import org.robotrun.robot.LinkSpec;
 import org.robotrun.robot.OpwParameters;
@@ -29,14 +31,27 @@ public final class RobotDefinitions {
 
   private RobotDefinitions() {}
 
-  /** Loads a robot shipped in the jar by its id, e.g. "lrmate200id". */
+  /**
+   * Loads a robot shipped in the jar by its id, e.g. "lrmate200id", or, when {@code id} is a
+   * file reference ({@link #isFileReference}, an absolute path as scenarios resolve it), that file.
+   */
   public static RobotModel load(String id) {
+    if (isFileReference(id)) {
+      return loadFile(Path.of(id));
+    }
     String path = "/robots/" + id + ".json";
     try (InputStream in = RobotDefinitions.class.getResourceAsStream(path)) {
       if (in == null) {
         throw new FileFormatException(path, 0, "no robot definition named '" + id + "'");
       }
-      return parse(path, JSON.readTree(in));
+      return parse(path, JSON.readTree(in), file -> {
+        try (InputStream m = RobotDefinitions.class.getResourceAsStream("/robots/" + file)) {
+          if (m == null) {
+            throw new FileFormatException(path, 0, "mesh '" + file + "' is not in the jar");
+          }
+          return StlReader.parse("/robots/" + file, m.readAllBytes(), 1);
+        }
+      });
     } catch (JsonParseException e) {
       throw new FileFormatException(path, e.getLocation().getLineNr(), e.getOriginalMessage());
     } catch (IOException e) {
@@ -44,12 +59,64 @@ public final class RobotDefinitions {
     }
   }
 
+  /**
+   * Whether a scenario's {@code model} names a robot file (RobotRun's JSON or a URDF) rather
+   * than a robot of the library.
+   */
+  public static boolean isFileReference(String model) {
+    String lower = model.toLowerCase(java.util.Locale.ROOT);
+    return lower.endsWith(".json") || lower.endsWith(".urdf");
+  }
+
+  /**
+   * Loads a robot from a file: RobotRun's JSON (display meshes named in it are read relative
+   * to its folder) or a URDF (imported in memory, as {@code robotrun robot import} would).
+   *
+   * @throws FileFormatException naming the file, line or field, and what was expected
+   */
+  public static RobotModel loadFile(Path file) {
+    String name = file.toString();
+    if (name.toLowerCase(java.util.Locale.ROOT).endsWith(".urdf")) {
+      return UrdfImporter.importRobot(file, java.util.Map.of()).model();
+    }
+    byte[] bytes;
+    try {
+      bytes = BoundedFiles.read(file, MAX_FILE_BYTES, "robot definitions");
+    } catch (UnreadableFileException e) {
+      throw new FileFormatException(name, 0, e.getMessage());
+    } catch (IOException e) {
+      throw new FileFormatException(name, 0, "cannot read: " + e.getMessage());
+    }
+    Path dir = file.toAbsolutePath().normalize().getParent();
+    try {
+      return parse(name, JSON.readTree(bytes), mesh -> {
+        Path p = Path.of(mesh);
+        if (p.isAbsolute() || mesh.contains("..")) {
+          throw new FileFormatException(name, 0, "mesh '" + mesh + "': expected a path relative to the robot file's folder");
+        }
+        return StlReader.read(dir.resolve(p), 1);
+      });
+    } catch (JsonParseException e) {
+      throw new FileFormatException(name, e.getLocation().getLineNr(), e.getOriginalMessage());
+    } catch (IOException e) {
+      throw new FileFormatException(name, 0, e.getMessage());
+    }
+  }
+
+  /** Largest robot definition file read (robot JSON is a few kB; meshes are separate files). */
+  public static final long MAX_FILE_BYTES = 4L << 20;
+
+  /** Reads the mesh a robot file names (relative path, mm, binary or ASCII STL). */
+  interface MeshFiles {
+    org.robotrun.world.TriangleMesh read(String relativePath) throws IOException;
+  }
+
   /** The default robot. */
   public static RobotModel defaultRobot() {
     return load(DEFAULT_ROBOT);
   }
 
-  static RobotModel parse(String source, JsonNode root) {
+  static RobotModel parse(String source, JsonNode root, MeshFiles meshFiles) throws IOException {
     Reader r = new Reader(source);
     List<JointSpec> joints = new ArrayList<>();
     JsonNode js = r.array(root, "joints");
@@ -94,7 +161,21 @@ public final class RobotDefinitions {
           default -> throw new FileFormatException(source, 0, sat + ".type: expected box or cylinder, got '" + type + "'");
         });
       }
-      links.add(new LinkSpec(r.text(l, "name", at), shapes));
+      List<LinkMesh> meshes = new ArrayList<>();
+      if (l.has("meshes")) {
+        JsonNode ms = r.array(l, "meshes");
+        for (int k = 0; k < ms.size(); k++) {
+          JsonNode m = ms.get(k);
+          String mat = at + ".meshes[" + k + "]";
+          String file = r.text(m, "file", mat);
+          String color = m.has("color") ? r.text(m, "color", mat) : "body";
+          if (!color.matches("body|joint|base|flange|#[0-9a-fA-F]{6}")) {
+            throw new FileFormatException(source, 0, mat + ".color: expected body, joint, base, flange or #rrggbb, got '" + color + "'");
+          }
+          meshes.add(new LinkMesh(source + ":" + file, meshFiles.read(file).corners(), color));
+        }
+      }
+      links.add(new LinkSpec(r.text(l, "name", at), shapes, meshes));
     }
 
     Optional<OpwParameters> opw = Optional.empty();

@@ -53,6 +53,13 @@ public final class ScenarioReader {
   /** The format this reader understands. */
   public static final int FORMAT = 1;
 
+  /** Longest name of a robot or an object (a robot's is also its programs folder's, docs/workspace.md). */
+  public static final int MAX_NAME_LENGTH = 64;
+  /** Longest macro name (the controller's macro table holds up to 36 characters). */
+  public static final int MAX_MACRO_NAME = 36;
+  /** Longest scenario name (a window title, a hand-in's manifest). */
+  public static final int MAX_SCENARIO_NAME = 200;
+
   /** Largest scenario file accepted (meshes are separate files). */
   public static final long MAX_FILE_BYTES = 16L << 20;
   /** Largest position coordinate or size, in mm (the bound every position entry shares). */
@@ -74,12 +81,12 @@ public final class ScenarioReader {
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
       "onCollision", "state", "mode", "wiring", "production", VisionJson.KEY);
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
-      "io", "userAlarms", "programs", "mainProgram", "macros");
+      "io", "userAlarms", "programs", "mainProgram", "macros", "registers", "frames", "mode");
   /** Highest UALM[i] a scenario may give a text for. */
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
-      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent");
+      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent", "touchable");
   private static final Map<String, Set<String>> SHAPE_FIELDS = Map.of(
       "box", Set.of("size"), "cylinder", Set.of("radius", "height"), "mesh", Set.of("file", "scale"));
   private static final Set<String> POSE = Set.of("x", "y", "z", "w", "p", "r");
@@ -101,15 +108,37 @@ public final class ScenarioReader {
   }
 
   /**
+   * Loads a scenario file with its {@code "state"} section, checked as {@link #read} checks it
+   * ({@code robotrun run --scenario} applies the state to every robot).
+   */
+  public static CellLoad readWithState(Path file) {
+    return readCell(file, false);
+  }
+
+  /**
    * Loads a workspace's {@code cell.json}: a scenario plus its {@code "state"} section. The
    * programs live in the workspace's {@code programs/} folder, so {@code mainProgram} need not be
    * listed in {@code "programs"}.
    */
   public static CellLoad readCell(Path file) {
-    return readCell(file, true);
+    return readCell(file, true, false);
+  }
+
+  /**
+   * Loads a hand-in's {@code cell.json} (or another cell file of a hand-in) as
+   * {@link #readCell(Path)} does, with every file it names (meshes, programs) read only from
+   * inside the file's own folder: a path that leaves it, or a link out of it, is an error naming
+   * the field (a hand-in must not make the grader read its machine's files).
+   */
+  public static CellLoad readHandInCell(Path file) {
+    return readCell(file, true, true);
   }
 
   private static CellLoad readCell(Path file, boolean workspace) {
+    return readCell(file, workspace, false);
+  }
+
+  private static CellLoad readCell(Path file, boolean workspace, boolean confined) {
     String name = file.toString();
     String text;
     try {
@@ -120,7 +149,9 @@ public final class ScenarioReader {
       return fail(name, e.line(), e.reason());
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
-    return new Session(name, dir, workspace).read(text);
+    Session session = new Session(name, dir, workspace);
+    session.confined = confined;
+    return session.read(text);
   }
 
   private static CellLoad fail(String file, int line, String message) {
@@ -131,10 +162,14 @@ public final class ScenarioReader {
   private static final class Session extends JsonFieldReader {
     private final Path dir;
     private final Map<String, RobotModel> models = new HashMap<>();
+    // What RobotSetup.modelId holds for each model text: the library id, or the robot file's absolute path.
+    private final Map<String, String> modelRefs = new HashMap<>();
     /** Where each name was first defined, for duplicate messages. */
     private final Map<String, String> definedAt = new HashMap<>();
 
     private final boolean workspace;
+    /** Whether the files named must lie inside {@link #dir} (a hand-in's cell). */
+    private boolean confined;
 
     Session(String file, Path dir, boolean workspace) {
       super(file);
@@ -159,25 +194,41 @@ public final class ScenarioReader {
       }
       checkFormat(top);
       String title = string(top, "name", "", false).orElse("");
+      if (title.length() > MAX_SCENARIO_NAME) {
+        error(top.keyLines().getOrDefault("name", top.line()), "name", "a scenario name is at most " + MAX_SCENARIO_NAME
+            + " characters, got " + title.length());
+      }
       String description = string(top, "description", "", false).orElse("");
       List<RobotSetup> robots = robots(top);
       List<WorldObject> objects = objects(top);
       List<Path> programs = programs(top, "");
       Optional<String> mainProgram = mainProgram(top, "");
-      TreeMap<Integer, Double> registers = registers(top);
+      TreeMap<Integer, Double> registers = registers(top, "");
       TreeMap<Integer, Transform> toolFrames = new TreeMap<>();
       TreeMap<Integer, Transform> userFrames = new TreeMap<>();
-      frames(top, toolFrames, userFrames);
+      frames(top, "", toolFrames, userFrames);
+      firstRobotOnce(top);
       Optional<CameraView> camera = camera(top);
       CollisionResponse onCollision = string(top, "onCollision", "", false).map(s -> onCollision(s, top))
           .orElse(CollisionResponse.ALARM);
-      Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top));
+      Optional<String> mode = string(top, "mode", "", false).map(m -> mode(m, top, ""));
       Wiring wiring = WiringJson.read(this, top, robots);
       ProductionSetup production = ProductionJson.read(top, file, robots, errors::add);
       SavedState state = null;
       LocatedJson stateJson = top.members().get("state");
       if (stateJson instanceof JObject so) {
         state = StateJson.read(so, this::error);
+        // state.robots holds each later robot's state: one the cell lacks would be dropped at the next save
+        if (so.members().get("robots") instanceof JObject saved) {
+          List<String> later = robots.stream().skip(1).map(RobotSetup::name).toList();
+          for (String name : saved.members().keySet()) {
+            if (!later.contains(name)) {
+              error(saved.keyLines().getOrDefault(name, saved.line()), "state.robots." + name, "no robot '" + name
+                  + "' after the first in this cell" + (later.isEmpty() ? " (it has one robot)" : " (robots after the first: "
+                  + String.join(", ", later) + ")") + "; its saved state would be lost at the next save");
+            }
+          }
+        }
       } else if (stateJson != null) {
         error(stateJson.line(), "state", "expected an object, got " + stateJson.describe());
       }
@@ -239,7 +290,13 @@ public final class ScenarioReader {
           error(nameLine, at + ".name", "robot names '" + clash + "' and '" + robotName
               + "' would share one programs folder in a workspace; give the robots names that differ in letters or digits");
         }
-        Optional<RobotModel> model = string(r, "model", at, true).flatMap(m -> model(m, r, at));
+        if (i > 0 && folder.endsWith(".ls")) {
+          // programs/LOADER.LS/ would stand where the first robot's program LOADER.LS is saved: every save would fail
+          error(nameLine, at + ".name", "robot name '" + robotName + "' ends in .LS: its programs folder programs/"
+              + Workspace.robotFolder(robotName) + "/ would collide with a program file; give the robot another name");
+        }
+        Optional<String> modelText = string(r, "model", at, true);
+        Optional<RobotModel> model = modelText.flatMap(m -> model(m, r, at));
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
         double[] jointsRad = joints(r, at, model);
@@ -249,9 +306,15 @@ public final class ScenarioReader {
         List<Path> ownPrograms = programs(r, at);
         Optional<String> ownMain = mainProgram(r, at);
         List<RobotSetup.Macro> macros = macros(r, at);
+        TreeMap<Integer, Double> ownRegisters = registers(r, at);
+        TreeMap<Integer, Transform> ownTools = new TreeMap<>();
+        TreeMap<Integer, Transform> ownUsers = new TreeMap<>();
+        frames(r, at, ownTools, ownUsers);
+        Optional<String> ownMode = string(r, "mode", at, false).map(m -> mode(m, r, at));
         if (model.isPresent() && X_CB != null && tool != null && jointsRad != null && io != null && ioSizes != null) {
-          out.add(new RobotSetup(robotName, model.get().id(), X_CB, tool,
-              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros));
+          out.add(new RobotSetup(robotName, modelRefs.get(modelText.get()), X_CB, tool,
+              Arrays.stream(jointsRad).boxed().toList(), io, ioSizes, userAlarms, ownPrograms, ownMain, macros,
+              ownRegisters, ownTools, ownUsers, ownMode));
         }
       }
       return out;
@@ -313,7 +376,11 @@ public final class ScenarioReader {
         Optional<String> name = string(m, "name", path, true);
         Optional<String> program = string(m, "program", path, true);
         boolean ok = name.isPresent() && program.isPresent();
-        if (name.isPresent() && !name.get().matches("[A-Za-z0-9_]+( [A-Za-z0-9_]+)*")) {
+        if (name.isPresent() && name.get().length() > MAX_MACRO_NAME) {
+          error(m.members().get("name").line(), path + ".name", "a macro name is at most " + MAX_MACRO_NAME
+              + " characters, got " + name.get().length());
+          ok = false;
+        } else if (name.isPresent() && !isMacroName(name.get())) {
           error(m.members().get("name").line(), path + ".name", "expected a macro name: words of letters, digits and '_' "
               + "separated by one space (\"HAND1 OPEN\"), got \"" + name.get() + "\"");
           ok = false;
@@ -331,6 +398,14 @@ public final class ScenarioReader {
         }
       }
       return out;
+    }
+
+    /** Words of letters, digits and '_' separated by one space, checked without a regular expression (no recursion). */
+    private static boolean isMacroName(String n) {
+      if (n.isEmpty() || n.startsWith(" ") || n.endsWith(" ") || n.contains("  ")) {
+        return false;
+      }
+      return n.chars().allMatch(c -> c == ' ' || c == '_' || c < 128 && Character.isLetterOrDigit(c));
     }
 
     /** The robot's {@code "userAlarms"}: UALM[i] texts by number. */
@@ -405,13 +480,38 @@ public final class ScenarioReader {
       return (int) n.value();
     }
 
+    /** The model a robot names: a library id, or a robot file (.json, .urdf) relative to the scenario. */
     private Optional<RobotModel> model(String id, JObject r, String at) {
       if (models.containsKey(id)) {
         return Optional.of(models.get(id));
       }
+      if (RobotDefinitions.isFileReference(id)) {
+        int line = r.members().get("model").line();
+        if (confined) {
+          // A hand-in carries no robot files (the hand-in reader takes cell.json, programs/ and scenarios/ only),
+          // and a robot file or URDF names meshes of its own: a hand-in's robot comes from the library.
+          error(line, at + ".model", "robot file '" + TerminalText.safe(id.length() > 100 ? id.substring(0, 100) + "..." : id)
+              + "': a hand-in names its robot by a library id (robotrun robots lists them), not by a file");
+          return Optional.empty();
+        }
+        Path file = resolve(id, line, at + ".model");
+        if (file == null) {
+          return Optional.empty();
+        }
+        try {
+          RobotModel m = RobotDefinitions.loadFile(file);
+          models.put(id, m);
+          modelRefs.put(id, file.toString());
+          return Optional.of(m);
+        } catch (FileFormatException e) {
+          error(r.members().get("model").line(), at + ".model", "robot file '" + id + "': " + e.getMessage());
+          return Optional.empty();
+        }
+      }
       try {
         RobotModel m = RobotDefinitions.load(id);
         models.put(id, m);
+        modelRefs.put(id, m.id());
         return Optional.of(m);
       } catch (FileFormatException e) {
         error(r.members().get("model").line(), at + ".model", "unknown robot model '" + id + "' (e.g. \""
@@ -420,12 +520,30 @@ public final class ScenarioReader {
       }
     }
 
-    private String mode(String s, JObject top) {
+    private String mode(String s, JObject o, String where) {
       if (!Scenario.MODES.contains(s)) {
-        error(top.members().get("mode").line(), "mode", "unknown mode '" + s + "': expected one of " + Scenario.MODES);
+        error(o.members().get("mode").line(), join(where, "mode"), "unknown mode '" + s + "': expected one of "
+            + Scenario.MODES);
         return "T1";
       }
       return s;
+    }
+
+    /**
+     * The first robot's registers and frames are the top-level ones or its own, not both: two
+     * places for one robot's presets would leave which one wins to the reader.
+     */
+    private void firstRobotOnce(JObject top) {
+      if (!(top.members().get("robots") instanceof JArray arr) || arr.items().isEmpty()
+          || !(arr.items().get(0) instanceof JObject r0)) {
+        return;
+      }
+      for (String key : List.of("registers", "frames")) {
+        if (top.members().containsKey(key) && r0.members().containsKey(key)) {
+          error(r0.keyLines().get(key), "robots[0]." + key, "the first robot's " + key + " are given at the top level too (\""
+              + key + "\" at line " + top.keyLines().get(key) + "): give them in one place");
+        }
+      }
     }
 
     private CollisionResponse onCollision(String s, JObject top) {
@@ -530,6 +648,7 @@ public final class ScenarioReader {
           return rgb.orElse(Rgb.GREY);
         }).orElse(Rgb.GREY);
         Transform pose = pose(o, "pose", at);
+        boolean touchable = touchable(o, at);
         Optional<String> parent = string(o, "parent", at, false);
         // Checked here, not with the other parents: the world object itself refuses it.
         boolean ownParent = objName.isPresent() && parent.isPresent() && parent.get().equals(objName.get());
@@ -543,11 +662,23 @@ public final class ScenarioReader {
           }
         }
         if (objName.isPresent() && kind.isPresent() && shape != null && pose != null && !ownParent) {
-          out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent));
+          out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent).withTouchable(touchable));
         }
       }
       checkParents(kinds, parented);
       return out;
+    }
+
+    private boolean touchable(JObject o, String at) {
+      LocatedJson v = o.members().get("touchable");
+      if (v == null) {
+        return false;
+      }
+      if (!(v instanceof LocatedJson.JBool b)) {
+        error(v.line(), at + ".touchable", "expected true or false, got " + v.describe());
+        return false;
+      }
+      return b.value();
     }
 
     private void checkParents(Map<String, ObjectKind> kinds, List<Parented> parented) {
@@ -718,12 +849,29 @@ public final class ScenarioReader {
 
     /** {@code rel} against the scenario's folder, or null with an error when it is not a path. */
     private Path resolve(String rel, int line, String path) {
+      Path p;
       try {
-        return dir.resolve(rel).normalize();
+        p = dir.resolve(rel).normalize();
       } catch (InvalidPathException e) {
         error(line, path, "not a valid path: \"" + rel + "\"");
         return null;
       }
+      if (confined && (!p.startsWith(dir) || throughLink(p))) {
+        error(line, path, "\"" + TerminalText.safe(rel.length() > 100 ? rel.substring(0, 100) + "..." : rel)
+            + "\" is outside the hand-in: a hand-in's files are read only from inside it");
+        return null;
+      }
+      return p;
+    }
+
+    /** Whether a folder or file on the way from {@link #dir} to {@code p} is a symbolic link. */
+    private boolean throughLink(Path p) {
+      for (Path q = p; q != null && q.startsWith(dir) && !q.equals(dir); q = q.getParent()) {
+        if (Files.isSymbolicLink(q)) {
+          return true;
+        }
+      }
+      return false;
     }
 
     private static String programName(String path) {
@@ -732,14 +880,15 @@ public final class ScenarioReader {
       return dot < 0 ? base : base.substring(0, dot);
     }
 
-    private TreeMap<Integer, Double> registers(JObject top) {
+    /** The {@code "registers"} of the top level ({@code where} "") or of a robot ("robots[1]"). */
+    private TreeMap<Integer, Double> registers(JObject top, String where) {
       TreeMap<Integer, Double> out = new TreeMap<>();
-      JObject regs = member(top, "registers", "", null, false);
+      JObject regs = member(top, "registers", where, null, false);
       if (regs == null) {
         return out;
       }
       for (Map.Entry<String, LocatedJson> e : regs.members().entrySet()) {
-        String at = "registers." + e.getKey();
+        String at = join(where, "registers." + e.getKey());
         Integer index = index(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
         Double v = finite(e.getValue(), at);
         if (index != null && v != null) {
@@ -749,20 +898,21 @@ public final class ScenarioReader {
       return out;
     }
 
-    private void frames(JObject top, Map<Integer, Transform> tool, Map<Integer, Transform> user) {
-      JObject frames = member(top, "frames", "", Set.of("tool", "user"), false);
+    /** The {@code "frames"} of the top level ({@code where} "") or of a robot ("robots[1]"). */
+    private void frames(JObject top, String where, Map<Integer, Transform> tool, Map<Integer, Transform> user) {
+      JObject frames = member(top, "frames", where, Set.of("tool", "user"), false);
       if (frames == null) {
         return;
       }
       for (String kind : List.of("tool", "user")) {
-        JObject set = member(frames, kind, "frames", null, false);
+        JObject set = member(frames, kind, join(where, "frames"), null, false);
         if (set == null) {
           continue;
         }
         for (String key : set.members().keySet()) {
-          String at = "frames." + kind + "." + key;
+          String at = join(where, "frames." + kind + "." + key);
           Integer n = index(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
-          Transform pose = pose(set, key, "frames." + kind);
+          Transform pose = pose(set, key, join(where, "frames." + kind));
           if (n != null && pose != null) {
             (kind.equals("tool") ? tool : user).put(n, pose);
           }
@@ -795,6 +945,10 @@ public final class ScenarioReader {
     // ---- typed access that records errors ---------------------------------------------------
 
     private void defineName(String name, String path, int line) {
+      if (name.length() > MAX_NAME_LENGTH) {
+        error(line, path, "a name is at most " + MAX_NAME_LENGTH + " characters, got " + name.length());
+        return;
+      }
       String first = definedAt.putIfAbsent(name, path + " (line " + line + ")");
       if (first != null) {
         error(line, path, "duplicate name '" + name + "': already used by " + first.replace(".name", ""));

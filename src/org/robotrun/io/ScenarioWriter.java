@@ -6,9 +6,6 @@ import com.fasterxml.jackson.core.util.DefaultIndenter;
 import com.fasterxml.jackson.core.util.DefaultPrettyPrinter;
 import java.io.IOException;
 import java.io.StringWriter;
-import java.math.BigDecimal;
-import java.math.MathContext;
-import java.math.RoundingMode;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.Map;
@@ -118,7 +115,8 @@ public final class ScenarioWriter {
       for (RobotSetup r : s.robots()) {
         g.writeStartObject();
         g.writeStringField("name", r.name());
-        g.writeStringField("model", r.modelId());
+        // A robot file is named relative to the scenario, as programs are.
+        g.writeStringField("model", RobotDefinitions.isFileReference(r.modelId()) ? relative(dir, Path.of(r.modelId())) : r.modelId());
         pose(g, "basePose", r.X_CB());
         g.writeStringField("endEffector", r.endEffector().fileName());
         g.writeArrayFieldStart("jointsDeg");
@@ -166,6 +164,22 @@ public final class ScenarioWriter {
             g.writeEndObject();
           }
           g.writeEndArray();
+        }
+        if (!r.registers().isEmpty()) {
+          g.writeObjectFieldStart("registers");
+          for (Map.Entry<Integer, Double> e : r.registers().entrySet()) {
+            number(g, e.getKey().toString(), e.getValue());
+          }
+          g.writeEndObject();
+        }
+        if (!r.toolFrames().isEmpty() || !r.userFrames().isEmpty()) {
+          g.writeObjectFieldStart("frames");
+          frameSet(g, "tool", r.toolFrames());
+          frameSet(g, "user", r.userFrames());
+          g.writeEndObject();
+        }
+        if (r.mode().isPresent()) {
+          g.writeStringField("mode", r.mode().get());
         }
         g.writeEndObject();
       }
@@ -269,6 +283,9 @@ public final class ScenarioWriter {
     if (o.parent().isPresent()) {
       g.writeStringField("parent", o.parent().get());
     }
+    if (o.touchable()) {
+      g.writeBooleanField("touchable", true);
+    }
     g.writeEndObject();
   }
 
@@ -306,11 +323,7 @@ public final class ScenarioWriter {
   }
 
   private static String tidyText(double v) {
-    if (Math.abs(v) < 1e-12) {
-      return "0";
-    }
-    BigDecimal d = new BigDecimal(v).round(new MathContext(15, RoundingMode.HALF_EVEN)).stripTrailingZeros();
-    return d.signum() == 0 ? "0" : d.scale() <= 0 ? d.toBigInteger().toString() : d.toPlainString();
+    return org.robotrun.math.DecimalText.tidy(v);
   }
 
   private static String relative(Path dir, Path file) {

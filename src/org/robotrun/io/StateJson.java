@@ -2,9 +2,6 @@ package org.robotrun.io;
 
 import com.fasterxml.jackson.core.JsonGenerator;
 import java.io.IOException;
-import java.math.BigDecimal;
-import java.math.MathContext;
-import java.math.RoundingMode;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
@@ -63,7 +60,7 @@ final class StateJson {
         g.writeFieldName(e.getKey().toString());
         SavedState.Register r = e.getValue();
         // A real keeps a fraction in the file ("3.0"), so that it comes back as a real.
-        g.writeNumber(r.integer() ? Long.toString((long) r.value()) : realText(r.value()));
+        g.writeNumber(r.integer() ? Long.toString((long) r.value()) : exactRealText(r.value()));
       }
       g.writeEndObject();
     }
@@ -142,14 +139,22 @@ final class StateJson {
     g.writeNumber(realText(v));
   }
 
+  /**
+   * A register's real as the shortest text that reads back as the same double, always with a
+   * fraction or an exponent so it comes back as a real ("3.0", "0.1", "1.0E-320"): a saved
+   * value never changes (15 digits turned 1/3 into another number and 1e-320 into 0.0).
+   */
+  static String exactRealText(double v) {
+    return Double.toString(v);
+  }
+
   /** 15 significant digits, always with a fraction ("3.0"); exact for what the pendant enters. */
   private static String realText(double v) {
-    if (Math.abs(v) < 1e-12) {
-      return "0.0";
-    }
-    String t = new BigDecimal(v).round(new MathContext(15, RoundingMode.HALF_EVEN)).stripTrailingZeros().toPlainString();
-    return t.contains(".") ? t : t + ".0";
+    return org.robotrun.math.DecimalText.tidyReal(v);
   }
+
+  /** 2^53: every whole number up to it is exact in a double. */
+  static final double MAX_EXACT_INTEGER = 9007199254740992.0;
 
   // ---- reading --------------------------------------------------------------------------------
 
@@ -188,7 +193,8 @@ final class StateJson {
         if (!(v instanceof JNumber n) || !Double.isFinite(n.value())) {
           counting.add(v.line(), at, "expected a number, got " + v.describe());
         } else if (i != null) {
-          registers.put(i, new SavedState.Register(n.value(), n.integral() && Math.abs(n.value()) <= Integer.MAX_VALUE));
+          // an integer is written without a fraction; any whole number a double holds exactly comes back one
+          registers.put(i, new SavedState.Register(n.value(), n.integral() && Math.abs(n.value()) <= MAX_EXACT_INTEGER));
         }
       });
     }

@@ -31,6 +31,14 @@ public final class VisionJson extends JsonFieldReader {
   /** The section's key in the scenario file. */
   public static final String KEY = "vision";
 
+  /** Seeds are whole numbers below this in size: exact in a double, so written and read back unchanged. */
+  public static final double SEED_LIMIT = 9.0e15;
+
+  /** Whether {@code seed} is a seed {@code vision.seed} (and so {@code --seed}) takes: |seed| below {@link #SEED_LIMIT}. */
+  public static boolean isValidSeed(double seed) {
+    return seed == Math.rint(seed) && Math.abs(seed) < SEED_LIMIT;
+  }
+
   private static final Set<String> TOP = Set.of("seed", "cameras", "models", "processes", "placements");
   private static final Set<String> CAMERA = Set.of("name", "robot", "pose", "fovDeg", "imageSize", "searchWindow",
       "noise");
@@ -76,10 +84,10 @@ public final class VisionJson extends JsonFieldReader {
     long seed = 1;
     if (o.members().containsKey("seed")) {
       LocatedJson s = o.members().get("seed");
-      if (s instanceof JNumber n && n.integral() && Math.abs(n.value()) < 9.0e15) {
+      if (s instanceof JNumber n && n.integral() && isValidSeed(n.value())) {
         seed = (long) n.value();
       } else {
-        error(s.line(), KEY + ".seed", "expected a whole number, got " + s.describe());
+        error(s.line(), KEY + ".seed", "expected a whole number of at most 15 digits, got " + s.describe());
       }
     }
     World world = worldOf(objects);
@@ -446,7 +454,7 @@ public final class VisionJson extends JsonFieldReader {
   }
 
   private static String text(double v) {
-    return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
+    return org.robotrun.math.DecimalText.plain(v);
   }
 
   /** {@code [min, max]} with |values| ≤ limit; null with an error when bad. */
@@ -620,8 +628,7 @@ public final class VisionJson extends JsonFieldReader {
   }
 
   private static String tidy(double v) {
-    double r = Math.rint(v * 1e9) / 1e9;
-    return r == Math.rint(r) && Math.abs(r) < 1e15 ? Long.toString((long) r) : Double.toString(r);
+    return org.robotrun.math.DecimalText.plain(Math.rint(v * 1e9) / 1e9);
   }
 
   private static void pose(JsonGenerator g, String field, Transform t, NumberWriter number) throws IOException {

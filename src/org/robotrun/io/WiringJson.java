@@ -84,7 +84,9 @@ final class WiringJson {
     }
     String path = JsonFieldReader.join(at, key);
     int line = o.keyLines().getOrDefault(key, o.line());
-    Optional<Signal> s = Signal.parse(text.get());
+    // ROBOT.KIND[N], read by the one reader of I/O addresses
+    Optional<Signal> s = org.robotrun.program.IoAddress.parseOnRobot(text.get())
+        .map(a -> new Signal(a.robot(), a.address().kind(), a.address().index()));
     if (s.isEmpty()) {
       r.error(line, path, "expected a signal like \"robot1." + (output ? "DO" : "DI") + "[10]\", got \"" + text.get() + "\"");
       return Optional.empty();
@@ -103,16 +105,19 @@ final class WiringJson {
       r.error(line, path, e.getMessage());
       return Optional.empty();
     }
-    boolean isOutput = kind.writable() && kind != IoKind.F;
-    boolean isInput = !kind.writable();
+    // The controller's rule (docs/scenario-format.md): a wire runs from an output a program writes
+    // (DO, RO, GO) to an input only the outside writes (DI, RI, GI). UO/SO are driven by the
+    // controller itself, UI/SI by the PLC and the panel, AI/AO are analog: none is a wire's end.
+    boolean isOutput = kind == IoKind.DO || kind == IoKind.RO || kind == IoKind.GO;
+    boolean isInput = kind == IoKind.DI || kind == IoKind.RI || kind == IoKind.GI;
     if (output && !isOutput) {
-      r.error(line, path, sig + " is " + (kind == IoKind.F ? "a flag" : "an input")
-          + ": a wire runs from an output (" + names(true) + ")");
+      r.error(line, path, sig + " is " + what(kind) + ": a wire runs from an output (" + names(true) + ")");
       return Optional.empty();
     }
     if (!output && !isInput) {
-      r.error(line, path, sig + " is " + (kind == IoKind.F ? "a flag" : "an output")
-          + ": a wire runs to an input (" + names(false) + "); an output wired to an output would have two drivers");
+      r.error(line, path, sig + " is " + what(kind) + ": a wire runs to an input (" + names(false) + ")"
+          + (kind == IoKind.UO || kind == IoKind.SO || kind.writable()
+              ? "; an output wired to an output would have two drivers" : ""));
       return Optional.empty();
     }
     int size;
@@ -129,13 +134,22 @@ final class WiringJson {
   }
 
   private static String names(boolean outputs) {
-    List<String> out = new ArrayList<>();
-    for (IoKind k : IoKind.values()) {
-      if (outputs ? k.writable() && k != IoKind.F : !k.writable()) {
-        out.add(k.name());
-      }
-    }
-    return String.join(", ", out);
+    return outputs ? "DO, RO, GO" : "DI, RI, GI";
+  }
+
+  /** What a port is, in the words of the controller. */
+  private static String what(IoKind kind) {
+    return switch (kind) {
+      case DI, RI, GI -> "an input";
+      case DO, RO, GO -> "an output";
+      case F -> "a flag";
+      case UO -> "a UOP output the controller drives";
+      case SO -> "an SOP output the controller drives";
+      case UI -> "a UOP input (set by the PLC)";
+      case SI -> "an SOP input (the operator panel's)";
+      case AI -> "an analog input";
+      case AO -> "an analog output";
+    };
   }
 
   private static String join(String at, String key) {

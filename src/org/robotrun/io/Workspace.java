@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
 import java.nio.file.attribute.FileTime;
@@ -63,6 +64,10 @@ public final class Workspace implements AutoCloseable {
   private final Map<String, List<Program>> robotPrograms = new LinkedHashMap<>();
   private final List<String> problems;
   private final boolean cellBlocked;
+  /** Opened from a hand-in: the files its cells name are read only from inside it. */
+  private boolean handIn;
+  /** Read-only because another RobotRun holds the lock (it may let go soon). */
+  private boolean lockBusy;
   /** The other named scenarios read from {@code scenarios/}, in file-name order. */
   private List<Scenario> otherScenarios = List.of();
   /** Scenario files that could not be read (or repeat a name): never written over or deleted. */
@@ -119,6 +124,19 @@ public final class Workspace implements AutoCloseable {
    * taken and nothing is ever written (a hand-in being run, a second look).
    */
   public static Workspace open(Path dir, Scenario newCell, boolean readOnly) throws WorkspaceException {
+    return open(dir, newCell, readOnly, false);
+  }
+
+  /**
+   * Opens an unpacked hand-in read-only: as {@link #open(Path, Scenario, boolean)}, but the cell
+   * files may name meshes and programs only inside the hand-in
+   * ({@link ScenarioReader#readHandInCell}).
+   */
+  public static Workspace openHandIn(Path dir, Scenario newCell) throws WorkspaceException {
+    return open(dir, newCell, true, true);
+  }
+
+  private static Workspace open(Path dir, Scenario newCell, boolean readOnly, boolean handIn) throws WorkspaceException {
     Path abs = dir.toAbsolutePath().normalize();
     Path cell = abs.resolve(CELL);
     try {
@@ -138,15 +156,23 @@ public final class Workspace implements AutoCloseable {
     }
     FileChannel channel = null;
     FileLock lock = null;
-    String readOnlyReason = readOnly ? "opened read-only" : "";
-    if (!readOnly) {
+    String readOnlyReason = !readOnly ? "" : handIn ? "a hand-in opens read-only (from a temporary copy)" : "opened read-only";
+    boolean lockBusy = false;
+    String lockProblem = readOnly ? "" : specialLock(abs.resolve(LOCK));
+    if (!lockProblem.isEmpty()) {
+      // never opened: a FIFO would block the open for ever, a device or a link is not ours to lock
+      readOnlyReason = lockProblem + ": opened read-only, nothing is saved";
+    } else if (!readOnly) {
       try {
-        channel = FileChannel.open(abs.resolve(LOCK), StandardOpenOption.CREATE, StandardOpenOption.WRITE);
+        channel = FileChannel.open(abs.resolve(LOCK), StandardOpenOption.CREATE, StandardOpenOption.WRITE,
+            LinkOption.NOFOLLOW_LINKS);
         lock = channel.tryLock();
         if (lock == null) {
+          lockBusy = true;
           readOnlyReason = "another RobotRun window has this workspace open: opened read-only, nothing is saved";
         }
       } catch (OverlappingFileLockException e) {
+        lockBusy = true;
         readOnlyReason = "this workspace is already open in this RobotRun: opened read-only, nothing is saved";
       } catch (IOException e) {
         readOnlyReason = "the folder is not writable (" + describe(e) + "): opened read-only, nothing is saved";
@@ -160,7 +186,7 @@ public final class Workspace implements AutoCloseable {
     Scenario scenario = newCell;
     Optional<SavedState> state = Optional.empty();
     boolean cellBlocked = false;
-    switch (ScenarioReader.readCell(cell)) {
+    switch (handIn ? ScenarioReader.readHandInCell(cell) : ScenarioReader.readCell(cell)) {
       case CellLoad.Loaded l -> {
         scenario = l.scenario();
         state = l.state();
@@ -215,6 +241,11 @@ public final class Workspace implements AutoCloseable {
       perRobot.put(robot, own);
     }
     Workspace ws = new Workspace(abs, channel, lock, readOnlyReason, scenario, state, programs, problems, cellBlocked);
+    ws.handIn = handIn;
+    ws.lockBusy = lockBusy;
+    if (lock != null) {
+      removeStaleTemporaryFiles(abs, scenario);
+    }
     ws.readScenarios(problems);
     ws.robotPrograms.putAll(perRobot);
     perRobot.forEach((robot, ps) -> ps.forEach(p -> ws.writtenPrograms.put(robotFolder(robot) + "/" + p.name(), p)));
@@ -267,7 +298,7 @@ public final class Workspace implements AutoCloseable {
         blockedScenarios.add(file);
         continue;
       }
-      switch (ScenarioReader.readCell(f)) {
+      switch (handIn ? ScenarioReader.readHandInCell(f) : ScenarioReader.readCell(f)) {
         case CellLoad.Failed failed -> {
           problems.add(failed.message() + "\n" + f + " is kept as it is and not loaded; fix it and open the workspace again.");
           blockedScenarios.add(file);
@@ -299,8 +330,7 @@ public final class Workspace implements AutoCloseable {
 
   /** {@code s} under another name. */
   static Scenario renamed(Scenario s, String name) {
-    return new Scenario(name, s.description(), s.robots(), s.world(), s.programs(), s.mainProgram(), s.registers(),
-        s.toolFrames(), s.userFrames(), s.camera(), s.onCollision(), s.mode()).withExtrasOf(s);
+    return s.withName(name, s.description());
   }
 
   /**
@@ -449,6 +479,61 @@ public final class Workspace implements AutoCloseable {
   /** Whether nothing will be written, and why ("" when writable). */
   public boolean readOnly() {
     return !readOnlyReason.isEmpty();
+  }
+
+  /** Whether this is read-only only because another RobotRun has the workspace open. */
+  public boolean lockBusy() {
+    return lockBusy;
+  }
+
+  /**
+   * Why {@code lock} cannot be the lock file (a FIFO, a device, a socket, a folder, a symbolic
+   * link), found without opening it; "" when it is a regular file or missing.
+   */
+  static String specialLock(Path lock) {
+    java.nio.file.attribute.BasicFileAttributes a;
+    try {
+      a = Files.readAttributes(lock, java.nio.file.attribute.BasicFileAttributes.class, LinkOption.NOFOLLOW_LINKS);
+    } catch (IOException e) {
+      return "";  // missing (it is created) or unreadable (the open says why)
+    }
+    if (a.isRegularFile()) {
+      return "";
+    }
+    String kind = a.isSymbolicLink() ? "a symbolic link" : BoundedFiles.kind(lock, a);
+    return "the lock file " + lock + " is " + kind + ", not a regular file (remove it)";
+  }
+
+  /** Age after which a temporary file of an interrupted save is removed by the workspace's writer. */
+  static final java.time.Duration STALE_TEMP_AGE = java.time.Duration.ofSeconds(10);
+
+  /**
+   * Removes the temporary files a killed save left ({@code .NAME.0123456789ab.tmp}, written by
+   * {@link AtomicFiles}) from the workspace's folders. Called only by the lock's holder, the
+   * one writer, for files older than {@link #STALE_TEMP_AGE}; best effort.
+   */
+  private static void removeStaleTemporaryFiles(Path abs, Scenario scenario) {
+    List<Path> folders = new ArrayList<>(List.of(abs, abs.resolve(PROGRAMS), abs.resolve(SCENARIOS)));
+    for (int i = 1; i < scenario.robots().size(); i++) {
+      folders.add(abs.resolve(PROGRAMS).resolve(robotFolder(scenario.robots().get(i).name())));
+    }
+    java.time.Instant before = java.time.Instant.now().minus(STALE_TEMP_AGE);
+    for (Path folder : folders) {
+      if (!Files.isDirectory(folder, LinkOption.NOFOLLOW_LINKS)) {
+        continue;
+      }
+      try (Stream<Path> s = Files.list(folder)) {
+        for (Path f : s.toList()) {
+          if (AtomicFiles.isTemporaryName(f.getFileName().toString())
+              && Files.isRegularFile(f, LinkOption.NOFOLLOW_LINKS)
+              && Files.getLastModifiedTime(f, LinkOption.NOFOLLOW_LINKS).toInstant().isBefore(before)) {
+            Files.deleteIfExists(f);
+          }
+        }
+      } catch (IOException | RuntimeException e) {
+        // a leftover costs disk space only
+      }
+    }
   }
 
   public String readOnlyReason() {

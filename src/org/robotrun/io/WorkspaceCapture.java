@@ -77,7 +77,8 @@ public final class WorkspaceCapture {
       for (int k = 1; k <= 6; k++) {
         rad.add(Math.toRadians(q.element(k)));
       }
-      robots.add(r.withJoints(rad));
+      // the presets are now the controller's state (frames of the first robot: the top-level "frames")
+      robots.add(r.withJoints(rad).withPresets(new TreeMap<>(), new TreeMap<>(), new TreeMap<>()));
     }
     World world = sim.world();
     FrameTable frames = sim.controllers().get(0).frames();
@@ -92,8 +93,8 @@ public final class WorkspaceCapture {
         users.put(n, frames.transform(FrameKind.USER, n));
       }
     }
-    return new Scenario(base.name(), base.description(), robots, world, List.of(), main, new TreeMap<>(), tools, users,
-        camera.isPresent() ? camera : base.camera(), base.onCollision(), base.mode()).withExtrasOf(base);
+    return base.withRobots(robots).withWorld(world).withPrograms(List.of(), main)
+        .withPresets(new TreeMap<>(), tools, users).withCamera(camera.isPresent() ? camera : base.camera());
   }
 
   /** The program {@code run --workspace} runs: the cell's main program while it exists, else the only one, else the one last run. */

@@ -29,4 +29,34 @@ public final class DecimalText {
     double v = Double.parseDouble(text);
     return Double.isFinite(v) ? OptionalDouble.of(v) : OptionalDouble.empty();
   }
+
+  // ---- writing: the one set of number formatters for files, reports and messages ----------------
+
+  /**
+   * A number as a message or a report states it: an integral value (below 1e15) without
+   * decimals ({@code 400}), any other as Java's shortest round-trip text ({@code 0.5}).
+   */
+  public static String plain(double v) {
+    return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+  }
+
+  /**
+   * A number as RobotRun writes it into a file: at most 15 significant digits (so 9.999999999999998
+   * after a trip through a matrix is written 10), no exponent, no trailing zeros, "0" for anything
+   * under 1e-12.
+   */
+  public static String tidy(double v) {
+    if (Math.abs(v) < 1e-12) {
+      return "0";
+    }
+    java.math.BigDecimal d = new java.math.BigDecimal(v)
+        .round(new java.math.MathContext(15, java.math.RoundingMode.HALF_EVEN)).stripTrailingZeros();
+    return d.signum() == 0 ? "0" : d.scale() <= 0 ? d.toBigInteger().toString() : d.toPlainString();
+  }
+
+  /** As {@link #tidy} for a value that must read back as a real: an integral one keeps ".0" ({@code 3.0}). */
+  public static String tidyReal(double v) {
+    String t = tidy(v);
+    return t.contains(".") ? t : t + ".0";
+  }
 }

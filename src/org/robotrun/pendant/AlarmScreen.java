@@ -2,7 +2,8 @@ package org.robotrun.pendant;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.robotrun.pendant.RobotControl.AlarmEntry;
+import org.robotrun.control.RobotControl;
+import org.robotrun.control.RobotControl.AlarmEntry;
 import org.robotrun.program.AlarmCode;
 
 /**

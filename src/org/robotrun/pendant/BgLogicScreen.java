@@ -4,8 +4,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import org.robotrun.pendant.RobotControl.BgSlot;
-import org.robotrun.pendant.RobotControl.Result;
+import org.robotrun.control.RobotControl;
+import org.robotrun.control.RobotControl.BgSlot;
+import org.robotrun.control.RobotControl.Result;
 
 /**
  * SETUP BG Logic: the background logic slots, each a program without a motion group that runs

@@ -50,7 +50,7 @@ public final class ExprText {
       case Expr.OnOff o -> o.on() ? "ON" : "OFF";
       case Expr.StringConst s -> "'" + s.value() + "'";
       case Expr.Register r -> item("R", r.register());
-      case Expr.PosElement p -> "PR[" + index(p.register().index()) + "," + p.element()
+      case Expr.PosElement p -> "PR[" + index(p.register().index()) + "," + index(p.element())
           + comment(p.register().comment()) + "]";
       case Expr.Io io -> item(io.kind().name(), io.port());
       case Expr.Timer t -> item("TIMER", t.timer());
@@ -103,6 +103,7 @@ public final class ExprText {
     return switch (i) {
       case Index.Direct d -> Integer.toString(d.value());
       case Index.Indirect r -> "R[" + r.register() + comment(r.comment()) + "]";
+      case Index.ViaArg a -> "AR[" + a.arg() + "]";
     };
   }
 
@@ -211,8 +212,9 @@ public final class ExprText {
     int n = switch (i) {
       case Index.Direct d -> d.value();
       case Index.Indirect r -> r.register();
+      case Index.ViaArg a -> a.arg();
     };
-    String table = i instanceof Index.Indirect ? "R" : kind;
+    String table = i instanceof Index.Indirect ? "R" : i instanceof Index.ViaArg ? "AR" : kind;
     if (n < 1 || n > size(table)) {
       throw new BadText(table + "[" + n + "]: index out of range (1.." + size(table) + ")");
     }

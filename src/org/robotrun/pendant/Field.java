@@ -26,6 +26,17 @@ public record Field(String text, Optional<Edit> edit) {
     return new Field(text, Optional.empty());
   }
 
+  /** The same field building {@code wrap(line)} from each line its edit builds (an IF's action inside the IF). */
+  Field mapped(java.util.function.UnaryOperator<Instruction> wrap) {
+    if (edit.isEmpty()) {
+      return this;
+    }
+    Edit e = edit.get();
+    IntFunction<Instruction> choose = e.choices().isEmpty() ? e.choose() : k -> wrap.apply(e.choose().apply(k));
+    Optional<Entry> entry = e.entry().map(en -> t -> wrap.apply(en.apply(t)));
+    return new Field(text, Optional.of(new Edit(e.choices(), choose, e.initial(), entry)));
+  }
+
   /** Whether the cursor may sit on it. */
   public boolean editable() {
     return edit.isPresent();

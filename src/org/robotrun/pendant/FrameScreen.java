@@ -7,9 +7,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
-import org.robotrun.pendant.RobotControl.Result;
-import org.robotrun.pendant.RobotControl.TeachMethod;
-import org.robotrun.pendant.RobotControl.TeachResult;
+import org.robotrun.control.RobotControl;
+import org.robotrun.control.RobotControl.Result;
+import org.robotrun.control.RobotControl.TeachMethod;
+import org.robotrun.control.RobotControl.TeachResult;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.Position;
 

@@ -87,6 +87,10 @@ final class InstMenu {
           Template.of("IF ...,JMP LBL[ ]", new Instruction.If(cmp(Expr.BinaryOp.GT, r(1), new Expr.IntConst(0)),
               new Instruction.Jump(LabelRef.of(1)))),
           Template.of("IF ...,CALL", new Instruction.If(ioOn(IoKind.DI, 1), new Instruction.Call("MAIN", List.of()))),
+          Template.of("IF ...,R[ ]=(...)", new Instruction.IfAction(cmp(Expr.BinaryOp.GT, r(1), new Expr.IntConst(0)),
+              new Instruction.AssignRegister(Item.of(2), new Expr.Group(new Expr.IntConst(1))))),
+          Template.of("IF ...,DO[ ]=(...)", new Instruction.IfAction(ioOn(IoKind.DI, 1),
+              new Instruction.SetIo(IoKind.DO, Item.of(1), new Expr.Group(new Expr.OnOff(true))))),
           new Template("IF (...) THEN / ELSE / ENDIF", () -> List.of(
               new Instruction.IfThen(new Expr.Group(cmp(Expr.BinaryOp.GT, r(1), new Expr.IntConst(0)))),
               new Instruction.Else(), new Instruction.EndIf())),

@@ -6,6 +6,8 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.function.Consumer;
+import java.util.function.DoubleConsumer;
+import org.robotrun.control.RobotControl;
 
 /**
  * A {@code .keys} script: one pendant action per line, for tests, tutorials and graders.
@@ -108,7 +110,8 @@ public final class KeyScript {
 
   private final List<Step> steps;
   /** {@code UI[6] ON}: an input the PLC drives, set by hand. */
-  private static final java.util.regex.Pattern INPUT = java.util.regex.Pattern.compile("(UI|DI)\\[(\\d{1,4})\\]\\s+(ON|OFF)");
+  /** An input line: an address ({@link org.robotrun.program.IoAddress}, UI or DI) and ON or OFF. */
+  private static final java.util.regex.Pattern INPUT = java.util.regex.Pattern.compile("(.+?)\\s+(ON|OFF)");
 
   private KeyScript(List<Step> steps) {
     this.steps = List.copyOf(steps);
@@ -132,14 +135,17 @@ public final class KeyScript {
         continue;
       }
       java.util.regex.Matcher io = INPUT.matcher(t.toUpperCase(Locale.ROOT));
-      if (io.matches()) {
-        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(io.group(1));
-        int index = Integer.parseInt(io.group(2));
+      Optional<org.robotrun.program.IoAddress> address = io.matches()
+          ? org.robotrun.program.IoAddress.parse(io.group(1)).filter(a -> a.kind().equals("UI") || a.kind().equals("DI"))
+          : Optional.empty();
+      if (address.isPresent()) {
+        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(address.get().kind());
+        int index = address.get().index();
         int size = org.robotrun.program.IoRanges.DEFAULT.size(kind);
         if (index < 1 || index > size) {
           return bad(file, n, kind + "[" + index + "]: index out of range (expected 1.." + size + ")");
         }
-        steps.add(new Step.Input(n, kind, index, io.group(3).equals("ON")));
+        steps.add(new Step.Input(n, kind, index, io.group(2).equals("ON")));
         continue;
       }
       String word = t.split("\\s+", 2)[0].toUpperCase(Locale.ROOT);
@@ -161,7 +167,9 @@ public final class KeyScript {
           steps.add(new Step.Type(n, text.stripTrailing()));
         }
         case "WAIT" -> {
-          java.util.OptionalDouble v = org.robotrun.math.DecimalText.parse(rest);
+          // a plain decimal (docs/pendant.md): "2.5", not "1e3", "+2" or other scripts' digits
+          java.util.OptionalDouble v = rest.matches("-?([0-9]{1,9}(\\.[0-9]{0,9})?|\\.[0-9]{1,9})")
+              ? org.robotrun.math.DecimalText.parse(rest) : java.util.OptionalDouble.empty();
           if (v.isEmpty()) {
             return bad(file, n, "WAIT needs seconds (e.g. WAIT 2.5), got '" + rest + "'");
           }
@@ -244,11 +252,11 @@ public final class KeyScript {
           int times = 1;
           int star = t.lastIndexOf('*');
           if (star > 0) {
-            try {
-              times = Integer.parseInt(t.substring(star + 1).strip());
-            } catch (NumberFormatException e) {
+            String count = t.substring(star + 1).strip();
+            if (!count.matches("[0-9]{1,9}")) {
               return bad(file, n, "repeat count after * must be a whole number");
             }
+            times = Integer.parseInt(count);
             if (times < 1 || times > 1000) {
               return bad(file, n, "repeat count must be 1..1000");
             }
@@ -286,20 +294,20 @@ public final class KeyScript {
   }
 
   /**
-   * Runs the script on {@code pendant}; every SHOW hands {@code show} a header line and the
-   * LCD text.
+   * Runs the script on {@code pendant}; {@code clock} advances the cell's simulated time by the
+   * seconds it is given (a WAIT); every SHOW hands {@code show} a header line and the LCD text.
    */
-  public void run(Pendant pendant, Consumer<String> show) {
-    run(pendant, show, () -> false);
+  public void run(Pendant pendant, DoubleConsumer clock, Consumer<String> show) {
+    run(pendant, clock, show, () -> false);
   }
 
   /**
-   * Runs the script as {@link #run(Pendant, Consumer)} does, asking {@code stop} between steps
+   * Runs the script as {@link #run(Pendant, DoubleConsumer, Consumer)} does, asking {@code stop} between steps
    * (and every simulated second of a WAIT); when it answers true the script ends there and this
    * returns the line it stopped before, or 0 when the script ran to its end.
    */
-  public int run(Pendant pendant, Consumer<String> show, java.util.function.BooleanSupplier stop) {
-    return run(List.of(pendant), List.of("robot1"), show, stop);
+  public int run(Pendant pendant, DoubleConsumer clock, Consumer<String> show, java.util.function.BooleanSupplier stop) {
+    return run(List.of(pendant), List.of("robot1"), clock, show, stop);
   }
 
   /**
@@ -337,6 +345,20 @@ public final class KeyScript {
     return Optional.empty();
   }
 
+  /** Slice of simulated time between two looks of the pendant at the executing line. */
+  static final double FOLLOW_SLICE_SEC = 0.02;
+
+  /** Advances the cell by {@code dtSec}; the EDIT cursor follows the executing line as it goes. */
+  public static void advance(Pendant pendant, DoubleConsumer clock, double dtSec) {
+    double left = dtSec;
+    while (left > 1e-12) {
+      double dt = Math.min(FOLLOW_SLICE_SEC, left);
+      clock.accept(dt);
+      left -= dt;
+      pendant.follow();
+    }
+  }
+
   private static int robotIndex(String robot, List<String> robots) {
     for (int i = 0; i < robots.size(); i++) {
       if (robots.get(i).equals(robot)) {
@@ -353,11 +375,13 @@ public final class KeyScript {
   /**
    * Runs the script on a cell of several robots, each with its own pendant (in cell order, named
    * {@code robots}); it starts on the first, and {@code ROBOT} switches. Time (WAIT) advances the
-   * whole cell whichever pendant is in hand. With several robots the SHOW header names the robot.
+   * whole cell through {@code clock} whichever pendant is in hand, in slices of
+   * {@value #FOLLOW_SLICE_SEC} s after each of which the pendant in hand follows the controller. With several robots the SHOW header names the robot.
    *
    * @throws IllegalArgumentException if a ROBOT line names no robot of the cell (see {@link #unknownRobot})
    */
-  public int run(List<Pendant> pendants, List<String> robots, Consumer<String> show, java.util.function.BooleanSupplier stop) {
+  public int run(List<Pendant> pendants, List<String> robots, DoubleConsumer clock, Consumer<String> show,
+      java.util.function.BooleanSupplier stop) {
     if (pendants.size() != robots.size() || pendants.isEmpty()) {
       throw new IllegalArgumentException("one pendant per robot: " + pendants.size() + " pendants, " + robots.size() + " robots");
     }
@@ -391,7 +415,7 @@ public final class KeyScript {
               return w.line();
             }
             double chunk = Math.min(1.0, left);
-            pendant.advance(chunk);
+            advance(pendant, clock, chunk);
             left -= chunk;
           }
           timeSec += w.seconds();

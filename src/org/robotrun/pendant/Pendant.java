@@ -12,10 +12,12 @@ import java.util.Optional;
 import java.util.function.Function;
 import java.util.function.IntConsumer;
 import java.util.function.UnaryOperator;
-import org.robotrun.pendant.RobotControl.CoordSystem;
-import org.robotrun.pendant.RobotControl.ExecState;
-import org.robotrun.pendant.RobotControl.ExecutionStatus;
-import org.robotrun.pendant.RobotControl.Result;
+import org.robotrun.control.RobotControl;
+import org.robotrun.control.RobotControl.CoordSystem;
+import org.robotrun.control.RobotControl.ExecState;
+import org.robotrun.control.RobotControl.ExecutionStatus;
+import org.robotrun.control.RobotControl.Result;
+import org.robotrun.control.RobotControl.StartFrom;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
@@ -27,11 +29,14 @@ import org.robotrun.program.Program;
  * and forwards keys; scripts and tests do the same with {@code .keys} files.
  *
  * <p>Three controls, as on an iPendant: TP ENABLE (on/off, {@link #setTpEnabled}), DEADMAN
- * ({@link Key#DEADMAN}, held) and SHIFT (held; never latched). Jogging and SHIFT+FWD/BWD need all
+ * ({@link Key#DEADMAN}, held) and SHIFT (held; never latched). The pendant sends them to the
+ * controller as switch signals and the controller decides: jogging and SHIFT+FWD/BWD need all
  * three; letting the DEADMAN go with the pendant enabled is SRVO-003 and stops the arm; in T1 and
  * T2 a program runs only while SHIFT and DEADMAN are held (hold-to-run). In AUTO the pendant cannot
  * jog; programs start from the operator panel's CYCLE START ({@link #cycleStart}) with the pendant
  * disabled. Every error the operator can cause ends as a message on the prompt line; no key throws.
+ * Time is not the pendant's: the cell's stepper advances the controller, and {@link #follow} lets
+ * the pendant catch up with what happened.
  */
 public final class Pendant {
   /** Undo depth of the program editor (the issue asks for at least 50). */
@@ -57,16 +62,8 @@ public final class Pendant {
   private Modal modal;
   private String message = "";
 
-  private boolean shiftHeld;
-  /** The three-position DEADMAN in its middle (enabling) position. */
-  private boolean deadmanHeld;
-  /** TP ENABLE: a cold-started controller's pendant is picked up switched on. */
-  private boolean tpEnabled = true;
-  private CoordSystem coord = CoordSystem.JOINT;
   /** {@link OverrideSteps#VFINE} or {@link OverrideSteps#FINE} while the override is on one of them, else 0. */
   private int incremental;
-  /** Whether a jog key went down since the last stop (for the deadman message). */
-  private boolean jogging;
 
   /** The program the EDIT screen and SHIFT+FWD work on ("" before one is chosen). */
   String selectedProgram = "";
@@ -80,7 +77,6 @@ public final class Pendant {
   public Pendant(RobotControl control, LineParser lineParser) {
     this.control = Objects.requireNonNull(control, "control");
     this.lineParser = Objects.requireNonNull(lineParser, "lineParser");
-    control.tpEnableChanged(tpEnabled);
   }
 
   /** A pendant without a TP line parser. */
@@ -102,11 +98,11 @@ public final class Pendant {
   /** A key goes down. */
   public void press(Key k) {
     if (k == Key.SHIFT) {
-      shiftHeld = true;
+      control.setShift(true);
       return;
     }
     if (k == Key.DEADMAN) {
-      deadmanHeld = true;
+      control.setDeadman(true);
       return;
     }
     if (k.isJog()) {
@@ -124,30 +120,11 @@ public final class Pendant {
    */
   public void release(Key k) {
     if (k == Key.SHIFT) {
-      if (!shiftHeld) {
-        return;
-      }
-      shiftHeld = false;
-      if (jogging) {
-        control.jogStop();
-        jogging = false;
-        message = "Jog stopped: SHIFT released";
-      }
-      holdToRun("SHIFT released");
+      say(control.setShift(false));
       return;
     }
     if (k == Key.DEADMAN) {
-      if (!deadmanHeld) {
-        return;
-      }
-      deadmanHeld = false;
-      jogging = false;
-      if (tpEnabled) {
-        boolean running = control.status().state() == ExecState.RUNNING;
-        control.deadmanReleased();
-        message = org.robotrun.program.AlarmCode.SRVO_003.code() + " " + org.robotrun.program.AlarmCode.SRVO_003.text() + (running ? ": program paused" : "")
-            + " (hold DEADMAN, RESET)";
-      }
+      say(control.setDeadman(false));
       return;
     }
     if (k.isJog()) {
@@ -155,11 +132,14 @@ public final class Pendant {
     }
   }
 
-  /** T1/T2: a running program pauses when SHIFT or DEADMAN lets go (the arm decelerates). */
-  private void holdToRun(String why) {
-    if (control.mode().holdToRun() && control.status().state() == ExecState.RUNNING) {
-      control.hold();
-      message = "Program paused: " + why + " (hold-to-run in " + control.mode() + "; SHIFT+FWD resumes)";
+  /** Shows what the controller said about a switch ("" leaves the prompt line as it is). */
+  private void say(Result r) {
+    String text = switch (r) {
+      case Result.Ok ok -> ok.message();
+      case Result.Refused no -> no.reason();
+    };
+    if (!text.isEmpty()) {
+      message = text;
     }
   }
 
@@ -167,39 +147,29 @@ public final class Pendant {
 
   /** TP ENABLE switched on or off. Turning it off stops jogging. */
   public void setTpEnabled(boolean on) {
-    if (!on && jogging) {
-      control.jogStop();
-      jogging = false;
-    }
-    if (!on && tpEnabled && control.mode().holdToRun()) {
-      holdToRun("TP disabled");
-    }
-    tpEnabled = on;
-    control.tpEnableChanged(on);
+    control.setTpEnabled(on);
     message = on ? "TP enabled" : "TP disabled";
   }
 
   /** Whether the TP ENABLE switch is on. */
   public boolean tpEnabled() {
-    return tpEnabled;
+    return control.tpEnabled();
   }
 
   /** Whether the DEADMAN is held. */
   public boolean deadmanHeld() {
-    return deadmanHeld;
+    return control.deadmanHeld();
   }
 
   /** The operator panel's mode switch turns: a running program pauses, jogging stops. */
   public void setMode(RobotControl.Mode mode) {
     control.setMode(mode);
-    jogging = false;
     message = "Mode " + mode;
   }
 
   /** An E-stop button is pressed: the pendant's (SRVO-002) or the operator panel's (SRVO-001). */
   public void emergencyStop(boolean fromPendant) {
     control.emergencyStop(fromPendant);
-    jogging = false;
     message = (fromPendant ? "Teach pendant E-stop" : "Operator panel E-stop") + ": release it, then RESET";
   }
 
@@ -214,15 +184,11 @@ public final class Pendant {
    * program from its cursor line (a paused one resumes).
    */
   public void cycleStart() {
-    if (control.mode() != RobotControl.Mode.AUTO) {
-      message = "CYCLE START works in AUTO: in " + control.mode() + " run from the pendant (SHIFT+FWD)";
+    if (control.mayStart(StartFrom.OPERATOR_PANEL, true) instanceof Result.Refused no) {
+      message = no.reason();
       return;
     }
-    if (tpEnabled) {
-      message = "CYCLE START refused: the TP is enabled (turn it OFF to run in AUTO)";
-      return;
-    }
-    startProgram(true);
+    startProgram(StartFrom.OPERATOR_PANEL, true);
   }
 
   /**
@@ -257,20 +223,6 @@ public final class Pendant {
     screen.text(this, text);
   }
 
-  /** Slice of simulated time between two looks at the executing line. */
-  private static final double FOLLOW_SLICE_SEC = 0.02;
-
-  /** Advances simulated time; the EDIT cursor follows the executing line as it goes. */
-  public void advance(double dtSec) {
-    double left = dtSec;
-    while (left > 1e-12) {
-      double dt = Math.min(FOLLOW_SLICE_SEC, left);
-      control.advance(dt);
-      left -= dt;
-      followExecution();
-    }
-  }
-
   /**
    * Whether a text or number entry is open on the prompt line, so that typed characters go to
    * it (a keyboard front end then sends letters as text instead of as jog keys).
@@ -281,12 +233,12 @@ public final class Pendant {
 
   /** Whether SHIFT is held. */
   public boolean shift() {
-    return shiftHeld;
+    return control.shiftHeld();
   }
 
   /** The jog coordinate system COORD selects. */
   public CoordSystem coord() {
-    return coord;
+    return control.coordSystem();
   }
 
   private void jogPress(Key k) {
@@ -305,53 +257,21 @@ public final class Pendant {
   }
 
   private void jogDown(Key k, boolean latched) {
-    Optional<String> refused = motionRefusal("jog");
-    if (refused.isPresent()) {
-      message = refused.get();
-      return;
-    }
     if (overrideLevel() < 0) {
       // VFINE / FINE: one increment per key press, nothing while the key stays down
-      Result r = control.jogIncrement(coord, k.jogAxis(), k.jogSign(), overrideLevel() == OverrideSteps.VFINE);
+      Result r = control.jogIncrement(k.jogAxis(), k.jogSign(), overrideLevel() == OverrideSteps.VFINE);
       message = switch (r) {
         case Result.Ok ok -> ok.message();
         case Result.Refused no -> no.reason();
       };
       return;
     }
-    Result r = control.jogKeyDown(coord, k.jogAxis(), k.jogSign(), latched);
+    Result r = control.jogKeyDown(k.jogAxis(), k.jogSign(), latched);
     seenJogStop = "";
-    switch (r) {
-      case Result.Ok ok -> {
-        jogging = true;
-        message = ok.message();
-      }
-      case Result.Refused no -> message = no.reason();
-    }
-  }
-
-  /**
-   * Why the pendant may not jog or run now ({@code what}: "jog", "run"), checked as a controller
-   * does: mode, TP ENABLE, E-stop, DEADMAN, SHIFT.
-   */
-  private Optional<String> motionRefusal(String what) {
-    if (control.mode() == RobotControl.Mode.AUTO) {
-      return Optional.of(what.equals("jog") ? "AUTO mode: the pendant cannot jog (mode switch to T1)"
-          : "AUTO mode: start from the operator panel (TP OFF, CYCLE START)");
-    }
-    if (!tpEnabled) {
-      return Optional.of("TP disabled: turn TP ENABLE on to " + what);
-    }
-    if (control.emergencyStopped()) {
-      return Optional.of("E-stop pressed: release it and RESET");
-    }
-    if (!deadmanHeld) {
-      return Optional.of("Hold the DEADMAN to " + what);
-    }
-    if (!shift()) {
-      return Optional.of("Hold SHIFT and the DEADMAN to " + what);
-    }
-    return Optional.empty();
+    message = switch (r) {
+      case Result.Ok ok -> ok.message();
+      case Result.Refused no -> no.reason();
+    };
   }
 
   private void handle(Key k) {
@@ -389,9 +309,8 @@ public final class Pendant {
         if (shift()) {
           frameSelectMenu();
         } else {
-          coord = CoordSystem.values()[(coord.ordinal() + 1) % CoordSystem.values().length];
-          control.jogStop();
-          jogging = false;
+          CoordSystem coord = CoordSystem.values()[(coord().ordinal() + 1) % CoordSystem.values().length];
+          control.setCoordSystem(coord);
           message = "Jog coordinates: " + coord + "  (Tool " + control.activeFrame(FrameKind.TOOL) + ", Jog "
               + control.activeJogFrame() + ", User " + control.activeFrame(FrameKind.USER) + ")";
         }
@@ -434,19 +353,14 @@ public final class Pendant {
   }
 
   private void run(boolean forward) {
-    if (!shift()) {
-      message = "Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run";
+    if (control.mayStart(StartFrom.TEACH_PENDANT, forward) instanceof Result.Refused no) {
+      message = no.reason();
       return;
     }
-    Optional<String> refused = motionRefusal("run");
-    if (refused.isPresent()) {
-      message = refused.get();
-      return;
-    }
-    startProgram(forward);
+    startProgram(StartFrom.TEACH_PENDANT, forward);
   }
 
-  private void startProgram(boolean forward) {
+  private void startProgram(StartFrom from, boolean forward) {
     // the program in the editor (a callee the cursor followed into), else the selected one
     String name = !editScreen.programName.isEmpty() && control.program(editScreen.programName).isPresent()
         ? editScreen.programName : selectedProgram;
@@ -464,11 +378,20 @@ public final class Pendant {
         return;
       }
     }
-    Result r = control.run(name, line, forward);
+    Result r = control.run(from, name, line, forward);
     message = switch (r) {
       case Result.Ok ok -> ok.message();
       case Result.Refused no -> no.reason();
     };
+  }
+
+  /**
+   * Catches up with the controller after simulated time passed (the cell's stepper advanced it):
+   * a MESSAGE[] a program wrote, why a jog stopped by itself, and the EDIT cursor following the
+   * executing line.
+   */
+  public void follow() {
+    followExecution();
   }
 
   private void followExecution() {
@@ -482,7 +405,6 @@ public final class Pendant {
     if (!jogStop.isEmpty() && !jogStop.equals(seenJogStop)) {
       // the jog stopped itself (limit, reach, singularity): say why, with the axis and value
       message = "Jog stopped: " + jogStop;
-      jogging = false;
     }
     seenJogStop = jogStop;
     ExecutionStatus st = control.status();
@@ -918,18 +840,18 @@ public final class Pendant {
     if (control.stepMode()) {
       lamps.append(" STEP");
     }
-    if (!tpEnabled) {
+    if (!tpEnabled()) {
       lamps.append(" TP-OFF");
     }
     if (shift()) {
       lamps.append(" SHIFT");
     }
-    if (deadmanHeld) {
+    if (deadmanHeld()) {
       lamps.append(" DEADMAN");
     }
     return String.format(Locale.ROOT, "%-12s LINE %-4d %-4s %-7s %-5s %4s%s",
         prog.isEmpty() ? "(none)" : prog.length() > 12 ? prog.substring(0, 12) : prog, line,
-        control.mode(), state, coord, OverrideSteps.display(overrideLevel()), lamps);
+        control.mode(), state, coord(), OverrideSteps.display(overrideLevel()), lamps);
   }
 
   private static List<String> choiceBody(Modal.Choice c) {

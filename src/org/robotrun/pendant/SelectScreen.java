@@ -4,7 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
-import org.robotrun.pendant.RobotControl.Result;
+import org.robotrun.control.RobotControl;
+import org.robotrun.control.RobotControl.Result;
 import org.robotrun.program.Program;
 
 /**

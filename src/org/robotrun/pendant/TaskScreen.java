@@ -3,8 +3,9 @@ package org.robotrun.pendant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import org.robotrun.pendant.RobotControl.Result;
-import org.robotrun.pendant.RobotControl.TaskInfo;
+import org.robotrun.control.RobotControl;
+import org.robotrun.control.RobotControl.Result;
+import org.robotrun.control.RobotControl.TaskInfo;
 
 /**
  * STATUS Program: the main program and the tasks RUN started, with their state and line (the

@@ -55,8 +55,14 @@ public final class TpLine {
         f.add(itemField("PR", o.register(), i -> new Instruction.OffsetCondition(i, o.userFrame())));
         o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + ExprText.index(j) + "]")));
       }
-      case Instruction.MacroCall c -> f.add(new Field(c.name(), Field.Edit.both(programs,
-          k -> new Instruction.MacroCall(programs.get(k)), c.name(), t -> new Instruction.MacroCall(macroName(t)))));
+      case Instruction.MacroCall c -> {
+        f.add(new Field(c.name(), Field.Edit.both(programs,
+            k -> new Instruction.MacroCall(programs.get(k), c.args()), c.name(),
+            t -> new Instruction.MacroCall(macroName(t), c.args()))));
+        if (!c.args().isEmpty()) {
+          f.add(Field.fixed("(" + String.join(",", c.args().stream().map(ExprText::format).toList()) + ")"));
+        }
+      }
       case Instruction.Monitor mo -> {
         f.add(Field.fixed(mo.end() ? "MONITOR END" : "MONITOR"));
         f.add(new Field(mo.program(), Field.Edit.both(programs, k -> new Instruction.Monitor(programs.get(k), mo.end()),
@@ -148,6 +154,15 @@ public final class TpLine {
         f.add(exprField(i.condition(), e -> new Instruction.If(e, i.branch())));
         f.add(Field.fixed(","));
         f.add(branchField(i.branch(), programs, b -> new Instruction.If(i.condition(), b)));
+      }
+      case Instruction.IfAction i -> {
+        f.add(Field.fixed("IF "));
+        f.add(exprField(i.condition(), e -> new Instruction.IfAction(e, i.action())));
+        f.add(Field.fixed(","));
+        // The action's own fields, each edit rebuilding the IF around the edited action.
+        for (Field a : fields(i.action(), program, programs)) {
+          f.add(a.mapped(x -> Instruction.IfAction.allowedAction(x) ? new Instruction.IfAction(i.condition(), x) : i));
+        }
       }
       case Instruction.IfThen i -> {
         f.add(Field.fixed("IF "));
@@ -617,8 +632,16 @@ public final class TpLine {
       case Instruction.FromLocal l -> "P[" + l.number() + (l.comment().isEmpty() ? "" : ":" + l.comment()) + "]";
       case Instruction.CurrentLpos x -> "LPOS";
       case Instruction.CurrentJpos x -> "JPOS";
-      case Instruction.FromFrame fr -> frameWord(fr.kind()) + "[" + ExprText.index(fr.frame()) + "]";
+      case Instruction.FromFrame fr -> frameWord(fr.kind()) + "[" + ExprText.index(fr.frame())
+          + (fr.comment().isEmpty() ? "" : ":" + fr.comment()) + "]";
       case Instruction.PosArithmetic p -> ExprText.item("PR", p.left()) + (p.add() ? "+" : "-") + ExprText.item("PR", p.right());
+      case Instruction.PosSum p -> {
+        StringBuilder sb = new StringBuilder(posSourceText(p.first()));
+        for (Instruction.PosTerm t : p.rest()) {
+          sb.append(t.add() ? '+' : '-').append(posSourceText(t.term()));
+        }
+        yield sb.toString();
+      }
     };
   }
 

@@ -31,7 +31,7 @@ public enum AlarmCode {
           + "led into the obstacle before running again."),
 
   // ---- program (interpreter) ----------------------------------------------------------------
-  INTP_203("INTP-203", AlarmSeverity.ABORT, "Variable type mismatch", Source.RECALLED,
+  INTP_205("INTP-205", AlarmSeverity.ABORT, "Variable type mismatch", Source.RECALLED,
       "A value of the wrong type was used: arithmetic on ON/OFF, AND/OR on numbers, a real number where a whole number "
           + "is needed, or a joint PR where a Cartesian one is needed.",
       "Look at the line the alarm names and check the type of every register and I/O it uses."),
@@ -60,13 +60,26 @@ public enum AlarmCode {
           + "running, that does not exist, or that needs motion group 1 while another task holds it (cause PROG-040).",
       "Read the cause in the message. Wait until the other task ends (or ABORT it), give a program that only sets "
           + "I/O and registers no motion group (DEFAULT_GROUP = *,*,*,*,*), or create the program the PLC selects."),
+  INTP_267("INTP-267", AlarmSeverity.ABORT, "RUN stmt failed", Source.RECALLED,
+      "A RUN statement could not start its program as a task. The cause follows the code: PROG-007 (the program is "
+          + "already running), PROG-040 (motion group 1 is held by another task), or the program does not exist "
+          + "(MEMO-073).",
+      "Read the cause. Let the running copy end (or ABORT it), give the program you RUN no motion group "
+          + "(DEFAULT_GROUP = *,*,*,*,*) when another task moves the arm, or load the program the RUN names."),
+  PROG_007("PROG-007", AlarmSeverity.WARN, "Program is already running", Source.RECALLED,
+      "The cause under INTP-267: RUN named a program that is running as a task already; one program runs once.",
+      "Wait until the task ends (or ABORT it) before running it again, or RUN another program."),
+  MEMO_073("MEMO-073", AlarmSeverity.WARN, "Program does not exist", Source.VERIFIED,
+      "The cause under INTP-267 (or INTP-105 for a start from the PLC): the program to start is not on the controller.",
+      "Load or create the program, or correct the name the RUN (or the PLC's PNS/STYLE number) gives."),
   INTP_129("INTP-129", AlarmSeverity.ABORT, "Cannot use motion group for call", Source.RECALLED,
       "A TIME BEFORE, TIME AFTER or DISTANCE BEFORE option CALLs a program that has a motion group: a program "
           + "called this way runs beside the motion and may not hold the arm.",
       "Give the called program no motion group (DEFAULT_GROUP = *,*,*,*,* on its DETAIL screen), or move "
           + "its motion lines back into the main program."),
   PROG_040("PROG-040", AlarmSeverity.WARN, "Already locked by other task", Source.RECALLED,
-      "The cause under INTP-105: motion group 1 is reserved by another running program, so a second program that "
+      "The cause under INTP-267 (RUN) and INTP-105 (a start from the PLC): motion group 1 is reserved by another "
+          + "running program, so a second program that "
           + "moves the arm cannot start. Two tasks never move the same arm at once.",
       "Check the running tasks (SELECT marks them; the PLC panel lists them): end the one that holds the group first, or remove "
           + "the motion group from the program you RUN."),

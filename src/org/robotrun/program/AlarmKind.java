@@ -6,7 +6,7 @@ package org.robotrun.program;
  * limit); that alarm is {@link #MOTION} with the port's code.
  */
 public enum AlarmKind {
-  TYPE_MISMATCH(AlarmCode.INTP_203),
+  TYPE_MISMATCH(AlarmCode.INTP_205),
   DIVIDE_BY_ZERO(AlarmCode.SIMU_001),
   BAD_INDEX(AlarmCode.INTP_204),
   BAD_VALUE(AlarmCode.INTP_304),
@@ -21,7 +21,7 @@ public enum AlarmKind {
   ABORTED(AlarmCode.SIMU_005),
   MOTION(AlarmCode.SIMU_011),
   NOT_SUPPORTED(AlarmCode.SIMU_012),
-  RUN_FAILED(AlarmCode.INTP_105),
+  RUN_FAILED(AlarmCode.INTP_267),
   /** A TIME/DISTANCE BEFORE/AFTER CALL of a program with a motion group. */
   CALL_GROUP(AlarmCode.INTP_129),
   /** An iRVision fault; the signal carries its CVIS code. */

@@ -102,6 +102,7 @@ final class Compiler {
       case Instruction.Pause p -> "PAUSE";
       case Instruction.Abort a -> "ABORT";
       case Instruction.If f -> "IF";
+      case Instruction.IfAction f -> "IF";
       case Instruction.IfThen f -> "IF…THEN";
       case Instruction.Else e -> "ELSE";
       case Instruction.EndIf e -> "ENDIF";
@@ -124,7 +125,7 @@ final class Compiler {
       case Instruction.Move mv -> new Ops.MoveOp(mv, skipLabel(mv));
       case Instruction.AssignRegister a -> assignR(a);
       case Instruction.AssignPosReg a -> assignPr(a);
-      case Instruction.AssignPosElement a -> new Ops.AssignPrElementOp(idx(a.register().index()), a.element(), expr(a.value()));
+      case Instruction.AssignPosElement a -> new Ops.AssignPrElementOp(idx(a.register().index()), idx(a.element()), expr(a.value()));
       case Instruction.SelectFrame s -> new Ops.SelectFrameOp(s.kind(), idx(s.number()));
       case Instruction.SetFrame s -> new Ops.SetFrameOp(s.kind(), idx(s.frame()), idx(s.register().index()));
       case Instruction.Payload p -> new Ops.PayloadOp(idx(p.schedule()));
@@ -137,6 +138,7 @@ final class Compiler {
       case Instruction.Pause p -> new Ops.PauseOp();
       case Instruction.Abort a -> new Ops.AbortOp();
       case Instruction.If f -> new Ops.IfOp(expr(f.condition()), branch(f.branch()));
+      case Instruction.IfAction f -> new Ops.IfActionOp(expr(f.condition()), line(i, f.action()));
       case Instruction.IfThen f -> new Ops.IfThenOp(expr(f.condition()));
       case Instruction.Else e -> new Ops.ElseOp();
       case Instruction.EndIf e -> new Ops.Nop();
@@ -160,7 +162,7 @@ final class Compiler {
       // A WHEN line does nothing when run as a statement: it is watched through MONITOR.
       case Instruction.When w -> new Ops.Nop();
       case Instruction.AssignString a -> new Ops.AssignSrOp(idx(a.register().index()), expr(a.value()));
-      case Instruction.MacroCall c -> new Ops.MacroOp(c.name());
+      case Instruction.MacroCall c -> new Ops.MacroOp(c.name(), c.args().stream().map(Compiler::expr).toArray(Node[]::new));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
       case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register(), o.userFrame().map(Compiler::idx).orElse(null));
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
@@ -200,6 +202,7 @@ final class Compiler {
       case Instruction.CurrentJpos f -> new Ops.AssignPrOp(target, s, null, null);
       case Instruction.FromFrame f -> new Ops.AssignPrOp(target, s, idx(f.frame()), null);
       case Instruction.PosArithmetic f -> new Ops.AssignPrOp(target, s, idx(f.left().index()), idx(f.right().index()));
+      case Instruction.PosSum f -> new Ops.AssignPrOp(target, s, null, null);
     };
   }
 
@@ -240,7 +243,7 @@ final class Compiler {
       case Expr.StringConst c -> new Nodes.StrConst(c.value());
       case Expr.Register r -> r.register().index() instanceof Index.Direct d && d.value() >= 1
           && d.value() <= Registers.R_COUNT ? new Nodes.RegDirect(d.value()) : new Nodes.RegIndexed(idx(r.register().index()));
-      case Expr.PosElement p -> new Nodes.PosElement(idx(p.register().index()), p.element());
+      case Expr.PosElement p -> new Nodes.PosElement(idx(p.register().index()), idx(p.element()));
       case Expr.Io io -> new Nodes.IoRead(io.kind(), idx(io.port().index()));
       case Expr.Timer t -> new Nodes.TimerRead(idx(t.timer().index()));
       case Expr.Arg a -> new Nodes.ArgRead(idx(a.index()));
@@ -276,8 +279,12 @@ final class Compiler {
     // Only block statements matter here, so instanceof tests rather than a switch over every statement.
     for (int i = 0; i < lines.size(); i++) {
       Instruction in = lines.get(i);
-      if (in instanceof Instruction.For || in instanceof Instruction.IfThen) {
+      if (in instanceof Instruction.For || in instanceof Instruction.IfThen
+          || in instanceof Instruction.Unsupported u && (u.opensIfThen() || u.opensFor())) {
+        // An IF ... THEN or FOR kept as not supported still opens its block (the line alarms when it runs).
         open.push(i);
+      } else if (in instanceof Instruction.EndFor && !open.isEmpty() && opensForUnsupported(lines.get(open.peek()))) {
+        open.pop();
       } else if (in instanceof Instruction.EndFor) {
         if (open.isEmpty() || !(lines.get(open.peek()) instanceof Instruction.For f)) {
           structureError(i, "ENDFOR without FOR" + openBlock(lines, open));
@@ -288,19 +295,21 @@ final class Compiler {
           ops[i] = new Ops.EndForOp(forLine, f.down());
         }
       } else if (in instanceof Instruction.Else) {
-        if (open.isEmpty() || !(lines.get(open.peek()) instanceof Instruction.IfThen) || elseOf[open.peek()] >= 0) {
+        if (open.isEmpty() || !opensIf(lines.get(open.peek())) || elseOf[open.peek()] >= 0) {
           structureError(i, "ELSE without IF…THEN" + openBlock(lines, open));
           ops[i] = new Ops.Fail(AlarmKind.STRUCTURE, "ELSE without IF…THEN");
         } else {
           elseOf[open.peek()] = i;
         }
       } else if (in instanceof Instruction.EndIf) {
-        if (open.isEmpty() || !(lines.get(open.peek()) instanceof Instruction.IfThen)) {
+        if (open.isEmpty() || !opensIf(lines.get(open.peek()))) {
           structureError(i, "ENDIF without IF…THEN" + openBlock(lines, open));
         } else {
           int ifLine = open.pop();
           int elseLine = elseOf[ifLine];
-          ((Ops.IfThenOp) ops[ifLine]).falseLine = elseLine >= 0 ? elseLine + 1 : i;
+          if (ops[ifLine] instanceof Ops.IfThenOp ifOp) {
+            ifOp.falseLine = elseLine >= 0 ? elseLine + 1 : i;
+          }
           if (elseLine >= 0) {
             ((Ops.ElseOp) ops[elseLine]).endIfLine = i;
           }
@@ -321,12 +330,20 @@ final class Compiler {
     }
   }
 
+  private static boolean opensIf(Instruction in) {
+    return in instanceof Instruction.IfThen || in instanceof Instruction.Unsupported u && u.opensIfThen();
+  }
+
+  private static boolean opensForUnsupported(Instruction in) {
+    return in instanceof Instruction.Unsupported u && u.opensFor();
+  }
+
   private static String openBlock(List<Instruction> lines, Deque<Integer> open) {
     if (open.isEmpty()) {
       return "";
     }
     int i = open.peek();
-    return " (innermost open block: " + (lines.get(i) instanceof Instruction.For ? "FOR" : "IF…THEN") + " at line " + (i + 1) + ")";
+    return " (innermost open block: " + (lines.get(i) instanceof Instruction.For || opensForUnsupported(lines.get(i)) ? "FOR" : "IF…THEN") + " at line " + (i + 1) + ")";
   }
 
   private void matchSelect(List<Instruction> lines, Op[] ops, int first, Instruction.Select s) {

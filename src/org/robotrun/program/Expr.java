@@ -36,11 +36,17 @@ public sealed interface Expr {
   /**
    * One element of a position register, {@code PR[i,j]}: j = 1..6 is X, Y, Z, W, P, R (mm, deg)
    * of a Cartesian PR or J1..J6 (deg) of a joint PR. The comment in {@code PR[10,3:STACK]} is
-   * the item's comment.
+   * the item's comment. The element j is a constant or {@code R[k]}
+   * ({@code PR[1,R[4]]}), resolved when the line runs.
    */
-  record PosElement(Item register, int element) implements Expr {
+  record PosElement(Item register, Index element) implements Expr {
     public PosElement {
       Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(element, "element");
+    }
+
+    public PosElement(Item register, int element) {
+      this(register, Index.of(element));
     }
   }
 

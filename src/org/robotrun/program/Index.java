@@ -20,6 +20,12 @@ public sealed interface Index {
     }
   }
 
+  /**
+   * The value of CALL argument AR[arg], e.g. {@code R[AR[1]]}: the callee indexes with what its
+   * caller passed (an alarm when the argument is missing or not an integer).
+   */
+  record ViaArg(int arg) implements Index {}
+
   static Index of(int value) {
     return new Direct(value);
   }

@@ -78,11 +78,19 @@ public sealed interface Instruction {
     }
   }
 
-  /** {@code PR[i,j]=expr}; j = 1..6. The item comment is on {@code register}. */
-  record AssignPosElement(Item register, int element, Expr value) implements Instruction {
+  /**
+   * {@code PR[i,j]=expr}; j = 1..6, a constant or {@code R[k]} (resolved, and range-checked, when
+   * the line runs). The item comment is on {@code register}.
+   */
+  record AssignPosElement(Item register, Index element, Expr value) implements Instruction {
     public AssignPosElement {
       Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(element, "element");
       Objects.requireNonNull(value, "value");
+    }
+
+    public AssignPosElement(Item register, int element, Expr value) {
+      this(register, Index.of(element), value);
     }
   }
 
@@ -109,11 +117,45 @@ public sealed interface Instruction {
   /** {@code JPOS}: the current joint position. */
   record CurrentJpos() implements PosSource {}
 
-  /** {@code UFRAME[n]} or {@code UTOOL[n]}: a frame's data. */
-  record FromFrame(FrameKind kind, Index frame) implements PosSource {
+  /** {@code UFRAME[n]} or {@code UTOOL[n]}: a frame's data; {@code comment} as in {@code UFRAME[2:TABLE]}. */
+  record FromFrame(FrameKind kind, Index frame, String comment) implements PosSource {
     public FromFrame {
       Objects.requireNonNull(kind, "kind");
       Objects.requireNonNull(frame, "frame");
+      Objects.requireNonNull(comment, "comment");
+    }
+
+    public FromFrame(FrameKind kind, Index frame) {
+      this(kind, frame, "");
+    }
+  }
+
+  /**
+   * {@code PR[i]=LPOS-LPOS}, {@code PR[i]=PR[j]+PR[k]-LPOS}, {@code PR[i]=P[3]+PR[2]}: a sum of
+   * positions beyond {@link PosArithmetic}'s two registers, element by element (XYZWPR or J1..J6)
+   * as the controller adds them; the first term's configuration is kept. Each term is a
+   * {@link FromPosReg}, {@link FromLocal}, {@link CurrentLpos} or {@link CurrentJpos}; Cartesian
+   * and joint terms together are a type-mismatch alarm when the line runs.
+   */
+  record PosSum(PosSource first, List<PosTerm> rest) implements PosSource {
+    public PosSum {
+      Objects.requireNonNull(first, "first");
+      rest = List.copyOf(rest);
+      if (rest.isEmpty() || !isTerm(first) || !rest.stream().allMatch(t -> isTerm(t.term()))) {
+        throw new IllegalArgumentException("a position sum needs two or more PR[], P[], LPOS or JPOS terms");
+      }
+    }
+
+    /** The sources a sum may hold. */
+    public static boolean isTerm(PosSource s) {
+      return s instanceof FromPosReg || s instanceof FromLocal || s instanceof CurrentLpos || s instanceof CurrentJpos;
+    }
+  }
+
+  /** {@code +term} or {@code -term} of a {@link PosSum}. */
+  record PosTerm(boolean add, PosSource term) {
+    public PosTerm {
+      Objects.requireNonNull(term, "term");
     }
   }
 
@@ -135,27 +177,45 @@ public sealed interface Instruction {
     TOOL
   }
 
-  /** {@code UFRAME_NUM=n|R[i]} or {@code UTOOL_NUM=n|R[i]} (0 = world / flange). */
-  record SelectFrame(FrameKind kind, Index number) implements Instruction {
+  /**
+   * {@code UFRAME_NUM=n|R[i]} or {@code UTOOL_NUM=n|R[i]} (0 = world / flange); {@code
+   * groupWritten} when the line names motion group 1, {@code UTOOL_NUM[GP1]=1}, as a
+   * multi-group controller lists it (the same statement for the one arm RobotRun moves).
+   */
+  record SelectFrame(FrameKind kind, Index number, boolean groupWritten) implements Instruction {
     public SelectFrame {
       Objects.requireNonNull(kind, "kind");
       Objects.requireNonNull(number, "number");
     }
-  }
 
-  /** {@code UFRAME[n]=PR[i]} or {@code UTOOL[n]=PR[i]}. */
-  record SetFrame(FrameKind kind, Index frame, Item register) implements Instruction {
-    public SetFrame {
-      Objects.requireNonNull(kind, "kind");
-      Objects.requireNonNull(frame, "frame");
-      Objects.requireNonNull(register, "register");
+    public SelectFrame(FrameKind kind, Index number) {
+      this(kind, number, false);
     }
   }
 
-  /** {@code PAYLOAD[n]}: accepted, no dynamics. */
-  record Payload(Index schedule) implements Instruction {
+  /** {@code UFRAME[n]=PR[i]} or {@code UTOOL[n]=PR[i]}; {@code comment} as in {@code UFRAME[2:TABLE]}. */
+  record SetFrame(FrameKind kind, Index frame, String comment, Item register) implements Instruction {
+    public SetFrame {
+      Objects.requireNonNull(kind, "kind");
+      Objects.requireNonNull(frame, "frame");
+      Objects.requireNonNull(comment, "comment");
+      Objects.requireNonNull(register, "register");
+    }
+
+    public SetFrame(FrameKind kind, Index frame, Item register) {
+      this(kind, frame, "", register);
+    }
+  }
+
+  /** {@code PAYLOAD[n]} or {@code PAYLOAD[n:comment]}: accepted, no dynamics. */
+  record Payload(Index schedule, String comment) implements Instruction {
     public Payload {
       Objects.requireNonNull(schedule, "schedule");
+      Objects.requireNonNull(comment, "comment");
+    }
+
+    public Payload(Index schedule) {
+      this(schedule, "");
     }
   }
 
@@ -215,6 +275,28 @@ public sealed interface Instruction {
   }
 
   /** {@code IF (expr) THEN}; the condition is usually an {@link Expr.Group}. */
+  /**
+   * {@code IF cond,action}: the action runs when the condition holds ({@code IF DI[1]=ON,DO[2]=(ON)},
+   * {@code IF R[1]>3,R[2]=(R[2]+1)}, {@code IF F[1],DO[3]=PULSE,0.5sec}). The controller allows
+   * an assignment of R[], PR[i,j] or an output, or a pulse (FANUC R-30iB Operator's Manual,
+   * "Conditional branch instructions", IF with an action).
+   */
+  record IfAction(Expr condition, Instruction action) implements Instruction {
+    public IfAction {
+      Objects.requireNonNull(condition, "condition");
+      Objects.requireNonNull(action, "action");
+      if (!allowedAction(action)) {
+        throw new IllegalArgumentException("IF action must be an assignment, an output or a pulse: " + action);
+      }
+    }
+
+    /** The statements an IF may run as its action. */
+    public static boolean allowedAction(Instruction action) {
+      return action instanceof AssignRegister || action instanceof SetIo || action instanceof Pulse
+          || action instanceof AssignPosElement;
+    }
+  }
+
   record IfThen(Expr condition) implements Instruction {
     public IfThen {
       Objects.requireNonNull(condition, "condition");
@@ -372,12 +454,18 @@ public sealed interface Instruction {
   }
 
   /**
-   * A macro called by its name ({@code OPEN_HAND}): runs the program of that name as a CALL
-   * without arguments (RobotRun's macro table maps each macro to the program of its own name).
+   * A macro called by its name ({@code OPEN_HAND}, {@code Open hand 1}, {@code Program Status(13)}):
+   * runs the program the macro table names (a one-word macro with no table entry: the program of
+   * its own name) as a CALL with {@code args} as AR[1..].
    */
-  record MacroCall(String name) implements Instruction {
+  record MacroCall(String name, List<Expr> args) implements Instruction {
     public MacroCall {
       Objects.requireNonNull(name, "name");
+      args = List.copyOf(args);
+    }
+
+    public MacroCall(String name) {
+      this(name, List.of());
     }
   }
 
@@ -410,9 +498,14 @@ public sealed interface Instruction {
   }
 
   /** {@code UALM[i]}: raises user alarm i. */
-  record UserAlarm(Index number) implements Instruction {
+  record UserAlarm(Index number, String comment) implements Instruction {
     public UserAlarm {
       Objects.requireNonNull(number, "number");
+      Objects.requireNonNull(comment, "comment");
+    }
+
+    public UserAlarm(Index number) {
+      this(number, "");
     }
   }
 
@@ -443,6 +536,19 @@ public sealed interface Instruction {
     public Unsupported {
       Objects.requireNonNull(text, "text");
       Objects.requireNonNull(what, "what");
+    }
+
+    /** An {@code IF ... THEN} line (its condition not supported): it still opens the block its ENDIF closes. */
+    public boolean opensIfThen() {
+      String t = text.strip().toUpperCase(java.util.Locale.ROOT);
+      return t.startsWith("IF") && (t.length() == 2 || !Character.isLetterOrDigit(t.charAt(2))) && t.endsWith("THEN")
+          && (t.length() == 4 || !Character.isLetterOrDigit(t.charAt(t.length() - 5)));
+    }
+
+    /** A {@code FOR} line (a bound not supported): it still opens the block its ENDFOR closes. */
+    public boolean opensFor() {
+      String t = text.strip().toUpperCase(java.util.Locale.ROOT);
+      return t.startsWith("FOR ");
     }
   }
 }

@@ -61,8 +61,6 @@ public final class Interpreter {
   private static final int W_CONDITION = 3;
   private static final double TIME_EPS_SEC = 1e-9;
   private static final int MAX_SCREEN_LINES = 100;
-  /** Ports PULSE may drive. */
-  private static final IoKind[] PULSED = {IoKind.DO, IoKind.RO};
 
   final ProgramStore store;
   final Registers regs;
@@ -119,7 +117,18 @@ public final class Interpreter {
   /** Action programs of monitors that fired, running beside the program. */
   private final List<Interpreter> actions = new ArrayList<>(1);
   /** TIME AFTER actions counting down: seconds left, and the action. */
-  private final java.util.List<Object[]> afterTimers = new java.util.ArrayList<>(2);
+  private final java.util.List<AfterTimer> afterTimers = new java.util.ArrayList<>(2);
+
+  /** A TIME AFTER action counting down (a plain field, not a boxed double per tick). */
+  private static final class AfterTimer {
+    double leftSec;
+    final Motion.TimedAction action;
+
+    AfterTimer(double leftSec, Motion.TimedAction action) {
+      this.leftSec = leftSec;
+      this.action = action;
+    }
+  }
   private double waitRemainingSec;
   private double waitElapsedSec;
   private Ops.WaitConditionOp waitOp;
@@ -129,8 +138,8 @@ public final class Interpreter {
   /** String value of the last node when {@code kind == STR}. */
   String str;
 
-  private final double[][] pulseLeftSec;
-  private int activePulses;
+  /** Whether this interpreter's tick counts the shared pulses down (false under a controller). */
+  private boolean ownsPulseClock = true;
   private final List<String> userScreen = new ArrayList<>();
   private String notice = "";
   private long executedLines;
@@ -148,10 +157,6 @@ public final class Interpreter {
     this.frames = new Frame[settings.maxCallDepth()];
     for (int i = 0; i < frames.length; i++) {
       frames[i] = new Frame();
-    }
-    this.pulseLeftSec = new double[IoKind.values().length][];
-    for (IoKind k : IoKind.values()) {
-      pulseLeftSec[k.ordinal()] = new double[registers.ioSize(k) + 1];
     }
   }
 
@@ -425,8 +430,8 @@ public final class Interpreter {
     if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
       throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);
     }
-    if (activePulses > 0) {
-      advancePulses(dtSec);
+    if (ownsPulseClock) {
+      regs.advancePulses(dtSec);
     }
     if (!afterTimers.isEmpty()) {
       try {
@@ -567,7 +572,7 @@ public final class Interpreter {
           switch (port.poll(motionHandle)) {
             case RUNNING -> {
               if (!motionBefore.isEmpty() && !motionHeld) {
-                fireBefore(port.timeLeftSec(motionHandle), port.distanceLeftMm(motionHandle));
+                fireBefore(false);
               }
               if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
                 // The skip condition turned true: the arm stops and the program goes on with the
@@ -588,9 +593,9 @@ public final class Interpreter {
               waitKind = W_NONE;
               // CNT: done when blending starts; TIME BEFORE actions not fired yet fire now, and
               // TIME AFTER actions start counting (RobotRun's approximation of "after the point").
-              fireBefore(0, 0);
+              fireBefore(true);
               for (Motion.TimedAction t : motionAfter) {
-                afterTimers.add(new Object[] {t.amount(), t});
+                afterTimers.add(new AfterTimer(t.amount(), t));
               }
               motionAfter.clear();
               if (!afterTimers.isEmpty()) {
@@ -826,6 +831,15 @@ public final class Interpreter {
   }
 
   /** The value of R[j] used as an index ({@code R[R[j]]}, {@code LBL[R[j]]}): a whole number. */
+  /** The CALL argument AR[j] as an index (R[AR[1]]): an alarm when it is missing or not a whole number. */
+  int argAsIndex(int j) {
+    double v = readArg(j);
+    if (kind == Nodes.STR || !Nodes.isWhole(v)) {
+      throw new AlarmSignal(AlarmKind.BAD_INDEX, "AR[" + j + "] is not a whole number and cannot be an index");
+    }
+    return (int) v;
+  }
+
   int registerAsIndex(int j) {
     Nodes.check("R", j, Registers.R_COUNT);
     double v = regs.r[j];
@@ -864,12 +878,17 @@ public final class Interpreter {
   }
 
   void pulse(IoKind io, int i, double widthSec) {
-    regs.io[io.ordinal()][i] = 1;
-    if (pulseLeftSec[io.ordinal()][i] <= 0) {
-      activePulses++;
-    }
-    // A zero width still shows ON until the next tick.
-    pulseLeftSec[io.ordinal()][i] = Math.max(widthSec, TIME_EPS_SEC);
+    // A zero width still shows ON until the next tick. The countdown is the I/O's (Registers).
+    regs.startPulse(io, i, widthSec);
+  }
+
+  /**
+   * Leaves counting pulses down to the caller, who calls {@link Registers#advancePulses} once per
+   * tick for every interpreter sharing these registers (the controller: its main program, RUN
+   * tasks, action programs and BG Logic). A lone interpreter counts them itself.
+   */
+  public void leavePulsesToCaller() {
+    ownsPulseClock = false;
   }
 
   // ================================================================ condition monitors
@@ -938,6 +957,7 @@ public final class Interpreter {
           + " " + role + " moves the robot");
     }
     Interpreter child = new Interpreter(store, regs, port, settings);
+    child.ownsPulseClock = false;  // the pulses it starts count down with the caller's (shared I/O)
     child.setAdvancesTimers(false);  // TIMER[] advance once per tick, in the program that started it
     child.select(name);
     child.forward();
@@ -968,11 +988,28 @@ public final class Interpreter {
   }
 
   /** Fires the TIME/DISTANCE BEFORE actions whose moment has come, {@code leftSec} / {@code leftMm} before the point. */
-  private void fireBefore(double leftSec, double leftMm) {
+  /**
+   * Runs the TIME BEFORE / DISTANCE BEFORE actions that are due; the time and distance left are
+   * asked of the motion only when an action needs them (the distance costs forward kinematics);
+   * {@code arrived}: the motion is done, every action is due.
+   */
+  private void fireBefore(boolean arrived) {
+    double leftSec = arrived ? 0 : Double.NaN;
+    double leftMm = arrived ? 0 : Double.NaN;
     for (java.util.Iterator<Motion.TimedAction> it = motionBefore.iterator(); it.hasNext(); ) {
       Motion.TimedAction t = it.next();
-      boolean due = t.when() == Motion.When.DISTANCE_BEFORE ? leftMm <= t.amount() + 1e-6
-          : leftSec <= t.amount() + TIME_EPS_SEC;
+      boolean due;
+      if (t.when() == Motion.When.DISTANCE_BEFORE) {
+        if (Double.isNaN(leftMm)) {
+          leftMm = port.distanceLeftMm(motionHandle);
+        }
+        due = leftMm <= t.amount() + 1e-6;
+      } else {
+        if (Double.isNaN(leftSec)) {
+          leftSec = port.timeLeftSec(motionHandle);
+        }
+        due = leftSec <= t.amount() + TIME_EPS_SEC;
+      }
       if (due) {
         it.remove();
         runTimedAction(t);
@@ -981,13 +1018,12 @@ public final class Interpreter {
   }
 
   private void advanceTimedActions(double dtSec) {
-    for (java.util.Iterator<Object[]> it = afterTimers.iterator(); it.hasNext(); ) {
-      Object[] a = it.next();
-      double left = (double) a[0] - dtSec;
-      a[0] = left;
-      if (left <= TIME_EPS_SEC) {
+    for (java.util.Iterator<AfterTimer> it = afterTimers.iterator(); it.hasNext(); ) {
+      AfterTimer a = it.next();
+      a.leftSec -= dtSec;
+      if (a.leftSec <= TIME_EPS_SEC) {
         it.remove();
-        runTimedAction((Motion.TimedAction) a[1]);
+        runTimedAction(a.action);
       }
     }
   }
@@ -1016,22 +1052,6 @@ public final class Interpreter {
     };
     if (op != null) {
       op.exec(this);
-    }
-  }
-
-  private void advancePulses(double dtSec) {
-    for (IoKind io : PULSED) {
-      double[] left = pulseLeftSec[io.ordinal()];
-      for (int i = 1; i < left.length; i++) {
-        if (left[i] > 0) {
-          left[i] -= dtSec;
-          if (left[i] <= TIME_EPS_SEC) {
-            left[i] = 0;
-            regs.io[io.ordinal()][i] = 0;
-            activePulses--;
-          }
-        }
-      }
     }
   }
 

@@ -48,21 +48,33 @@ final class Nodes {
     final int direct;
     /** 0 when direct; otherwise the R[] number holding the index. */
     final int viaRegister;
+    /** 0 unless the index is the CALL argument AR[viaArg]. */
+    final int viaArg;
 
     Idx(Index index) {
       switch (index) {
         case Index.Direct d -> {
           direct = d.value();
           viaRegister = 0;
+          viaArg = 0;
         }
         case Index.Indirect i -> {
           direct = 0;
           viaRegister = i.register();
+          viaArg = 0;
+        }
+        case Index.ViaArg a -> {
+          direct = 0;
+          viaRegister = 0;
+          viaArg = a.arg();
         }
       }
     }
 
     int resolve(Interpreter m) {
+      if (viaArg != 0) {
+        return m.argAsIndex(viaArg);
+      }
       return viaRegister == 0 ? direct : m.registerAsIndex(viaRegister);
     }
   }
@@ -166,16 +178,17 @@ final class Nodes {
 
   static final class PosElement extends Node {
     final Idx idx;
-    final int element;
+    final Idx elementIdx;
 
-    PosElement(Idx idx, int element) {
+    PosElement(Idx idx, Idx element) {
       this.idx = idx;
-      this.element = element;
+      this.elementIdx = element;
     }
 
     @Override
     double eval(Interpreter m) {
       int i = check("PR", idx.resolve(m), Registers.PR_COUNT);
+      int element = elementIdx.resolve(m);
       if (element < 1 || element > Position.ELEMENTS) {
         throw new AlarmSignal(AlarmKind.BAD_INDEX, "PR[" + i + "," + element + "]: element out of range (expected 1..6)");
       }
@@ -206,7 +219,7 @@ final class Nodes {
     }
   }
 
-  /** A system variable's value: $WAITTMOUT in 1/100 s, $MCR.$GENOVERRIDE in percent (integers). */
+  /** A system variable's value (SystemVariables): $WAITTMOUT in 1/100 s, $MCR.$GENOVERRIDE in percent, frame numbers (integers). */
   static final class SysVarRead extends Node {
     final String name;
 
@@ -220,7 +233,16 @@ final class Nodes {
       return switch (name) {
         case SystemVariables.WAITTMOUT -> Math.round(m.waitTimeoutSec * 100);
         case SystemVariables.GENOVERRIDE -> m.port.overridePct();
-        default -> throw new IllegalStateException("no system variable " + name);
+        case SystemVariables.TOOLNUM -> m.port.activeFrame(Instruction.FrameKind.TOOL);
+        case SystemVariables.FRAMENUM -> m.port.activeFrame(Instruction.FrameKind.USER);
+        case SystemVariables.JOG_GROUP -> 1;
+        default -> {
+          int slot = SystemVariables.backgroundSlot(name);
+          if (slot == 0) {
+            throw new IllegalStateException("no system variable " + name);
+          }
+          yield m.taskPort().backgroundStatus(slot);
+        }
       };
     }
   }

@@ -196,14 +196,18 @@ final class Ops {
    */
   static final class MacroOp extends Op {
     final String name;
+    final Node[] args;
+    /** The table's key of the name, made once (not on every call). */
+    final String key;
 
-    MacroOp(String name) {
+    MacroOp(String name, Node[] args) {
       this.name = name;
+      this.args = args;
+      this.key = InterpreterSettings.macroKey(name);
     }
 
     @Override
     int exec(Interpreter m) {
-      String key = InterpreterSettings.macroKey(name);
       String program = m.settings.macros().get(key);
       if (program == null) {
         if (key.contains(" ")) {
@@ -211,7 +215,7 @@ final class Ops {
         }
         program = name;
       }
-      m.call(program, new Node[0], m.cur.pc);
+      m.call(program, args, m.cur.pc);
       return NEXT;
     }
   }
@@ -228,6 +232,22 @@ final class Ops {
     @Override
     int exec(Interpreter m) {
       return condition.bool(m, "IF") ? branch.take(m, m.cur.pc) : NEXT;
+    }
+  }
+
+  /** {@code IF cond,action}: runs the action's op when the condition holds. */
+  static final class IfActionOp extends Op {
+    final Node condition;
+    final Op action;
+
+    IfActionOp(Node condition, Op action) {
+      this.condition = condition;
+      this.action = action;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      return condition.bool(m, "IF") ? action.exec(m) : NEXT;
     }
   }
 
@@ -575,6 +595,14 @@ final class Ops {
           }
           m.port.setOverridePct(v);
         }
+        case SystemVariables.TOOLNUM, SystemVariables.FRAMENUM -> {
+          Instruction.FrameKind kind = name.equals(SystemVariables.TOOLNUM) ? Instruction.FrameKind.TOOL
+              : Instruction.FrameKind.USER;
+          if (v < 0 || v > Interpreter.FRAME_COUNT) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, name + "=" + v + ": expected 0.." + Interpreter.FRAME_COUNT);
+          }
+          m.port.selectFrame(kind, v);
+        }
         default -> throw new IllegalStateException("no system variable " + name);
       }
       return NEXT;
@@ -729,9 +757,47 @@ final class Ops {
         case Instruction.FromFrame s -> m.port.frame(s.kind(),
             Nodes.check(frameName(s.kind()), a.resolve(m), Interpreter.FRAME_COUNT));
         case Instruction.PosArithmetic s -> arithmetic(m, s.add());
+        case Instruction.PosSum s -> sum(m, s);
       };
       m.regs.pr[i] = p;
       return NEXT;
+    }
+
+    /** A sum of positions, element by element; the first term's configuration is kept. */
+    private static Position sum(Interpreter m, Instruction.PosSum s) {
+      Position acc = term(m, s.first());
+      for (Instruction.PosTerm t : s.rest()) {
+        Position y = term(m, t.term());
+        if (acc instanceof Position.Cartesian cx && y instanceof Position.Cartesian cy) {
+          acc = t.add() ? cx.plus(cy) : cx.minus(cy);
+        } else if (acc instanceof Position.Joint jx && y instanceof Position.Joint jy) {
+          acc = t.add() ? jx.plus(jy) : jx.minus(jy);
+        } else {
+          throw new AlarmSignal(AlarmKind.TYPE_MISMATCH,
+              "position arithmetic mixes a Cartesian and a joint position (" + termName(t.term()) + ")");
+        }
+      }
+      return acc;
+    }
+
+    private static Position term(Interpreter m, Instruction.PosSource s) {
+      return switch (s) {
+        case Instruction.FromPosReg f -> m.regs.pr[Nodes.check("PR", new Idx(f.register().index()).resolve(m), Registers.PR_COUNT)];
+        case Instruction.FromLocal f -> m.localPosition(f.number()).position();
+        case Instruction.CurrentLpos c -> m.port.currentLpos();
+        case Instruction.CurrentJpos c -> m.port.currentJpos();
+        default -> throw new IllegalStateException("not a position term: " + s);
+      };
+    }
+
+    private static String termName(Instruction.PosSource s) {
+      return switch (s) {
+        case Instruction.FromPosReg f -> "PR[]";
+        case Instruction.FromLocal f -> "P[" + f.number() + "]";
+        case Instruction.CurrentLpos c -> "LPOS";
+        case Instruction.CurrentJpos c -> "JPOS";
+        default -> s.toString();
+      };
     }
 
     private Position arithmetic(Interpreter m, boolean add) {
@@ -751,18 +817,19 @@ final class Ops {
 
   static final class AssignPrElementOp extends Op {
     final Idx target;
-    final int element;
+    final Idx elementIdx;
     final Node value;
 
-    AssignPrElementOp(Idx target, int element, Node value) {
+    AssignPrElementOp(Idx target, Idx element, Node value) {
       this.target = target;
-      this.element = element;
+      this.elementIdx = element;
       this.value = value;
     }
 
     @Override
     int exec(Interpreter m) {
       int i = Nodes.check("PR", target.resolve(m), Registers.PR_COUNT);
+      int element = elementIdx.resolve(m);
       if (element < 1 || element > Position.ELEMENTS) {
         throw new AlarmSignal(AlarmKind.BAD_INDEX, "PR[" + i + "," + element + "]: element out of range (expected 1..6)");
       }

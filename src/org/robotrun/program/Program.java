@@ -82,10 +82,13 @@ public record Program(String name, Map<String, String> attributes, String commen
    * and system programs such as {@code _BGT_BTN_ABORT}).
    */
   public static boolean isValidName(String name) {
-    if (name.isEmpty() || name.length() > MAX_NAME_LENGTH || !(isAsciiLetter(name.charAt(0)) || name.charAt(0) == '_')) {
+    // A leading '-' is a controller's way to list a program it keeps apart (seen in real listings).
+    int first = name.startsWith("-") ? 1 : 0;
+    if (name.length() <= first || name.length() > MAX_NAME_LENGTH
+        || !(isAsciiLetter(name.charAt(first)) || name.charAt(first) == '_')) {
       return false;
     }
-    for (int i = 1; i < name.length(); i++) {
+    for (int i = first + 1; i < name.length(); i++) {
       char c = name.charAt(i);
       if (!isAsciiLetter(c) && !(c >= '0' && c <= '9') && c != '_') {
         return false;

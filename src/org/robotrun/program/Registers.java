@@ -109,6 +109,58 @@ public final class Registers {
     rIsInteger[i] = integer;
   }
 
+  // ---- PULSE: counted down in the shared I/O, whoever started it ----
+
+  /** Seconds each pulsed port (DO, RO) stays ON; 0 when not pulsing. Made on the first PULSE. */
+  private double[][] pulseLeftSec;
+  private int activePulses;
+
+  /**
+   * Turns {@code kind[i]} ON for {@code widthSec} of simulated time (at least until the next
+   * {@link #advancePulses}). The countdown belongs to the I/O, not to the program that started
+   * it: a RUN task or action program that ends leaves its pulse to end on time.
+   */
+  public void startPulse(IoKind kind, int i, double widthSec) {
+    if (pulseLeftSec == null) {
+      pulseLeftSec = new double[IoKind.values().length][];
+    }
+    double[] left = pulseLeftSec[kind.ordinal()];
+    if (left == null || left.length != io[kind.ordinal()].length) {
+      left = pulseLeftSec[kind.ordinal()] = java.util.Arrays.copyOf(left == null ? new double[0] : left,
+          io[kind.ordinal()].length);
+    }
+    io[kind.ordinal()][i] = 1;
+    if (left[i] <= 0) {
+      activePulses++;
+    }
+    left[i] = Math.max(widthSec, PULSE_EPS_SEC);
+  }
+
+  /** Counts every pending pulse down by {@code dtSec}; a pulse that is over turns its port OFF. Once per tick. */
+  public void advancePulses(double dtSec) {
+    if (activePulses == 0) {
+      return;
+    }
+    for (int k = 0; k < pulseLeftSec.length; k++) {
+      double[] left = pulseLeftSec[k];
+      if (left == null) {
+        continue;
+      }
+      for (int i = 1; i < left.length; i++) {
+        if (left[i] > 0) {
+          left[i] -= dtSec;
+          if (left[i] <= PULSE_EPS_SEC) {
+            left[i] = 0;
+            io[k][i] = 0;
+            activePulses--;
+          }
+        }
+      }
+    }
+  }
+
+  private static final double PULSE_EPS_SEC = 1e-9;
+
   // ---- SR[] ----
 
   /** SR[i] as text ("" until set). */

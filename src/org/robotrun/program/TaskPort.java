@@ -19,4 +19,12 @@ public interface TaskPort {
    *     "PROG-040 Already locked by other task")
    */
   Optional<String> run(String program);
+
+  /**
+   * The state of background-logic slot {@code slot} (1-based) as {@code $MIX_BG[slot].$STATUS}
+   * reads it: 2 running, 1 stopped, 0 no program in the slot (see SystemVariables).
+   */
+  default int backgroundStatus(int slot) {
+    return 0;
+  }
 }

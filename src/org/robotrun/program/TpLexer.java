@@ -136,9 +136,12 @@ public final class TpLexer {
       }
       if (isWordStart(c)) {
         int j = i + 1;
-        // A system variable's path ($MCR.$GENOVERRIDE) is one word.
-        while (j < n && (isWordPart(text.charAt(j))
-            || (c == '$' && text.charAt(j) == '.' && j + 1 < n && text.charAt(j + 1) == '$'))) {
+        if (c == '$') {
+          // A system variable's path is one word: $MCR.$GENOVERRIDE, $MNUTOOLNUM[1],
+          // $MIX_BG[2].$STATUS, $SYSTEM_TIME[1].RUN_TOT, and a KAREL variable $[PROG]NAME.
+          j = systemVariableEnd(text, i);
+        }
+        while (j < n && isWordPart(text.charAt(j))) {
           j++;
         }
         String word = text.substring(i, j);
@@ -194,7 +197,9 @@ public final class TpLexer {
           out.add(new TpToken(Kind.LBRACKET, ONE_CHAR['['], line, col));
           i++;
           if (message) {
-            int end = text.indexOf(']', i);
+            // The text runs to the last ']': a controller lists MESSAGE[R[1] > 5 mm] as typed.
+            int end = text.lastIndexOf(']');
+            end = end < i ? -1 : end;
             int stop = end < 0 ? n : end;
             out.add(new TpToken(Kind.RAW, text.substring(i, stop), line, firstColumn + i));
             i = stop;
@@ -210,9 +215,10 @@ public final class TpLexer {
         case ':' -> {
           out.add(new TpToken(Kind.COLON, ONE_CHAR[':'], line, col));
           i++;
-          if (bracketDepth > 0) {
-            int end = text.indexOf(']', i);
-            int stop = end < 0 ? n : end;
+          boolean group = out.size() >= 3 && isGroupWord(out.get(out.size() - 2)) && out.get(out.size() - 3).is(Kind.LBRACKET);
+          if (bracketDepth > 0 && !group) {
+            // ("PR[GP1:5,3:Z]": after a group the index follows, not a comment)
+            int stop = commentEnd(text, i);
             out.add(new TpToken(Kind.ITEM_COMMENT, text.substring(i, stop), line, firstColumn + i));
             i = stop;
           }
@@ -247,6 +253,76 @@ public final class TpLexer {
     }
     out.add(new TpToken(Kind.EOL, "", line, firstColumn + n));
     return out;
+  }
+
+  /** {@code GP1} .. {@code GP9}, any case: a motion group before ':' in {@code PR[GP1:5]}. */
+  private static boolean isGroupWord(TpToken t) {
+    String w = t.text();
+    return t.is(Kind.WORD) && w.length() == 3 && (w.charAt(0) == 'G' || w.charAt(0) == 'g')
+        && (w.charAt(1) == 'P' || w.charAt(1) == 'p') && w.charAt(2) >= '1' && w.charAt(2) <= '9';
+  }
+
+  /** The end of the system variable path starting with the {@code $} at {@code from}. */
+  private static int systemVariableEnd(String text, int from) {
+    int n = text.length();
+    int j = from + 1;
+    if (j < n && text.charAt(j) == '[') {
+      int close = text.indexOf(']', j);
+      if (close > j + 1 && isWordRun(text, j + 1, close)) {
+        j = close + 1;
+      }
+    }
+    while (true) {
+      while (j < n && isWordPart(text.charAt(j))) {
+        j++;
+      }
+      if (j < n && text.charAt(j) == '[') {
+        int k = j + 1;
+        while (k < n && isDigit(text.charAt(k))) {
+          k++;
+        }
+        if (k > j + 1 && k < n && text.charAt(k) == ']') {
+          j = k + 1;
+          continue;
+        }
+        return j;
+      }
+      if (j + 1 < n && text.charAt(j) == '.' && (text.charAt(j + 1) == '$' || isWordStart(text.charAt(j + 1)))) {
+        j += 2;
+        continue;
+      }
+      return j;
+    }
+  }
+
+  private static boolean isWordRun(String text, int from, int to) {
+    for (int k = from; k < to; k++) {
+      if (!isWordPart(text.charAt(k))) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /**
+   * Where an item comment starting at {@code from} ends: at the {@code ]} that closes its item.
+   * Brackets inside it pair up ({@code R[103:Z-PR[38]]}, a comment a controller keeps as typed).
+   */
+  private static int commentEnd(String text, int from) {
+    int depth = 0;
+    for (int k = from; k < text.length(); k++) {
+      char c = text.charAt(k);
+      if (c == '[') {
+        depth++;
+      } else if (c == ']') {
+        if (depth == 0) {
+          return k;
+        }
+        depth--;
+      }
+    }
+    int first = text.indexOf(']', from);
+    return first < 0 ? text.length() : first;
   }
 
   private static Kind single(char c) {

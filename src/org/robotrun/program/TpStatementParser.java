@@ -130,7 +130,13 @@ public final class TpStatementParser extends TpTokenCursor {
       "COL DETECT", "COL GUARD ADJUST", "JOINT_MAX_SPEED", "LINEAR_MAX_SPEED", "max_speed", "TIMER_OVERFLOW",
       "DIAGNOSTIC", "LOCK PREG", "UNLOCK PREG", "TC_ONLINE", "PTH", "remark", "system variable assignment",
       "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "PRINT", "BREAK", "MROT",
-      "constant path", "TORQ_LIMIT");
+      "constant path", "TORQ_LIMIT",
+      // compliance to an outside force: the simulated arm meets none, so its path is the same
+      "SOFTFLOAT");
+
+  /** The arithmetic functions of FANUC's math-function option, written {@code SQRT[R[1]]}. */
+  private static final java.util.Set<String> MATH_FUNCTIONS = java.util.Set.of(
+      "ABS", "SQRT", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ATAN2", "LN", "EXP", "TRUNC", "ROUND");
 
   private int nesting;
   private int operators;
@@ -173,6 +179,7 @@ public final class TpStatementParser extends TpTokenCursor {
       case Instruction.AssignRegister a -> a.value();
       case Instruction.AssignPosElement a -> a.value();
       case Instruction.If f -> f.condition();
+      case Instruction.IfAction f -> f.condition();
       case Instruction.IfThen f -> f.condition();
       case Instruction.WaitCondition w -> w.condition();
       case Instruction.SetIo s -> s.value();
@@ -281,7 +288,7 @@ public final class TpStatementParser extends TpTokenCursor {
       throw unsupported(peek(1), "motion to " + targetKind(peek(1).text()), false);
     }
     if (w.startsWith("$")) {
-      Optional<String> known = SystemVariables.supported(w);
+      Optional<String> known = SystemVariables.writable(w);
       if (known.isPresent() && peek(1).is(Kind.EQ)) {
         next();
         next();
@@ -320,6 +327,10 @@ public final class TpStatementParser extends TpTokenCursor {
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
+        if (!peek().is(Kind.WORD)) {
+          // TIMER[1]=((-3)): a timer set to a value, which newer systems allow
+          throw unsupported(peek(), "TIMER[i] set to a value", false);
+        }
         TpToken a = expectWord("START, STOP or RESET");
         yield switch (a.text().toUpperCase(Locale.ROOT)) {
           case "START" -> new Instruction.TimerSet(timer, Instruction.TimerAction.START);
@@ -329,16 +340,39 @@ public final class TpStatementParser extends TpTokenCursor {
         };
       }
       case "UFRAME_NUM", "UTOOL_NUM" -> {
+        boolean group = false;
+        if (peek().is(Kind.LBRACKET)) {
+          // UTOOL_NUM[GP1]=1: a multi-group controller names the group; RobotRun moves group 1
+          next();
+          TpToken g = expectWord("a motion group GPn in " + w + "[GPn]");
+          if (!g.text().toUpperCase(Locale.ROOT).matches("GP[1-9]")) {
+            throw error(g, "expected a motion group GP1..GP9 in " + w + "[...], found " + g.describe());
+          }
+          expect(Kind.RBRACKET, "']' closing " + w + "[GPn]");
+          if (!g.isWord("GP1")) {
+            throw unsupported(g, w + " of motion group " + g.text().toUpperCase(Locale.ROOT) + " (RobotRun moves group 1)", false);
+          }
+          group = true;
+        }
         expect(Kind.EQ, "'=' after " + w);
-        yield new Instruction.SelectFrame(w.equals("UFRAME_NUM") ? FrameKind.USER : FrameKind.TOOL, numberOrRegister(w));
+        if (peek().is(Kind.WORD) && !peek().isWord("R") && !peek().isWord("AR")) {
+          // UFRAME_NUM=Constant and the like: a value the controller listed by name
+          throw unsupported(peek(), w + "=" + TpToken.clip(peek().text()), false);
+        }
+        yield new Instruction.SelectFrame(w.equals("UFRAME_NUM") ? FrameKind.USER : FrameKind.TOOL, numberOrRegister(w),
+            group);
       }
       case "UFRAME", "UTOOL" -> {
-        Index frame = index(w);
+        Item frame = item(w);
         expect(Kind.EQ, "'=' after " + w + "[...]");
         expectWordNamed("PR", "PR[i] (" + w + "[n] is set from a position register)");
-        yield new Instruction.SetFrame(w.equals("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame, item("PR"));
+        yield new Instruction.SetFrame(w.equals("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame.index(),
+            frame.comment(), item("PR"));
       }
-      case "PAYLOAD" -> new Instruction.Payload(index("PAYLOAD"));
+      case "PAYLOAD" -> {
+        Item schedule = item("PAYLOAD");
+        yield new Instruction.Payload(schedule.index(), schedule.comment());
+      }
       case "LBL" -> {
         LabelRef l = labelRef();
         if (!(l.index() instanceof Index.Direct d)) {
@@ -426,7 +460,10 @@ public final class TpStatementParser extends TpTokenCursor {
         expect(Kind.RBRACKET, "']' closing MESSAGE[...]");
         yield new Instruction.Message(text);
       }
-      case "UALM" -> new Instruction.UserAlarm(index("UALM"));
+      case "UALM" -> {
+        Item alarm = item("UALM");
+        yield new Instruction.UserAlarm(alarm.index(), alarm.comment());
+      }
       case "OVERRIDE" -> {
         expect(Kind.EQ, "'=' after OVERRIDE");
         Expr pct = operand();
@@ -444,14 +481,14 @@ public final class TpStatementParser extends TpTokenCursor {
             && Program.isValidName(w)) {
           yield new Instruction.MacroCall(w);
         }
-        // A macro of several words ("HAND1 OPEN"): the words alone on the line; the controller's
-        // macro table says which program it runs.
-        if (t.is(Kind.WORD) && !UNSUPPORTED.containsKey(w) && !w.startsWith("PAL") && onlyWordsFollow()) {
-          StringBuilder name = new StringBuilder(t.text());
-          while (!peek().is(Kind.EOL)) {
-            name.append(' ').append(next().text());
+        // A macro of several words ("HAND1 OPEN", "Open hand 1", "Program Status(13)"): the
+        // controller's macro table says which program it runs.
+        boolean setMacro = w.equals("SET") && macroArgsFollow();
+        if (t.is(Kind.WORD) && (!UNSUPPORTED.containsKey(w) || setMacro) && !w.startsWith("PAL")) {
+          Optional<Instruction.MacroCall> macro = macro(t);
+          if (macro.isPresent()) {
+            yield macro.get();
           }
-          yield new Instruction.MacroCall(name.toString());
         }
         throw unknownStatement(t);
       }
@@ -498,6 +535,52 @@ public final class TpStatementParser extends TpTokenCursor {
         + "': expected a motion (J/L/C/A), an assignment, IF, SELECT, FOR, WAIT, JMP, CALL, LBL or another TP statement");
   }
 
+  /**
+   * The statement from {@code first} (consumed) as a macro call: words, numbers and hyphens
+   * ({@code ENTER FIXT-ZONE}), then optionally arguments in parentheses ({@code Program Status(13)}),
+   * then the end. Empty (nothing consumed) when the rest is not of that form.
+   */
+  private Optional<Instruction.MacroCall> macro(TpToken first) {
+    int k = 0;
+    while (peek(k).is(Kind.WORD) || peek(k).is(Kind.NUMBER) || peek(k).is(Kind.MINUS)) {
+      k++;
+    }
+    if (!peek(k).is(Kind.EOL) && !peek(k).is(Kind.LPAREN)) {
+      return Optional.empty();
+    }
+    StringBuilder name = new StringBuilder(first.text());
+    TpToken prev = first;
+    for (int j = 0; j < k; j++) {
+      TpToken x = next();
+      boolean adjacent = x.line() == prev.line() && x.column() == prev.column() + prev.text().length();
+      name.append(adjacent ? "" : " ").append(x.text());
+      prev = x;
+    }
+    List<Expr> args = new ArrayList<>();
+    if (peek().is(Kind.LPAREN)) {
+      next();
+      if (!peek().is(Kind.RPAREN)) {
+        do {
+          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+        } while (accept(Kind.COMMA));
+      }
+      expect(Kind.RPAREN, "')' closing the macro's arguments");
+    }
+    if (!peek().is(Kind.EOL)) {
+      throw error("expected the end of the macro call, found " + peek().describe());
+    }
+    return Optional.of(new Instruction.MacroCall(name.toString(), args));
+  }
+
+  /** Words then '(' arguments ')' to the end: {@code SET PATH(100)}, a macro rather than a SET statement. */
+  private boolean macroArgsFollow() {
+    int k = 0;
+    while (peek(k).is(Kind.WORD) || peek(k).is(Kind.MINUS)) {
+      k++;
+    }
+    return k > 0 && peek(k).is(Kind.LPAREN);
+  }
+
   /** True when the rest of the statement (after the current token) is words and numbers only. */
   private boolean onlyWordsFollow() {
     for (int k = 0; ; k++) {
@@ -516,23 +599,48 @@ public final class TpStatementParser extends TpTokenCursor {
     Index idx = indexValue("PR");
     if (peek().is(Kind.COMMA)) {
       next();
-      int element = intConst("element number 1..6 in PR[i,j]");
-      if (element < 1 || element > 6) {
-        throw error("PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), found " + element);
-      }
+      Index element = elementIndex();
       String comment = itemCommentAndClose("PR[i,j]");
       expect(Kind.EQ, "'=' after PR[i,j]");
       return new Instruction.AssignPosElement(new Item(idx, comment), element, expression());
     }
     Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
     expect(Kind.EQ, "'=' after PR[...]");
+    Instruction.PosSource src = posSource(true);
+    if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+      // PR[1]=LPOS-LPOS, PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: a sum of positions
+      if (!Instruction.PosSum.isTerm(src) && !(src instanceof Instruction.PosArithmetic)) {
+        throw error("UFRAME[n] and UTOOL[n] cannot be added to: position arithmetic takes PR[], P[], LPOS and JPOS");
+      }
+      Instruction.PosSource first = src instanceof Instruction.PosArithmetic a
+          ? new Instruction.FromPosReg(a.left()) : src;
+      List<Instruction.PosTerm> rest = new ArrayList<>();
+      if (src instanceof Instruction.PosArithmetic a) {
+        rest.add(new Instruction.PosTerm(a.add(), new Instruction.FromPosReg(a.right())));
+      }
+      while (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+        boolean add = next().is(Kind.PLUS);
+        countOperator();
+        Instruction.PosSource term = posSource(false);
+        if (!Instruction.PosSum.isTerm(term)) {
+          throw error("expected PR[], P[], LPOS or JPOS after '" + (add ? "+" : "-") + "' in position arithmetic");
+        }
+        rest.add(new Instruction.PosTerm(add, term));
+      }
+      src = new Instruction.PosSum(first, rest);
+    }
+    return new Instruction.AssignPosReg(reg, src);
+  }
+
+  /** One operand of {@code PR[i]=...}: PR[j] (or PR[j]±PR[k] when {@code pair}), P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]. */
+  private Instruction.PosSource posSource(boolean pair) {
     TpToken s = expectWord("PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]");
     Instruction.PosSource src = switch (s.text().toUpperCase(Locale.ROOT)) {
       case "PR" -> {
         Item from = item("PR");
-        if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
+        if (pair && (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) && peek(1).isWord("PR")) {
           boolean add = next().is(Kind.PLUS);
-          expectWordNamed("PR", "PR[k] (positions add and subtract only with position registers)");
+          next();
           yield new Instruction.PosArithmetic(from, add, item("PR"));
         }
         yield new Instruction.FromPosReg(from);
@@ -543,8 +651,10 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "LPOS" -> new Instruction.CurrentLpos();
       case "JPOS" -> new Instruction.CurrentJpos();
-      case "UFRAME" -> new Instruction.FromFrame(FrameKind.USER, index("UFRAME"));
-      case "UTOOL" -> new Instruction.FromFrame(FrameKind.TOOL, index("UTOOL"));
+      case "UFRAME", "UTOOL" -> {
+        Item frame = item(s.text().toUpperCase(Locale.ROOT));
+        yield new Instruction.FromFrame(s.isWord("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame.index(), frame.comment());
+      }
       default -> {
         if (s.text().startsWith("$") || UNSUPPORTED.containsKey(s.text().toUpperCase(Locale.ROOT))) {
           String name = UNSUPPORTED.get(s.text().toUpperCase(Locale.ROOT));
@@ -553,11 +663,7 @@ public final class TpStatementParser extends TpTokenCursor {
         throw error(s, "expected PR[j], P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n] after PR[i]=, found " + s.describe());
       }
     };
-    if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
-      // PR[1]=LPOS-PR[2], PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: position arithmetic beyond PR+PR
-      throw unsupported(peek(), "position arithmetic with LPOS, JPOS, P[] or more than two terms", false);
-    }
-    return new Instruction.AssignPosReg(reg, src);
+    return src;
   }
 
   private Instruction ioAssignment(IoKind kind) {
@@ -585,7 +691,22 @@ public final class TpStatementParser extends TpTokenCursor {
   }
 
   private Instruction call() {
-    TpToken name = expectWord("a program name after CALL");
+    if (peek().isWord("SR") && peek(1).is(Kind.LBRACKET)) {
+      // CALL SR[3]: the program named by a string register (an option of newer systems)
+      throw unsupported(peek(), "CALL through a string register SR[]", false);
+    }
+    if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".")) {
+      // CALL ... : the pendant lists a CALL whose program was never chosen this way
+      throw unsupported(peek(), "CALL with no program chosen (...)", false);
+    }
+    String dash = "";
+    if (peek().is(Kind.MINUS) && peek(1).is(Kind.WORD) && peek(1).column() == peek().column() + 1) {
+      // CALL -HELPER: a program whose name starts with '-'
+      next();
+      dash = "-";
+    }
+    TpToken word = expectWord("a program name after CALL");
+    TpToken name = dash.isEmpty() ? word : new TpToken(Kind.WORD, dash + word.text(), word.line(), word.column() - 1);
     if (!Program.isValidName(name.text())) {
       throw error(name, "'" + TpToken.clip(name.text())
           + "' is not a program name: expected letters, digits and '_', starting with a letter");
@@ -595,6 +716,11 @@ public final class TpStatementParser extends TpTokenCursor {
       next();
       if (!peek().is(Kind.RPAREN)) {
         do {
+          if (peek().is(Kind.WORD) && peek(1).is(Kind.EQ) && !peek().isWord("ON") && !peek().isWord("OFF")
+              && !peek().text().startsWith("$")) {
+            // CALL SUB(SPEED=5): arguments by name, a feature of newer systems
+            throw unsupported(peek(), "named CALL arguments (NAME=value)", false);
+          }
           args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
         } while (accept(Kind.COMMA));
       }
@@ -628,8 +754,13 @@ public final class TpStatementParser extends TpTokenCursor {
     }
     expect(Kind.COMMA, "',' then JMP or CALL (or THEN) after the IF condition");
     if (!peek().isWord("JMP") && !peek().isWord("CALL") && !peek().is(Kind.EOL)) {
-      // IF (DI[49]),DO[73]=PULSE,0.5sec ; IF R[1]=1,R[2]=5 : an action instead of a branch
-      throw unsupported(peek(), "IF with an action (assignment, output or pulse)", false);
+      // IF (DI[49]),DO[73]=PULSE,0.5sec ; IF R[1]=1,R[2]=(5): an action instead of a branch
+      TpToken at = peek();
+      Instruction action = statement();
+      if (!Instruction.IfAction.allowedAction(action)) {
+        throw unsupported(at, "IF with an action other than an assignment, output or pulse", false);
+      }
+      return new Instruction.IfAction(cond, action);
     }
     return new Instruction.If(cond, branch());
   }
@@ -667,6 +798,10 @@ public final class TpStatementParser extends TpTokenCursor {
    * constant without {@code (sec)} is neither.
    */
   private Instruction waitStatement() {
+    if (peek().is(Kind.WORD) && peek(1).is(Kind.WORD) && onlyWordsFollow()) {
+      // WAIT NEXT PATH: words and no condition, a macro the cell's macro table names
+      return macro(tokens.get(tokens.indexOf(peek()) - 1)).orElseThrow();
+    }
     Expr e = expression();
     if (peek().is(Kind.LPAREN) && peek(1).isWord("sec")) {
       // A negative constant would end the WAIT at once without a word; say so when the file is read.
@@ -736,6 +871,10 @@ public final class TpStatementParser extends TpTokenCursor {
 
   private Motion.Target motionTarget() {
     TpToken w = next();
+    if (peek().is(Kind.LBRACKET) && peek(1).is(Kind.WORD) && peek(1).text().regionMatches(true, 0, "GP", 0, 2)) {
+      // J PR[GP1:1,7]: a target of a multi-group robot with its extended axes
+      throw unsupported(peek(1), "a group in " + w.text().toUpperCase(Locale.ROOT) + "[GPn:...] (multi-group)", false);
+    }
     if (w.isWord("P")) {
       Item p = item("P");
       return new Motion.Local(directNumber(p, "P"), p.comment());
@@ -892,8 +1031,12 @@ public final class TpStatementParser extends TpTokenCursor {
         default -> {
           if (w.startsWith("ACC") && allDigits(w, 3)) {
             int acc = parseIntOrFail(t, w.substring(3));
+            if (acc > 150 && acc <= 500) {
+              // A controller whose acceleration limit was raised lists ACC up to 500; RobotRun's is 150.
+              return rawOption(t, "ACC above 150 (a raised acceleration limit)");
+            }
             if (acc > 150) {
-              throw error(t, "ACC" + acc + ": expected 0..150");
+              throw error(t, "ACC" + acc + ": expected 0..150 (0..500 where the controller's limit is raised)");
             }
             return new Motion.Acc(acc);
           }
@@ -1111,8 +1254,14 @@ public final class TpStatementParser extends TpTokenCursor {
       case WORD -> {
         String w = t.text().toUpperCase(Locale.ROOT);
         return switch (w) {
-          case "ON" -> new Expr.OnOff(true);
-          case "OFF" -> new Expr.OnOff(false);
+          case "ON", "OFF" -> {
+            if (edgeFollows(w.equals("ON") ? Kind.PLUS : Kind.MINUS)) {
+              // WAIT DI[1]=ON+ : the rising (ON+) or falling (OFF-) edge of a signal
+              throw unsupported(t, "edge detection " + w + (w.equals("ON") ? "+" : "-"), false);
+            }
+            yield new Expr.OnOff(w.equals("ON"));
+          }
+          case "ERR_NUM" -> throw unsupported(t, "ERR_NUM (the error-recovery option's alarm number)", false);
           case "R" -> new Expr.Register(item("R"));
           case "PR" -> positionElement();
 
@@ -1145,12 +1294,17 @@ public final class TpStatementParser extends TpTokenCursor {
             if (name != null) {
               throw unsupported(t, name + " in an expression", false);
             }
+            if (MATH_FUNCTIONS.contains(w) && peek().is(Kind.LBRACKET)) {
+              // ABS[R[1]], SQRT[...]: the arithmetic functions of a controller option
+              throw unsupported(t, "arithmetic function " + w + "[]", false);
+            }
             if (w.startsWith("$")) {
               Optional<String> known = SystemVariables.supported(w);
-              if (known.isPresent() && !peek().is(Kind.LBRACKET)) {
+              if (known.isPresent()) {
                 yield new Expr.SysVar(known.get());
               }
-              throw unsupported(t, "system variable in an expression", false);
+              // An application's or another option's variable: the line alarms naming it.
+              throw unsupported(t, "system variable " + TpToken.clip(t.text()) + " in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
           }
@@ -1160,6 +1314,13 @@ public final class TpStatementParser extends TpTokenCursor {
     }
   }
 
+  /** {@code ON+} / {@code OFF-}: the sign right after the word, then the end of the operand. */
+  private boolean edgeFollows(Kind sign) {
+    TpToken after = peek(1);
+    return peek().is(sign) && (after.is(Kind.EOL) || after.is(Kind.RPAREN) || after.is(Kind.COMMA)
+        || after.isWord("AND") || after.isWord("OR") || after.isWord("TIMEOUT"));
+  }
+
   private Expr positionElement() {
     expect(Kind.LBRACKET, "'[' after PR");
     Index idx = indexValue("PR");
@@ -1167,11 +1328,28 @@ public final class TpStatementParser extends TpTokenCursor {
       throw error("PR[i] is a whole position: in an expression use one element, PR[i,j]");
     }
     next();
-    int element = intConst("element number 1..6 in PR[i,j]");
-    if (element < 1 || element > 6) {
-      throw error("PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), found " + element);
-    }
+    Index element = elementIndex();
     return new Expr.PosElement(new Item(idx, itemCommentAndClose("PR[i,j]")), element);
+  }
+
+  /**
+   * The j of {@code PR[i,j]}: 1..6 (X..R or J1..J6), or {@code R[k]} resolved when the line
+   * runs. 7..9 address the extended axes of a robot that has them (a rail): read and kept, not
+   * run (the arm RobotRun moves has six axes).
+   */
+  private Index elementIndex() {
+    TpToken t = peek();
+    if (t.isWord("R") || t.isWord("AR")) {
+      return indexValue("PR[i,j] element");
+    }
+    int element = intConst("element number 1..6 in PR[i,j]");
+    if (element >= 7 && element <= 9) {
+      throw unsupported(t, "PR[i,j] of an extended axis (j = 7..9)", false);
+    }
+    if (element < 1 || element > 6) {
+      throw error(t, "PR[i,j]: j must be 1..6 (X,Y,Z,W,P,R or J1..J6), or 7..9 for extended axes, found " + element);
+    }
+    return new Index.Direct(element);
   }
 
   private Expr constant(TpToken t) {
@@ -1234,7 +1412,21 @@ public final class TpStatementParser extends TpTokenCursor {
       return new Index.Indirect(reg, comment);
     }
     if (t.isWord("AR")) {
-      throw unsupported(t, "an index through AR[]", false);
+      next();
+      expect(Kind.LBRACKET, "'[' after AR");
+      int arg = intConst("argument number in AR[...]");
+      if (arg < 1) {
+        throw error("AR[" + arg + "]: argument numbers start at 1");
+      }
+      expect(Kind.RBRACKET, "']' closing AR[...]");
+      return new Index.ViaArg(arg);
+    }
+    if (t.isWord("GP1") && peek(1).is(Kind.COLON)) {
+      // PR[GP1:5]: a multi-group controller names the group; group 1 is the arm RobotRun moves
+      // (written back as read; an edited line is written without it, the same statement).
+      next();
+      next();
+      return indexValue(what);
     }
     if (t.is(Kind.WORD) && t.text().regionMatches(true, 0, "GP", 0, 2)) {
       throw unsupported(t, "a group in " + what + "[GPn:...] (multi-group)", false);

@@ -158,7 +158,7 @@ final class VisionOps {
   /**
    * {@code VOFFSET,VR[i]} on a motion: the target becomes O · target with O the register's fixed
    * frame offset, both in the register's user frame. A position taught in another user frame is
-   * refused (CVIS-019); a joint position cannot be offset (INTP-203).
+   * refused (CVIS-019); a joint position cannot be offset (INTP-205).
    */
   static MotionRequest.Waypoint offset(Interpreter m, Idx vr, MotionRequest.Waypoint wp) {
     VisionResult r = filled(m, vr);

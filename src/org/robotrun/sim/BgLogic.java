@@ -41,6 +41,8 @@ public final class BgLogic {
     final String program;
     final Interpreter interpreter;
     boolean running;
+    /** The version of the program last found fit for background logic (null: none yet). */
+    Program checked;
 
     Slot(String program, Interpreter interpreter) {
       this.program = program;
@@ -88,6 +90,7 @@ public final class BgLogic {
       case Instruction.Label l -> null;
       case Instruction.Jump j -> null;
       case Instruction.If f -> f.branch() instanceof Instruction.Call ? "CALL" : null;
+      case Instruction.IfAction f -> f.action() instanceof Instruction.AssignPosElement ? "a PR[] assignment" : null;
       case Instruction.IfThen f -> null;
       case Instruction.Else e -> null;
       case Instruction.EndIf e -> null;
@@ -149,6 +152,7 @@ public final class BgLogic {
       return Optional.of("all " + SLOTS + " BG Logic slots are in use");
     }
     Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+    in.leavePulsesToCaller();
     in.setTaskPort(TaskPort.NONE);
     in.setAdvancesTimers(false);
     Slot s = new Slot(program, in);
@@ -166,6 +170,7 @@ public final class BgLogic {
     slots.clear();
     for (String program : programs) {
       Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
+      in.leavePulsesToCaller();
       in.setTaskPort(TaskPort.NONE);
       in.setAdvancesTimers(false);
       Slot s = new Slot(program, in);
@@ -235,11 +240,16 @@ public final class BgLogic {
         continue;
       }
       Optional<Program> p = store.find(s.program);
-      Optional<String> bad = p.isEmpty() ? Optional.of("program " + s.program + " does not exist") : refusal(p.get());
-      if (bad.isPresent()) {
-        s.running = false;
-        controller.raiseRunFailed("BG Logic: " + bad.get());
-        continue;
+      if (p.isEmpty() || p.get() != s.checked) {
+        // checked once per version of the program (programs are immutable: an edit is a new one)
+        Optional<String> bad = p.isEmpty() ? Optional.of("program " + s.program + " does not exist") : refusal(p.get());
+        if (bad.isPresent()) {
+          s.running = false;
+          s.checked = null;
+          controller.raiseRunFailed("BG Logic: " + bad.get());
+          continue;
+        }
+        s.checked = p.get();
       }
       Interpreter in = s.interpreter;
       in.select(s.program);

@@ -147,7 +147,13 @@ final class CellCollisions {
   }
 
   private CellPairFilter filter() {
-    return new CellPairFilter(new StandardPairFilter(cell.heldBy(), allowed));
+    Set<String> touchable = new HashSet<>();
+    for (var o : cell.world().objects()) {
+      if (o.touchable()) {
+        touchable.add(o.name());
+      }
+    }
+    return new CellPairFilter(new StandardPairFilter(cell.heldBy(), allowed), touchable);
   }
 
   /** Boxes per link 0..6 from the link shapes, and link 7 (tool) from the flange to the TCP. */

@@ -19,17 +19,39 @@ import org.robotrun.collision.StandardPairFilter;
  * real LR Mate can have. Every pair three or more apart that touched in the sample is a real
  * fold (the wrist or tool driven into the base, the shoulder or the upper arm), and stays
  * checked. {@code CellPairFilterTest} repeats the sample.
+ *
+ * <p>Objects the scenario marks {@code touchable} (markers, pins: what a frame is taught on) are
+ * not checked against any robot's end effector (link 7), so touching them is no alarm; the other
+ * links still collide with them.
  */
-record CellPairFilter(StandardPairFilter standard) implements PairFilter {
+record CellPairFilter(StandardPairFilter standard, java.util.Set<String> touchable) implements PairFilter {
   /** Links of one robot are checked against each other when at least this far apart. */
   static final int SELF_LINK_GAP = 3;
 
+  CellPairFilter {
+    touchable = java.util.Set.copyOf(touchable);
+  }
+
+  /** The rules with no touchable object. */
+  CellPairFilter(StandardPairFilter standard) {
+    this(standard, java.util.Set.of());
+  }
+
   @Override
   public boolean mayCollide(Body a, Body b) {
+    if (!touchable.isEmpty() && (toolOnTouchable(a, b) || toolOnTouchable(b, a))) {
+      return false;
+    }
     if (a.owner().equals(b.owner()) && a.kind() == BodyKind.ROBOT && b.kind() == BodyKind.ROBOT) {
       return Math.abs(a.link() - b.link()) >= SELF_LINK_GAP
           && !standard.allowedContacts().contains(org.robotrun.collision.BodyPair.of(a, b));
     }
     return standard.mayCollide(a, b);
+  }
+
+  /** {@code tool} is a robot's end effector (link 7) and {@code o} an object the scenario marks touchable. */
+  private boolean toolOnTouchable(Body tool, Body o) {
+    return tool.kind() == BodyKind.ROBOT && tool.link() == Body.TOOL_LINK && o.kind() != BodyKind.ROBOT
+        && touchable.contains(o.owner());
   }
 }

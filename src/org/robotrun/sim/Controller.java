@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.TreeMap;
+import org.robotrun.control.RobotControl;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
@@ -23,6 +24,7 @@ import org.robotrun.motion.MotionRunner;
 import org.robotrun.motion.MoveRequest;
 import org.robotrun.motion.Speed;
 import org.robotrun.motion.Termination;
+import org.robotrun.program.TaskPort;
 import org.robotrun.program.Alarm;
 import org.robotrun.program.AlarmCode;
 import org.robotrun.program.Instruction.FrameKind;
@@ -94,10 +96,11 @@ public final class Controller implements MotionPort {
   private boolean dropWhenStopped;
   private long nextHandle = 1;
   private int overridePct = 100;
-  private JogFrame coord = JogFrame.JOINT;
+  private RobotControl.CoordSystem coord = RobotControl.CoordSystem.JOINT;
+  private JogFrame jogFrame = JogFrame.JOINT;
   private boolean deadman = true;
   /** Headless default: a controller without a pendant runs as in AUTO ({@code robotrun run}). */
-  private OperatingMode mode = OperatingMode.AUTO;
+  private RobotControl.Mode mode = RobotControl.Mode.AUTO;
   /** Which E-stop buttons are pressed (pendant, operator panel). */
   private boolean estopPendant;
   private boolean estopPanel;
@@ -162,10 +165,25 @@ public final class Controller implements MotionPort {
     this.runner = new MotionRunner(model, limits, q0, new Events());
     this.jogger = new Jogger(model, limits);
     this.interpreter = new Interpreter(n -> Optional.ofNullable(programs.get(n)), registers, this, settings);
+    interpreter.leavePulsesToCaller();
     this.tasks = new Tasks(this, n -> Optional.ofNullable(programs.get(n)), settings);
     this.bgLogic = new BgLogic(this, n -> Optional.ofNullable(programs.get(n)), settings);
     this.uop = new Uop(this);
-    interpreter.setTaskPort(tasks::run);
+    interpreter.setTaskPort(new TaskPort() {
+      @Override
+      public Optional<String> run(String program) {
+        return tasks.run(program);
+      }
+
+      @Override
+      public int backgroundStatus(int slot) {
+        var slots = bgLogic.slots();
+        if (slot < 1 || slot > slots.size()) {
+          return 0;
+        }
+        return slots.get(slot - 1).running() ? 2 : 1;
+      }
+    });
   }
 
   public String name() {
@@ -187,6 +205,9 @@ public final class Controller implements MotionPort {
       gripper.tick(registers, dtSec);
     }
     uop.tick(dtSec);
+    // Pulses count down once per tick in the shared I/O, whoever started them (a RUN task or an
+    // action program that ended leaves its pulse to end on time), just before the programs run.
+    registers.advancePulses(dtSec);
     Outcome o = interpreter.tick(dtSec);
     tasks.tick(dtSec);
     bgLogic.tick(dtSec);
@@ -221,7 +242,7 @@ public final class Controller implements MotionPort {
       }
       double[] q = runner.joints();
       double[] q0 = q.clone();
-      JogResult r = jogger.tick(q, jogKeys, coord, overridePct / 100.0, frames.activeTool(), jogAxes(), dtSec);
+      JogResult r = jogger.tick(q, jogKeys, jogFrame, overridePct / 100.0, frames.activeTool(), jogAxes(), dtSec);
       capJogStep(q0, q, dtSec);
       switch (r) {
         case JogResult.Moving m -> runner.setJoints(q);
@@ -244,10 +265,10 @@ public final class Controller implements MotionPort {
    * that speed (a joint jog of J1 far from the axis would otherwise outrun it).
    */
   private void capJogStep(double[] q0, double[] q, double dtSec) {
-    if (mode != OperatingMode.T1) {
+    if (mode != RobotControl.Mode.T1) {
       return;
     }
-    double limit = OperatingMode.T1_SPEED_MM_PER_SEC * dtSec;
+    double limit = RobotControl.Mode.T1_SPEED_MM_PER_SEC * dtSec;
     double moved = MotionRunner.cartesianStepMm(model, q0, q, frames.activeTool());
     if (moved > limit) {
       double s = 0.999 * limit / moved;
@@ -298,13 +319,13 @@ public final class Controller implements MotionPort {
   }
 
   /** Deletes a program; refused while it is active (running, paused, or a caller of either). */
-  public CommandResult deleteProgram(String programName) {
+  public RobotControl.Result deleteProgram(String programName) {
     if (interpreter.isActive(programName) || (busy() && interpreter.currentProgram().equals(programName))) {
-      return CommandResult.refused(programName + " is running or paused: ABORT it first");
+      return RobotControl.Result.refused(programName + " is running or paused: ABORT it first");
     }
     return programs.remove(programName) == null
-        ? CommandResult.refused("no program " + programName)
-        : CommandResult.ok();
+        ? RobotControl.Result.refused("no program " + programName)
+        : RobotControl.Result.ok();
   }
 
   /** The live registers and I/O. */
@@ -370,16 +391,16 @@ public final class Controller implements MotionPort {
    * MOVE_TO: a FINE joint move to {@code target} at {@link #MOVE_TO_SPEED_FRACTION} of joint
    * speed (times override). A Cartesian target is taken in {@code userFrame}/{@code toolFrame}.
    */
-  public CommandResult moveTo(Position target, int userFrame, int toolFrame) {
+  public RobotControl.Result moveTo(Position target, int userFrame, int toolFrame) {
     if (!activeAlarms.isEmpty()) {
-      return CommandResult.refused("alarm active: RESET first");
+      return RobotControl.Result.refused("alarm active: RESET first");
     }
     if (interpreter.state() == Interpreter.State.RUNNING) {
-      return CommandResult.refused("a program is running: HOLD it first");
+      return RobotControl.Result.refused("a program is running: HOLD it first");
     }
     if (!runner.idle()) {
       if (!runner.atRest() || interpreter.state() == Interpreter.State.PAUSED) {
-        return CommandResult.refused("the robot is moving: HOLD and wait");
+        return RobotControl.Result.refused("the robot is moving: HOLD and wait");
       }
       // A held MOVE_TO: the new one replaces it.
       runner.stopNow();
@@ -390,34 +411,42 @@ public final class Controller implements MotionPort {
       case Position.Cartesian c -> {
         IkResult r = toJoints(c, userFrame, toolFrame);
         if (r instanceof IkResult.Unreachable u) {
-          return CommandResult.refused("unreachable: " + u.message());
+          return RobotControl.Result.refused("unreachable: " + u.message());
         }
         q = ((IkResult.Solved) r).q();
       }
     }
     int bad = model.firstJointOutsideLimits(q);
     if (bad >= 0) {
-      return CommandResult.refused(String.format(java.util.Locale.ROOT, "J%d would be outside its limits", bad + 1));
+      return RobotControl.Result.refused(String.format(java.util.Locale.ROOT, "J%d would be outside its limits", bad + 1));
     }
     long h = nextHandle++;
     moves.put(h, new MoveState("", 0, true));
     jogger.stop(jogKeys);
     runner.resume();
     runner.enqueue(new MoveRequest.Joint(q, new Speed.JointPercent(MOVE_TO_SPEED_FRACTION), Termination.fine(), 1, h));
-    return CommandResult.ok();
+    return RobotControl.Result.ok();
   }
 
   // ================================================================ jog
 
   /** The jog coordinate system (COORD key). */
-  public JogFrame coordSystem() {
+  public RobotControl.CoordSystem coordSystem() {
     return coord;
   }
 
-  public void setCoordSystem(JogFrame frame) {
-    if (frame != coord) {
+  /** Selects the jog coordinate system (a change stops every jog axis). */
+  public void setCoordSystem(RobotControl.CoordSystem system) {
+    if (system != coord) {
       jogger.stop(jogKeys);
-      coord = Objects.requireNonNull(frame);
+      coord = Objects.requireNonNull(system);
+      jogFrame = switch (system) {
+        case JOINT -> JogFrame.JOINT;
+        case JGFRM -> JogFrame.JGFRM;
+        case WORLD -> JogFrame.WORLD;
+        case TOOL -> JogFrame.TOOL;
+        case USER -> JogFrame.USER;
+      };
     }
   }
 
@@ -425,39 +454,39 @@ public final class Controller implements MotionPort {
    * A jog key goes down: axis 1..6 (J1..J6, or X, Y, Z, rotation about X, Y, Z), sign ±1, held
    * (keyboard) or latched (on-screen click).
    */
-  public CommandResult jogKeyDown(int axis, int sign, JogState.Press press) {
-    CommandResult refused = jogRefusal();
+  public RobotControl.Result jogKeyDown(int axis, int sign, JogState.Press press) {
+    RobotControl.Result refused = jogRefusal();
     if (refused != null) {
       return refused;
     }
     jogMessage = "";
     jogKeys.keyDown(axis - 1, sign, press);
-    return CommandResult.ok();
+    return RobotControl.Result.ok();
   }
 
   /** Why a jog may not start now (alarm, DEADMAN, a program moving, AUTO, E-stop), or null when it may. */
-  private CommandResult jogRefusal() {
+  private RobotControl.Result jogRefusal() {
     if (!activeAlarms.isEmpty()) {
-      return CommandResult.refused("alarm active: RESET first");
+      return RobotControl.Result.refused("alarm active: RESET first");
     }
     if (!deadman) {
-      return CommandResult.refused("hold the DEADMAN to jog");
+      return RobotControl.Result.refused("hold the DEADMAN to jog");
     }
     if (interpreter.state() == Interpreter.State.RUNNING || !runner.idle()) {
-      return CommandResult.refused("cannot jog while the robot moves under a program");
+      return RobotControl.Result.refused("cannot jog while the robot moves under a program");
     }
-    if (mode == OperatingMode.AUTO) {
-      return CommandResult.refused("AUTO mode: the pendant cannot jog (turn the mode switch to T1)");
+    if (mode == RobotControl.Mode.AUTO) {
+      return RobotControl.Result.refused("AUTO mode: the pendant cannot jog (turn the mode switch to T1)");
     }
     if (estopped()) {
-      return CommandResult.refused("E-stop pressed: release it and RESET");
+      return RobotControl.Result.refused("E-stop pressed: release it and RESET");
     }
     return null;
   }
 
   /** The frame USER and JGFRM jog along: the active user frame or the active jog frame. */
   private Transform jogAxes() {
-    return coord == JogFrame.JGFRM ? frames.activeJogFrame() : frames.activeUser();
+    return coord == RobotControl.CoordSystem.JGFRM ? frames.activeJogFrame() : frames.activeUser();
   }
 
   /** Incremental jog, FINE: mm per key press (X, Y, Z). */
@@ -474,8 +503,8 @@ public final class Controller implements MotionPort {
    * coordinates, at once: FINE {@value #FINE_STEP_MM} mm / {@value #FINE_STEP_DEG} deg, VFINE
    * {@value #VFINE_STEP_MM} mm / {@value #VFINE_STEP_DEG} deg (the R-30iB's approximate sizes).
    */
-  public CommandResult jogIncrement(int axis, int sign, boolean veryFine) {
-    CommandResult refused = jogRefusal();
+  public RobotControl.Result jogIncrement(int axis, int sign, boolean veryFine) {
+    RobotControl.Result refused = jogRefusal();
     if (refused != null) {
       return refused;
     }
@@ -483,13 +512,13 @@ public final class Controller implements MotionPort {
     double mm = veryFine ? VFINE_STEP_MM : FINE_STEP_MM;
     double deg = veryFine ? VFINE_STEP_DEG : FINE_STEP_DEG;
     double[] q = runner.joints();
-    JogResult r = jogger.step(q, coord, axis - 1, sign, mm, Math.toRadians(deg), frames.activeTool(), jogAxes());
+    JogResult r = jogger.step(q, jogFrame, axis - 1, sign, mm, Math.toRadians(deg), frames.activeTool(), jogAxes());
     return switch (r) {
-      case JogResult.Stopped s -> CommandResult.refused(s.message());
+      case JogResult.Stopped s -> RobotControl.Result.refused(s.message());
       default -> {
         runner.setJoints(q);
-        boolean linear = coord != JogFrame.JOINT && axis <= 3;
-        yield new CommandResult.Ok(String.format(java.util.Locale.ROOT, "%s step: %s%s", veryFine ? "VFINE" : "FINE",
+        boolean linear = coord != RobotControl.CoordSystem.JOINT && axis <= 3;
+        yield new RobotControl.Result.Ok(String.format(java.util.Locale.ROOT, "%s step: %s%s", veryFine ? "VFINE" : "FINE",
             linear ? mm : deg, linear ? " mm" : " deg"));
       }
     };
@@ -518,6 +547,11 @@ public final class Controller implements MotionPort {
     }
   }
 
+  /** Whether the enabling (DEADMAN) signal is on (headless: always). */
+  public boolean deadman() {
+    return deadman;
+  }
+
   /** Why the last jog stopped by itself ("" when it did not). */
   public String jogMessage() {
     return jogMessage;
@@ -532,7 +566,7 @@ public final class Controller implements MotionPort {
   // ================================================================ safety
 
   /** The mode switch. */
-  public OperatingMode mode() {
+  public RobotControl.Mode mode() {
     return mode;
   }
 
@@ -540,7 +574,7 @@ public final class Controller implements MotionPort {
    * Turns the mode switch. A running program pauses and jogging stops (a controller stops the
    * arm when the switch turns); in T1 every motion is capped at 250 mm/s at the TCP and flange.
    */
-  public void setMode(OperatingMode newMode) {
+  public void setMode(RobotControl.Mode newMode) {
     Objects.requireNonNull(newMode, "mode");
     if (newMode != mode && interpreter.state() == Interpreter.State.RUNNING) {
       hold();
@@ -551,7 +585,7 @@ public final class Controller implements MotionPort {
   }
 
   private void applySpeedCap() {
-    runner.setCartesianSpeedCap(mode == OperatingMode.T1 ? OperatingMode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY,
+    runner.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? RobotControl.Mode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY,
         frames.activeTool());
   }
 
@@ -614,32 +648,32 @@ public final class Controller implements MotionPort {
    * SHIFT+FWD (forward) or SHIFT+BWD: runs {@code programName} from {@code line}; a paused run of
    * the same program resumes from where it stopped (a held motion continues).
    */
-  public CommandResult run(String programName, int line, boolean forward) {
+  public RobotControl.Result run(String programName, int line, boolean forward) {
     if (estopped()) {
-      return CommandResult.refused("E-stop pressed: release it and RESET");
+      return RobotControl.Result.refused("E-stop pressed: release it and RESET");
     }
     if (!activeAlarms.isEmpty()) {
-      return CommandResult.refused("alarm active: RESET first (" + activeAlarms.get(0).display() + ")");
+      return RobotControl.Result.refused("alarm active: RESET first (" + activeAlarms.get(0).display() + ")");
     }
     if (interpreter.state() == Interpreter.State.ALARMED && interpreter.callDepth() > 0) {
       // an alarm paused the program (not yet seen by a tick): it keeps its stack until RESET
-      return CommandResult.refused("alarm active: RESET first (" + interpreter.alarm().map(Alarm::display).orElse("") + ")");
+      return RobotControl.Result.refused("alarm active: RESET first (" + interpreter.alarm().map(Alarm::display).orElse("") + ")");
     }
     Program p = programs.get(programName);
     if (p == null) {
-      return CommandResult.refused("no program " + programName);
+      return RobotControl.Result.refused("no program " + programName);
     }
     if (line < 1 || line > Math.max(1, p.lineCount())) {
-      return CommandResult.refused("line " + line + " is not in " + programName + " (1.." + p.lineCount() + ")");
+      return RobotControl.Result.refused("line " + line + " is not in " + programName + " (1.." + p.lineCount() + ")");
     }
     jogger.stop(jogKeys);
     switch (interpreter.state()) {
       case RUNNING -> {
-        return CommandResult.refused(interpreter.currentProgram() + " is running");
+        return RobotControl.Result.refused(interpreter.currentProgram() + " is running");
       }
       case PAUSED -> {
         if (!interpreter.currentProgram().equals(programName) && interpreter.callDepth() <= 1) {
-          return CommandResult.refused(interpreter.currentProgram() + " is paused: ABORT it first");
+          return RobotControl.Result.refused(interpreter.currentProgram() + " is paused: ABORT it first");
         }
         if (interpreter.cursorLine() != line && interpreter.callDepth() <= 1) {
           interpreter.setCursor(line);
@@ -647,11 +681,11 @@ public final class Controller implements MotionPort {
       }
       case IDLE, ALARMED -> {
         if (tasks.isRunning(programName)) {
-          return CommandResult.refused("INTP-105 Run request failed: " + programName + " is already running");
+          return RobotControl.Result.refused("INTP-105 Run request failed: " + programName + " is already running");
         }
         Optional<String> holder = tasks.groupHolder();
         if (p.usesMotionGroup() && holder.isPresent()) {
-          return CommandResult.refused("INTP-105 Run request failed: PROG-040 Already locked by other task ("
+          return RobotControl.Result.refused("INTP-105 Run request failed: PROG-040 Already locked by other task ("
               + holder.get() + " holds group 1)");
         }
         interpreter.select(programName);
@@ -671,7 +705,7 @@ public final class Controller implements MotionPort {
       interpreter.backward();
     }
     String notice = interpreter.notice();
-    return new CommandResult.Ok(notice);
+    return new RobotControl.Result.Ok(notice);
   }
 
   /**
@@ -801,6 +835,11 @@ public final class Controller implements MotionPort {
   }
 
   /** The UOP signals (UI/UO), the PLC sequence and the reference positions. */
+  /** The UOP outputs as the controller's state is now (a run that ends has no next tick to write them). */
+  public void settleOutputs() {
+    uop.settleOutputs();
+  }
+
   public Uop uop() {
     return uop;
   }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
 import java.util.function.Consumer;
+import org.robotrun.control.RobotControl;
 
 /**
  * Runs one program to its end with no window, as fast as the machine allows: selects it, starts
@@ -105,8 +106,8 @@ public final class HeadlessRun {
     int n = cs.size();
     boolean several = sim.controllers().size() > 1;
     for (Controller c : cs) {
-      CommandResult start = c.run(programs.get(c), 1, true);
-      if (start instanceof CommandResult.Refused r) {
+      RobotControl.Result start = c.run(programs.get(c), 1, true);
+      if (start instanceof RobotControl.Result.Refused r) {
         throw new IllegalArgumentException(several ? c.name() + ": " + r.reason() : r.reason());
       }
     }
@@ -122,9 +123,10 @@ public final class HeadlessRun {
       lastQ[i] = cs.get(i).jointsRad();
     }
     Optional<ControllerAlarm> cellAlarm = Optional.empty();
+    CellStepper stepper = new CellStepper(sim);
+    stepper.setAfterTick(afterTick);
     while (true) {
-      sim.step();
-      afterTick.accept(sim);
+      stepper.tick();
       double t = sim.timeSec();
       int active = 0;
       for (int i = 0; i < n; i++) {
@@ -157,19 +159,22 @@ public final class HeadlessRun {
         }
         active++;
       }
-      ControllerAlarm limit = null;
+      // A limit stops every robot still running, each with the alarm naming its own program and line.
+      String limitCode = null;
+      String limitText = null;
       if (active > 0 && cellAlarm.isEmpty()) {
         if (sim.ticks() % STOP_CHECK_TICKS == 0 && stop.getAsBoolean()) {
-          ExecutionStatus s = firstActive(cs, status).status();
-          limit = new ControllerAlarm(WALL_LIMIT_CODE, stopReason, s.program(), s.line(), t);
+          limitCode = WALL_LIMIT_CODE;
+          limitText = stopReason;
         } else if (t - t0 >= maxSimSec) {
-          ExecutionStatus s = firstActive(cs, status).status();
-          limit = new ControllerAlarm(TIME_LIMIT_CODE, String.format(java.util.Locale.ROOT,
-              "time limit reached: the program ran %.1f s of simulated time without ending", maxSimSec),
-              s.program(), s.line(), t);
+          limitCode = TIME_LIMIT_CODE;
+          limitText = String.format(java.util.Locale.ROOT,
+              "time limit reached: the program ran %.1f s of simulated time without ending", maxSimSec);
         }
       }
+      ControllerAlarm limit = limitCode == null ? null : limitAlarm(firstActive(cs, status), limitCode, limitText, t);
       if (active == 0 || cellAlarm.isPresent() || limit != null) {
+        cs.forEach(Controller::settleOutputs);  // PROGRUN/BUSY of a robot that ended on this tick go OFF
         List<RobotResult> out = new ArrayList<>();
         for (int i = 0; i < n; i++) {
           RobotStatus st = status[i];
@@ -177,7 +182,7 @@ public final class HeadlessRun {
           if (st == null) {
             // Still running: a time limit stops it with that alarm, another robot's alarm stops the cell.
             st = limit != null ? RobotStatus.ALARM : RobotStatus.STOPPED;
-            a = Optional.ofNullable(limit);
+            a = limit == null ? Optional.empty() : Optional.of(limitAlarm(cs.get(i), limitCode, limitText, t));
             end[i] = t;
           }
           out.add(new RobotResult(cs.get(i).name(), programs.get(cs.get(i)), st, a, end[i] - t0,
@@ -188,6 +193,12 @@ public final class HeadlessRun {
             List.copyOf(out));
       }
     }
+  }
+
+  /** A limit's alarm on {@code c}: its program and line as they stand. */
+  private static ControllerAlarm limitAlarm(Controller c, String code, String text, double t) {
+    ExecutionStatus s = c.status();
+    return new ControllerAlarm(code, text, s.program(), s.line(), t);
   }
 
   private static Controller firstActive(List<Controller> cs, RobotStatus[] status) {

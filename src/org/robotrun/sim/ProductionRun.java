@@ -52,9 +52,10 @@ public final class ProductionRun {
     boolean started = false;
     long movingTicks = 0;
     double[] lastQ = c.jointsRad();
+    CellStepper stepper = new CellStepper(sim);
+    stepper.setAfterTick(afterTick);
     while (true) {
-      sim.step();
-      afterTick.accept(sim);
+      stepper.tick();
       double t = sim.timeSec();
       double[] q = c.jointsRad();
       if (!java.util.Arrays.equals(q, lastQ)) {

@@ -19,11 +19,12 @@ import org.robotrun.world.World;
 
 /**
  * Builds a {@link Simulation} from a loaded {@link Scenario}: one controller per robot at its
- * initial joints, placed in the cell; the first robot gets the scenario's registers and frames.
+ * initial joints, placed in the cell; each robot gets its registers and frames
+ * ({@link Scenario#preload}: the first robot's include the scenario's top-level ones).
  * Programs are files and are loaded by the caller ({@code io} reads them; {@code sim} does not).
- * Tool and user frame 1 become active where the scenario defines them (else 0: flange, WORLD);
+ * Tool and user frame 1 become active where a robot's preload defines them (else 0: flange, WORLD);
  * programs still select theirs with UFRAME_NUM /
- * UTOOL_NUM. Each robot carries its scenario end effector; when the scenario sets no tool
+ * UTOOL_NUM. Each robot carries its scenario end effector; when its preload sets no tool
  * frame 1, UT[1] is that end effector's TCP.
  */
 public final class ScenarioCell {
@@ -54,8 +55,8 @@ public final class ScenarioCell {
       scenario.production().of(r.name()).ifPresent(c::configureProduction);
       EndEffectorGeometry tool = EndEffectorGeometry.of(r.endEffector());
       tools.add(Optional.of(new MountedTool(tool, r.toolIo())));
-      boolean firstWithUt1 = controllers.size() == 1 && scenario.toolFrames().containsKey(1);
-      if (!tool.X_FT().equals(Transform.IDENTITY) && !firstWithUt1) {
+      boolean presetUt1 = scenario.preload(controllers.size() - 1).toolFrames().containsKey(1);
+      if (!tool.X_FT().equals(Transform.IDENTITY) && !presetUt1) {
         c.frames().setTransform(FrameKind.TOOL, 1, tool.X_FT());
         c.frames().setComment(FrameKind.TOOL, 1, r.endEffector().fileName() + " TCP");
       }
@@ -63,24 +64,8 @@ public final class ScenarioCell {
       placements.add(r.X_CB().compose(model.X_WB().inverse()));
       floorZ = Math.min(floorZ, r.X_CB().z());
     }
-    Controller first = controllers.get(0);
-    for (Map.Entry<Integer, Double> e : scenario.registers().entrySet()) {
-      double v = e.getValue();
-      if (v == Math.rint(v) && Math.abs(v) <= Integer.MAX_VALUE) {
-        first.registers().setInteger(e.getKey(), (int) v);
-      } else {
-        first.registers().setReal(e.getKey(), v);
-      }
-    }
-    scenario.toolFrames().forEach((n, X_FT) -> first.frames().setTransform(FrameKind.TOOL, n, X_FT));
-    scenario.userFrames().forEach((n, X_WU) -> first.frames().setTransform(FrameKind.USER, n, X_WU));
-    // A student who opens the cell and records points should get them in the frames the
-    // exercise describes: frame 1 becomes active where the scenario defines it.
-    if (scenario.toolFrames().containsKey(1)) {
-      first.frames().select(FrameKind.TOOL, 1);
-    }
-    if (scenario.userFrames().containsKey(1)) {
-      first.frames().select(FrameKind.USER, 1);
+    for (int i = 0; i < controllers.size(); i++) {
+      preset(controllers.get(i), scenario.preload(i));
     }
     // Parts the scenario drops at random stand where its vision seed puts them (issue 16).
     World world = PartPlacement.place(scenario.world(), scenario.vision());
@@ -94,6 +79,28 @@ public final class ScenarioCell {
       case WARN -> false;
     });
     return sim;
+  }
+
+  /** Puts a robot's preset registers and frames into its controller. */
+  private static void preset(Controller c, Scenario.Preload preload) {
+    for (Map.Entry<Integer, Double> e : preload.registers().entrySet()) {
+      double v = e.getValue();
+      if (v == Math.rint(v) && Math.abs(v) <= Integer.MAX_VALUE) {
+        c.registers().setInteger(e.getKey(), (int) v);
+      } else {
+        c.registers().setReal(e.getKey(), v);
+      }
+    }
+    preload.toolFrames().forEach((n, X_FT) -> c.frames().setTransform(FrameKind.TOOL, n, X_FT));
+    preload.userFrames().forEach((n, X_WU) -> c.frames().setTransform(FrameKind.USER, n, X_WU));
+    // A student who opens the cell and records points should get them in the frames the
+    // exercise describes: frame 1 becomes active where the preload defines it.
+    if (preload.toolFrames().containsKey(1)) {
+      c.frames().select(FrameKind.TOOL, 1);
+    }
+    if (preload.userFrames().containsKey(1)) {
+      c.frames().select(FrameKind.USER, 1);
+    }
   }
 
   /** The robot's macro table as the interpreter reads it (macro name to program). */

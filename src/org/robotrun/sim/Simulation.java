@@ -7,6 +7,7 @@ import java.util.Optional;
 import org.robotrun.math.Transform;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.robot.ForwardKinematics;
+import org.robotrun.robot.RobotModel;
 import org.robotrun.world.World;
 
 /**
@@ -274,8 +275,16 @@ public final class Simulation {
     List<RobotState> states = new ArrayList<>();
     for (int i = 0; i < controllers.size(); i++) {
       Controller c = controllers.get(i);
-      RobotDrawList.addRobot(items, c.name(), c.model(), X_CW.get(i), c.jointsRad());
-      Transform X_CF = X_CW.get(i).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
+      // one forward kinematics per robot per frame: the links, the flange and the TCP from it
+      RobotModel model = c.model();
+      Transform[] X_RL = ForwardKinematics.linkPosesInBase(model, c.jointsRad());
+      // X_WF composed as ForwardKinematics.flangePoseInWorld does, to the last bit
+      Transform X_WF = model.X_WB().compose(X_RL[RobotModel.DOF].compose(model.X_6F()));
+      for (int k = 0; k < X_RL.length; k++) {
+        X_RL[k] = model.X_WB().compose(X_RL[k]);
+      }
+      RobotDrawList.addRobot(items, c.name(), model, X_CW.get(i), X_RL);
+      Transform X_CF = X_CW.get(i).compose(X_WF);
       if (cell.tool(i).isPresent()) {
         EndEffectorDrawList.add(items, cell.tool(i).get(), X_CF);
       } else {
@@ -285,7 +294,7 @@ public final class Simulation {
       }
       var j = c.currentJoints();
       states.add(new RobotState(c.name(), new double[] {j.j1Deg(), j.j2Deg(), j.j3Deg(), j.j4Deg(), j.j5Deg(), j.j6Deg()},
-          c.tcpInWorld(), c.frames().active(FrameKind.TOOL), c.frames().active(FrameKind.USER), c.overridePct(),
+          org.robotrun.math.Xyzwpr.fromTransform(X_WF.compose(c.frames().activeTool())), c.frames().active(FrameKind.TOOL), c.frames().active(FrameKind.USER), c.overridePct(),
           c.status(), c.activeAlarms()));
     }
     if (showBoxes && checkCollisions && collisions != null) {

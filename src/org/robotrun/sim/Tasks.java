@@ -19,10 +19,10 @@ import org.robotrun.program.ProgramStore;
  *
  * <p>Rules, as on an R-30iB: a program's motion group mask ({@code DEFAULT_GROUP} in /ATTR;
  * "1,*,*,*,*" unless it says otherwise) decides whether it moves the arm. Only one running
- * program may hold group 1; a RUN of a second one fails with INTP-105 (cause PROG-040 Already
+ * program may hold group 1; a RUN of a second one fails with INTP-267 (cause PROG-040 Already
  * locked by other task). A program without a group runs beside a moving one and cannot move
  * (a motion statement alarms, SIMU-021). RUN of a program that is already running, or of one
- * that does not exist, fails with INTP-105. An alarm in a task ends that task (the controller's
+ * that does not exist, fails with INTP-267. An alarm in a task ends that task (the controller's
  * program alarms are ABORT.L: local to the task that raised them) and shows on the pendant.
  */
 public final class Tasks {
@@ -74,16 +74,16 @@ public final class Tasks {
   }
 
   /**
-   * RUN {@code program}: starts it as a task. Empty when it started, else the cause the INTP-105
-   * alarm names.
+   * RUN {@code program}: starts it as a task. Empty when it started, else the cause the INTP-267
+   * alarm names (a start from the PLC names it under INTP-105).
    */
   public Optional<String> run(String program) {
     Optional<Program> p = store.find(program);
     if (p.isEmpty()) {
-      return Optional.of("program " + program + " does not exist");
+      return Optional.of("MEMO-073 Program does not exist (" + program + ")");
     }
     if (isRunning(program)) {
-      return Optional.of(program + " is already running");
+      return Optional.of("PROG-007 Program is already running (" + program + " is already running)");
     }
     boolean motion = p.get().usesMotionGroup();
     if (motion && groupHolder().isPresent()) {
@@ -94,6 +94,7 @@ public final class Tasks {
     }
     MotionPort port = motion ? controller : new NoGroupPort(controller);
     Interpreter in = new Interpreter(store, controller.registers(), port, settings);
+    in.leavePulsesToCaller();
     in.setTaskPort(this::run);
     // A RUN task finds parts with the same vision system as the main program (issue 16).
     in.setVisionPort(controller.interpreter().visionPort());

@@ -1,17 +1,18 @@
 package org.robotrun.sim;
 
 import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Registers;
 import org.robotrun.world.ProductionSetup;
 import org.robotrun.world.ProductionSetup.PlcStep;
 import org.robotrun.world.ProductionSetup.ReferencePosition;
 import org.robotrun.world.ProductionSetup.Selection;
-import org.robotrun.world.ProductionSetup.Signal;
 
 /**
  * The UOP (user operator panel) signals of one controller, as an R-30iB gives them meaning, read
@@ -87,6 +88,19 @@ public final class Uop {
   private int plcStep;
   private double plcHeldSec = Double.NaN;
   private String lastRefusal = "";
+  /**
+   * The setup resolved once when it is applied, so a tick looks nothing up by name: each
+   * reference position's joints and tolerances (deg) and output kind, each PLC step's awaited
+   * input kind and its outputs.
+   */
+  private double[][] refJointsDeg = new double[0][];
+  private double[][] refToleranceDeg = new double[0][];
+  private IoKind[] refOutputKind = new IoKind[0];
+  private IoKind[] plcWaitKind = new IoKind[0];
+  private List<List<SetBit>> plcSets = List.of();
+
+  /** One output a PLC step sets, its kind resolved. */
+  private record SetBit(IoKind kind, int index, boolean on) {}
 
   Uop(Controller c) {
     this.c = c;
@@ -95,6 +109,7 @@ public final class Uop {
   /** Applies a robot's production setup; null (or none) disables the UOP inputs, as "Enable UI signals: FALSE". */
   public void configure(ProductionSetup.Robot robot) {
     this.setup = robot;
+    resolve(robot);
     plcStep = 0;
     plcHeldSec = Double.NaN;
     rsrQueue.clear();
@@ -108,6 +123,30 @@ public final class Uop {
     for (int i = 1; i <= 18; i++) {
       lastUi[i] = ui(i);
     }
+  }
+
+  private void resolve(ProductionSetup.Robot robot) {
+    List<ReferencePosition> refs = robot == null ? List.of() : robot.referencePositions();
+    refJointsDeg = new double[refs.size()][];
+    refToleranceDeg = new double[refs.size()][];
+    refOutputKind = new IoKind[refs.size()];
+    for (int k = 0; k < refs.size(); k++) {
+      ReferencePosition r = refs.get(k);
+      refJointsDeg[k] = r.jointsDeg().stream().mapToDouble(Double::doubleValue).toArray();
+      refToleranceDeg[k] = r.toleranceDeg().stream().mapToDouble(Double::doubleValue).toArray();
+      refOutputKind[k] = r.output().map(o -> IoKind.valueOf(o.kind())).orElse(null);
+    }
+    List<PlcStep> steps = robot == null ? List.of() : robot.plc();
+    plcWaitKind = new IoKind[steps.size()];
+    List<List<SetBit>> sets = new ArrayList<>();
+    for (int k = 0; k < steps.size(); k++) {
+      PlcStep st = steps.get(k);
+      plcWaitKind[k] = st.waitFor().map(w -> IoKind.valueOf(w.getKey().kind())).orElse(null);
+      List<SetBit> bits = new ArrayList<>();
+      st.set().forEach((sig, on) -> bits.add(new SetBit(IoKind.valueOf(sig.kind()), sig.index(), on)));
+      sets.add(List.copyOf(bits));
+    }
+    plcSets = List.copyOf(sets);
   }
 
   /**
@@ -131,6 +170,11 @@ public final class Uop {
   /** Whether the UOP inputs are obeyed (a production setup with "Enable UI signals" on). */
   public boolean enabled() {
     return setup != null && setup.uopEnabled();
+  }
+
+  /** Whether the teach pendant's TP ENABLE switch is on (UO TPENBL). */
+  public boolean tpEnabled() {
+    return tpEnabled;
   }
 
   /** The teach pendant's TP ENABLE switch (the window tells the controller; headless it is off). */
@@ -181,7 +225,7 @@ public final class Uop {
 
   /** The remote conditions and the operation enable conditions hold (CMDENBL's inputs, less step mode). */
   private boolean remoteOk() {
-    return enabled() && setup.remote() && c.mode() == OperatingMode.AUTO && !tpEnabled
+    return enabled() && setup.remote() && c.mode() == RobotControl.Mode.AUTO && !tpEnabled
         && ui(IMSTP) && ui(HOLD) && ui(SFSPD) && ui(ENBL);
   }
 
@@ -203,6 +247,15 @@ public final class Uop {
       lastUi[i] = ui(i);
     }
     writeOutputs(dtSec);
+  }
+
+  /**
+   * Writes the UOP outputs once more from the controller's state now, with no time passing: the
+   * outputs otherwise follow at the next tick, and a run that ends on this tick has no next one
+   * (PROGRUN and BUSY of the last robot to finish would stay ON in the report).
+   */
+  void settleOutputs() {
+    writeOutputs(0);
   }
 
   private boolean rose(int i) {
@@ -348,8 +401,8 @@ public final class Uop {
       refuse(program + " is already running");
       return;
     }
-    CommandResult r = c.run(program, 1, true);
-    if (r instanceof CommandResult.Refused f) {
+    RobotControl.Result r = c.run(program, 1, true);
+    if (r instanceof RobotControl.Result.Refused f) {
       refuse(f.reason());
     }
   }
@@ -371,17 +424,19 @@ public final class Uop {
     setUo(TPENBL, tpEnabled);
     setUo(BATALM, false);
     setUo(BUSY, running || c.busy());
-    // reference positions: ATPERCH follows reference position 1
+    // reference positions: ATPERCH follows reference position 1 (the joints read once a tick)
     boolean atPerch = false;
-    if (setup != null) {
-      for (ReferencePosition r : setup.referencePositions()) {
-        boolean in = within(r);
+    if (setup != null && !setup.referencePositions().isEmpty()) {
+      org.robotrun.program.Position.Joint q = c.currentJoints();
+      List<ReferencePosition> refs = setup.referencePositions();
+      for (int k = 0; k < refs.size(); k++) {
+        ReferencePosition r = refs.get(k);
+        boolean in = within(q, refJointsDeg[k], refToleranceDeg[k]);
         if (r.number() == 1) {
           atPerch = in;
         }
-        if (r.output().isPresent()) {
-          Signal o = r.output().get();
-          c.registers().setBit(IoKind.valueOf(o.kind()), o.index(), in);
+        if (refOutputKind[k] != null) {
+          c.registers().setBit(refOutputKind[k], r.output().get().index(), in);
         }
       }
     }
@@ -403,9 +458,13 @@ public final class Uop {
 
   /** Whether the arm stands within reference position {@code r}'s tolerance on every joint. */
   public boolean within(ReferencePosition r) {
-    org.robotrun.program.Position.Joint q = c.currentJoints();
-    for (int j = 0; j < r.jointsDeg().size(); j++) {
-      if (Math.abs(q.element(j + 1) - r.jointsDeg().get(j)) > r.toleranceDeg().get(j) + 1e-9) {
+    return within(c.currentJoints(), r.jointsDeg().stream().mapToDouble(Double::doubleValue).toArray(),
+        r.toleranceDeg().stream().mapToDouble(Double::doubleValue).toArray());
+  }
+
+  private static boolean within(org.robotrun.program.Position.Joint q, double[] jointsDeg, double[] toleranceDeg) {
+    for (int j = 0; j < jointsDeg.length; j++) {
+      if (Math.abs(q.element(j + 1) - jointsDeg[j]) > toleranceDeg[j] + 1e-9) {
         return false;
       }
     }
@@ -420,7 +479,8 @@ public final class Uop {
     for (int guard = 0; guard < steps.size() && plcStep < steps.size(); guard++) {
       PlcStep st = steps.get(plcStep);
       if (Double.isNaN(plcHeldSec)) {
-        if (st.waitFor().isPresent() && read(st.waitFor().get().getKey()) != st.waitFor().get().getValue()) {
+        if (st.waitFor().isPresent()
+            && c.registers().bit(plcWaitKind[plcStep], st.waitFor().get().getKey().index()) != st.waitFor().get().getValue()) {
           return;
         }
         plcHeldSec = 0;
@@ -430,17 +490,15 @@ public final class Uop {
       if (plcHeldSec + 1e-9 < st.delaySec()) {
         return;
       }
-      st.set().forEach((sig, on) -> c.registers().setBit(IoKind.valueOf(sig.kind()), sig.index(), on));
+      for (SetBit b : plcSets.get(plcStep)) {
+        c.registers().setBit(b.kind(), b.index(), b.on());
+      }
       plcStep++;
       plcHeldSec = Double.NaN;
       if (st.delaySec() > 0) {
         return;
       }
     }
-  }
-
-  private boolean read(Signal s) {
-    return c.registers().bit(IoKind.valueOf(s.kind()), s.index());
   }
 
   /** Seconds since the controller started (for the PLC panel). */

@@ -33,6 +33,12 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
   private GradeResult last;
   private String error = "";
   private final ImBoolean open = new ImBoolean(false);
+  private java.util.function.Consumer<GradeResult> onResult = r -> { };
+
+  /** Told every result of Check my work (the Labs menu remembers the last score). */
+  public void onResult(java.util.function.Consumer<GradeResult> listener) {
+    this.onResult = listener;
+  }
 
   /**
    * @param controllers the window's robots, first robot first: the first robot's programs, frames
@@ -86,6 +92,7 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
         try {
           last = running.join();
           error = "";
+          onResult.accept(last);
         } catch (RuntimeException e) {
           error = "The check failed: " + e.getMessage();
         }

@@ -118,7 +118,7 @@ public final class HelpWindows {
       }
       ImGui.sameLine();
       Txt.disabledWrapped("Every key: Help > Key map (Ctrl+H). Hover a pendant key to see its keyboard key. "
-          + "This card again: Help > First steps.", false);
+          + "A course of graded labs: the Labs menu (start with lab 1). This card again: Help > First steps.", false);
       welcomeHeight = ImGui.getWindowHeight();
       welcomeRect = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
           ImGui.getWindowHeight());

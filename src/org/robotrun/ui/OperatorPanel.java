@@ -1,8 +1,8 @@
 package org.robotrun.ui;
 
 import imgui.ImGui;
+import org.robotrun.control.RobotControl;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.RobotControl;
 
 /**
  * The controller cabinet's operator panel, drawn as a section of the window's left column: the

@@ -30,8 +30,17 @@ public final class VisionPanel implements Workbench.MenuContributor, AutoCloseab
   private final ImInt seed = new ImInt();
   private String message = "";
 
+  /** The scene of this frame (the window's own snapshot, so a camera view does not build a second one). */
+  private final java.util.function.Supplier<org.robotrun.sim.SceneSnapshot> scene;
+
   public VisionPanel(Simulation sim) {
+    this(sim, () -> sim.snapshot().scene());
+  }
+
+  /** A panel whose camera views draw {@code scene}: the snapshot the window took for this frame. */
+  public VisionPanel(Simulation sim, java.util.function.Supplier<org.robotrun.sim.SceneSnapshot> scene) {
     this.sim = sim;
+    this.scene = scene;
     seed.set((int) system().setup().seed());
   }
 
@@ -131,7 +140,7 @@ public final class VisionPanel implements Workbench.MenuContributor, AutoCloseab
       int rw = Math.max(16, Math.min(cam.widthPx(), Math.round(w)));
       int rh = Math.max(16, Math.round(rw / aspect));
       Transform X_CK = system().cameraPose(cam);
-      int tex = img.render(system().withOutlines(sim.snapshot().scene(), cam.name()),
+      int tex = img.render(system().withOutlines(scene.get(), cam.name()),
           VisionCameraView.viewProjection(cam, X_CK), VisionCameraView.eye(X_CK), rw, rh);
       float x0 = ImGui.getCursorScreenPosX();
       float y0 = ImGui.getCursorScreenPosY();

@@ -6,17 +6,16 @@ import java.io.StringWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.Optional;
 import java.util.Properties;
 import org.robotrun.io.AtomicFiles;
 
 /**
  * Where the window keeps its layout between runs, one per workspace ({@link #forWorkspace}) and the user's last one, {@code layout.properties},
- * in the user's settings folder, never the current directory. {@code ROBOTRUN_CONFIG_DIR} overrides
- * the folder (tests, portable installs); otherwise {@code $XDG_CONFIG_HOME/robotrun} or
- * {@code ~/.config/robotrun} on Linux, {@code %APPDATA%\RobotRun} on Windows,
- * {@code ~/Library/Application Support/RobotRun} on macOS. Written through {@link AtomicFiles}.
+ * in the user's settings folder ({@link org.robotrun.io.UserDirs#configDir}: {@code ROBOTRUN_CONFIG_DIR},
+ * else {@code $XDG_CONFIG_HOME/robotrun} or {@code ~/.config/robotrun} on Linux, {@code %APPDATA%\RobotRun}
+ * on Windows, {@code ~/Library/Application Support/RobotRun} on macOS), never the current directory.
+ * Written through {@link AtomicFiles}.
  */
 public final class WindowSettings {
   private static final String USER_FILE = "layout.properties";
@@ -52,25 +51,9 @@ public final class WindowSettings {
     }
   }
 
-  /** The settings folder of this user on this system, if one can be named. */
+  /** The settings folder of this user on this system, as {@link org.robotrun.io.UserDirs} decides it (the one place). */
   public static WindowSettings forUser() {
-    String override = System.getenv("ROBOTRUN_CONFIG_DIR");
-    if (override != null && !override.isBlank()) {
-      return new WindowSettings(Optional.of(Path.of(override)));
-    }
-    String os = System.getProperty("os.name", "").toLowerCase(Locale.ROOT);
-    String home = System.getProperty("user.home", "");
-    Path d = null;
-    if (os.contains("win")) {
-      String appData = System.getenv("APPDATA");
-      d = appData != null ? Path.of(appData, "RobotRun") : null;
-    } else if (os.contains("mac")) {
-      d = home.isEmpty() ? null : Path.of(home, "Library", "Application Support", "RobotRun");
-    } else {
-      String xdg = System.getenv("XDG_CONFIG_HOME");
-      d = xdg != null && !xdg.isBlank() ? Path.of(xdg, "robotrun") : home.isEmpty() ? null : Path.of(home, ".config", "robotrun");
-    }
-    return new WindowSettings(Optional.ofNullable(d));
+    return new WindowSettings(Optional.of(org.robotrun.io.UserDirs.fromSystem().configDir()));
   }
 
   public Optional<Path> file() {

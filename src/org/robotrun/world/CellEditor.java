@@ -264,7 +264,7 @@ public final class CellEditor {
     }
     WorldObject o = found.get();
     Transform moved = Transform.translation(0, 100, 0).compose(o.startPose());
-    WorldObject copy = WorldObject.of(freeName(o.name() + "_copy"), o.kind(), o.shape(), o.colour(), moved, o.startParent());
+    WorldObject copy = WorldObject.of(freeName(o.name() + "_copy"), o.kind(), o.shape(), o.colour(), moved, o.startParent()).withTouchable(o.touchable());
     return apply(withWorld(append(copy)), "duplicated " + o.name() + " as " + copy.name());
   }
 
@@ -300,10 +300,10 @@ public final class CellEditor {
     for (WorldObject o : world().objects()) {
       WorldObject r = o;
       if (o.name().equals(object)) {
-        r = WorldObject.of(n, o.kind(), o.shape(), o.colour(), o.startPose(), o.startParent());
+        r = WorldObject.of(n, o.kind(), o.shape(), o.colour(), o.startPose(), o.startParent()).withTouchable(o.touchable());
       }
       if (r.startParent().filter(object::equals).isPresent()) {
-        r = WorldObject.of(r.name(), r.kind(), r.shape(), r.colour(), r.startPose(), Optional.of(n));
+        r = WorldObject.of(r.name(), r.kind(), r.shape(), r.colour(), r.startPose(), Optional.of(n)).withTouchable(r.touchable());
       }
       out.add(r);
     }
@@ -316,7 +316,7 @@ public final class CellEditor {
     if (c.isEmpty()) {
       return refused("colour: expected #rrggbb (six hex digits), got '" + hex + "'");
     }
-    return replace(object, o -> WorldObject.of(o.name(), o.kind(), o.shape(), c.get(), o.startPose(), o.startParent()),
+    return replace(object, o -> WorldObject.of(o.name(), o.kind(), o.shape(), c.get(), o.startPose(), o.startParent()).withTouchable(o.touchable()),
         "colour of " + object + " is " + c.get().hex());
   }
 
@@ -325,7 +325,7 @@ public final class CellEditor {
     if (kind == ObjectKind.PART && world().objects().stream().anyMatch(o -> o.startParent().filter(object::equals).isPresent())) {
       return refused("kind: " + object + " stays a fixture while objects stand on it");
     }
-    return replace(object, o -> WorldObject.of(o.name(), kind, o.shape(), o.colour(), o.startPose(), o.startParent()),
+    return replace(object, o -> WorldObject.of(o.name(), kind, o.shape(), o.colour(), o.startPose(), o.startParent()).withTouchable(o.touchable()),
         object + " is a " + kind.name().toLowerCase(Locale.ROOT));
   }
 
@@ -356,7 +356,7 @@ public final class CellEditor {
       pose = world().reset().poseInCell(parent.get()).inverse().compose(X_CO);
     }
     Transform finalPose = pose;
-    return replace(object, o -> WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), finalPose, parent),
+    return replace(object, o -> WorldObject.of(o.name(), o.kind(), o.shape(), o.colour(), finalPose, parent).withTouchable(o.touchable()),
         object + (parent.isPresent() ? " stands on " + parent.get() : " stands in the cell"));
   }
 
@@ -390,7 +390,7 @@ public final class CellEditor {
       Xyzwpr q = Xyzwpr.ofDegrees(
           f == NumberField.X ? v : p.x(), f == NumberField.Y ? v : p.y(), f == NumberField.Z ? v : p.z(),
           f == NumberField.W ? v : p.wDeg(), f == NumberField.P ? v : p.pDeg(), f == NumberField.R ? v : p.rDeg());
-      return replace(object, x -> WorldObject.of(x.name(), x.kind(), x.shape(), x.colour(), q.toTransform(), x.startParent()),
+      return replace(object, x -> WorldObject.of(x.name(), x.kind(), x.shape(), x.colour(), q.toTransform(), x.startParent()).withTouchable(x.touchable()),
           object + " " + f.label() + " = " + fmt(v) + " " + f.unit());
     }
     Shape s = o.shape();
@@ -422,7 +422,7 @@ public final class CellEditor {
         changed = new Shape.Mesh(m.file(), v, mesh);
       }
     }
-    return replace(object, x -> WorldObject.of(x.name(), x.kind(), changed, x.colour(), x.startPose(), x.startParent()),
+    return replace(object, x -> WorldObject.of(x.name(), x.kind(), changed, x.colour(), x.startPose(), x.startParent()).withTouchable(x.touchable()),
         object + " " + f.label() + " = " + fmt(v) + (f.unit().isEmpty() ? "" : " " + f.unit()));
   }
 
@@ -444,8 +444,7 @@ public final class CellEditor {
       return refused("scenario name: '" + n + "' is already taken");
     }
     Scenario a = active();
-    Scenario copy = new Scenario(n, a.description(), a.robots(), a.world(), a.programs(), a.mainProgram(),
-        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision(), a.mode()).withExtrasOf(a);
+    Scenario copy = a.withName(n, a.description());
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.add(copy);
     return apply(new State(List.copyOf(out), out.size() - 1), "scenario " + n + " added");
@@ -520,8 +519,7 @@ public final class CellEditor {
 
   private State withWorld(World w) {
     Scenario a = active();
-    Scenario s = new Scenario(a.name(), a.description(), a.robots(), w.reset(), a.programs(), a.mainProgram(),
-        a.registers(), a.toolFrames(), a.userFrames(), a.camera(), a.onCollision(), a.mode()).withExtrasOf(a);
+    Scenario s = a.withWorld(w.reset());
     List<Scenario> out = new ArrayList<>(state.scenarios);
     out.set(state.active, s);
     return new State(List.copyOf(out), state.active);

@@ -52,7 +52,7 @@ public final class PartPlacement {
           shape = k.shape();
           colour = k.colour();
         }
-        out = out.with(new WorldObject(o.name(), o.kind(), shape, colour, pose, o.startParent(), pose, o.startParent()));
+        out = out.with(new WorldObject(o.name(), o.kind(), shape, colour, pose, o.startParent(), pose, o.startParent(), o.touchable()));
       }
     }
     return out;

@@ -21,10 +21,18 @@ import org.robotrun.math.Transform;
  *     first robot runs the scenario's main program, another robot runs nothing)
  * @param macros the controller's macro table (MENU &gt; SETUP &gt; Macro), in its order: each
  *     macro name and the program it runs
+ * @param registers numeric registers R[i] to preset in this robot's controller, by index (the
+ *     first robot also gets the scenario's top-level {@code "registers"}: {@link Scenario#preload})
+ * @param toolFrames tool frames UT[i] to preset (pose of the TCP in the flange frame), by number
+ * @param userFrames user frames UF[i] to preset (pose in the robot's WORLD), by number
+ * @param mode this robot's mode switch when a window or pendant script opens the cell ("T1",
+ *     "T2", "AUTO"; empty: the scenario's {@code "mode"})
  */
 public record RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
     ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms,
-    List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram, List<Macro> macros) {
+    List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram, List<Macro> macros,
+    java.util.SortedMap<Integer, Double> registers, java.util.SortedMap<Integer, Transform> toolFrames,
+    java.util.SortedMap<Integer, Transform> userFrames, java.util.Optional<String> mode) {
 
   /** One row of the macro table: a macro name ("HAND1 OPEN") and the program it runs ("HOPEN"). */
   public record Macro(String name, String program) {
@@ -32,6 +40,14 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
       java.util.Objects.requireNonNull(name, "name");
       java.util.Objects.requireNonNull(program, "program");
     }
+  }
+
+  /** A robot with no presets of its own (registers, frames, mode). */
+  public RobotSetup(String name, String modelId, Transform X_CB, EndEffectorType endEffector, List<Double> initialJointsRad,
+      ToolIo toolIo, java.util.SortedMap<String, Integer> io, java.util.SortedMap<Integer, String> userAlarms,
+      List<java.nio.file.Path> programs, java.util.Optional<String> mainProgram, List<Macro> macros) {
+    this(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, macros,
+        new java.util.TreeMap<>(), new java.util.TreeMap<>(), new java.util.TreeMap<>(), java.util.Optional.empty());
   }
 
   /** A robot with an empty macro table. */
@@ -49,6 +65,13 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
     io = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(io));
     userAlarms = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(userAlarms));
     initialJointsRad = List.copyOf(initialJointsRad);
+    registers = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(registers));
+    toolFrames = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(toolFrames));
+    userFrames = java.util.Collections.unmodifiableSortedMap(new java.util.TreeMap<>(userFrames));
+    java.util.Objects.requireNonNull(mode, "mode");
+    if (mode.isPresent() && !Scenario.MODES.contains(mode.get())) {
+      throw new IllegalArgumentException("mode must be one of " + Scenario.MODES + ", got " + mode.get());
+    }
     if (initialJointsRad.size() != 6) {
       throw new IllegalArgumentException("a robot needs 6 initial joint values, got " + initialJointsRad.size());
     }
@@ -62,17 +85,33 @@ public record RobotSetup(String name, String modelId, Transform X_CB, EndEffecto
 
   /** This robot standing at other initial joints (rad, pendant convention); everything else kept. */
   public RobotSetup withJoints(List<Double> jointsRad) {
-    return new RobotSetup(name, modelId, X_CB, endEffector, jointsRad, toolIo, io, userAlarms, programs, mainProgram, macros);
+    return new RobotSetup(name, modelId, X_CB, endEffector, jointsRad, toolIo, io, userAlarms, programs, mainProgram, macros,
+        registers, toolFrames, userFrames, mode);
   }
 
   /** This robot with other programs of its own and main program. */
   public RobotSetup withPrograms(List<java.nio.file.Path> files, java.util.Optional<String> main) {
-    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main, macros);
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, files, main, macros,
+        registers, toolFrames, userFrames, mode);
   }
 
   /** This robot with another macro table. */
   public RobotSetup withMacros(List<Macro> table) {
-    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, table);
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram, table,
+        registers, toolFrames, userFrames, mode);
+  }
+
+  /** This robot with other register and frame presets of its own. */
+  public RobotSetup withPresets(java.util.SortedMap<Integer, Double> regs, java.util.SortedMap<Integer, Transform> tools,
+      java.util.SortedMap<Integer, Transform> users) {
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram,
+        macros, regs, tools, users, mode);
+  }
+
+  /** This robot with its own mode switch (empty: the scenario's). */
+  public RobotSetup withMode(java.util.Optional<String> m) {
+    return new RobotSetup(name, modelId, X_CB, endEffector, initialJointsRad, toolIo, io, userAlarms, programs, mainProgram,
+        macros, registers, toolFrames, userFrames, m);
   }
 
   /** A robot with the controller's default I/O sizes and no UALM texts. */

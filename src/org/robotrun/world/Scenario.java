@@ -8,9 +8,16 @@ import java.util.TreeMap;
 import org.robotrun.math.Transform;
 
 /**
- * A cell as an instructor ships it: robots, world objects and what to preload into the
- * (first) robot's controller. All lengths mm, angles rad; files use degrees (see
- * docs/scenario-format.md). Paths are absolute here; files store them relative to themselves.
+ * A cell as an instructor ships it: robots, world objects and what to preload into each robot's
+ * controller. All lengths mm, angles rad; files use degrees (see docs/scenario-format.md). Paths
+ * are absolute here; files store them relative to themselves.
+ *
+ * <p>Every robot is equal: each {@link RobotSetup} carries its own programs, main program,
+ * registers, frames, I/O sizes, macros and mode. The top-level {@code programs}, {@code
+ * mainProgram}, {@code registers}, {@code frames} and {@code mode} of the file format are kept
+ * here as the file has them (so a file is written back byte for byte) and are the first robot's:
+ * {@link #preload(int)} is the one place that expands them, and every reader of a robot's
+ * preload asks it.
  *
  * @param name a title for menus, may be empty
  * @param description what the exercise is about, may be empty
@@ -90,6 +97,92 @@ public record Scenario(
       SortedMap<Integer, Transform> userFrames, Optional<CameraView> camera) {
     this(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames, camera,
         CollisionResponse.ALARM);
+  }
+
+  /**
+   * What robot {@code i}'s controller starts with: its own programs, registers, frames and mode,
+   * and for the first robot also the scenario's top-level ones (its programs first; the robot's
+   * own main program before the scenario's; a register or frame given in both places: the
+   * robot's).
+   */
+  public Preload preload(int i) {
+    RobotSetup r = robots.get(i);
+    if (i != 0) {
+      return new Preload(r.programs(), r.mainProgram(), r.registers(), r.toolFrames(), r.userFrames(), r.mode().or(() -> mode));
+    }
+    List<Path> files = new java.util.ArrayList<>(programs);
+    r.programs().stream().filter(p -> !files.contains(p)).forEach(files::add);
+    TreeMap<Integer, Double> regs = new TreeMap<>(registers);
+    regs.putAll(r.registers());
+    TreeMap<Integer, Transform> tools = new TreeMap<>(toolFrames);
+    tools.putAll(r.toolFrames());
+    TreeMap<Integer, Transform> users = new TreeMap<>(userFrames);
+    users.putAll(r.userFrames());
+    return new Preload(files, r.mainProgram().or(() -> mainProgram), regs, tools, users, r.mode().or(() -> mode));
+  }
+
+  /**
+   * One robot's preload (see {@link #preload(int)}).
+   *
+   * @param programs .LS files to load into its controller
+   * @param mainProgram what {@code robotrun run --scenario} runs on it (empty: nothing, or
+   *     {@code --program} on the first robot)
+   * @param registers R[i] presets
+   * @param toolFrames UT[i] presets (TCP in the flange frame)
+   * @param userFrames UF[i] presets (in the robot's WORLD)
+   * @param mode its mode switch when a window or pendant script opens the cell (empty: T1)
+   */
+  public record Preload(List<Path> programs, Optional<String> mainProgram, SortedMap<Integer, Double> registers,
+      SortedMap<Integer, Transform> toolFrames, SortedMap<Integer, Transform> userFrames, Optional<String> mode) {
+    public Preload {
+      programs = List.copyOf(programs);
+      registers = java.util.Collections.unmodifiableSortedMap(new TreeMap<>(registers));
+      toolFrames = java.util.Collections.unmodifiableSortedMap(new TreeMap<>(toolFrames));
+      userFrames = java.util.Collections.unmodifiableSortedMap(new TreeMap<>(userFrames));
+    }
+  }
+
+  /** This scenario under another name (and description). */
+  public Scenario withName(String newName, String newDescription) {
+    return new Scenario(newName, newDescription, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, wiring, production, vision);
+  }
+
+  /** This scenario with other robots (their own presets with them). */
+  public Scenario withRobots(List<RobotSetup> newRobots) {
+    return new Scenario(name, description, newRobots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, wiring, production, vision);
+  }
+
+  /** This scenario with another world (fixtures and parts). */
+  public Scenario withWorld(World newWorld) {
+    return new Scenario(name, description, robots, newWorld, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, mode, wiring, production, vision);
+  }
+
+  /** This scenario with another initial view. */
+  public Scenario withCamera(Optional<CameraView> newCamera) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        newCamera, onCollision, mode, wiring, production, vision);
+  }
+
+  /** This scenario with other top-level programs and main program (the first robot's). */
+  public Scenario withPrograms(List<Path> files, Optional<String> main) {
+    return new Scenario(name, description, robots, world, files, main, registers, toolFrames, userFrames,
+        camera, onCollision, mode, wiring, production, vision);
+  }
+
+  /** This scenario with other top-level register and frame presets (the first robot's). */
+  public Scenario withPresets(SortedMap<Integer, Double> regs, SortedMap<Integer, Transform> tools,
+      SortedMap<Integer, Transform> users) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, regs, tools, users,
+        camera, onCollision, mode, wiring, production, vision);
+  }
+
+  /** This scenario with another mode switch (empty: T1). */
+  public Scenario withMode(Optional<String> newMode) {
+    return new Scenario(name, description, robots, world, programs, mainProgram, registers, toolFrames, userFrames,
+        camera, onCollision, newMode, wiring, production, vision);
   }
 
   /** This scenario with {@code from}'s wiring, production setup and vision (a copy that changed other fields keeps them). */

@@ -3,9 +3,6 @@ package org.robotrun.world;
 import java.util.List;
 import java.util.Locale;
 import java.util.Objects;
-import java.util.Optional;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * Signals wired between robots (issue 15): each wire carries one robot's output to an input of
@@ -37,22 +34,9 @@ public record Wiring(List<Wire> wires) {
    * @param index 1-based port number
    */
   public record Signal(String robot, String kind, int index) {
-    // ROBOT.KIND[N]: the robot name is everything before the last dot ahead of the kind, so a
-    // new I/O kind needs no change here.
-    private static final Pattern ADDRESS = Pattern.compile("(.+)\\.([A-Za-z]+)\\[\\s*(\\d{1,9})\\s*\\]");
-
     public Signal {
       Objects.requireNonNull(robot, "robot");
       kind = kind.toUpperCase(Locale.ROOT);
-    }
-
-    /** {@code robot1.DO[10]}; empty when the text does not have that shape. */
-    public static Optional<Signal> parse(String text) {
-      Matcher m = ADDRESS.matcher(text.strip());
-      if (!m.matches()) {
-        return Optional.empty();
-      }
-      return Optional.of(new Signal(m.group(1), m.group(2), Integer.parseInt(m.group(3))));
     }
 
     @Override

@@ -14,6 +14,8 @@ import org.robotrun.math.Transform;
  * @param parent the fixture the pose is relative to, if any
  * @param startPose the pose the object had when the scenario was loaded ("reset scene")
  * @param startParent the parent it had then
+ * @param touchable the robot's tool may touch it without a collision alarm (a marker, a pin, the
+ *     point a frame is taught on; docs/collision.md); the arm's links may not
  */
 public record WorldObject(
     String name,
@@ -23,7 +25,8 @@ public record WorldObject(
     Transform pose,
     Optional<String> parent,
     Transform startPose,
-    Optional<String> startParent) {
+    Optional<String> startParent,
+    boolean touchable) {
 
   public WorldObject {
     if (name == null || name.isBlank()) {
@@ -34,6 +37,17 @@ public record WorldObject(
     }
   }
 
+  /** An object the tool may not touch. */
+  public WorldObject(String name, ObjectKind kind, Shape shape, Rgb colour, Transform pose, Optional<String> parent,
+      Transform startPose, Optional<String> startParent) {
+    this(name, kind, shape, colour, pose, parent, startPose, startParent, false);
+  }
+
+  /** The same object, touchable by the tool or not. */
+  public WorldObject withTouchable(boolean touchable) {
+    return new WorldObject(name, kind, shape, colour, pose, parent, startPose, startParent, touchable);
+  }
+
   /** A new object at its start pose. */
   public static WorldObject of(String name, ObjectKind kind, Shape shape, Rgb colour, Transform pose, Optional<String> parent) {
     return new WorldObject(name, kind, shape, colour, pose, parent, pose, parent);
@@ -41,11 +55,11 @@ public record WorldObject(
 
   /** The same object moved: {@code pose} relative to {@code parent} (or the cell). */
   public WorldObject movedTo(Transform pose, Optional<String> parent) {
-    return new WorldObject(name, kind, shape, colour, pose, parent, startPose, startParent);
+    return new WorldObject(name, kind, shape, colour, pose, parent, startPose, startParent, touchable);
   }
 
   /** The same object back where it started. */
   public WorldObject atStart() {
-    return new WorldObject(name, kind, shape, colour, startPose, startParent, startPose, startParent);
+    return new WorldObject(name, kind, shape, colour, startPose, startParent, startPose, startParent, touchable);
   }
 }

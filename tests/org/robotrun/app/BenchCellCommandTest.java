@@ -56,6 +56,14 @@ class BenchCellCommandTest {
   }
 
   @Test
+  void aCellThePlcStartsRunsAsRunDoesIt() {
+    // plc-cell's PLC selects and starts PNS0001 (runStartsFromPlc): bench cell starting it too failed with INTP-105
+    Run r = run("bench", "cell", "--scenario", "scenarios/plc-cell.json", "--repeats", "1");
+    assertThat(r.exit()).as(r.err()).isZero();
+    assertThat(r.out()).startsWith("scenario=plc-cell.json program=PLC cycle_s=");
+  }
+
+  @Test
   void scenarioWithoutMainProgramIsBadInput() {
     Run r = run("bench", "cell", "--scenario", "scenarios/empty-cell.json", "--repeats", "1");
     assertThat(r.exit()).isEqualTo(2);

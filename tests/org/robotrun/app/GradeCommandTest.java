@@ -126,4 +126,38 @@ class GradeCommandTest {
     JsonNode json = new ObjectMapper().readTree(out.resolve("cell-folder/results.json").toFile());
     assertThat(json.get("tests").get(3).get("output").asText()).startsWith("robot2: the program ran to its end");
   }
+
+  @Test
+  void outputsThatCannotBeWrittenAreExitTwoBeforeAnyGrading(@TempDir Path dir) throws Exception {
+    for (String[] o : List.of(new String[] {"--out", "/proc/robotrun-out"},
+        new String[] {"--gradescope", "/proc/self/results.json"},
+        new String[] {"--gradescope", dir.resolve("no/such/folder/results.json").toString()},
+        new String[] {"--out", Files.writeString(dir.resolve("a-file"), "x").toString()})) {
+      long t0 = System.nanoTime();
+      Run r = run("grade", "--task", TASK, "-q", o[0], o[1], SUBS + "reference");
+      assertThat(r.exit()).as(String.join(" ", o)).isEqualTo(2);
+      assertThat(r.err()).startsWith("robotrun: " + o[0] + ": ").doesNotContain("internal error").doesNotContain("\tat ");
+      assertThat(r.out()).as("nothing graded").isEmpty();
+      assertThat((System.nanoTime() - t0) / 1e9).as("seconds").isLessThan(5);
+    }
+  }
+
+  @Test
+  void summaryCsvEscapesControlCharactersOfStudentNames() {
+    assertThat(GradeReports.csv("Eve\u0000\u001b[2J\rMallory")).isEqualTo("Eve\\u0000\\e[2J\\rMallory");
+    assertThat(GradeReports.csv("two\nlines")).isEqualTo("two\\nlines");
+    assertThat(GradeReports.csv("=cmd, x")).isEqualTo("\"'=cmd, x\"");
+  }
+
+  /** Issue 26: programs/*.LS and programs/ROBOT/*.LS without cell.json, as docs/grading.md lays it out, scored 0. */
+  @Test
+  void aFolderLaidOutAsAWorkspaceWithoutCellJsonIsGraded(@TempDir Path dir) throws Exception {
+    Path sub = dir.resolve("laid-out");
+    Files.createDirectories(sub.resolve("programs/robot2"));
+    Files.copy(Path.of("scenarios/programs/LOADER.LS"), sub.resolve("programs/LOADER.LS"));
+    Files.copy(Path.of("scenarios/programs/UNLOADER.LS"), sub.resolve("programs/robot2/UNLOADER.LS"));
+    Run r = run("grade", "--task", "scenarios/tasks/two-robot-handshake.task.json", "-q", sub.toString());
+    assertThat(r.exit()).as(r.err()).isZero();
+    assertThat(r.out()).isEqualTo("laid-out: 95 of 100 points\n");
+  }
 }

@@ -160,7 +160,8 @@ class HardenedInputTest {
 
   @Test
   void keyScriptNumbersFollowTheDecimalGrammar(@TempDir Path dir) throws Exception {
-    for (String n : new String[] {"0x1p3", "1d", "NaN", "Infinity", "1e999"}) {
+    // issue 26: a plain decimal, as docs/pendant.md says (1e3 was taken as 1000)
+    for (String n : new String[] {"0x1p3", "1d", "NaN", "Infinity", "1e999", "1e3", "+2", "2.5e0", "\u0663"}) {
       Path keys = Files.writeString(dir.resolve("k.keys"), "WAIT " + n + "\n");
       Run r = run("pendant", "--keys", keys.toString());
       assertThat(r.exit()).as(n).isEqualTo(2);
@@ -241,6 +242,71 @@ class HardenedInputTest {
     assertThat(Files.readAllLines(trace)).hasSize(252).doesNotContain("old");
     try (Stream<Path> s = Files.list(dir)) {
       assertThat(s.map(p -> p.getFileName().toString())).containsExactlyInAnyOrder("LOOP.LS", "t.csv");
+    }
+  }
+
+  /** Issue 26: a '%' in a help text (Windows' %APPDATA%) made picocli warn before every gui --help. */
+  @Test
+  void everyHelpTextFormatsWithoutAWarning() {
+    java.util.List<CommandLine> all = new java.util.ArrayList<>(java.util.List.of(Main.commandLine()));
+    for (int i = 0; i < all.size(); i++) {
+      all.addAll(all.get(i).getSubcommands().values());
+    }
+    PrintStream oldErr = System.err;
+    ByteArrayOutputStream sysErr = new ByteArrayOutputStream();
+    System.setErr(new PrintStream(sysErr, true, StandardCharsets.UTF_8));
+    try {
+      for (CommandLine c : all) {
+        String help = c.getUsageMessage();
+        assertThat(help).as(c.getCommandSpec().qualifiedName()).doesNotContain("%n");
+      }
+    } finally {
+      System.setErr(oldErr);
+    }
+    assertThat(sysErr.toString(StandardCharsets.UTF_8)).isEmpty();
+    assertThat(all).hasSizeGreaterThan(10);
+    assertThat(Main.commandLine().getSubcommands().get("gui").getUsageMessage()).contains("Windows %APPDATA%")
+        .doesNotContain("%%");
+  }
+
+  @Test
+  @EnabledOnOs({OS.LINUX, OS.MAC})
+  void checkAsJsonCarriesTheFilesItCouldNotRead(@TempDir Path dir) throws Exception {
+    Path f = fifo(dir);
+    Path loop = dir.resolve("LOOP.LS");
+    Files.createSymbolicLink(loop, loop);
+    for (Path p : new Path[] {f, loop, Path.of("/dev/zero")}) {
+      CommandLine cl = Main.commandLine();
+      StringWriter out = new StringWriter();
+      StringWriter err = new StringWriter();
+      cl.setOut(new PrintWriter(out));
+      cl.setErr(new PrintWriter(err));
+      int exit = cl.execute("check", "--format", "json", p.toString());
+      assertThat(exit).as(p.toString()).isEqualTo(2);
+      assertThat(err.toString()).startsWith(p + ": cannot read: ");
+      JsonNode json = new ObjectMapper().readTree(out.toString());
+      assertThat(json.get("errors").asInt()).as(p.toString()).isEqualTo(1);
+      assertThat(json.get("diagnostics").get(0).get("file").asText()).isEqualTo(p.toString());
+      assertThat(json.get("diagnostics").get(0).get("message").asText()).startsWith("cannot read: ");
+    }
+  }
+
+  @Test
+  void aTaskWhoseScenarioIsADeviceSaysSo(@TempDir Path dir) throws Exception {
+    Path task = Files.writeString(dir.resolve("t.task.json"), "{\"format\": 1, \"scenario\": \"/dev/zero\", \"checks\": []}");
+    Run r = run("grade", "--task", task.toString(), dir.toString());
+    assertThat(r.exit()).isEqualTo(2);
+    assertThat(r.err()).contains("scenario: cannot read the scenario /dev/zero: a character device, not a regular file")
+        .doesNotContain("not found");
+  }
+
+  @Test
+  void seedOptionsTakeWhatVisionSeedTakes() {
+    for (String[] cmd : new String[][] {{"run", "--scenario", "scenarios/vision-pick.json", "--seed", "9223372036854775807"},
+        {"render", "--scenario", "scenarios/vision-pick.json", "--seed", "-9000000000000000", "--out", "x.png"}}) {
+      Run r = run(cmd);
+      assertThat(r.exit()).isEqualTo(2);
+      assertThat(r.err()).contains("--seed: expected a whole number of at most 15 digits (as vision.seed)");
     }
   }
 }

@@ -15,6 +15,7 @@ import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.Key;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.Simulation;
 
@@ -33,7 +34,7 @@ class KeyScriptFuzzTest {
 
   private static final List<String> COMMANDS = List.of("SHOW", "WAIT 0.05", "WAIT 0", "HOLD SHIFT", "RELEASE SHIFT",
       "HOLD DEADMAN", "RELEASE DEADMAN", "CLICK +X", "CLICK J1+", "DOWN *3", "UP *2", "HOLD +X/J1", "RELEASE +X/J1",
-      "SHIFT+FWD", "SHIFT+BWD", "SHIFT+F1", "SHIFT+F5", "HOLD", "WAIT 0x1p3", "FROB", "TYPE", "* 3", "ENTER *0",
+      "SHIFT+FWD", "SHIFT+BWD", "SHIFT+F1", "SHIFT+F5", "HOLD", "WAIT 0x1p3", "WAIT 1e3", "FROB", "TYPE", "* 3", "ENTER *0",
       "# a comment", "", "RELEASE");
 
   @Provide
@@ -60,9 +61,9 @@ class KeyScriptFuzzTest {
       }
       case KeyScript.Parsed.Ok ok -> {
         Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
-        Pendant p = new Pendant(new SimRobotControl(sim, sim.controllers().get(0)), new LsLineParser());
+        Pendant p = new Pendant(new ControllerPort(sim.controllers().get(0)), new LsLineParser());
         StringBuilder shown = new StringBuilder();
-        ok.script().run(p, shown::append);
+        ok.script().run(p, new org.robotrun.sim.CellStepper(sim)::advance, shown::append);
         assertThat(p.render()).isNotEmpty();
       }
     }

@@ -5,14 +5,15 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl.ExecState;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.pendant.KeyScript;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.RobotControl.ExecState;
 import org.robotrun.program.Program;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.Simulation;
 
@@ -25,7 +26,8 @@ import org.robotrun.sim.Simulation;
 class PendantEditPausedProgramTest {
   private final Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
   private final Controller controller = sim.controllers().get(0);
-  private final SimRobotControl control = new SimRobotControl(sim, controller);
+  private final ControllerPort control = new ControllerPort(controller);
+  private final org.robotrun.sim.CellStepper stepper = new org.robotrun.sim.CellStepper(sim);
   private final Pendant p = new Pendant(control, new LsLineParser());
 
   private void keys(String script) {
@@ -33,7 +35,7 @@ class PendantEditPausedProgramTest {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new AssertionError(bad.error().display());
     };
-    s.run(p, text -> { });
+    s.run(p, stepper::advance, text -> { });
   }
 
   /** A program from .LS body lines ("R[1]=1" …), stored on the controller. */
@@ -65,21 +67,21 @@ class PendantEditPausedProgramTest {
     LsReadResult r = LsReader.parse("MOVE.LS", text);
     assertThat(r.hasAnyError()).as(r.diagnostics().toString()).isFalse();
     control.saveProgram(r.program());
-    assertThat(control.run("MOVE", 1, true)).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Ok.class);
+    assertThat(controller.run("MOVE", 1, true)).isInstanceOf(org.robotrun.control.RobotControl.Result.Ok.class);
     for (int i = 0; i < 400 && control.status().line() < 2; i++) {
-      control.advance(0.05);
+      stepper.advance(0.05);
     }
-    control.advance(0.5);
+    stepper.advance(0.5);
     control.hold();
-    control.advance(0.5);
-    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("MOVE", 2, ExecState.PAUSED));
+    stepper.advance(0.5);
+    assertThat(control.status()).isEqualTo(new org.robotrun.control.RobotControl.ExecutionStatus("MOVE", 2, ExecState.PAUSED));
     assertThat(control.currentJoints().j1Deg()).isBetween(1.0, 59.0);
   }
 
   private void resumeAtStatusLineAndFinish() {
-    assertThat(control.run("MOVE", control.status().line(), true)).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Ok.class);
+    assertThat(controller.run("MOVE", control.status().line(), true)).isInstanceOf(org.robotrun.control.RobotControl.Result.Ok.class);
     for (int i = 0; i < 600 && control.status().state() != ExecState.IDLE; i++) {
-      control.advance(0.05);
+      stepper.advance(0.05);
     }
     assertThat(control.status().state()).isEqualTo(ExecState.IDLE);
     assertThat(control.activeAlarm()).isEmpty();
@@ -131,7 +133,7 @@ class PendantEditPausedProgramTest {
         WAIT 0.2
         RELEASE SHIFT
         """);
-    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 2, ExecState.PAUSED));
+    assertThat(control.status()).isEqualTo(new org.robotrun.control.RobotControl.ExecutionStatus("EDT", 2, ExecState.PAUSED));
     assertThat(r(1)).isEqualTo(1);
   }
 
@@ -203,7 +205,7 @@ class PendantEditPausedProgramTest {
         ENTER
         """);
     assertThat(lineCount()).isEqualTo(6);
-    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 4, ExecState.PAUSED));
+    assertThat(control.status()).isEqualTo(new org.robotrun.control.RobotControl.ExecutionStatus("EDT", 4, ExecState.PAUSED));
     // the operator's cursor stays on the inserted line (an edit is not execution moving)
     assertThat(p.lcd().body().get(0)).startsWith("> {1:}");
     keys("""
@@ -230,7 +232,7 @@ class PendantEditPausedProgramTest {
         F4
         """);
     assertThat(lineCount()).isEqualTo(3);
-    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 2, ExecState.PAUSED));
+    assertThat(control.status()).isEqualTo(new org.robotrun.control.RobotControl.ExecutionStatus("EDT", 2, ExecState.PAUSED));
     keys("""
         HOLD DEADMAN
         STEP
@@ -265,10 +267,10 @@ class PendantEditPausedProgramTest {
         RELEASE SHIFT
         """);
     // STEP goes into the callee: paused on SUB line 1, EDT waits for the return
-    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("SUB", 1, ExecState.PAUSED));
+    assertThat(control.status()).isEqualTo(new org.robotrun.control.RobotControl.ExecutionStatus("SUB", 1, ExecState.PAUSED));
     // the caller gains a line above the CALL (must not run) and one right after it (must run)
     store("EDT", "R[6]=6", "CALL SUB", "R[5]=5", "R[2]=2", "R[3]=3");
-    assertThat(control.deleteProgram("EDT")).isInstanceOf(org.robotrun.pendant.RobotControl.Result.Refused.class);
+    assertThat(control.deleteProgram("EDT")).isInstanceOf(org.robotrun.control.RobotControl.Result.Refused.class);
     keys("""
         HOLD DEADMAN
         STEP
@@ -277,7 +279,7 @@ class PendantEditPausedProgramTest {
         WAIT 0.5
         RELEASE SHIFT
         """);
-    assertThat(control.status()).isEqualTo(new org.robotrun.pendant.RobotControl.ExecutionStatus("EDT", 5, ExecState.IDLE));
+    assertThat(control.status()).isEqualTo(new org.robotrun.control.RobotControl.ExecutionStatus("EDT", 5, ExecState.IDLE));
     assertThat(p.lcd().alarmLine()).isBlank();
     assertThat(new double[] {r(10), r(11), r(5), r(2), r(3), r(6)}).containsExactly(1, 1, 5, 2, 3, 0);
   }

@@ -16,6 +16,7 @@ import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.Simulation;
 
@@ -26,7 +27,8 @@ import org.robotrun.sim.Simulation;
 class PendantEntryRoundTripTest {
   private final Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
   private final Controller controller = sim.controllers().get(0);
-  private final SimRobotControl control = new SimRobotControl(sim, controller);
+  private final ControllerPort control = new ControllerPort(controller);
+  private final org.robotrun.sim.CellStepper stepper = new org.robotrun.sim.CellStepper(sim);
   private final Pendant p = new Pendant(control, new LsLineParser());
 
   private void keys(String script) {
@@ -34,7 +36,7 @@ class PendantEntryRoundTripTest {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new AssertionError(bad.error().display());
     };
-    s.run(p, text -> { });
+    s.run(p, stepper::advance, text -> { });
   }
 
   private static final List<Double> VALUES = List.of(0.5, -0.25, 1e-9, 100_000.0, -100_000.0, 100_000.001, 36_000.0,

@@ -13,6 +13,7 @@ import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.Position;
 import org.robotrun.sim.Controller;
+import org.robotrun.sim.ControllerPort;
 import org.robotrun.sim.DefaultCell;
 import org.robotrun.sim.Simulation;
 
@@ -23,7 +24,8 @@ import org.robotrun.sim.Simulation;
 class PendantOnSimControllerTest {
   private final Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
   private final Controller controller = sim.controllers().get(0);
-  private final SimRobotControl control = new SimRobotControl(sim, controller);
+  private final ControllerPort control = new ControllerPort(controller);
+  private final org.robotrun.sim.CellStepper stepper = new org.robotrun.sim.CellStepper(sim);
   private final Pendant p = new Pendant(control, new LsLineParser());
 
   private void keys(String script) {
@@ -31,7 +33,7 @@ class PendantOnSimControllerTest {
       case KeyScript.Parsed.Ok ok -> ok.script();
       case KeyScript.Parsed.Bad bad -> throw new AssertionError(bad.error().display());
     };
-    s.run(p, text -> { });
+    s.run(p, stepper::advance, text -> { });
   }
 
   private String body() {
@@ -404,7 +406,7 @@ class PendantOnSimControllerTest {
         if (what == 0) {
           p.type(List.of("1", "R[2]+1", "abc", "-5", "PR[1]", "200", "FUZZ").get(rnd.nextInt(7)));
         } else if (what == 1) {
-          p.advance(rnd.nextDouble() * 0.2);
+          org.robotrun.pendant.KeyScript.advance(p, stepper::advance, rnd.nextDouble() * 0.2);
         } else if (what == 2) {
           p.press(org.robotrun.pendant.Key.SHIFT);
         } else if (what == 3) {
@@ -456,7 +458,7 @@ class PendantOnSimControllerTest {
         p.press(org.robotrun.pendant.Key.SHIFT);
         p.press(k);
         for (int t = rnd.nextInt(6) + 1; t > 0; t--) {
-          p.advance(0.05);
+          org.robotrun.pendant.KeyScript.advance(p, stepper::advance, 0.05);
         }
         p.release(k);
         p.release(org.robotrun.pendant.Key.SHIFT);
@@ -474,7 +476,7 @@ class PendantOnSimControllerTest {
         p.press(org.robotrun.pendant.Key.FWD);
         p.release(org.robotrun.pendant.Key.FWD);
         for (int t = rnd.nextInt(20) + 5; t > 0; t--) {
-          p.advance(0.05);
+          org.robotrun.pendant.KeyScript.advance(p, stepper::advance, 0.05);
           if (controller.status().state() == org.robotrun.sim.ExecutionStatus.State.RUNNING) {
             runningTicks++;
           }
@@ -495,7 +497,7 @@ class PendantOnSimControllerTest {
       } else if (what < 63) {
         p.type(List.of("1", "R[2]+1", "abc", "-5", "PR[1]", "200", "FUZZ").get(rnd.nextInt(7)));
       } else if (what < 66) {
-        p.advance(rnd.nextDouble() * 0.2);
+        org.robotrun.pendant.KeyScript.advance(p, stepper::advance, rnd.nextDouble() * 0.2);
       } else { // any key at all
         org.robotrun.pendant.Key k = all[rnd.nextInt(all.length)];
         p.press(k);

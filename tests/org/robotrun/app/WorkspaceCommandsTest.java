@@ -6,6 +6,7 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.robotrun.io.HandIn;
@@ -98,5 +99,72 @@ class WorkspaceCommandsTest {
     assertThat(Files.readAllBytes(scenario)).isEqualTo(before);
     Run r = run("run", "--workspace", ws.toString());
     assertThat(r.exitCode()).as(r.err()).isZero();
+  }
+
+  // ---- issue 26: a script whose work cannot be saved is never run ----
+
+  private static Path script(Path tmp) throws Exception {
+    return Files.writeString(tmp.resolve("make.keys"), "SELECT\nF1\nTYPE LOSTNOT\nENTER\n");
+  }
+
+  @Test
+  void aWorkspaceHeldByAnotherRobotRunIsWaitedForThenExit1BeforeTheScriptRuns(@TempDir Path tmp) throws Exception {
+    Path ws = tmp.resolve("ws");
+    Path keys = script(tmp);
+    double wait = PendantCommand.lockWaitSeconds;
+    PendantCommand.lockWaitSeconds = 0.5;
+    try (org.robotrun.io.Workspace holder = org.robotrun.io.Workspace.open(ws, WorkspaceSession.newCell())) {
+      assertThat(holder.readOnly()).isFalse();
+      Run second = run("pendant", "--workspace", ws.toString(), "--keys", keys.toString());
+      assertThat(second.exitCode()).isEqualTo(1);
+      assertThat(second.err()).contains("--workspace: " + ws + ": this workspace is already open in this RobotRun;"
+          + " the script was not run, since nothing it did could be saved").doesNotContain("\tat ");
+      assertThat(second.out()).as("the script did not run").isEmpty();
+    } finally {
+      PendantCommand.lockWaitSeconds = wait;
+    }
+    // once let go, the same script runs and is saved
+    Run again = run("pendant", "--workspace", ws.toString(), "--keys", keys.toString());
+    assertThat(again.exitCode()).as(again.err()).isZero();
+    assertThat(ws.resolve("programs/LOSTNOT.LS")).exists();
+  }
+
+  @Test
+  @org.junit.jupiter.api.condition.EnabledOnOs({org.junit.jupiter.api.condition.OS.LINUX,
+      org.junit.jupiter.api.condition.OS.MAC})
+  void aLockFileThatIsAFifoAFolderOrALinkIsNeverOpened(@TempDir Path tmp) throws Exception {
+    Path keys = script(tmp);
+    for (String kind : List.of("fifo", "folder", "link")) {
+      Path ws = tmp.resolve("ws-" + kind);
+      Files.createDirectories(ws);
+      Files.writeString(ws.resolve("cell.json"), Files.readString(Path.of("scenarios/empty-cell.json")));
+      Path lock = ws.resolve(".robotrun.lock");
+      Files.deleteIfExists(lock);
+      switch (kind) {
+        case "fifo" -> assertThat(new ProcessBuilder("mkfifo", lock.toString()).start().waitFor()).isZero();
+        case "folder" -> Files.createDirectory(lock);
+        default -> Files.createSymbolicLink(lock, tmp.resolve("elsewhere"));
+      }
+      long t0 = System.nanoTime();
+      Run r = run("pendant", "--workspace", ws.toString(), "--keys", keys.toString());
+      assertThat((System.nanoTime() - t0) / 1e9).as(kind + ": seconds").isLessThan(20);
+      assertThat(r.exitCode()).as(kind + ": " + r.err()).isEqualTo(1);
+      assertThat(r.err()).as(kind).contains("the lock file " + lock + " is ").contains("not a regular file (remove it)")
+          .contains("the script was not run");
+      assertThat(ws.resolve("programs/LOSTNOT.LS")).doesNotExist();
+      assertThat(tmp.resolve("elsewhere")).doesNotExist();
+    }
+  }
+
+  @Test
+  void aScriptOnAHandInZipIsRefusedBeforeItRuns(@TempDir Path tmp) throws Exception {
+    Path ws = tmp.resolve("ws");
+    Path keys = script(tmp);
+    assertThat(run("pendant", "--workspace", ws.toString(), "--keys", keys.toString()).exitCode()).isZero();
+    Path zip = tmp.resolve("h.zip");
+    HandIn.write(ws, zip, "Ada", "test", false);
+    Run r = run("pendant", "--workspace", zip.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).isEqualTo(1);
+    assertThat(r.err()).contains("a hand-in opens read-only").contains("the script was not run");
   }
 }

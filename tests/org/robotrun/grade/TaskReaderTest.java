@@ -62,11 +62,11 @@ class TaskReaderTest {
         "t.task.json:6: checks[1].name: check name \"a\" is used twice",
         "t.task.json:6: checks[1].points: expected a number, got \"ten\"",
         "t.task.json:7: checks[2].type: unknown check type \"teleport\" (expected one of: handIn, programs, runsToEnd, "
-            + "partAt, nothingHeld, noneDropped, noCollision, noMotionStop, cycleTime, programUse, endState, frame)",
+            + "partAt, nothingHeld, noneDropped, noCollision, noMotionStop, cycleTime, programUse, endState, frame, positionRegister, tcpVisits)",
         "t.task.json:8: checks[3].extra: unknown field (expected one of: forbids, hidden, maxMotionLines, message, name, "
             + "points, requires, robot, runs, type)",
         "t.task.json:8: checks[3].requires[0]: unknown feature \"goto\" (expected one of: offsetPR, toolOffsetPR, "
-            + "prTarget, for, call, jmpBackward, wait, if, select)",
+            + "prTarget, for, call, jmpBackward, wait, if, select, joint, linear, circular, cnt, fine, run, voffset)",
         "t.task.json:9: checks[4].values.R[1]: expected a number, got a boolean",
         "t.task.json:9: checks[4].values.Q[2]: expected a name like R[1], F[2], DO[3], RO[1], GO[1]",
         "t.task.json:10: checks[5].frame: expected UT[n] or UF[n] with n 1..10, got \"UT[11]\"");

@@ -108,7 +108,7 @@ class HandInTest {
       entries.putAll(files);
       Path into = tmp.resolve("into");
       assertThatThrownBy(() -> HandIn.unpack(zipOf(tmp, entries), into)).as(evil).isInstanceOf(HandInException.class)
-          .hasMessageContaining("unexpected entry");
+          .hasMessageMatching(".*(unexpected entry|points outside the zip|is not a relative path inside the zip).*");
       assertThat(tmp.resolve("escape.LS")).doesNotExist();
       assertThat(into).doesNotExist();
     }
@@ -131,7 +131,7 @@ class HandInTest {
   @Test
   void aZipBombIsStoppedByCountingBytes(@TempDir Path tmp) throws Exception {
     Map<String, byte[]> entries = new LinkedHashMap<>();
-    entries.put("cell.json", new byte[(int) HandIn.MAX_ENTRY_BYTES + 1]);  // deflates to a few KiB
+    entries.put("cell.json", new byte[(int) org.robotrun.io.HandInFiles.Limits.DEFAULT.entryBytes() + 1]);  // deflates to a few KiB
     Path zip = zipOf(tmp, entries);
     assertThat(Files.size(zip)).isLessThan(100_000);
     assertThatThrownBy(() -> HandIn.unpack(zip, tmp.resolve("x"))).hasMessageContaining("more than");

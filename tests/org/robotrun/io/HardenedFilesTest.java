@@ -132,4 +132,104 @@ class HardenedFilesTest {
       assertThat(e).as(n).isNotEmpty();
     }
   }
+
+  // ---- issue 26: names and recursive structures are bounded, never a StackOverflowError ----
+
+  @Test
+  void aMacroNameOfThousandsOfWordsIsOneErrorNotAStackOverflow() throws Exception {
+    String words = String.join(" ", java.util.Collections.nCopies(5000, "W"));
+    List<ScenarioError> e = errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\","
+        + " \"macros\": [{\"name\": \"" + words + "\", \"program\": \"P\"}]}]}");
+    assertThat(e).extracting(ScenarioError::path, ScenarioError::message).containsExactly(org.assertj.core.groups.Tuple.tuple(
+        "robots[0].macros[0].name", "a macro name is at most 36 characters, got 9999"));
+    // as a workspace's cell.json (run --workspace, pendant --workspace, grade read it this way)
+    Path cell = Files.writeString(dir.resolve("cell.json"), "{\"format\": 1, \"robots\": [{\"name\": \"robot1\","
+        + " \"model\": \"lrmate200id\", \"macros\": [{\"name\": \"" + words.replace(" ", "_") + "\", \"program\": \"P\"}]}]}");
+    assertThat(ScenarioReader.readCell(cell)).isInstanceOf(CellLoad.Failed.class);
+    // a good name of several words still reads
+    Path good = Files.writeString(dir.resolve("good.json"), "{\"format\": 1, \"robots\": [{\"name\": \"robot1\","
+        + " \"model\": \"lrmate200id\", \"macros\": [{\"name\": \"HAND1 OPEN\", \"program\": \"HOPEN\"}]}]}");
+    assertThat(ScenarioReader.read(good)).isInstanceOf(ScenarioLoad.Loaded.class);
+    assertThat(errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\","
+        + " \"macros\": [{\"name\": \"HAND1  OPEN\", \"program\": \"P\"}]}]}")).extracting(ScenarioError::message)
+        .singleElement().asString().startsWith("expected a macro name");
+  }
+
+  @Test
+  void everyNameIsBoundedAndARobotCannotNameAProgramFile() throws Exception {
+    String longName = "R".repeat(100_000);
+    assertThat(errors("{\"format\": 1, \"robots\": [{\"name\": \"" + longName + "\", \"model\": \"lrmate200id\"}]}"))
+        .extracting(ScenarioError::message).containsExactly("a name is at most 64 characters, got 100000");
+    assertThat(errors(HEAD + box(longName, "") + "]}")).extracting(ScenarioError::message)
+        .containsExactly("a name is at most 64 characters, got 100000");
+    assertThat(errors("{\"format\": 1, \"name\": \"" + "W ".repeat(50_000) + "\", \"robots\": [{\"name\": \"r\","
+        + " \"model\": \"lrmate200id\"}]}")).extracting(ScenarioError::message)
+        .containsExactly("a scenario name is at most 200 characters, got 100000");
+    List<ScenarioError> e = errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\"},\n"
+        + " {\"name\": \"LOADER.LS\", \"model\": \"lrmate200id\", \"basePose\": {\"x\": 1500, \"y\": 0, \"z\": 0}}]}");
+    assertThat(e).extracting(ScenarioError::line, ScenarioError::path).containsExactly(
+        org.assertj.core.groups.Tuple.tuple(2, "robots[1].name"));
+    assertThat(e.get(0).message()).contains("programs folder programs/LOADER.LS/ would collide with a program file");
+  }
+
+  @Test
+  void deeplyNestedJsonIsOneErrorNotAStackOverflow() throws Exception {
+    List<ScenarioError> e = errors("{\"format\": 1, \"name\": " + "[".repeat(200_000) + "]".repeat(200_000) + "}");
+    assertThat(e).hasSize(1);
+    assertThat(e.get(0).message()).contains("nesting depth");
+  }
+
+  @Test
+  void staleTemporaryFilesOfAKilledSaveAreRemovedByTheWorkspacesWriterOnly() throws Exception {
+    Path ws = dir.resolve("ws");
+    var cell = ((ScenarioLoad.Loaded) ScenarioReader.read(Path.of("scenarios/empty-cell.json"))).scenario();
+    Workspace.open(ws, cell).close();
+    Path stale = Files.writeString(ws.resolve("programs/.MAIN.LS.0123456789ab.tmp"), "half a program");
+    Path staleCell = Files.writeString(ws.resolve(".cell.json.a1b2c3d4e5f6.tmp"), "{");
+    Path fresh = Files.writeString(ws.resolve("programs/.PICK.LS.ffffffffffff.tmp"), "being written now");
+    Path mine = Files.writeString(ws.resolve("programs/.notes.tmp"), "not RobotRun's");
+    java.nio.file.attribute.FileTime old = java.nio.file.attribute.FileTime.from(java.time.Instant.now().minusSeconds(3600));
+    for (Path p : List.of(stale, staleCell, mine)) {
+      Files.setLastModifiedTime(p, old);
+    }
+    Workspace.open(ws, cell, true).close();  // a reader leaves them
+    assertThat(stale).exists();
+    try (Workspace w = Workspace.open(ws, cell)) {
+      assertThat(w.readOnly()).isFalse();
+    }
+    assertThat(stale).doesNotExist();
+    assertThat(staleCell).doesNotExist();
+    assertThat(fresh).exists();
+    assertThat(mine).exists();
+  }
+
+  @Test
+  void savedRegistersComeBackWithTheirTypeAndValue() throws Exception {
+    Path f = Files.writeString(dir.resolve("cell.json"), "{\"format\": 1, \"robots\": [{\"name\": \"robot1\","
+        + " \"model\": \"lrmate200id\"}], \"state\": {\"registers\": {\"1\": 7, \"2\": 2.0, \"3\": 2147483648,"
+        + " \"4\": 1e-320, \"5\": 0.3333333333333333, \"6\": -4503599627370497, \"7\": 1.0E20}}}");
+    CellLoad.Loaded first = (CellLoad.Loaded) ScenarioReader.readCell(f);
+    Path again = dir.resolve("again/cell.json");
+    Files.createDirectories(again.getParent());
+    Files.writeString(again, ScenarioWriter.toJson(first.scenario(), first.state(), again.getParent()));
+    CellLoad.Loaded second = (CellLoad.Loaded) ScenarioReader.readCell(again);
+    var a = first.state().orElseThrow().registers();
+    var b = second.state().orElseThrow().registers();
+    assertThat(b).isEqualTo(a);
+    assertThat(b.get(3)).isEqualTo(new SavedState.Register(2147483648.0, true));
+    assertThat(b.get(4).value()).isEqualTo(1e-320);
+    assertThat(b.get(4).integer()).isFalse();
+    assertThat(b.get(5).value()).isEqualTo(1.0 / 3);
+    assertThat(b.get(2)).isEqualTo(new SavedState.Register(2.0, false));
+    assertThat(b.get(6)).isEqualTo(new SavedState.Register(-4503599627370497.0, true));
+  }
+
+  @Test
+  void aSavedStateOfARobotTheCellLacksIsRefusedWithPathAndLine() throws Exception {
+    List<ScenarioError> e = errors("{\"format\": 1, \"robots\": [{\"name\": \"robot1\", \"model\": \"lrmate200id\"}],\n"
+        + " \"state\": {\"robots\": {\n \"ghost\": {\"registers\": {\"1\": 5}}}}}");
+    assertThat(e).extracting(ScenarioError::line, ScenarioError::path).containsExactly(
+        org.assertj.core.groups.Tuple.tuple(3, "state.robots.ghost"));
+    assertThat(e.get(0).message()).contains("no robot 'ghost' after the first in this cell");
+  }
 }

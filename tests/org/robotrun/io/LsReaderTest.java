@@ -172,7 +172,7 @@ class LsReaderTest {
         "t.ls:9: expected TO or DOWNTO in FOR, found 'UNTIL'",
         "t.ls:12: expected '(sec)' after the wait time, found end of line",
         "t.ls:13: DI[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)",
-        "t.ls:15: expected ';' at the end of the line",
+        "t.ls:15: warning: mended: no ';' at the end of the line: read as if it were there",
         "t.ls:16: warning: not supported: motion option FROBNICATE (the motion runs without it)",
         "t.ls:17: CNT120: expected 0..100",
         "t.ls:18: speed 300%: expected 1..100%",
@@ -266,7 +266,7 @@ class LsReaderTest {
         {"UO[1]=ON", "not supported: assigning UO[] (the controller sets it) (the line alarms when it runs)"},
         {"$SCR.$ITP_SPEED=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
         {"$WAITTMOUT[1]=100", "warning: not supported: system variable assignment (the line is skipped when it runs)"},
-        {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable in an expression (the line alarms when it runs)"},
+        {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable $SCR.$ITP_SPEED in an expression (the line alarms when it runs)"},
         {"LOCK PREG", "warning: not supported: LOCK PREG (the line is skipped when it runs)"},
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
         {"TOOL_OFFSET CONDITION PR[2]", "not supported: TOOL_OFFSET CONDITION (the line alarms when it runs)"},
@@ -299,12 +299,15 @@ class LsReaderTest {
   }
 
   @Test
-  void lineNumbersOutOfOrderAreReported() {
+  void lineNumbersOutOfOrderAreMendedWithAWarningEach() {
+    // As the offline converter takes a hand-edited file: numbered in file order, each mend said.
     LsReadResult r = mn("   1:  R[1]=1 ;\n   3:  R[1]=2 ;\n   2:  R[1]=3 ;\n");
     assertThat(messages(r)).containsExactly(
-        "t.ls:5: line number 3 out of order: expected 2",
-        "t.ls:6: line number 2 out of order: expected 3");
+        "t.ls:5: warning: mended: line number 3 out of order or repeated: read as line 2",
+        "t.ls:6: warning: mended: line number 2 out of order or repeated: read as line 3");
+    assertThat(r.hasErrors()).isFalse();
     assertThat(r.program().lineCount()).isEqualTo(3);
+    assertThat(r.program().line(2)).isEqualTo(new Instruction.AssignRegister(new Item(Index.of(1), ""), new Expr.IntConst(2)));
   }
 
   @Test
@@ -320,11 +323,12 @@ class LsReaderTest {
         "   8:  CALL NOWHERE ;",
         ""));
     assertThat(messages(r)).containsExactly(
-        "t.ls:5: P[7] is used but /POS has no P[7]",
+        // the controller loads these; the line alarms when it runs
+        "t.ls:5: warning: P[7] is used but /POS has no P[7]: the position is uninitialised and the line alarms when it runs",
         "t.ls:6: LBL[1] is defined twice (first on line 4)",
-        "t.ls:7: LBL[5] is not defined in this program",
-        "t.ls:8: LBL[6] is not defined in this program",
-        "t.ls:9: LBL[7] is not defined in this program");
+        "t.ls:7: warning: LBL[5] is not defined in this program: the jump alarms when it runs",
+        "t.ls:8: warning: LBL[6] is not defined in this program: the jump alarms when it runs",
+        "t.ls:9: warning: LBL[7] is not defined in this program: the jump alarms when it runs");
     LsReadResult known = r.withCallTargetsChecked(Set.of("OTHER"));
     assertThat(messages(known)).contains("t.ls:11: CALL NOWHERE: no program named NOWHERE is known");
     assertThat(messages(mn("   1:  CALL T ;\n").withCallTargetsChecked(Set.of()))).isEmpty();

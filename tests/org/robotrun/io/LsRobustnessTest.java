@@ -108,7 +108,7 @@ class LsRobustnessTest {
     LsReadResult r = LsReader.parse("u.ls", "/PROG  U\n/MN\n   1:J P[1] 10% FINE    ;\n/POS\nP[1]{\n   GP1:\n"
         + "\tUF : 1, UT : 1,\n\tJ1= 0.000 deg,\tJ2= 0.000 deg,\tJ3= 0.000 deg,\n");
     assertThat(messages(r)).containsExactly(
-        "u.ls:3: P[1] is used but /POS has no P[1]",
+        "u.ls:3: warning: P[1] is used but /POS has no P[1]: the position is uninitialised and the line alarms when it runs",
         "u.ls:5: P[1] is not closed: expected '};' before the end of the /POS section",
         "u.ls:8: file ends without /END (truncated?)");
   }

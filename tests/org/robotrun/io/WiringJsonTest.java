@@ -149,6 +149,23 @@ class WiringJsonTest {
     assertThat(flag.message()).contains("is a flag");
   }
 
+  /** Issue 26: UO[3] and SO[2] (driven by the controller), UI/SI/AI, AO were accepted as wire ends. */
+  @Test
+  void onlyDoRoGoDriveAndOnlyDiRiGiAreDriven() throws Exception {
+    for (String to : List.of("UO[3]", "SO[2]", "UI[6]", "SI[1]", "AI[1]", "AO[1]", "F[1]")) {
+      ScenarioError e = onlyError(cell("{\"from\": \"loader.DO[1]\", \"to\": \"unloader." + to + "\"}"));
+      assertThat(e.path()).as(to).isEqualTo("wiring[0].to");
+      assertThat(e.message()).as(to).contains("a wire runs to an input (DI, RI, GI)").doesNotContain(" is an input:");
+    }
+    assertThat(onlyError(cell("{\"from\": \"loader.DO[1]\", \"to\": \"unloader.UO[3]\"}")).message())
+        .contains("unloader.UO[3] is a UOP output the controller drives").contains("would have two drivers");
+    for (String from : List.of("UO[3]", "SO[2]", "UI[6]", "AI[1]", "AO[1]")) {
+      ScenarioError e = onlyError(cell("{\"from\": \"loader." + from + "\", \"to\": \"unloader.DI[1]\"}"));
+      assertThat(e.path()).as(from).isEqualTo("wiring[0].from");
+      assertThat(e.message()).as(from).contains("a wire runs from an output (DO, RO, GO)");
+    }
+  }
+
   @Test
   void aLoopAndABitWiredToAGroupAreRefused() throws Exception {
     ScenarioError loop = onlyError(cell("""

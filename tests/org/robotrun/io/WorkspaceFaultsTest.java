@@ -59,7 +59,8 @@ class WorkspaceFaultsTest {
     Path dir = tmp.resolve("ws");
     Workspace.open(dir, cell()).close();
     Path bad = dir.resolve("programs/BAD.LS");
-    String badText = "/PROG  BAD\n/MN\n   1:  J P[1] 100% FINE ;\n   2:  THIS IS NOT TP ;\n/POS\n/END\n";
+    // (a P[] missing from /POS loads, as on a controller: the bad line is a syntax error)
+    String badText = "/PROG  BAD\n/MN\n   1:  J P[1] 100% FINE ;\n   2:  R[1]=(1+ ;\n/POS\n/END\n";
     Files.writeString(bad, badText);
     Files.writeString(dir.resolve("programs/GOOD.LS"), LsWriter.write(program("GOOD", 1)));
     try (Workspace ws = Workspace.open(dir, cell())) {

@@ -72,7 +72,7 @@ class InstructionReachabilityTest {
     Set<Class<?>> seen = new HashSet<>();
     program().lines().forEach(i -> seen.add(i.getClass()));
     assertThat(seen).containsExactlyInAnyOrderElementsOf(statementTypes());
-    assertThat(statementTypes()).hasSize(41); // lang3's 40 and RUN (Instruction.Run)
+    assertThat(statementTypes()).hasSize(42); // lang3's 40, RUN (Instruction.Run) and IF with an action (issue 25)
   }
 
   @Test

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 
 class KeyScriptTest {
 
@@ -107,7 +108,7 @@ class KeyScriptTest {
         new KeyScript.Step.Input(3, org.robotrun.program.IoKind.UI, 6, false),
         new KeyScript.Step.Input(4, org.robotrun.program.IoKind.UI, 8, true));
     Pendant p = new Pendant(StandIn.control());
-    s.run(p, x -> {});
+    s.run(p, PendantKeys.clock(p), x -> {});
     assertThat(p.control().registers().bit(org.robotrun.program.IoKind.UI, 6)).isFalse();
     assertThat(p.control().registers().bit(org.robotrun.program.IoKind.UI, 8)).isTrue();
     assertThat(p.control().registers().bit(org.robotrun.program.IoKind.DI, 3)).isTrue();
@@ -121,7 +122,8 @@ class KeyScriptTest {
   void showPrintsTheLcdWithTime() {
     KeyScript s = ((KeyScript.Parsed.Ok) parse("WAIT 0.5\nSHOW\n")).script();
     StringBuilder out = new StringBuilder();
-    s.run(new Pendant(StandIn.control()), out::append);
+    Pendant p = new Pendant(StandIn.control());
+    s.run(p, PendantKeys.clock(p), out::append);
     assertThat(out.toString()).startsWith("-- SHOW (line 2, t=0.500 s) --").contains("SELECT");
     assertThat(out.toString().lines().filter(l -> l.startsWith("|"))).hasSize(Lcd.HEIGHT);
   }

@@ -14,8 +14,18 @@ final class PendantKeys {
       case KeyScript.Parsed.Bad bad -> throw new AssertionError("malformed test script: " + bad.error().display());
     };
     List<String> shows = new ArrayList<>();
-    s.run(p, shows::add);
+    s.run(p, clock(p), shows::add);
     return shows;
+  }
+
+  /** The simulated time of {@code p}'s stand-in controller (the cell's stepper, in the real one). */
+  static java.util.function.DoubleConsumer clock(Pendant p) {
+    return ((StandInRobotControl) p.control())::advance;
+  }
+
+  /** Advances {@code p}'s stand-in controller by {@code dtSec}, the pendant following as in a key script's WAIT. */
+  static void advance(Pendant p, double dtSec) {
+    KeyScript.advance(p, clock(p), dtSec);
   }
 
   /** The body rows joined, for contains-assertions. */

@@ -34,7 +34,7 @@ class PendantRobustnessTest {
           if (what == 0) {
             p.type(WORDS.get(rnd.nextInt(WORDS.size())));
           } else if (what == 1) {
-            p.advance(rnd.nextDouble() * 0.3);
+            PendantKeys.advance(p, rnd.nextDouble() * 0.3);
           } else if (what == 2) {
             p.press(Key.SHIFT);
           } else if (what == 3) {

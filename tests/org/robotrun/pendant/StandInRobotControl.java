@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.TreeMap;
+import org.robotrun.control.RobotControl;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
@@ -29,9 +30,11 @@ import org.robotrun.program.Registers;
  * {@link Interpreter}, but the arm is {@link ToyKinematics} (a gantry with a wrist) moving in
  * joint interpolation at the commanded speed, with no collision; frames are taught by the
  * {@link FrameTeacher} it is given. Its numbers are easy to check by hand, which is what the
- * pendant's own tests need; it is not a model of the real arm ({@code app.SimRobotControl} is).
+ * pendant's own tests need; it is not a model of the real arm ({@code app.ControllerPort} is).
  *
- * <p>Time advances only through {@link #advance(double)}, in fixed 4 ms ticks.
+ * <p>Time advances only through {@link #advance(double)}, in fixed 4 ms ticks. Its switch rules
+ * (TP ENABLE, DEADMAN, SHIFT, mode) copy {@code sim.ControllerPort}'s; {@code ControlPortContractTest}
+ * runs the same cases on both and checks that they agree.
  */
 public final class StandInRobotControl implements RobotControl {
   static final double TICK_SEC = 0.004;
@@ -262,7 +265,23 @@ public final class StandInRobotControl implements RobotControl {
   // ---- jog ---------------------------------------------------------------------------------
 
   @Override
-  public Result jogKeyDown(CoordSystem coord, int axis, int sign, boolean latched) {
+  public CoordSystem coordSystem() {
+    return jogCoord;
+  }
+
+  @Override
+  public void setCoordSystem(CoordSystem coord) {
+    jogStop();
+    jogSinceStop = false;
+    jogCoord = coord;
+  }
+
+  @Override
+  public Result jogKeyDown(int axis, int sign, boolean latched) {
+    Optional<String> refused = switchRefusal("jog");
+    if (refused.isPresent()) {
+      return Result.refused(refused.get());
+    }
     if (interpreter.state() == Interpreter.State.RUNNING) {
       return Result.refused("Cannot jog while a program runs: HOLD first");
     }
@@ -272,10 +291,6 @@ public final class StandInRobotControl implements RobotControl {
     if (axis < 1 || axis > 6 || Math.abs(sign) != 1) {
       throw new IllegalArgumentException("jog axis " + axis + " sign " + sign);
     }
-    if (coord != jogCoord) {
-      jogStop();
-      jogCoord = coord;
-    }
     if (latched && jogLatched[axis] && jogDirection[axis] == sign) {
       jogDirection[axis] = 0;
       jogLatched[axis] = false;
@@ -284,12 +299,174 @@ public final class StandInRobotControl implements RobotControl {
       jogLatched[axis] = latched;
     }
     move = null;
+    jogSinceStop = true;
     return Result.ok();
   }
 
   @Override
-  public Result jogIncrement(CoordSystem coord, int axis, int sign, boolean veryFine) {
-    return Result.refused("incremental jog needs the simulation controller");
+  public Result jogIncrement(int axis, int sign, boolean veryFine) {
+    Optional<String> refused = switchRefusal("jog");
+    return refused.isPresent() ? Result.refused(refused.get())
+        : Result.refused("incremental jog needs the simulation controller");
+  }
+
+  @Override
+  public String jogStopReason() {
+    return "";
+  }
+
+  // ---- switches: the controller's rules as sim.ControllerPort has them (ControlPortContractTest) ----
+
+  private boolean tpEnabled = true;
+  private boolean deadmanHeld;
+  private boolean shiftHeld;
+  private boolean jogSinceStop;
+
+  private Optional<String> switchRefusal(String what) {
+    if (mode == Mode.AUTO) {
+      return Optional.of(what.equals("jog") ? "AUTO mode: the pendant cannot jog (mode switch to T1)"
+          : "AUTO mode: start from the operator panel (TP OFF, CYCLE START)");
+    }
+    if (!tpEnabled) {
+      return Optional.of("TP disabled: turn TP ENABLE on to " + what);
+    }
+    if (estop) {
+      return Optional.of("E-stop pressed: release it and RESET");
+    }
+    if (!deadmanHeld) {
+      return Optional.of("Hold the DEADMAN to " + what);
+    }
+    if (!shiftHeld) {
+      return Optional.of("Hold SHIFT and the DEADMAN to " + what);
+    }
+    return Optional.empty();
+  }
+
+  @Override
+  public boolean tpEnabled() {
+    return tpEnabled;
+  }
+
+  @Override
+  public void setTpEnabled(boolean on) {
+    if (!on && jogSinceStop) {
+      jogStop();
+      jogSinceStop = false;
+    }
+    if (!on && tpEnabled) {
+      holdToRun("TP disabled");
+    }
+    tpEnabled = on;
+  }
+
+  @Override
+  public boolean deadmanHeld() {
+    return deadmanHeld;
+  }
+
+  @Override
+  public Result setDeadman(boolean held) {
+    if (held || !deadmanHeld) {
+      deadmanHeld = held;
+      return Result.ok();
+    }
+    deadmanHeld = false;
+    jogSinceStop = false;
+    if (!tpEnabled) {
+      return Result.ok();
+    }
+    boolean running = interpreter.state() == Interpreter.State.RUNNING;
+    deadmanReleased();
+    org.robotrun.program.AlarmCode c = org.robotrun.program.AlarmCode.SRVO_003;
+    return new Result.Ok(c.code() + " " + c.text() + (running ? ": program paused" : "") + " (hold DEADMAN, RESET)");
+  }
+
+  @Override
+  public boolean shiftHeld() {
+    return shiftHeld;
+  }
+
+  @Override
+  public Result setShift(boolean held) {
+    if (held || !shiftHeld) {
+      shiftHeld = held;
+      return Result.ok();
+    }
+    shiftHeld = false;
+    String message = "";
+    if (jogSinceStop) {
+      jogStop();
+      message = "Jog stopped: SHIFT released";
+    }
+    jogSinceStop = false;
+    return new Result.Ok(holdToRun("SHIFT released").orElse(message));
+  }
+
+  private Optional<String> holdToRun(String why) {
+    if (mode.holdToRun() && interpreter.state() == Interpreter.State.RUNNING) {
+      hold();
+      return Optional.of("Program paused: " + why + " (hold-to-run in " + mode + "; SHIFT+FWD resumes)");
+    }
+    return Optional.empty();
+  }
+
+  @Override
+  public Result mayStart(StartFrom from, boolean forward) {
+    if (from == StartFrom.OPERATOR_PANEL) {
+      if (mode != Mode.AUTO) {
+        return Result.refused("CYCLE START works in AUTO: in " + mode + " run from the pendant (SHIFT+FWD)");
+      }
+      if (tpEnabled) {
+        return Result.refused("CYCLE START refused: the TP is enabled (turn it OFF to run in AUTO)");
+      }
+      return Result.ok();
+    }
+    if (!shiftHeld) {
+      return Result.refused("Hold SHIFT and press " + (forward ? "FWD" : "BWD") + " to run");
+    }
+    return switchRefusal("run").<Result>map(Result::refused).orElse(Result.ok());
+  }
+
+  // ---- tasks and BG Logic: this stand-in has neither ------------------------------------------
+
+  @Override
+  public Map<String, String> programStates() {
+    return Map.of();
+  }
+
+  @Override
+  public List<TaskInfo> tasks() {
+    return List.of();
+  }
+
+  @Override
+  public Result pauseTask(String program, boolean pause) {
+    return Result.refused("this controller has no multitasking");
+  }
+
+  @Override
+  public Result abortTask(String program) {
+    return Result.refused("this controller has no multitasking");
+  }
+
+  @Override
+  public List<BgSlot> bgSlots() {
+    return List.of();
+  }
+
+  @Override
+  public Result addBg(String program) {
+    return Result.refused("this controller has no BG Logic");
+  }
+
+  @Override
+  public Result runBg(String program, boolean run) {
+    return Result.refused("this controller has no BG Logic");
+  }
+
+  @Override
+  public Result removeBg(String program) {
+    return Result.refused("this controller has no BG Logic");
   }
 
   @Override
@@ -392,7 +569,11 @@ public final class StandInRobotControl implements RobotControl {
   }
 
   @Override
-  public Result run(String program, int line, boolean forward) {
+  public Result run(StartFrom from, String program, int line, boolean forward) {
+    Result may = mayStart(from, forward);
+    if (may instanceof Result.Refused) {
+      return may;
+    }
     if (ownAlarm != null || interpreter.state() == Interpreter.State.ALARMED) {
       return Result.refused("Alarm active: RESET first");
     }
@@ -463,6 +644,7 @@ public final class StandInRobotControl implements RobotControl {
       hold();
     }
     jogStop();
+    jogSinceStop = false;
     mode = newMode;
   }
 
@@ -474,6 +656,7 @@ public final class StandInRobotControl implements RobotControl {
       raise(new AlarmEntry(c.code(), c.text(), "", 0));
     }
     estop = true;
+    jogSinceStop = false;
     jogStop();
     move = null;
   }
@@ -512,8 +695,7 @@ public final class StandInRobotControl implements RobotControl {
     activeJog = number;
   }
 
-  @Override
-  public void deadmanReleased() {
+  private void deadmanReleased() {
     org.robotrun.program.AlarmCode c = org.robotrun.program.AlarmCode.SRVO_003;
     raise(new AlarmEntry(c.code(), c.text(), "", 0));
     jogStop();
@@ -586,7 +768,7 @@ public final class StandInRobotControl implements RobotControl {
 
   // ---- time --------------------------------------------------------------------------------
 
-  @Override
+  /** Advances simulated time in whole 4 ms ticks (the test's clock: a key script's WAIT). */
   public void advance(double dtSec) {
     if (!(dtSec >= 0) || Double.isInfinite(dtSec)) {
       throw new IllegalArgumentException("dtSec must be finite and >= 0, got " + dtSec);

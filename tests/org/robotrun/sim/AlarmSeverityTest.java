@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.data.Offset.offset;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.program.AlarmCode;
@@ -48,7 +49,7 @@ class AlarmSeverityTest {
     c.saveProgram(ControllerTest.jointProgram("SUB", "J P[2] 50% FINE", new double[] {0, 0, 0, 0, -90, 0},
         new double[] {0, 0, 0, 0, -140, 0}));
     c.saveProgram(main("CALL SUB", "R[1]=R[1]+1"));
-    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
     stepWhileRunning(sim, c);
 
     // paused (alarmed) on SUB line 2, the caller still on the stack; the arm stands at P[1]
@@ -57,7 +58,7 @@ class AlarmSeverityTest {
     assertThat(c.status()).isEqualTo(new ExecutionStatus("SUB", 2, ExecutionStatus.State.ALARMED));
     assertThat(c.interpreter().callDepth()).isEqualTo(2);
     assertThat(c.currentJoints().j5Deg()).isCloseTo(-90, offset(1e-6));
-    assertThat(c.run("SUB", 2, true)).isInstanceOf(CommandResult.Refused.class);
+    assertThat(c.run("SUB", 2, true)).isInstanceOf(RobotControl.Result.Refused.class);
 
     c.reset();
     assertThat(c.status()).isEqualTo(new ExecutionStatus("SUB", 2, ExecutionStatus.State.PAUSED));
@@ -73,7 +74,7 @@ class AlarmSeverityTest {
     // the student re-teaches P[2] inside the limits; SHIFT+FWD re-runs line 2, SUB returns to MAIN
     c.saveProgram(ControllerTest.jointProgram("SUB", "J P[2] 50% FINE", new double[] {0, 0, 0, 0, -90, 0},
         new double[] {0, 0, 0, 0, -120, 0}));
-    assertThat(c.run("SUB", 2, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("SUB", 2, true)).isInstanceOf(RobotControl.Result.Ok.class);
     stepWhileRunning(sim, c);
     for (int i = 0; i < 2_000 && c.busy(); i++) {
       sim.step();
@@ -101,7 +102,7 @@ class AlarmSeverityTest {
     c.reset();
     assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
     // a new start runs MAIN from line 1 again
-    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
     stepWhileRunning(sim, c);
     assertThat(c.status()).isEqualTo(new ExecutionStatus("SUB", 2, ExecutionStatus.State.ALARMED));
   }

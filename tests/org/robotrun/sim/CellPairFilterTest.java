@@ -103,4 +103,18 @@ class CellPairFilterTest {
     List<Contact> c = contactsAt(66, 88, 31, 162, -124, 248);
     assertThat(c).extracting(k -> k.a().name() + "|" + k.b().name()).contains("r/link4#1|r/tool#1");
   }
+
+  @Test
+  void aTouchableObjectMayBeTouchedByTheToolButNotByTheArm() {
+    var f = new CellPairFilter(StandardPairFilter.nothingHeld(), java.util.Set.of("marker"));
+    Body tool = Body.robotLink("r", Body.TOOL_LINK, "r/tool/tip");
+    Body link5 = Body.robotLink("r", 5, "r/link5");
+    Body marker = Body.fixture("marker", "marker");
+    Body jig = Body.fixture("jig", "jig");
+    assertThat(f.mayCollide(tool, marker)).isFalse();
+    assertThat(f.mayCollide(marker, tool)).isFalse();
+    assertThat(f.mayCollide(link5, marker)).isTrue();
+    assertThat(f.mayCollide(tool, jig)).isTrue();
+    assertThat(new CellPairFilter(StandardPairFilter.nothingHeld()).mayCollide(tool, marker)).isTrue();
+  }
 }

@@ -6,11 +6,11 @@ import static org.assertj.core.data.Offset.offset;
 import java.io.StringWriter;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.io.RobotDefinitions;
 import org.robotrun.math.Xyzwpr;
-import org.robotrun.motion.JogFrame;
 import org.robotrun.motion.JogState;
 import org.robotrun.program.Program;
 import org.robotrun.robot.RobotModel;
@@ -196,15 +196,15 @@ class ControllerTest {
     Simulation sim = cell();
     Controller c = sim.controllers().get(0);
     // a controller starts headless, as in AUTO: no jogging until the mode switch turns to T1
-    assertThat(c.mode()).isEqualTo(OperatingMode.AUTO);
-    assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(CommandResult.Refused.class);
-    c.setMode(OperatingMode.T1);
+    assertThat(c.mode()).isEqualTo(RobotControl.Mode.AUTO);
+    assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(RobotControl.Result.Refused.class);
+    c.setMode(RobotControl.Mode.T1);
     c.setDeadman(false);
-    assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(CommandResult.Refused.class);
+    assertThat(c.jogKeyDown(1, +1, JogState.Press.HELD)).isInstanceOf(RobotControl.Result.Refused.class);
     c.setDeadman(true);
-    c.setCoordSystem(JogFrame.WORLD);
+    c.setCoordSystem(RobotControl.CoordSystem.WORLD);
     Xyzwpr before = c.tcpInWorld();
-    assertThat(c.jogKeyDown(3, -1, JogState.Press.HELD)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.jogKeyDown(3, -1, JogState.Press.HELD)).isInstanceOf(RobotControl.Result.Ok.class);
     for (int i = 0; i < 100; i++) {
       sim.step();
     }

@@ -6,6 +6,7 @@ import static org.assertj.core.data.Offset.offset;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.math.Vec3;
@@ -256,7 +257,7 @@ class MotionTimingSpecTest {
     Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
     Controller c = sim.controllers().get(0);
     c.saveProgram(program("J P[1:HOME] 100% FINE", "L P[2:A] 500mm/sec FINE", "L P[3:B] 1000mm/sec FINE"));
-    c.setMode(OperatingMode.T1);
+    c.setMode(RobotControl.Mode.T1);
     c.setDeadman(true);
     List<Vec3> tcp = new ArrayList<>();
     List<Integer> lines = new ArrayList<>();
@@ -284,17 +285,17 @@ class MotionTimingSpecTest {
   @Test
   void t1CapsAJointJogAtTheTcpAndT2DoesNot() {
     // J1 at 25 % of 450 °/s swings a TCP ~450 mm from the axis at ~880 mm/s: T1 shortens every tick to 250 mm/s.
-    for (OperatingMode mode : new OperatingMode[] {OperatingMode.T1, OperatingMode.T2}) {
+    for (RobotControl.Mode mode : new RobotControl.Mode[] {RobotControl.Mode.T1, RobotControl.Mode.T2}) {
       Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
       Controller c = sim.controllers().get(0);
       c.setMode(mode);
       c.setDeadman(true);
       c.setOverridePct(100);
-      c.setCoordSystem(org.robotrun.motion.JogFrame.JOINT);
+      c.setCoordSystem(RobotControl.CoordSystem.JOINT);
       for (int i = 0; i < 10; i++) {
         sim.step(); // the override ramps to 100 %
       }
-      assertThat(c.jogKeyDown(1, +1, org.robotrun.motion.JogState.Press.HELD)).isInstanceOf(CommandResult.Ok.class);
+      assertThat(c.jogKeyDown(1, +1, org.robotrun.motion.JogState.Press.HELD)).isInstanceOf(RobotControl.Result.Ok.class);
       double fastest = 0;
       Vec3 prev = c.tcpInWorld().position();
       for (int i = 0; i < 100; i++) {
@@ -304,7 +305,7 @@ class MotionTimingSpecTest {
         prev = p;
       }
       c.setDeadman(false);
-      if (mode == OperatingMode.T1) {
+      if (mode == RobotControl.Mode.T1) {
         assertThat(fastest).isLessThanOrEqualTo(250 + 1e-6).isGreaterThan(240);
       } else {
         assertThat(fastest).isGreaterThan(400);

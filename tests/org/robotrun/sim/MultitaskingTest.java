@@ -5,12 +5,13 @@ import static org.robotrun.sim.TaskProgs.program;
 import static org.robotrun.sim.TaskProgs.steps;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.IoKind;
 
 /**
  * RUN starts a task beside the main program, as on an R-30iB: tasks share registers and I/O, a
  * task without a motion group runs while the main program moves, two tasks never hold group 1
- * (INTP-105, cause PROG-040), and RUN of a running program fails with INTP-105.
+ * (INTP-267, cause PROG-040), and RUN of a running program fails with INTP-267 (cause PROG-007).
  */
 class MultitaskingTest {
 
@@ -21,7 +22,7 @@ class MultitaskingTest {
     // the task counts in R[2] while the main program waits for it and then moves
     c.saveProgram(program("COUNT", false, "FOR R[3]=1 TO 5", "R[2]=R[2]+1", "WAIT 0.10(sec)", "ENDFOR", "DO[7]=ON"));
     c.saveProgram(program("MAIN", true, "RUN COUNT", "R[1]=R[2]", "WAIT DO[7]=ON", "R[4]=R[2]"));
-    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
     steps(sim, 2);
     // RUN did not wait: the main program went on at once and sees the task's first increment at most
     assertThat(c.registers().number(1)).isLessThanOrEqualTo(1);
@@ -36,6 +37,31 @@ class MultitaskingTest {
     assertThat(c.activeAlarms()).isEmpty();
   }
 
+  /** Issue 26: a PULSE still pending when its task ended stayed ON for ever (the task's interpreter counted it). */
+  @Test
+  void aPulsePendingWhenItsTaskEndsStillEndsOnTime() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("PULSER", false, "DO[5]=PULSE,0.2sec"));
+    c.saveProgram(program("MAIN", true, "RUN PULSER", "WAIT 1.00(sec)"));
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
+    steps(sim, 10);  // 40 ms: the task pulsed and ended
+    assertThat(c.tasks().list()).isEmpty();
+    assertThat(c.registers().bit(IoKind.DO, 5)).isTrue();
+    steps(sim, 45);  // 220 ms in all: the pulse is over although its task is gone
+    assertThat(c.registers().bit(IoKind.DO, 5)).isFalse();
+    // the main program's own pulse counts once per tick too (not faster with tasks around)
+    Simulation sim2 = ControllerTest.cell();
+    Controller c2 = sim2.controllers().get(0);
+    c2.saveProgram(program("PULSER", false, "DO[5]=PULSE,0.2sec"));
+    c2.saveProgram(program("MAIN2", true, "RUN PULSER", "DO[6]=PULSE,0.2sec", "WAIT 1.00(sec)"));
+    assertThat(c2.run("MAIN2", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
+    steps(sim2, 45);  // 180 ms
+    assertThat(c2.registers().bit(IoKind.DO, 6)).isTrue();
+    steps(sim2, 10);  // 220 ms
+    assertThat(c2.registers().bit(IoKind.DO, 6)).isFalse();
+  }
+
   @Test
   void aTaskMayRunAnotherTask() {
     // The task list grows while the tasks are being stepped (it threw ConcurrentModificationException).
@@ -44,7 +70,7 @@ class MultitaskingTest {
     c.saveProgram(program("SECOND", false, "R[6]=R[6]+1", "WAIT 0.05(sec)", "R[7]=1"));
     c.saveProgram(program("FIRST", false, "RUN SECOND", "R[5]=1"));
     c.saveProgram(program("MAIN", false, "RUN FIRST", "WAIT R[7]=1", "R[8]=1"));
-    assertThat(c.run("MAIN", 1, true)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.run("MAIN", 1, true)).isInstanceOf(RobotControl.Result.Ok.class);
     steps(sim, 100);
     assertThat(c.activeAlarms()).isEmpty();
     assertThat(c.registers().number(5)).isEqualTo(1);
@@ -62,7 +88,7 @@ class MultitaskingTest {
     c.run("MAIN", 1, true);
     steps(sim, 3);
     assertThat(c.activeAlarms()).hasSize(1);
-    assertThat(c.activeAlarms().get(0).code()).isEqualTo("INTP-105");
+    assertThat(c.activeAlarms().get(0).code()).isEqualTo("INTP-267");
     assertThat(c.activeAlarms().get(0).message()).contains("PROG-040 Already locked by other task").contains("MAIN");
     assertThat(c.activeAlarms().get(0).line()).isEqualTo(1);
     assertThat(c.registers().number(9)).isZero();
@@ -88,11 +114,12 @@ class MultitaskingTest {
     c.saveProgram(program("MAIN", false, "RUN LOOPER", "RUN LOOPER"));
     c.run("MAIN", 1, true);
     steps(sim, 3);
-    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
-    assertThat(c.activeAlarms().get(0).message()).contains("LOOPER is already running");
+    // INTP-267 RUN stmt failed, cause PROG-007 (FANUC's help text for a RUN of a running program)
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-267");
+    assertThat(c.activeAlarms().get(0).message()).contains("PROG-007").contains("LOOPER is already running");
     assertThat(c.activeAlarms().get(0).line()).isEqualTo(2);
     // and the pendant cannot start it either
-    assertThat(c.run("LOOPER", 1, true)).isInstanceOf(CommandResult.Refused.class);
+    assertThat(c.run("LOOPER", 1, true)).isInstanceOf(RobotControl.Result.Refused.class);
   }
 
   @Test

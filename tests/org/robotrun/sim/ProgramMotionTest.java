@@ -6,6 +6,7 @@ import static org.assertj.core.data.Offset.offset;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.io.LsReadResult;
 import org.robotrun.io.LsReader;
 import org.robotrun.math.Vec3;
@@ -350,16 +351,16 @@ class ProgramMotionTest {
     Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
     Controller c = sim.controllers().get(0);
     var target = new org.robotrun.program.Position.Cartesian(350, -120, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
-    assertThat(c.moveTo(target, 1, 1)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.moveTo(target, 1, 1)).isInstanceOf(RobotControl.Result.Ok.class);
     for (int i = 0; i < 5000 && c.busy(); i++) {
       sim.step();
     }
     assertThat(c.tcpInWorld().position().distanceTo(A)).isLessThan(0.01);
     var far = new org.robotrun.program.Position.Cartesian(3000, 0, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
-    assertThat(c.moveTo(far, 1, 1)).isInstanceOf(CommandResult.Refused.class);
+    assertThat(c.moveTo(far, 1, 1)).isInstanceOf(RobotControl.Result.Refused.class);
     // HOLD stops a MOVE_TO half-way; a new MOVE_TO replaces it.
     var b = new org.robotrun.program.Position.Cartesian(350, 150, 40, 180, 0, 0, org.robotrun.program.Config.DEFAULT);
-    assertThat(c.moveTo(b, 1, 1)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.moveTo(b, 1, 1)).isInstanceOf(RobotControl.Result.Ok.class);
     for (int i = 0; i < 100; i++) {
       sim.step();
     }
@@ -367,7 +368,7 @@ class ProgramMotionTest {
     for (int i = 0; i < 100; i++) {
       sim.step();
     }
-    assertThat(c.moveTo(target, 1, 1)).isInstanceOf(CommandResult.Ok.class);
+    assertThat(c.moveTo(target, 1, 1)).isInstanceOf(RobotControl.Result.Ok.class);
     for (int i = 0; i < 5000 && c.busy(); i++) {
       sim.step();
     }

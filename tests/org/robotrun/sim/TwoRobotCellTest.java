@@ -27,8 +27,8 @@ class TwoRobotCellTest {
     RobotSetup r2 = new RobotSetup("robot2", "lrmate200id",
         Transform.translation(900, 0, -330).compose(Transform.rotation(0, 0, 1, Math.PI)), EndEffectorType.GRIPPER, HOME);
     Wiring w = new Wiring(List.of(
-        new Wiring.Wire(Wiring.Signal.parse("robot1.DO[10]").orElseThrow(), Wiring.Signal.parse("robot2.DI[10]").orElseThrow()),
-        new Wiring.Wire(Wiring.Signal.parse("robot2.DO[3]").orElseThrow(), Wiring.Signal.parse("robot1.DI[4]").orElseThrow())));
+        new Wiring.Wire(new Wiring.Signal("robot1", "DO", 10), new Wiring.Signal("robot2", "DI", 10)),
+        new Wiring.Wire(new Wiring.Signal("robot2", "DO", 3), new Wiring.Signal("robot1", "DI", 4))));
     Scenario sc = new Scenario("two", "", List.of(r1, r2), World.empty(), List.of(), Optional.empty(), new TreeMap<>(),
         new TreeMap<>(), new TreeMap<>(), Optional.empty()).withWiring(w);
     return ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);

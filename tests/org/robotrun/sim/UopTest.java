@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Optional;
 import java.util.TreeMap;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.IoKind;
 import org.robotrun.world.ProductionSetup;
 import org.robotrun.world.ProductionSetup.ReferencePosition;
@@ -55,10 +56,10 @@ class UopTest {
     assertThat(u.uo(Uop.CMDENBL)).isFalse();
     assertThat(u.uo(Uop.TPENBL)).isTrue();
     u.setTpEnabled(false);
-    c.setMode(OperatingMode.T1);
+    c.setMode(RobotControl.Mode.T1);
     sim.step();
     assertThat(u.uo(Uop.CMDENBL)).isFalse();
-    c.setMode(OperatingMode.AUTO);
+    c.setMode(RobotControl.Mode.AUTO);
     sim.step();
     assertThat(u.uo(Uop.CMDENBL)).isTrue();
   }

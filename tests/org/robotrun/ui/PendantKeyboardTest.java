@@ -5,11 +5,18 @@ import static org.lwjgl.glfw.GLFW.*;
 
 import org.junit.jupiter.api.Test;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.StandInRobotControl;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.pendant.KeyScript;
+import org.robotrun.sim.CellStepper;
+import org.robotrun.sim.ControllerPort;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.Simulation;
 
 /** The computer keyboard as pendant keys; GLFW key codes are constants, so no window is needed. */
 class PendantKeyboardTest {
-  private final StandInRobotControl control = new StandInRobotControl();
+  private final Simulation sim = DefaultCell.simulation(RobotDefinitions.defaultRobot());
+  private final CellStepper stepper = new CellStepper(sim);
+  private final ControllerPort control = new ControllerPort(sim.controllers().get(0));
   private final Pendant pendant = new Pendant(control);
   private final PendantKeyboard keyboard = new PendantKeyboard(pendant);
 
@@ -68,7 +75,7 @@ class PendantKeyboardTest {
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_Q, GLFW_PRESS);
     assertThat(keyboard.onChar('Q')).isFalse();
-    pendant.advance(0.5);
+    KeyScript.advance(pendant, stepper::advance, 0.5);
     keyboard.onKey(GLFW_KEY_Q, GLFW_RELEASE);
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_RELEASE);
 
@@ -80,11 +87,11 @@ class PendantKeyboardTest {
     keyboard.onKey(GLFW_KEY_SPACE, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_LEFT_SHIFT, GLFW_PRESS);
     keyboard.onKey(GLFW_KEY_Q, GLFW_PRESS);
-    pendant.advance(0.2);
+    KeyScript.advance(pendant, stepper::advance, 0.2);
     keyboard.releaseAll();
     double j1 = control.currentJoints().j1Deg();
     assertThat(j1).as("the held jog moved J1 before the focus went").isGreaterThan(0);
-    pendant.advance(0.5);
+    KeyScript.advance(pendant, stepper::advance, 0.5);
 
     assertThat(control.currentJoints().j1Deg()).isEqualTo(j1);
     assertThat(pendant.shift()).isFalse();

@@ -7,12 +7,18 @@ import static org.lwjgl.glfw.GLFW.*;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.robotrun.pendant.Pendant;
-import org.robotrun.pendant.StandInRobotControl;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.sim.ControllerPort;
+import org.robotrun.sim.DefaultCell;
+import org.robotrun.sim.Simulation;
 
 /** The robot selector: the keyboard drives the chosen robot's pendant, and keys held are let go on a switch. */
 class RobotSelectorTest {
-  private final Pendant one = new Pendant(new StandInRobotControl());
-  private final Pendant two = new Pendant(new StandInRobotControl());
+  private final Simulation sim = new Simulation(List.of(DefaultCell.controller(RobotDefinitions.defaultRobot(), "robot1"),
+      DefaultCell.controller(RobotDefinitions.defaultRobot(), "robot2")), List.of(org.robotrun.math.Transform.IDENTITY,
+      org.robotrun.math.Transform.IDENTITY), new org.robotrun.world.World(List.of()), 0, Simulation.DEFAULT_TICK_SEC);
+  private final Pendant one = new Pendant(new ControllerPort(sim.controllers().get(0)));
+  private final Pendant two = new Pendant(new ControllerPort(sim.controllers().get(1)));
   private final RobotSelector selector = new RobotSelector(List.of("robot1", "robot2"), List.of(one, two));
   private final PendantKeyboard keyboard = new PendantKeyboard(selector);
 

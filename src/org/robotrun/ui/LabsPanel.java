@@ -1,0 +1,240 @@
+package org.robotrun.ui;
+
+import imgui.ImGui;
+import imgui.flag.ImGuiCond;
+import imgui.type.ImBoolean;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.ZoneId;
+import java.time.format.DateTimeFormatter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import java.util.Properties;
+import java.util.function.Consumer;
+import org.robotrun.grade.Course;
+import org.robotrun.grade.GradeResult;
+
+/**
+ * The Labs menu (docs/labs/README.md): the installed course's labs with each one's state for this
+ * student (not started, in progress, handed in, the last Check my work score), opening one (its
+ * own workspace in the labs folder, made from the lab's cell the first time, with its task
+ * attached), and the "Lab steps" window: the current lab's numbered steps from its guide, the
+ * current one marked, beside the pendant.
+ *
+ * <p>State lives in the labs folder: {@code ID/} is the workspace, {@code ID-handin.zip} the
+ * hand-in File > Hand in suggests, and {@code .labs.properties} the last score and current step
+ * of each lab (written by this panel only).
+ */
+public final class LabsPanel implements Workbench.MenuContributor {
+  private final Course course;
+  private final Path home;
+  private final Optional<Course.Lab> current;
+  private final Consumer<Course.Lab> open;
+  private final List<String> steps;
+  private final ImBoolean showSteps;
+  private final Properties state = new Properties();
+  private long stateReadAt;
+  private String message = "";
+
+  /**
+   * @param home the student's labs folder (each lab's workspace is {@code home/ID})
+   * @param current the lab this window's workspace belongs to, if any
+   * @param open asked to open (switch the window to) a lab's workspace; it makes the workspace
+   *     when it is new
+   */
+  public LabsPanel(Course course, Path home, Optional<Course.Lab> current, Consumer<Course.Lab> open) {
+    this.course = course;
+    this.home = home;
+    this.current = current;
+    this.open = open;
+    this.steps = current.map(l -> steps(l.guide())).orElse(List.of());
+    this.showSteps = new ImBoolean(!steps.isEmpty());
+    readState();
+  }
+
+  /** The numbered steps of a guide's "## Steps" section, one string per step (continuation lines joined). */
+  public static List<String> steps(Path guide) {
+    List<String> out = new ArrayList<>();
+    try {
+      boolean in = false;
+      StringBuilder step = null;
+      for (String line : Files.readAllLines(guide)) {
+        if (line.startsWith("## ")) {
+          if (in) {
+            break;
+          }
+          in = line.strip().equalsIgnoreCase("## Steps");
+          continue;
+        }
+        if (!in) {
+          continue;
+        }
+        if (line.matches("\\d+\\. .*")) {
+          if (step != null) {
+            out.add(step.toString());
+          }
+          step = new StringBuilder(line.strip().replace("**", "").replace("`", ""));
+        } else if (step != null && line.startsWith("   ") && !line.isBlank()) {
+          step.append(' ').append(line.strip().replace("**", "").replace("`", ""));
+        } else if (step != null && line.isBlank()) {
+          out.add(step.toString());
+          step = null;
+        }
+      }
+      if (step != null) {
+        out.add(step.toString());
+      }
+    } catch (IOException | RuntimeException e) {
+      out.clear();
+    }
+    return out;
+  }
+
+  /** The state of a lab for this student, in words. */
+  public String stateOf(Course.Lab lab) {
+    Path ws = home.resolve(lab.id());
+    Path zip = home.resolve(lab.id() + "-handin.zip");
+    String score = state.getProperty(lab.id() + ".score", "");
+    String s;
+    if (Files.isRegularFile(zip)) {
+      String when;
+      try {
+        when = DateTimeFormatter.ofPattern("d MMM HH:mm", Locale.ROOT).withZone(ZoneId.systemDefault())
+            .format(Files.getLastModifiedTime(zip).toInstant());
+      } catch (IOException e) {
+        when = "";
+      }
+      s = "handed in " + when;
+    } else if (Files.isDirectory(ws)) {
+      s = "in progress";
+    } else {
+      s = "not started";
+    }
+    return score.isEmpty() ? s : s + ", last check " + score;
+  }
+
+  /** Remembers the score of the last Check my work of the current lab. */
+  public void checked(GradeResult r) {
+    current.ifPresent(l -> {
+      state.setProperty(l.id() + ".score", fmt(r.score()) + " of " + fmt(r.maxScore()));
+      writeState();
+    });
+  }
+
+  @Override
+  public void drawMenus() {
+    if (ImGui.beginMenu("Labs")) {
+      if (System.currentTimeMillis() - stateReadAt > 2000) {
+        readState();
+      }
+      Txt.disabled(course.title());
+      ImGui.separator();
+      for (int i = 0; i < course.labs().size(); i++) {
+        Course.Lab lab = course.labs().get(i);
+        boolean here = current.filter(c -> c.id().equals(lab.id())).isPresent();
+        String label = (i + 1) + "  " + lab.title() + "##" + lab.id();
+        if (ImGui.menuItem(label, stateOf(lab), here, !here)) {
+          open.accept(lab);
+        }
+      }
+      if (!steps.isEmpty()) {
+        ImGui.separator();
+        ImGui.menuItem("Lab steps", "", showSteps);
+      }
+      ImGui.separator();
+      Txt.disabled("Your labs: " + home);
+      ImGui.endMenu();
+    }
+  }
+
+  @Override
+  public void drawPopups() {
+    if (!showSteps.get() || current.isEmpty()) {
+      return;
+    }
+    Course.Lab lab = current.get();
+    int at = Math.max(0, Math.min(steps.size() - 1, Integer.parseInt(state.getProperty(lab.id() + ".step", "0"))));
+    float em = ImGui.getFontSize();
+    // Over the lower left column, so that neither the robot nor the pendant is hidden (fits 1366x768).
+    float h = ImGui.getIO().getDisplaySizeY();
+    ImGui.setNextWindowSize(em * 21, h * 0.5f, ImGuiCond.FirstUseEver);
+    ImGui.setNextWindowPos(0, h * 0.47f, ImGuiCond.FirstUseEver);
+    if (ImGui.begin("Lab steps: " + lab.title() + "###labsteps", showSteps)) {
+      ImGui.pushTextWrapPos(0);
+      if (ImGui.button("< Previous") && at > 0) {
+        setStep(lab, at - 1);
+      }
+      ImGui.sameLine();
+      if (ImGui.button("Next >") && at < steps.size() - 1) {
+        setStep(lab, at + 1);
+      }
+      ImGui.sameLine();
+      Txt.disabled("step " + (at + 1) + " of " + steps.size());
+      ImGui.separator();
+      for (int i = 0; i < steps.size(); i++) {
+        if (i == at) {
+          Txt.colored(1f, 0.85f, 0.3f, 1f, "> " + steps.get(i));
+        } else {
+          Txt.disabled("  " + steps.get(i));
+        }
+        if (ImGui.isItemClicked()) {
+          setStep(lab, i);
+        }
+      }
+      ImGui.separator();
+      Txt.disabled("The whole guide: " + lab.guide());
+      if (!message.isEmpty()) {
+        ImGui.textUnformatted(message);
+      }
+      ImGui.popTextWrapPos();
+    }
+    ImGui.end();
+  }
+
+  private void setStep(Course.Lab lab, int step) {
+    state.setProperty(lab.id() + ".step", Integer.toString(step));
+    writeState();
+  }
+
+  private Path stateFile() {
+    return home.resolve(".labs.properties");
+  }
+
+  private void readState() {
+    stateReadAt = System.currentTimeMillis();
+    Properties p = new Properties();
+    if (Files.isRegularFile(stateFile())) {
+      try (InputStream in = Files.newInputStream(stateFile())) {
+        p.load(in);
+      } catch (IOException | IllegalArgumentException e) {
+        message = "cannot read " + stateFile() + ": " + e.getMessage();
+      }
+    }
+    // What this window set and has not written yet stays.
+    p.forEach(state::putIfAbsent);
+  }
+
+  private void writeState() {
+    try {
+      Files.createDirectories(home);
+      Path tmp = home.resolve(".labs.properties.tmp");
+      try (OutputStream out = Files.newOutputStream(tmp)) {
+        state.store(out, "RobotRun labs: last Check my work score and current step per lab");
+      }
+      Files.move(tmp, stateFile(), java.nio.file.StandardCopyOption.REPLACE_EXISTING,
+          java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+      message = "";
+    } catch (IOException | RuntimeException e) {
+      message = "cannot save the lab's state in " + stateFile() + ": " + e.getMessage();
+    }
+  }
+
+  private static String fmt(double d) {
+    return d == Math.rint(d) ? Long.toString((long) d) : String.format(Locale.ROOT, "%.1f", d);
+  }
+}
