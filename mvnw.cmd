@@ -27,6 +27,9 @@
 @REM   MVNW_VERBOSE - true: enable verbose log; others: silence the output
 @REM ----------------------------------------------------------------------------
 
+@REM RobotRun: build with a JDK 21 or newer found where JDKs are installed (.mvn\find-jdk.cmd), whatever
+@REM java is the default; one line saying how to get one if there is none.
+@CALL "%~dp0.mvn\find-jdk.cmd" javac || EXIT /B 1
 @IF "%__MVNW_ARG0_NAME__%"=="" (SET __MVNW_ARG0_NAME__=%~nx0)
 @SET __MVNW_CMD__=
 @SET __MVNW_ERROR__=

@@ -463,6 +463,112 @@ class PendantOnSimControllerTest {
     }).doesNotThrowAnyException();
   }
 
+  /**
+   * Random keys steered so that the arm really moves and a program really runs (issue 31): bursts of
+   * SHIFT + a jog key held for a while, SHIFT+F1 to record points, SHIFT+FWD held to run the program
+   * from its top, RESET, COORD, STEP, override keys, typed text, and any key at all, with DEADMAN
+   * held again soon after a random key lets go of it. Checked on every step: no exception, every joint
+   * finite and inside its limits, every alarm one of the alarm table's codes; at the end: the TCP moved
+   * at least 100 mm from where it started, the program ran (its state was RUNNING and a motion line
+   * of it finished), and both happened more than once.
+   */
+  @Test
+  void steeredRandomKeysMoveTheArmRunAProgramAndKeepEveryInvariant() {
+    org.robotrun.pendant.Key[] all = org.robotrun.pendant.Key.values();
+    org.robotrun.pendant.Key[] jogs = java.util.Arrays.stream(all).filter(org.robotrun.pendant.Key::isJog)
+        .toArray(org.robotrun.pendant.Key[]::new);
+    org.robotrun.robot.RobotModel model = controller.model();
+    java.util.Random rnd = new java.util.Random(7);
+    keys("""
+        SELECT
+        F1
+        TYPE FUZZ
+        ENTER
+        HOLD DEADMAN
+        """);
+    org.robotrun.math.Vec3 start = controller.tcpInWorld().position();
+    double farthest = 0;
+    int runningTicks = 0;
+    int runs = 0;
+    int records = 0;
+    int runsThatMoved = 0;
+    java.util.Set<String> codes = new java.util.TreeSet<>();
+    for (int i = 0; i < 500; i++) {
+      int what = rnd.nextInt(100);
+      if (what < 30) { // jog burst
+        org.robotrun.pendant.Key k = jogs[rnd.nextInt(jogs.length)];
+        p.press(org.robotrun.pendant.Key.SHIFT);
+        p.press(k);
+        for (int t = rnd.nextInt(6) + 1; t > 0; t--) {
+          org.robotrun.pendant.KeyScript.advance(p, stepper::advance, 0.05);
+        }
+        p.release(k);
+        p.release(org.robotrun.pendant.Key.SHIFT);
+      } else if (what < 40) { // record a point: SHIFT+F1 in the editor
+        p.press(org.robotrun.pendant.Key.EDIT);
+        p.release(org.robotrun.pendant.Key.EDIT);
+        p.press(org.robotrun.pendant.Key.SHIFT);
+        p.press(org.robotrun.pendant.Key.F1);
+        p.release(org.robotrun.pendant.Key.F1);
+        p.release(org.robotrun.pendant.Key.SHIFT);
+        records++;
+      } else if (what < 50) { // run from the top: SHIFT held, FWD, time passes
+        keys("EDIT\nITEM\nTYPE 1\nENTER");
+        p.press(org.robotrun.pendant.Key.SHIFT);
+        p.press(org.robotrun.pendant.Key.FWD);
+        p.release(org.robotrun.pendant.Key.FWD);
+        for (int t = rnd.nextInt(20) + 5; t > 0; t--) {
+          org.robotrun.pendant.KeyScript.advance(p, stepper::advance, 0.05);
+          if (controller.status().state() == org.robotrun.sim.ExecutionStatus.State.RUNNING) {
+            runningTicks++;
+          }
+        }
+        p.release(org.robotrun.pendant.Key.SHIFT);
+        runs++;
+        if (controller.motionTimings().stream().anyMatch(m -> m.program().equals("FUZZ"))) {
+          runsThatMoved++;
+        }
+      } else if (what < 56) {
+        p.press(org.robotrun.pendant.Key.RESET);
+        p.release(org.robotrun.pendant.Key.RESET);
+      } else if (what < 60) {
+        org.robotrun.pendant.Key k = List.of(org.robotrun.pendant.Key.COORD, org.robotrun.pendant.Key.STEP,
+            org.robotrun.pendant.Key.OVERRIDE_UP, org.robotrun.pendant.Key.OVERRIDE_DOWN).get(rnd.nextInt(4));
+        p.press(k);
+        p.release(k);
+      } else if (what < 63) {
+        p.type(List.of("1", "R[2]+1", "abc", "-5", "PR[1]", "200", "FUZZ").get(rnd.nextInt(7)));
+      } else if (what < 66) {
+        org.robotrun.pendant.KeyScript.advance(p, stepper::advance, rnd.nextDouble() * 0.2);
+      } else { // any key at all
+        org.robotrun.pendant.Key k = all[rnd.nextInt(all.length)];
+        p.press(k);
+        p.release(k);
+      }
+      if (!p.deadmanHeld() && rnd.nextInt(3) == 0) {
+        p.press(org.robotrun.pendant.Key.DEADMAN);
+      }
+      p.lcd();
+      double[] q = controller.jointsRad();
+      for (int j = 0; j < q.length; j++) {
+        assertThat(Double.isFinite(q[j])).as("J%d finite at step %d", j + 1, i).isTrue();
+        assertThat(q[j]).as("J%d inside its limits at step %d", j + 1, i)
+            .isBetween(model.joint(j).lowerRad() - 1e-9, model.joint(j).upperRad() + 1e-9);
+      }
+      for (var a : controller.alarmHistory()) {
+        codes.add(a.code());
+      }
+      farthest = Math.max(farthest, controller.tcpInWorld().position().distanceTo(start));
+    }
+    assertThat(codes).as("alarm codes raised").allSatisfy(c ->
+        assertThat(org.robotrun.program.AlarmCode.of(c)).as("%s is in the alarm table", c).isPresent());
+    assertThat(farthest).as("the TCP moved away from where it started (mm)").isGreaterThan(100);
+    assertThat(records).isGreaterThan(5);
+    assertThat(runs).isGreaterThan(5);
+    assertThat(runningTicks).as("steps in which the program was RUNNING").isGreaterThan(20);
+    assertThat(runsThatMoved).as("runs in which a motion line of the program finished").isGreaterThan(2);
+  }
+
   @Test
   void uncommentUsesTheLsReaderForLinesFromFiles() {
     controller.saveProgram(org.robotrun.program.Program.of("FROMFILE", List.of(new Instruction.CommentedOut("R[2]=R[2]*3"))));

@@ -174,6 +174,20 @@ class WorkspaceFaultsTest {
     new ProcessBuilder(cmd).redirectErrorStream(true).start().waitFor(10, TimeUnit.SECONDS);
   }
 
+  /**
+   * Mounts a 512 KiB tmpfs on {@code dir}, or skips the test outside CI saying why. In CI
+   * ({@code CI=true}, where .ci/run runs as root) a tmpfs that cannot be mounted fails the test:
+   * the full-disk and read-only checks must really run there, not skip silently.
+   */
+  private static void mountedOrSkipped(Path dir, String why) throws Exception {
+    boolean mounted = canMount(dir);
+    if (!mounted && "true".equals(System.getenv("CI"))) {
+      throw new AssertionError("CI must run this test for real, but no tmpfs could be mounted (user "
+          + System.getProperty("user.name") + "; .ci/run runs as root): " + why);
+    }
+    assumeTrue(mounted, why);
+  }
+
   private static boolean canMount(Path dir) throws Exception {
     boolean root = "root".equals(System.getProperty("user.name"));
     return root && mount(dir, "size=512k");
@@ -183,7 +197,7 @@ class WorkspaceFaultsTest {
   void aFullDiskLeavesEveryFileWholeAndSavesOnceThereIsRoom(@TempDir Path tmp) throws Exception {
     Path mnt = tmp.resolve("small");
     Files.createDirectories(mnt);
-    assumeTrue(canMount(mnt), "needs root and mount to make a 512 KiB tmpfs; skipped on this machine (not root or no mount)");
+    mountedOrSkipped(mnt, "needs root and mount to make a 512 KiB tmpfs; skipped on this machine (not root or no mount)");
     try {
       Path dir = mnt.resolve("ws");
       List<String> reports = new ArrayList<>();
@@ -226,7 +240,7 @@ class WorkspaceFaultsTest {
   void aReadOnlyFolderOpensReadOnlyAndSaysWhy(@TempDir Path tmp) throws Exception {
     Path mnt = tmp.resolve("ro");
     Files.createDirectories(mnt);
-    assumeTrue(canMount(mnt), "needs root and mount for a read-only tmpfs (root ignores file permissions); skipped here");
+    mountedOrSkipped(mnt, "needs root and mount for a read-only tmpfs (root ignores file permissions); skipped here");
     try {
       Path dir = mnt.resolve("ws");
       Workspace.open(dir, cell()).close();
