@@ -72,6 +72,16 @@ final class AutograderBundle {
   /** Writes the bundle: a {@code .zip} when {@code out} ends so, else a folder; atomically replaced. */
   void write(Path out) throws IOException {
     Path target = out.toAbsolutePath();
+    // Never replace a folder that holds anything: --out may name an instructor's course or a
+    // template repository, and a bundle written over it would delete their files.
+    if (Files.isDirectory(target, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+      try (Stream<Path> s = Files.list(target)) {
+        if (s.findAny().isPresent()) {
+          throw new UserError("--out " + out + ": the folder exists and is not empty; name a new folder"
+              + " (its contents would be replaced) or remove it first");
+        }
+      }
+    }
     Path dir = target.getParent();
     Files.createDirectories(dir);
     boolean zip = target.getFileName().toString().toLowerCase(java.util.Locale.ROOT).endsWith(".zip");

@@ -312,6 +312,19 @@ class AutograderBundlesTest {
         jar.toString(), "--runtime", shared.toString()).err()).contains("--runtime: " + shared + " has no bin/java");
   }
 
+  @Test
+  void aBundleIsNeverWrittenOverAFolderThatHoldsFiles() throws Exception {
+    // --out naming the instructor's course folder (or a template repository) must not delete it
+    Path course = Files.createDirectories(shared.resolve("my-course"));
+    Path mine = Files.writeString(course.resolve("syllabus.md"), "week 1: safety");
+    Run b = robotrun("autograder", "prairielearn", "--task", task.toString(), "--out", course.toString(), "--jar",
+        jar.toString());
+    assertThat(b.exit()).isEqualTo(2);
+    assertThat(b.err()).contains("the folder exists and is not empty").doesNotContain("Exception");
+    assertThat(mine).hasContent("week 1: safety");
+    assertThat(course.resolve("serverFilesCourse")).doesNotExist();
+  }
+
   // ---- PrairieLearn --------------------------------------------------------------------------
 
   private static Path prairieLearnBundle() throws IOException {
