@@ -82,7 +82,7 @@ final class ProgramUse {
           for (Motion.Option o : m.options()) {
             if (o instanceof Motion.OffsetPr) {
               found.add(Check.Feature.OFFSET_PR);
-            } else if (o instanceof Motion.ToolOffsetPr) {
+            } else if (o instanceof Motion.ToolOffsetPr || o instanceof Motion.ToolOffset) {
               found.add(Check.Feature.TOOL_OFFSET_PR);
             } else if (o instanceof Motion.RawOption r && r.text().toUpperCase(java.util.Locale.ROOT).startsWith("VOFFSET")) {
               found.add(Check.Feature.VOFFSET);

@@ -75,7 +75,8 @@ final class LsProgramChecks {
     List<Instruction> lines = r.program().lines();
     for (int i = 0; i < lines.size(); i++) {
       Optional<Instruction.Call> call = callIn(lines.get(i));
-      if (call.isPresent()) {
+      if (call.isPresent() && call.get().nameRegister().isEmpty()) {
+        // CALL SR[i] names its program only when it runs (an unknown name alarms then).
         String target = call.get().program();
         String viaTable = lines.get(i) instanceof Instruction.MacroCall
             ? macros.get(org.robotrun.program.InterpreterSettings.macroKey(target)) : null;

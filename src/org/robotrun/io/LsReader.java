@@ -781,7 +781,7 @@ public final class LsReader {
           && m.options().get(m.options().size() - 1) instanceof org.robotrun.program.Motion.RawOption r) {
         List<org.robotrun.program.Motion.Option> opts = new ArrayList<>(m.options());
         opts.set(opts.size() - 1, new org.robotrun.program.Motion.RawOption(r.text() + block, r.what()));
-        return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts);
+        return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts, m.viaOptions());
       }
       diags.add(Diagnostic.error(file, line + 1,
           "indented sub-lines belong to a motion with a TIME BEFORE/AFTER or DISTANCE BEFORE point-logic action"));

@@ -310,6 +310,10 @@ public final class LsWriter {
     String block = "";
     sb.append(m.type().name()).append(' ');
     target(m.target(), sb);
+    for (Motion.Option o : m.viaOptions()) {
+      sb.append(' ');
+      option(o, sb);
+    }
     if (m.circularEnd().isPresent()) {
       // Controllers pad the via line with four blanks, as they do before a motion line's ';'.
       sb.append("    \n    :  ");
@@ -331,33 +335,43 @@ public final class LsWriter {
     }
     for (Motion.Option o : m.options()) {
       sb.append(' ');
-      switch (o) {
-        case Motion.Offset x -> sb.append("Offset");
-        case Motion.OffsetPr x -> {
-          sb.append("Offset,");
-          item("PR", x.register(), sb);
-        }
-        case Motion.ToolOffsetPr x -> {
-          sb.append("Tool_Offset,");
-          item("PR", x.register(), sb);
-        }
-        case Motion.Acc x -> sb.append("ACC").append(x.percent());
-        case Motion.Skip x -> {
-          sb.append("Skip,");
-          label(x.label(), sb);
-        }
-        case Motion.Wjnt x -> sb.append("Wjnt");
-        case Motion.Inc x -> sb.append("INC");
-        case Motion.TimedAction x -> sb.append(x.text());
-        case Motion.RawOption x -> {
-          // A point-logic block kept with the last option: its sub-lines follow the motion line.
-          int nl = x.text().indexOf('\n');
-          sb.append(x.text(), 0, nl < 0 ? x.text().length() : nl);
-          block = nl < 0 ? "" : x.text().substring(nl);
-        }
+      String b = option(o, sb);
+      if (!b.isEmpty()) {
+        block = b;
       }
     }
     sb.append("    ;").append(block).append('\n');
+  }
+
+  /** Writes one motion option; answers the point-logic block (sub-lines) it carries, or "". */
+  private static String option(Motion.Option o, StringBuilder sb) {
+    switch (o) {
+      case Motion.Offset x -> sb.append("Offset");
+      case Motion.ToolOffset x -> sb.append("Tool_Offset");
+      case Motion.OffsetPr x -> {
+        sb.append("Offset,");
+        item("PR", x.register(), sb);
+      }
+      case Motion.ToolOffsetPr x -> {
+        sb.append("Tool_Offset,");
+        item("PR", x.register(), sb);
+      }
+      case Motion.Acc x -> sb.append("ACC").append(x.percent());
+      case Motion.Skip x -> {
+        sb.append("Skip,");
+        label(x.label(), sb);
+      }
+      case Motion.Wjnt x -> sb.append("Wjnt");
+      case Motion.Inc x -> sb.append("INC");
+      case Motion.TimedAction x -> sb.append(x.text());
+      case Motion.RawOption x -> {
+        // A point-logic block kept with the last option: its sub-lines follow the motion line.
+        int nl = x.text().indexOf('\n');
+        sb.append(x.text(), 0, nl < 0 ? x.text().length() : nl);
+        return nl < 0 ? "" : x.text().substring(nl);
+      }
+    }
+    return "";
   }
 
   private static void target(Motion.Target t, StringBuilder sb) {
@@ -554,6 +568,10 @@ public final class LsWriter {
           sb.append(']');
         }
       }
+      case Instruction.ToolOffsetCondition o -> {
+        sb.append("TOOL_OFFSET CONDITION ");
+        item("PR", o.register(), sb);
+      }
       case Instruction.MacroCall c -> {
         sb.append(c.name());
         if (!c.args().isEmpty()) {
@@ -643,6 +661,7 @@ public final class LsWriter {
       case Expr.SysVar v -> 7;
       case Expr.StringReg r -> 7;
       case Expr.StringFunc f -> 7;
+      case Expr.MathFunc f -> 7;
       case Expr.Group g -> 7;
     };
   }
@@ -683,6 +702,11 @@ public final class LsWriter {
       case Expr.Timer t -> item("TIMER", t.timer(), sb);
       case Expr.SysVar v -> sb.append(v.name());
       case Expr.StringReg r -> item("SR", r.register(), sb);
+      case Expr.MathFunc f -> {
+        sb.append(f.fn().name()).append('[');
+        exprUnchecked(f.arg(), sb);
+        sb.append(']');
+      }
       case Expr.StringFunc f -> {
         sb.append(f.fn().name()).append(' ');
         for (int k = 0; k < f.args().size(); k++) {

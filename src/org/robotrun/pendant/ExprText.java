@@ -57,6 +57,7 @@ public final class ExprText {
       case Expr.Arg a -> "AR[" + index(a.index()) + "]";
       case Expr.SysVar v -> v.name();
       case Expr.StringReg r -> item("SR", r.register());
+      case Expr.MathFunc f -> f.fn().name() + "[" + format(f.arg()) + "]";
       case Expr.StringFunc f -> f.fn().name() + " " + String.join(",", f.args().stream().map(a ->
           a instanceof Expr.Binary ? "(" + format(a) + ")" : format(a)).toList());
       case Expr.Unary u -> u.op().symbol() + format(u.operand());
@@ -179,6 +180,7 @@ public final class ExprText {
           checkRanges(a, depth + 1);
         }
       }
+      case Expr.MathFunc f -> checkRanges(f.arg(), depth + 1);
       case Expr.Arg a -> {
         if (a.index() instanceof Index.Indirect) {
           checkRange("AR", a.index());

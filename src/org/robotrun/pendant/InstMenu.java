@@ -153,7 +153,8 @@ final class InstMenu {
           Template.of("MONITOR END ...", new Instruction.Monitor("MAIN", true)),
           Template.of("WHEN ...,CALL ... (condition program)", new Instruction.When(
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)),
-              new Instruction.Call("MAIN", List.of()))))),
+              new Instruction.Call("MAIN", List.of()))),
+          Template.of("TOOL_OFFSET CONDITION PR[ ]", new Instruction.ToolOffsetCondition(Item.of(1))))),
       new Category("Multiple control", List.of(
           Template.of("RUN program", new Instruction.Run("MAIN", List.of())))));
 

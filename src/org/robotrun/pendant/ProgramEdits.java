@@ -96,7 +96,7 @@ final class ProgramEdits {
               copyPosition(prog, l.number(), next, newPos);
               end = Optional.of(new Motion.Local(next++, l.comment()));
             }
-            add.set(i, new Instruction.Move(m.type(), t, end, m.speed(), m.termination(), m.options()));
+            add.set(i, new Instruction.Move(m.type(), t, end, m.speed(), m.termination(), m.options(), m.viaOptions()));
           }
         }
       }
@@ -189,7 +189,7 @@ final class ProgramEdits {
     for (Instruction in : prog.lines()) {
       lines.add(switch (in) {
         case Instruction.Move m -> new Instruction.Move(m.type(), renumbered(m.target(), map),
-            m.circularEnd().map(t -> renumbered(t, map)), m.speed(), m.termination(), m.options());
+            m.circularEnd().map(t -> renumbered(t, map)), m.speed(), m.termination(), m.options(), m.viaOptions());
         case Instruction.AssignPosReg a when a.source() instanceof Instruction.FromLocal l ->
             new Instruction.AssignPosReg(a.register(), new Instruction.FromLocal(map.get(l.number()), l.comment()));
         default -> in;

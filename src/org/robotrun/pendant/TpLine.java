@@ -55,6 +55,10 @@ public final class TpLine {
         f.add(itemField("PR", o.register(), i -> new Instruction.OffsetCondition(i, o.userFrame())));
         o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + ExprText.index(j) + "]")));
       }
+      case Instruction.ToolOffsetCondition o -> {
+        f.add(Field.fixed("TOOL_OFFSET CONDITION"));
+        f.add(itemField("PR", o.register(), Instruction.ToolOffsetCondition::new));
+      }
       case Instruction.MacroCall c -> {
         f.add(new Field(c.name(), Field.Edit.both(programs,
             k -> new Instruction.MacroCall(programs.get(k), c.args()), c.name(),
@@ -298,11 +302,14 @@ public final class TpLine {
   private static void move(Instruction.Move m, Program program, List<Field> f) {
     f.add(new Field(m.type().name(), Field.Edit.choice(List.of("J", "L", "C", "A"), k -> withType(m, Motion.Type.values()[k]))));
     f.add(Field.fixed(" "));
-    f.add(targetField(m.target(), program, t -> new Instruction.Move(m.type(), t, m.circularEnd(), m.speed(), m.termination(), m.options())));
+    f.add(targetField(m.target(), program, t -> new Instruction.Move(m.type(), t, m.circularEnd(), m.speed(), m.termination(), m.options(), m.viaOptions())));
+    for (Motion.Option o : m.viaOptions()) {
+      f.add(Field.fixed(" " + optionText(o)));
+    }
     if (m.circularEnd().isPresent()) {
       f.add(Field.fixed(" : "));
       f.add(targetField(m.circularEnd().get(), program,
-          t -> new Instruction.Move(m.type(), m.target(), Optional.of(t), m.speed(), m.termination(), m.options())));
+          t -> new Instruction.Move(m.type(), m.target(), Optional.of(t), m.speed(), m.termination(), m.options(), m.viaOptions())));
     }
     f.add(Field.fixed(" "));
     String speed = switch (m.speed().value()) {
@@ -338,6 +345,7 @@ public final class TpLine {
       case Motion.Acc a -> t -> withOption(m, at, new Motion.Acc(intIn(t, 0, 150, "ACC")));
       case Motion.Skip s -> t -> withOption(m, at, new Motion.Skip(parseLabel(t)));
       case Motion.Offset x -> null;
+      case Motion.ToolOffset x -> null;
       case Motion.Wjnt x -> null;
       case Motion.Inc x -> null;
       case Motion.RawOption x -> null;
@@ -349,6 +357,7 @@ public final class TpLine {
       case Motion.Acc a -> Integer.toString(a.percent());
       case Motion.Skip s -> ExprText.index(s.label().index());
       case Motion.Offset x -> "";
+      case Motion.ToolOffset x -> "";
       case Motion.Wjnt x -> "";
       case Motion.Inc x -> "";
       case Motion.RawOption x -> "";
@@ -361,6 +370,7 @@ public final class TpLine {
   public static String optionText(Motion.Option o) {
     return switch (o) {
       case Motion.Offset x -> "Offset";
+      case Motion.ToolOffset x -> "Tool_Offset";
       case Motion.OffsetPr p -> "Offset," + ExprText.item("PR", p.register());
       case Motion.ToolOffsetPr p -> "Tool_Offset," + ExprText.item("PR", p.register());
       case Motion.Acc a -> "ACC" + a.percent();
@@ -386,7 +396,8 @@ public final class TpLine {
       end = Optional.of(m.circularEnd().orElse(m.target() instanceof Motion.Local l
           ? new Motion.Local(l.number() + 1, "") : m.target()));
     }
-    return new Instruction.Move(type, m.target(), end, speed, m.termination(), m.options());
+    return new Instruction.Move(type, m.target(), end, speed, m.termination(), m.options(),
+        type == Motion.Type.C ? m.viaOptions() : List.of());
   }
 
   /**
@@ -433,11 +444,11 @@ public final class TpLine {
   }
 
   static Instruction.Move withSpeed(Instruction.Move m, Motion.Speed s) {
-    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), s, m.termination(), m.options());
+    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), s, m.termination(), m.options(), m.viaOptions());
   }
 
   static Instruction.Move withTerm(Instruction.Move m, Motion.Termination t) {
-    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), t, m.options());
+    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), t, m.options(), m.viaOptions());
   }
 
   static Instruction.Move withOption(Instruction.Move m, int at, Motion.Option o) {
@@ -447,13 +458,13 @@ public final class TpLine {
     } else {
       opts.set(at, o);
     }
-    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts);
+    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts, m.viaOptions());
   }
 
   static Instruction.Move withoutOption(Instruction.Move m, int at) {
     List<Motion.Option> opts = new ArrayList<>(m.options());
     opts.remove(at);
-    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts);
+    return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts, m.viaOptions());
   }
 
   /** Speed unit as displayed: {@code %}, {@code mm/sec}, {@code sec}. */

@@ -86,6 +86,7 @@ final class Compiler {
       case Instruction.MacroCall c -> "CALL";
       case Instruction.SkipCondition s -> "";
       case Instruction.OffsetCondition o -> "";
+      case Instruction.ToolOffsetCondition o -> "";
       case Instruction.Payload p -> "";
       case Instruction.AssignRegister a -> "";
       case Instruction.AssignPosReg a -> "";
@@ -165,6 +166,7 @@ final class Compiler {
       case Instruction.MacroCall c -> new Ops.MacroOp(c.name(), c.args().stream().map(Compiler::expr).toArray(Node[]::new));
       case Instruction.SkipCondition s -> new Ops.SkipConditionOp(expr(s.condition()));
       case Instruction.OffsetCondition o -> new Ops.OffsetConditionOp(o.register(), o.userFrame().map(Compiler::idx).orElse(null));
+      case Instruction.ToolOffsetCondition o -> new Ops.ToolOffsetConditionOp(o.register());
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
@@ -218,7 +220,8 @@ final class Compiler {
     for (int k = 0; k < args.length; k++) {
       args[k] = expr(c.args().get(k));
     }
-    return new Ops.CallOp(c.program(), args);
+    return c.nameRegister().isPresent() ? new Ops.CallViaStringOp(c.program(), idx(c.nameRegister().get().index()), args)
+        : new Ops.CallOp(c.program(), args);
   }
 
   private LabelTarget label(LabelRef ref) {
@@ -250,6 +253,7 @@ final class Compiler {
       case Expr.SysVar v -> new Nodes.SysVarRead(v.name());
       case Expr.StringReg r -> new Nodes.SrRead(idx(r.register().index()));
       case Expr.StringFunc f -> new Nodes.StrFunc(f.fn(), f.args().stream().map(Compiler::expr).toArray(Node[]::new));
+      case Expr.MathFunc f -> new Nodes.MathFunc(f.fn(), expr(f.arg()));
       case Expr.Unary u -> switch (u.op()) {
         case MINUS -> new Nodes.Neg(expr(u.operand()));
         case NOT -> new Nodes.Not(expr(u.operand()));

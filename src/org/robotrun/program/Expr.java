@@ -101,6 +101,26 @@ public sealed interface Expr {
     }
   }
 
+  /**
+   * {@code ABS[x]}, {@code SQRT[x]}, {@code SIN[x]} ...: an arithmetic function of the controller's
+   * math-function option, its argument in square brackets (angles in degrees).
+   */
+  record MathFunc(MathFn fn, Expr arg) implements Expr {
+    public MathFunc {
+      Objects.requireNonNull(fn, "fn");
+      Objects.requireNonNull(arg, "arg");
+    }
+  }
+
+  /**
+   * The one-argument arithmetic functions RobotRun runs. TRUNC and ROUND give integers; ABS keeps
+   * its argument's type; the others give reals. (ATAN2 is read but not run: its argument order is
+   * not confirmed.)
+   */
+  enum MathFn {
+    ABS, SQRT, SIN, COS, TAN, ASIN, ACOS, ATAN, LN, EXP, TRUNC, ROUND
+  }
+
   /** The string register functions of the controller. */
   enum StringFn {
     STRLEN(1), SUBSTR(3), FINDSTR(2);

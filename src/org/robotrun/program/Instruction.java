@@ -23,7 +23,8 @@ public sealed interface Instruction {
    * {@code circularEnd} is empty.
    */
   record Move(Motion.Type type, Motion.Target target, Optional<Motion.Target> circularEnd,
-      Motion.Speed speed, Motion.Termination termination, List<Motion.Option> options) implements Instruction {
+      Motion.Speed speed, Motion.Termination termination, List<Motion.Option> options,
+      List<Motion.Option> viaOptions) implements Instruction {
     public Move {
       Objects.requireNonNull(type, "type");
       Objects.requireNonNull(target, "target");
@@ -31,9 +32,22 @@ public sealed interface Instruction {
       Objects.requireNonNull(speed, "speed");
       Objects.requireNonNull(termination, "termination");
       options = Motion.copyOptions(options);
+      viaOptions = Motion.copyOptions(viaOptions);
       if ((type == Motion.Type.C) != circularEnd.isPresent()) {
         throw new IllegalArgumentException("a C motion has an end point, other types none");
       }
+      if (!viaOptions.isEmpty() && type != Motion.Type.C) {
+        throw new IllegalArgumentException("only a C motion has a via point with options");
+      }
+    }
+
+    /**
+     * A motion without options on a via point ({@code viaOptions} are those written after a C
+     * motion's via point: {@code C P[1] Offset,PR[2]} then {@code :  P[2] ...}).
+     */
+    public Move(Motion.Type type, Motion.Target target, Optional<Motion.Target> circularEnd, Motion.Speed speed,
+        Motion.Termination termination, List<Motion.Option> options) {
+      this(type, target, circularEnd, speed, termination, options, List.of());
     }
 
     /** A J, L or A motion. */
@@ -238,11 +252,31 @@ public sealed interface Instruction {
     }
   }
 
-  /** {@code CALL NAME} / {@code CALL NAME(args)}: args land in AR[1..]. */
-  record Call(String program, List<Expr> args) implements Instruction, Branch {
+  /**
+   * {@code CALL NAME} / {@code CALL NAME(args)}: args land in AR[1..]. With {@code nameRegister}
+   * ({@code CALL SR[3]}) the program is the one string register SR[i] names when the line runs,
+   * and {@code program} is how the line shows it ({@code SR[3]}, {@code SR[3:NEXT]}).
+   */
+  record Call(String program, List<Expr> args, Optional<Item> nameRegister) implements Instruction, Branch {
     public Call {
       Objects.requireNonNull(program, "program");
       args = List.copyOf(args);
+      Objects.requireNonNull(nameRegister, "nameRegister");
+    }
+
+    /** {@code CALL NAME(args)}. */
+    public Call(String program, List<Expr> args) {
+      this(program, args, Optional.empty());
+    }
+
+    /** {@code CALL SR[i](args)}: the program string register {@code sr} names when the line runs. */
+    public static Call viaString(Item sr, List<Expr> args) {
+      String i = switch (sr.index()) {
+        case Index.Direct d -> Integer.toString(d.value());
+        case Index.Indirect r -> "R[" + r.register() + (r.comment().isEmpty() ? "" : ":" + r.comment()) + "]";
+        case Index.ViaArg a -> "AR[" + a.arg() + "]";
+      };
+      return new Call("SR[" + i + (sr.comment().isEmpty() ? "" : ":" + sr.comment()) + "]", args, Optional.of(sr));
     }
   }
 
@@ -450,6 +484,17 @@ public sealed interface Instruction {
     /** {@code OFFSET CONDITION PR[i]}: the offset in the motion's own user frame. */
     public OffsetCondition(Item register) {
       this(register, Optional.empty());
+    }
+  }
+
+  /**
+   * {@code TOOL_OFFSET CONDITION PR[i]}: the offset a motion with a plain {@code Tool_Offset}
+   * option applies, in the tool frame (PR[i] is read when the motion starts). It stays set until
+   * the next TOOL_OFFSET CONDITION or the program ends.
+   */
+  record ToolOffsetCondition(Item register) implements Instruction {
+    public ToolOffsetCondition {
+      Objects.requireNonNull(register, "register");
     }
   }
 

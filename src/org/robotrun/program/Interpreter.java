@@ -76,6 +76,8 @@ public final class Interpreter {
   Item offsetCondition;
   /** The user frame of the OFFSET CONDITION's offset, -1 for the motion's own frame. */
   int offsetConditionFrame = -1;
+  /** The PR of the last TOOL_OFFSET CONDITION (what a plain Tool_Offset applies), or null. */
+  Item toolOffsetCondition;
 
   private final Map<String, CompiledProgram> compiled = new HashMap<>();
   private final Frame[] frames;
@@ -717,6 +719,7 @@ public final class Interpreter {
     skipCondition = null;
     offsetCondition = null;
     offsetConditionFrame = -1;
+    toolOffsetCondition = null;
     monitors.clear();
     finishedProgram = null;
     state = State.RUNNING;
@@ -1144,15 +1147,10 @@ public final class Interpreter {
     Nodes.Idx voffset = null;
     for (Motion.Option o : mv.options()) {
       switch (o) {
-        case Motion.Offset x -> {
-          if (offsetCondition == null) {
-            throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "Offset needs an OFFSET CONDITION PR[i] before it (or write Offset,PR[i])");
-          }
-          offset = Optional.of(offsetConditionFrame < 0 ? positionRegister(offsetCondition)
-              : offsetFromFrame(positionRegister(offsetCondition), offsetConditionFrame));
-        }
+        case Motion.Offset x -> offset = Optional.of(conditionOffset());
         case Motion.OffsetPr x -> offset = Optional.of(positionRegister(x.register()));
         case Motion.ToolOffsetPr x -> toolOffset = Optional.of(positionRegister(x.register()));
+        case Motion.ToolOffset x -> toolOffset = Optional.of(conditionToolOffset());
         case Motion.Acc x -> {
           if (x.percent() < 0 || x.percent() > 150) {
             throw new AlarmSignal(AlarmKind.BAD_VALUE, "ACC" + x.percent() + ": expected 0..150");
@@ -1178,8 +1176,37 @@ public final class Interpreter {
       target = VisionOps.offset(this, vr, target);
       via = via.map(v -> VisionOps.offset(this, vr, v));
     }
+    Optional<Position> viaOffset = Optional.empty();
+    Optional<Position> viaToolOffset = Optional.empty();
+    for (Motion.Option o : mv.viaOptions()) {
+      switch (o) {
+        case Motion.Offset x -> viaOffset = Optional.of(conditionOffset());
+        case Motion.OffsetPr x -> viaOffset = Optional.of(positionRegister(x.register()));
+        case Motion.ToolOffsetPr x -> viaToolOffset = Optional.of(positionRegister(x.register()));
+        case Motion.ToolOffset x -> viaToolOffset = Optional.of(conditionToolOffset());
+        default -> throw new AlarmSignal(AlarmKind.NOT_SUPPORTED, "option " + o + " on the via point of a C motion");
+      }
+    }
     return new MotionRequest(mv.type(), target, via, speed, mv.speed().unit(), fine, cnt, offset, toolOffset, acc, wjnt,
-        inc, false, cur.prog.name, lineIndex + 1);
+        inc, false, cur.prog.name, lineIndex + 1, !mv.viaOptions().isEmpty(), viaOffset, viaToolOffset);
+  }
+
+  /** The offset of the last OFFSET CONDITION, for a plain {@code Offset} (an alarm without one). */
+  private Position conditionOffset() {
+    if (offsetCondition == null) {
+      throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION, "Offset needs an OFFSET CONDITION PR[i] before it (or write Offset,PR[i])");
+    }
+    return offsetConditionFrame < 0 ? positionRegister(offsetCondition)
+        : offsetFromFrame(positionRegister(offsetCondition), offsetConditionFrame);
+  }
+
+  /** The offset of the last TOOL_OFFSET CONDITION, for a plain {@code Tool_Offset} (an alarm without one). */
+  private Position conditionToolOffset() {
+    if (toolOffsetCondition == null) {
+      throw new AlarmSignal(AlarmKind.UNDEFINED_POSITION,
+          "Tool_Offset needs a TOOL_OFFSET CONDITION PR[i] before it (or write Tool_Offset,PR[i])");
+    }
+    return positionRegister(toolOffsetCondition);
   }
 
   private double registerNumber(Item register, String what) {
@@ -1260,7 +1287,7 @@ public final class Interpreter {
       Motion.Type type = back.type();
       MotionRequest req = new MotionRequest(type, to.target(), type == Motion.Type.C ? from.via() : Optional.empty(),
           from.speed(), from.speedUnit(), true, 0, to.offset(), to.toolOffset(), from.accPercent(), from.wristJoint(),
-          false, true, p.name, m0 + 1);
+          false, true, p.name, m0 + 1, type == Motion.Type.C && from.viaOwnOffsets(), from.viaOffset(), from.viaToolOffset());
       cur.pc = m1;
       state = State.RUNNING;
       notice = "";

@@ -111,6 +111,12 @@ public final class Motion {
     }
   }
 
+  /**
+   * {@code Tool_Offset}: shifts the target in the tool frame by the PR named in the last
+   * TOOL_OFFSET CONDITION (an alarm without one).
+   */
+  public record ToolOffset() implements Option {}
+
   /** {@code ACCn}: acceleration override in percent. */
   public record Acc(int percent) implements Option {}
 

@@ -22,10 +22,16 @@ import java.util.Optional;
  * @param backward true when run by backward execution (BWD)
  * @param program the program of the motion line (for the port's alarms)
  * @param line its line number
+ * @param viaOwnOffsets true when the C motion's via point carries options of its own ({@code C P[1]
+ *     Offset,PR[2]}): then {@code viaOffset}/{@code viaToolOffset} shift the via point and
+ *     {@code offset}/{@code toolOffset} the end point only; false: both points take the latter
+ * @param viaOffset the via point's own {@code Offset}
+ * @param viaToolOffset the via point's own {@code Tool_Offset}
  */
 public record MotionRequest(Motion.Type type, Waypoint target, Optional<Waypoint> via, double speed,
     Motion.SpeedUnit speedUnit, boolean fine, int cnt, Optional<Position> offset, Optional<Position> toolOffset,
-    int accPercent, boolean wristJoint, boolean incremental, boolean backward, String program, int line) {
+    int accPercent, boolean wristJoint, boolean incremental, boolean backward, String program, int line,
+    boolean viaOwnOffsets, Optional<Position> viaOffset, Optional<Position> viaToolOffset) {
 
   public MotionRequest {
     Objects.requireNonNull(type, "type");
@@ -35,6 +41,16 @@ public record MotionRequest(Motion.Type type, Waypoint target, Optional<Waypoint
     Objects.requireNonNull(offset, "offset");
     Objects.requireNonNull(toolOffset, "toolOffset");
     Objects.requireNonNull(program, "program");
+    Objects.requireNonNull(viaOffset, "viaOffset");
+    Objects.requireNonNull(viaToolOffset, "viaToolOffset");
+  }
+
+  /** A request whose via point (if any) takes the same offsets as its target. */
+  public MotionRequest(Motion.Type type, Waypoint target, Optional<Waypoint> via, double speed,
+      Motion.SpeedUnit speedUnit, boolean fine, int cnt, Optional<Position> offset, Optional<Position> toolOffset,
+      int accPercent, boolean wristJoint, boolean incremental, boolean backward, String program, int line) {
+    this(type, target, via, speed, speedUnit, fine, cnt, offset, toolOffset, accPercent, wristJoint, incremental,
+        backward, program, line, false, Optional.empty(), Optional.empty());
   }
 
   /**

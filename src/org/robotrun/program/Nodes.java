@@ -351,6 +351,69 @@ final class Nodes {
     return s.length() <= 20 ? s : s.substring(0, 20) + "...";
   }
 
+  /** ABS[], SQRT[], SIN[] ...: the controller's arithmetic functions, angles in degrees. */
+  static final class MathFunc extends Node {
+    final Expr.MathFn fn;
+    final Node arg;
+
+    MathFunc(Expr.MathFn fn, Node arg) {
+      this.fn = fn;
+      this.arg = arg;
+    }
+
+    @Override
+    double eval(Interpreter m) {
+      double v = arg.eval(m);
+      if (m.kind > REAL) {
+        throw mismatch(fn.name() + "[] needs a number", m.kind);
+      }
+      int argKind = m.kind;
+      m.kind = REAL;
+      double r = switch (fn) {
+        case ABS -> {
+          m.kind = argKind;
+          yield Math.abs(v);
+        }
+        case SQRT -> {
+          if (v < 0) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, "SQRT[" + v + "]: the argument is negative");
+          }
+          yield Math.sqrt(v);
+        }
+        case SIN -> Math.sin(Math.toRadians(v));
+        case COS -> Math.cos(Math.toRadians(v));
+        case TAN -> Math.tan(Math.toRadians(v));
+        case ASIN, ACOS -> {
+          if (v < -1 || v > 1) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, fn.name() + "[" + v + "]: the argument is outside -1..1");
+          }
+          yield Math.toDegrees(fn == Expr.MathFn.ASIN ? Math.asin(v) : Math.acos(v));
+        }
+        case ATAN -> Math.toDegrees(Math.atan(v));
+        case LN -> {
+          if (!(v > 0)) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, "LN[" + v + "]: the argument must be greater than 0");
+          }
+          yield Math.log(v);
+        }
+        case EXP -> Math.exp(v);
+        case TRUNC, ROUND -> {
+          double w = fn == Expr.MathFn.TRUNC ? (v < 0 ? Math.ceil(v) : Math.floor(v))
+              : Math.signum(v) * Math.floor(Math.abs(v) + 0.5);
+          if (Math.abs(w) > Integer.MAX_VALUE) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, fn.name() + "[" + v + "]: the result is not an integer register value");
+          }
+          m.kind = INT;
+          yield w + 0.0;
+        }
+      };
+      if (!Double.isFinite(r)) {
+        throw new AlarmSignal(AlarmKind.BAD_VALUE, fn.name() + "[" + v + "]: the result is not a finite number");
+      }
+      return r;
+    }
+  }
+
   /** STRLEN, SUBSTR, FINDSTR. */
   static final class StrFunc extends Node {
     final Expr.StringFn fn;

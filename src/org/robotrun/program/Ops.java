@@ -174,7 +174,7 @@ final class Ops {
     }
   }
 
-  static final class CallOp extends BranchOp {
+  static class CallOp extends BranchOp {
     final String program;
     final Node[] args;
 
@@ -186,6 +186,31 @@ final class Ops {
     @Override
     int take(Interpreter m, int after) {
       m.call(program, args, after);
+      return NEXT;
+    }
+  }
+
+  /**
+   * {@code CALL SR[i]}: calls the program whose name string register SR[i] holds when the line
+   * runs (upper-cased, as program names are). An empty or unknown name alarms like a CALL of a
+   * program that does not exist.
+   */
+  static final class CallViaStringOp extends CallOp {
+    final Idx register;
+
+    CallViaStringOp(String shown, Idx register, Node[] args) {
+      super(shown, args);
+      this.register = register;
+    }
+
+    @Override
+    int take(Interpreter m, int after) {
+      int i = Nodes.check("SR", register.resolve(m), Registers.SR_COUNT);
+      String name = m.regs.string(i).strip().toUpperCase(java.util.Locale.ROOT);
+      if (name.isEmpty()) {
+        throw new AlarmSignal(AlarmKind.UNKNOWN_PROGRAM, "CALL " + program + ": SR[" + i + "] is empty (no program named)");
+      }
+      m.call(name, args, after);
       return NEXT;
     }
   }
@@ -646,6 +671,21 @@ final class Ops {
         }
         m.offsetConditionFrame = j;
       }
+      return NEXT;
+    }
+  }
+
+  /** TOOL_OFFSET CONDITION PR[i]: remembered for the following motions with a plain Tool_Offset. */
+  static final class ToolOffsetConditionOp extends Op {
+    final Item register;
+
+    ToolOffsetConditionOp(Item register) {
+      this.register = register;
+    }
+
+    @Override
+    int exec(Interpreter m) {
+      m.toolOffsetCondition = register;
       return NEXT;
     }
   }

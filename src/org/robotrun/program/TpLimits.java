@@ -39,6 +39,7 @@ public final class TpLimits {
         }
         yield Math.max(worst, nesting(left, depth, limit));
       }
+      case Expr.MathFunc f -> nesting(f.arg(), depth + 1, limit);
       case Expr.StringFunc f -> {
         int worst = depth;
         for (Expr a : f.args()) {

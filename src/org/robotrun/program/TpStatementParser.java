@@ -71,6 +71,7 @@ public final class TpStatementParser extends TpTokenCursor {
       Map.entry("CLEAR_RESUME_PROG", "CLEAR_RESUME_PROG"),
       Map.entry("RETURN_PATH_DSBL", "RETURN_PATH_DSBL"),
       Map.entry("MONITOR_END", "MONITOR END"),
+      Map.entry("MAINT_PROG", "MAINT_PROG"),
       Map.entry("PL", "palletizing register PL[]"),
       Map.entry("PAL", "palletizing"),
       Map.entry("PALLETIZING_B", "PALLETIZING-B"),
@@ -129,7 +130,7 @@ public final class TpStatementParser extends TpTokenCursor {
   private static final java.util.Set<String> RUNNABLE = java.util.Set.of(
       "COL DETECT", "COL GUARD ADJUST", "JOINT_MAX_SPEED", "LINEAR_MAX_SPEED", "max_speed", "TIMER_OVERFLOW",
       "DIAGNOSTIC", "LOCK PREG", "UNLOCK PREG", "TC_ONLINE", "PTH", "remark", "system variable assignment",
-      "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "PRINT", "BREAK", "MROT",
+      "RETURN_PATH_DSBL", "CLEAR_RESUME_PROG", "RESUME_PROG", "ERROR_PROG", "MAINT_PROG", "PRINT", "BREAK", "MROT",
       "constant path", "TORQ_LIMIT",
       // compliance to an outside force: the simulated arm meets none, so its path is the same
       "SOFTFLOAT");
@@ -408,6 +409,19 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         yield new Instruction.OffsetCondition(pr);
       }
+      case "TOOL_OFFSET" -> {
+        if (!peek().isWord("CONDITION") || !peek(1).isWord("PR")) {
+          throw unknownStatement(t);
+        }
+        next();
+        next();
+        Item pr = item("PR");
+        if (!peek().is(Kind.EOL)) {
+          // TOOL_OFFSET CONDITION PR[1],UTOOL[2] and the like: kept as written, not run
+          throw unsupported(t, "TOOL_OFFSET CONDITION with " + TpToken.clip(peek(1).text()), false);
+        }
+        yield new Instruction.ToolOffsetCondition(pr);
+      }
       case "MONITOR" -> {
         boolean end = peek().isWord("END") && peek(1).is(Kind.WORD);
         if (end) {
@@ -426,7 +440,12 @@ public final class TpStatementParser extends TpTokenCursor {
           throw unsupported(peek(), "WHEN with an action other than CALL", false);
         }
         next();
-        yield new Instruction.When(cond, (Instruction.Call) call());
+        TpToken at = peek();
+        Instruction.Call action = (Instruction.Call) call();
+        if (action.nameRegister().isPresent()) {
+          throw unsupported(at, "WHEN ...,CALL through a string register SR[]", false);
+        }
+        yield new Instruction.When(cond, action);
       }
       case "JMP" -> jump();
       case "CALL" -> call();
@@ -692,8 +711,10 @@ public final class TpStatementParser extends TpTokenCursor {
 
   private Instruction call() {
     if (peek().isWord("SR") && peek(1).is(Kind.LBRACKET)) {
-      // CALL SR[3]: the program named by a string register (an option of newer systems)
-      throw unsupported(peek(), "CALL through a string register SR[]", false);
+      // CALL SR[3]: the program a string register names when the line runs
+      next();
+      Item sr = item("SR");
+      return Instruction.Call.viaString(sr, callArgs());
     }
     if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".")) {
       // CALL ... : the pendant lists a CALL whose program was never chosen this way
@@ -711,6 +732,11 @@ public final class TpStatementParser extends TpTokenCursor {
       throw error(name, "'" + TpToken.clip(name.text())
           + "' is not a program name: expected letters, digits and '_', starting with a letter");
     }
+    return new Instruction.Call(name.text().toUpperCase(Locale.ROOT), callArgs());
+  }
+
+  /** The optional {@code (arg,...)} of a CALL. */
+  private List<Expr> callArgs() {
     List<Expr> args = new ArrayList<>();
     if (peek().is(Kind.LPAREN)) {
       next();
@@ -726,12 +752,16 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       expect(Kind.RPAREN, "')' closing the CALL arguments");
     }
-    return new Instruction.Call(name.text().toUpperCase(Locale.ROOT), args);
+    return args;
   }
 
   /** {@code RUN NAME[(args)]}: starts NAME as a task of its own (multitasking), read like a CALL. */
   private Instruction run() {
+    TpToken at = peek();
     Instruction.Call c = (Instruction.Call) call();
+    if (c.nameRegister().isPresent()) {
+      throw unsupported(at, "RUN through a string register SR[]", false);
+    }
     return new Instruction.Run(c.program(), c.args());
   }
 
@@ -850,10 +880,15 @@ public final class TpStatementParser extends TpTokenCursor {
     Motion.Type type = Motion.Type.valueOf(next().text().toUpperCase(Locale.ROOT));
     Motion.Target target = motionTarget();
     Optional<Motion.Target> end = Optional.empty();
+    List<Motion.Option> viaOptions = new ArrayList<>();
     if (type == Motion.Type.C) {
+      // C P[1] Tool_Offset,PR[2] then ':  P[2] ...': an offset of the via point's own
+      while ((peek().isWord("Offset") || peek().isWord("Tool_Offset")) && !(peek(1).is(Kind.LBRACKET))) {
+        viaOptions.add(motionOption());
+      }
       if (!(peek().isWord("P") || peek().isWord("PR"))) {
         if (peek().is(Kind.WORD) && !peek().isWord("CNT") && !peek().isWord("FINE")) {
-          throw unsupported(peek(), "motion options on the via point of a C motion", false);
+          throw unsupported(peek(), "motion option " + TpToken.clip(peek().text()) + " on the via point of a C motion", false);
         }
         throw error("a C motion needs its end point on a continuation line ':  P[j] speed termination ;', found "
             + peek().describe());
@@ -866,7 +901,7 @@ public final class TpStatementParser extends TpTokenCursor {
     while (!peek().is(Kind.EOL)) {
       options.add(motionOption());
     }
-    return new Instruction.Move(type, target, end, speed, term, options);
+    return new Instruction.Move(type, target, end, speed, term, options, viaOptions);
   }
 
   private Motion.Target motionTarget() {
@@ -1006,7 +1041,7 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         case "TOOL_OFFSET" -> {
           if (!peek().is(Kind.COMMA)) {
-            return rawOption(t, "Tool_Offset with TOOL_OFFSET CONDITION");
+            return new Motion.ToolOffset();
           }
           expect(Kind.COMMA, "',PR[i]' after Tool_Offset");
           expectWordNamed("PR", "PR[i] after Tool_Offset,");
@@ -1088,7 +1123,8 @@ public final class TpStatementParser extends TpTokenCursor {
       TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
       Instruction action = p.statement();
       if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse
-          || action instanceof Instruction.Call c && c.args().isEmpty()) && Double.isFinite(amount)) {
+          || action instanceof Instruction.Call c && c.args().isEmpty() && c.nameRegister().isEmpty())
+          && Double.isFinite(amount)) {
         return new Motion.TimedAction(when, amount, action, raw.text());
       }
     } catch (TpSyntaxError e) {
@@ -1293,6 +1329,16 @@ public final class TpStatementParser extends TpTokenCursor {
             String name = UNSUPPORTED.get(w);
             if (name != null) {
               throw unsupported(t, name + " in an expression", false);
+            }
+            if (MATH_FUNCTIONS.contains(w) && peek().is(Kind.LBRACKET) && !w.equals("ATAN2")) {
+              next();
+              if (++nesting > MAX_NESTING) {
+                throw error(t, "expression nested too deeply: at most " + MAX_NESTING + " levels of parentheses and signs");
+              }
+              Expr arg = expression();
+              nesting--;
+              expect(Kind.RBRACKET, "']' closing " + w + "[...]");
+              yield new Expr.MathFunc(Expr.MathFn.valueOf(w), arg);
             }
             if (MATH_FUNCTIONS.contains(w) && peek().is(Kind.LBRACKET)) {
               // ABS[R[1]], SQRT[...]: the arithmetic functions of a controller option

@@ -121,6 +121,7 @@ public final class BgLogic {
       case Instruction.SetSysVar v -> "a system variable assignment";
       case Instruction.SkipCondition c -> "SKIP CONDITION";
       case Instruction.OffsetCondition c -> "OFFSET CONDITION";
+      case Instruction.ToolOffsetCondition c -> "TOOL_OFFSET CONDITION";
       case Instruction.SetOverride o -> "OVERRIDE";
       case Instruction.AssignString a -> "an SR[] assignment";
       case Instruction.Monitor m -> "MONITOR";

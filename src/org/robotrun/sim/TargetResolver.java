@@ -115,7 +115,9 @@ final class TargetResolver {
         return new Move(new MoveRequest.Linear(X_WT, X_FT, speed, term, acc, tag), X_WT);
       }
       case C -> {
-        Target via = targetOf(r.via().orElse(wp), r, X_WU, X_FT, q);
+        Target via = r.viaOwnOffsets()
+            ? targetOf(r.via().orElse(wp), r, r.viaOffset(), r.viaToolOffset(), X_WU, X_FT, q)
+            : targetOf(r.via().orElse(wp), r, X_WU, X_FT, q);
         if (via instanceof Target.Bad bad) {
           return refuse(bad.code(), bad.message());
         }
@@ -150,6 +152,12 @@ final class TargetResolver {
   }
 
   private Target targetOf(MotionRequest.Waypoint wp, MotionRequest r, Transform X_WU, Transform X_FT, double[] q) {
+    return targetOf(wp, r, r.offset(), r.toolOffset(), X_WU, X_FT, q);
+  }
+
+  /** {@code wp} with the offsets {@code offset} / {@code toolOffset} (a via point may carry its own). */
+  private Target targetOf(MotionRequest.Waypoint wp, MotionRequest r, java.util.Optional<Position> offset,
+      java.util.Optional<Position> toolOffset, Transform X_WU, Transform X_FT, double[] q) {
     Position pos = wp.position();
     if (r.incremental()) {
       pos = switch (pos) {
@@ -157,8 +165,8 @@ final class TargetResolver {
         case Position.Cartesian c -> lpos(q, X_WU, X_FT).plus(c);
       };
     }
-    if (r.offset().isPresent()) {
-      Position off = r.offset().get();
+    if (offset.isPresent()) {
+      Position off = offset.get();
       if (pos instanceof Position.Joint j && off instanceof Position.Joint oj) {
         pos = j.plus(oj);
       } else if (off instanceof Position.Cartesian oc) {
@@ -168,8 +176,8 @@ final class TargetResolver {
         return new Target.Bad(MotionAlarms.BAD_OFFSET, "Offset: a joint PR cannot offset the Cartesian " + wp.name());
       }
     }
-    if (r.toolOffset().isPresent()) {
-      if (!(r.toolOffset().get() instanceof Position.Cartesian off)) {
+    if (toolOffset.isPresent()) {
+      if (!(toolOffset.get() instanceof Position.Cartesian off)) {
         return new Target.Bad(MotionAlarms.BAD_OFFSET, "Tool_Offset needs a Cartesian PR");
       }
       Position.Cartesian base = pos instanceof Position.Cartesian c ? c : cartesianOf((Position.Joint) pos, X_WU, X_FT);
