@@ -234,6 +234,11 @@ final class LsPositionParser extends TpTokenCursor {
             kept = "a SCARA position (CONFIG 'L' or 'R')";
             continue;
           }
+          if (!arm.isEmpty() && arm.matches("[FNUDTB]( [FNUDTB])*") && arm.split(" ").length != 3) {
+            // 'N, 0, 0, 0', 'N B, 0, 0, 0': an arm of four or five axes lists fewer configuration letters
+            kept = "a position of an arm with other than six axes (CONFIG '" + TpToken.clip(s.text()) + "')";
+            continue;
+          }
           config = config(s, where);
         }
         default -> {

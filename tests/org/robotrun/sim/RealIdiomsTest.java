@@ -168,4 +168,26 @@ class RealIdiomsTest {
     assertThat(c.activeAlarms().get(0).message()).containsIgnoringCase("Program Status").contains("macro table");
     assertThat(c.registers().number(3)).isZero();
   }
+
+  @Test
+  void toolOffsetAfterAConditionReachesWhatToolOffsetWithThatPrReaches() {
+    // TOOL_OFFSET CONDITION PR[i] then Tool_Offset: the same shift as Tool_Offset,PR[i], in the tool frame.
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("MAIN", true, "PR[1]=LPOS", "PR[2]=LPOS-LPOS", "PR[2,3]=(-30)", "TOOL_OFFSET CONDITION PR[2]",
+        "L PR[1] 200mm/sec FINE Tool_Offset", "PR[3]=LPOS", "L PR[1] 200mm/sec FINE", "PR[4]=LPOS",
+        "L PR[1] 200mm/sec FINE Tool_Offset,PR[2]", "PR[5]=LPOS"));
+    c.run("MAIN", 1, true);
+    steps(sim, 3000);
+    assertThat(c.activeAlarms()).isEmpty();
+    Position.Cartesian viaCondition = (Position.Cartesian) c.registers().position(3);
+    Position.Cartesian plain = (Position.Cartesian) c.registers().position(4);
+    Position.Cartesian viaPr = (Position.Cartesian) c.registers().position(5);
+    assertThat(viaCondition.xMm()).isCloseTo(viaPr.xMm(), within(0.01));
+    assertThat(viaCondition.yMm()).isCloseTo(viaPr.yMm(), within(0.01));
+    assertThat(viaCondition.zMm()).isCloseTo(viaPr.zMm(), within(0.01));
+    double moved = Math.sqrt(Math.pow(viaCondition.xMm() - plain.xMm(), 2) + Math.pow(viaCondition.yMm() - plain.yMm(), 2)
+        + Math.pow(viaCondition.zMm() - plain.zMm(), 2));
+    assertThat(moved).isCloseTo(30, within(0.01));
+  }
 }
