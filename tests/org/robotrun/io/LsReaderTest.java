@@ -269,7 +269,7 @@ class LsReaderTest {
         {"R[1]=$SCR.$ITP_SPEED", "not supported: system variable $SCR.$ITP_SPEED in an expression (the line alarms when it runs)"},
         {"LOCK PREG", "warning: not supported: LOCK PREG (the line is skipped when it runs)"},
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
-        {"TOOL_OFFSET CONDITION PR[2]", "not supported: TOOL_OFFSET CONDITION (the line alarms when it runs)"},
+        {"TOOL_OFFSET CONDITION PR[2],UTOOL[3]", "not supported: TOOL_OFFSET CONDITION with UTOOL (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
         {"L P[1] 100mm/sec FINE TB .50sec,CALL X(1)", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
@@ -287,14 +287,14 @@ class LsReaderTest {
         "   1:L P[1] WELD_SPEED FINE    ;",
         "   2:J PR[2] 40% FINE",
         "    :  Arc Start[1]    ;",
-        "   3:C P[2] Tool_Offset,PR[28]",
+        "   3:C P[2] VOFFSET,VR[2]",
         "    :  P[3] R[23]mm/sec CNT100    ;",
         "   4:L PR[1] 500mm/sec CNT50 VOFFSET,VR[1]    ;",
         ""));
     assertThat(messages(r)).containsExactly(
         "t.ls:4: not supported: arc welding speed WELD_SPEED (the line alarms when it runs)",
         "t.ls:5: warning: not supported: arc welding (as a motion option) (the motion runs without it)",
-        "t.ls:7: not supported: motion options on the via point of a C motion (the line alarms when it runs)");
+        "t.ls:7: not supported: motion option VOFFSET on the via point of a C motion (the line alarms when it runs)");
     // VOFFSET,VR[i] runs since issue 16 (line 9): no warning.
   }
 
