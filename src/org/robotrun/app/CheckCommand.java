@@ -75,6 +75,12 @@ public final class CheckCommand implements Callable<Integer> {
           + "the program goes to the lab's robot (docs/to-the-robot.md).")
   String controller;
 
+  @Option(names = "--io-sizes", split = ",", paramLabel = "KIND=N",
+      description = "The lab controller's configured I/O, e.g. DI=64,DO=64,GI=4: each direct I/O index beyond "
+          + "it is reported as an error (the controller alarms when the line runs). Kinds: DI, DO, RI, RO, GI, GO, "
+          + "AI, AO, SI, SO, F; kinds not named keep RobotRun's defaults.")
+  java.util.Map<String, Integer> ioSizes = java.util.Map.of();
+
   @Option(names = {"-q", "--quiet"}, description = "Print errors only, not warnings.")
   boolean quiet;
 
@@ -129,6 +135,17 @@ public final class CheckCommand implements Callable<Integer> {
       }
       model = m.get();
     }
+    org.robotrun.program.IoRanges labIo = null;
+    if (!ioSizes.isEmpty()) {
+      try {
+        java.util.Map<String, Integer> upper = new java.util.LinkedHashMap<>();
+        ioSizes.forEach((k, v) -> upper.put(k.strip().toUpperCase(java.util.Locale.ROOT), v));
+        labIo = org.robotrun.program.IoRanges.of(upper);
+      } catch (IllegalArgumentException e) {
+        err.println(TerminalText.safe("--io-sizes: " + e.getMessage()));
+        return Main.EXIT_BAD_INPUT;
+      }
+    }
     java.util.Map<String, String> table = java.util.Map.of();
     if (macros != null) {
       try {
@@ -147,8 +164,11 @@ public final class CheckCommand implements Callable<Integer> {
       List<Diagnostic> all = new ArrayList<>(withSimulatorWarnings(r));
       if (model != null) {
         all.addAll(ControllerCompat.check(r, model));
-        all.sort(Comparator.comparingInt(Diagnostic::line));
       }
+      if (labIo != null) {
+        all.addAll(ControllerCompat.ioBeyond(r, labIo));
+      }
+      all.sort(Comparator.comparingInt(Diagnostic::line));
       for (Diagnostic d : all) {
         errors |= d.isError();
         if (d.isError() || !quiet) {

@@ -90,6 +90,53 @@ public final class ControllerCompat {
     return out;
   }
 
+  /** I/O written with a direct index in a /MN line: {@code DO[12]}, {@code GI[3:COUNT]}. */
+  private static final java.util.regex.Pattern IO_ITEM =
+      java.util.regex.Pattern.compile("(?<![A-Za-z0-9_$])(DI|DO|RI|RO|GI|GO|AI|AO|SI|SO|F)\\[(\\d{1,9})(?=[\\]:])");
+
+  /**
+   * An error for each direct I/O index in the file's /MN section beyond the lab's configured
+   * sizes {@code lab} ({@code check --io-sizes}): the line alarms on that controller. Remarks,
+   * MESSAGE text and quoted strings are not looked at.
+   */
+  public static List<Diagnostic> ioBeyond(LsReadResult r, org.robotrun.program.IoRanges lab) {
+    List<Diagnostic> out = new ArrayList<>();
+    List<String> text;
+    try {
+      text = java.nio.file.Files.readAllLines(java.nio.file.Path.of(r.file()), java.nio.charset.StandardCharsets.ISO_8859_1);
+    } catch (java.io.IOException | RuntimeException e) {
+      return out;
+    }
+    boolean inMn = false;
+    for (int i = 0; i < text.size(); i++) {
+      String line = text.get(i).strip();
+      if (line.startsWith("/")) {
+        inMn = line.startsWith("/MN");
+        continue;
+      }
+      if (!inMn) {
+        continue;
+      }
+      String body = line.replaceFirst("^\\d*\\s*:", "").strip();
+      if (body.startsWith("!") || body.startsWith("//") || body.startsWith("--")) {
+        continue;
+      }
+      body = body.replaceAll("MESSAGE\\[.*\\]", "").replaceAll("'[^']*'", "");
+      java.util.regex.Matcher m = IO_ITEM.matcher(body);
+      while (m.find()) {
+        org.robotrun.program.IoKind kind = org.robotrun.program.IoKind.valueOf(m.group(1));
+        int n = Integer.parseInt(m.group(2));
+        int size = lab.size(kind);
+        if (n < 1 || n > size) {
+          out.add(Diagnostic.of(r.file(), i + 1, 1, Diagnostic.Severity.ERROR, Diagnostic.Kind.RANGE,
+              "lab I/O: " + kind + "[" + n + "] is outside the configured " + kind + "[1.." + size
+                  + "] (--io-sizes): the controller alarms when the line runs"));
+        }
+      }
+    }
+    return out;
+  }
+
   private static Diagnostic error(LsReadResult r, int line, String message) {
     return Diagnostic.of(r.file(), line, 1, Diagnostic.Severity.ERROR, Diagnostic.Kind.STYLE, message);
   }

@@ -118,6 +118,25 @@ class CheckCommandTest {
   }
 
   @Test
+  void ioSizesReportIoBeyondTheLabsConfiguredRange(@TempDir Path dir) throws IOException {
+    Path prog = dir.resolve("CELL.LS");
+    Files.writeString(prog, "/PROG  CELL\n/ATTR\n/MN\n   1:  DO[64:LAST]=ON ;\n   2:  WAIT DI[65]=ON ;\n"
+        + "   3:  ! DO[500] in a remark ;\n   4:  MESSAGE[GO[9] text] ;\n   5:  IF (GI[5:COUNT]>2 AND F[3]),DO[120]=(ON) ;\n"
+        + "/POS\n/END\n");
+    Run plain = run("check", prog.toString());
+    assertThat(plain.exit()).isZero();
+    Run lab = run("check", "--io-sizes", "DI=64,do=64,GI=4", prog.toString());
+    assertThat(lab.exit()).isEqualTo(1);
+    assertThat(lab.out()).contains(prog + ":5: lab I/O: DI[65] is outside the configured DI[1..64]")
+        .contains(prog + ":8: lab I/O: GI[5] is outside the configured GI[1..4]")
+        .contains(prog + ":8: lab I/O: DO[120] is outside the configured DO[1..64]")
+        .doesNotContain(":4: lab").doesNotContain(":6: lab").doesNotContain(":7: lab").doesNotContain("F[3]");
+    Run bad = run("check", "--io-sizes", "XX=3", prog.toString());
+    assertThat(bad.exit()).isEqualTo(2);
+    assertThat(bad.err()).contains("--io-sizes:");
+  }
+
+  @Test
   void payloadAndWjntWarnThatTheyHaveNoEffectInTheSimulator(@TempDir Path dir) throws IOException {
     Path w = dir.resolve("PAY.LS");
     Files.writeString(w, "/PROG  PAY\n/ATTR\n/MN\n   1:  PAYLOAD[2] ;\n   2:L P[1] 100mm/sec FINE Wjnt ;\n"
