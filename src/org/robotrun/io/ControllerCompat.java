@@ -192,10 +192,26 @@ public final class ControllerCompat {
         return Optional.of(w);
       }
     }
+    if (model != Model.R_30IB_PLUS && callViaString(in)) {
+      return Optional.of("CALL through a string register SR[]");
+    }
     if (model == Model.R_30IA && usesStrings(in)) {
       return Optional.of("a string register SR[] or string function");
     }
     return Optional.empty();
+  }
+
+  /** {@code CALL SR[i]}, alone or as the branch of an IF or SELECT line. */
+  private static boolean callViaString(Instruction in) {
+    Instruction.Branch b = switch (in) {
+      case Instruction.Call c -> c;
+      case Instruction.If f -> f.branch();
+      case Instruction.Select s -> s.branch();
+      case Instruction.SelectCase s -> s.branch();
+      case Instruction.SelectElse s -> s.branch();
+      default -> null;
+    };
+    return b instanceof Instruction.Call c && c.nameRegister().isPresent();
   }
 
   private static boolean usesStrings(Instruction in) {
