@@ -25,7 +25,7 @@ public enum AlarmCode {
       "The teach pendant is enabled (TP ON) but the DEADMAN switch was let go (or squeezed too hard). The arm stopped at once.",
       "Hold the DEADMAN in its middle position and press RESET. To run from the operator panel instead, "
           + "turn the pendant off (TP OFF) and the mode switch to AUTO."),
-  SRVO_050("SRVO-050", AlarmSeverity.SERVO, "Collision Detect alarm", Source.RECALLED,
+  SRVO_050("SRVO-050", AlarmSeverity.SERVO, "Collision Detect alarm", Source.VERIFIED,
       "The arm (or its tool or a held part) touched something in the cell. The arm stopped at once; the program paused.",
       "RESET, then jog the arm clear with SHIFT held (slowly: lower the override), and fix the position or path that "
           + "led into the obstacle before running again."),
@@ -55,7 +55,7 @@ public enum AlarmCode {
       "A value is outside what the instruction accepts: OVERRIDE outside 1..100, a frame number outside 0..10, CNT "
           + "outside 0..100, ACC outside 0..150, a speed not above 0; or arithmetic overflowed what a register holds.",
       "Change the value on the line to one inside the range the message shows."),
-  INTP_105("INTP-105", AlarmSeverity.ABORT, "Run request failed", Source.RECALLED,
+  INTP_105("INTP-105", AlarmSeverity.ABORT, "Run request failed", Source.VERIFIED,
       "A program could not be started as a task: RUN (or a UOP start, RSR or PNS) named a program that is already "
           + "running, that does not exist, or that needs motion group 1 while another task holds it (cause PROG-040).",
       "Read the cause in the message. Wait until the other task ends (or ABORT it), give a program that only sets "
@@ -77,7 +77,7 @@ public enum AlarmCode {
           + "called this way runs beside the motion and may not hold the arm.",
       "Give the called program no motion group (DEFAULT_GROUP = *,*,*,*,* on its DETAIL screen), or move "
           + "its motion lines back into the main program."),
-  PROG_040("PROG-040", AlarmSeverity.WARN, "Already locked by other task", Source.RECALLED,
+  PROG_040("PROG-040", AlarmSeverity.WARN, "Already locked by other task", Source.VERIFIED,
       "The cause under INTP-267 (RUN) and INTP-105 (a start from the PLC): motion group 1 is reserved by another "
           + "running program, so a second program that "
           + "moves the arm cannot start. Two tasks never move the same arm at once.",
