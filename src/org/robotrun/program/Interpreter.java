@@ -799,6 +799,21 @@ public final class Interpreter {
     callee.nargs = nargs;
   }
 
+  /** The CALL arguments {@code args}, evaluated in {@code caller}, as AR[] of this (just started) program. */
+  private void takeArgs(Interpreter caller, List<Expr> args) {
+    if (args.isEmpty()) {
+      return;
+    }
+    Frame f = cur;
+    f.ensureArgs(args.size());
+    for (int i = 0; i < args.size(); i++) {
+      f.argValue[i] = Compiler.expr(args.get(i)).eval(caller);
+      f.argKind[i] = caller.kind;
+      f.argString[i] = caller.kind == Nodes.STR ? caller.str : null;
+    }
+    f.nargs = args.size();
+  }
+
   /** AR[i] of the running program. */
   double readArg(int i) {
     Frame f = cur;
@@ -1043,6 +1058,7 @@ public final class Interpreter {
       case Instruction.Call c -> {
         Interpreter child = startAction(c.program(), t.when().label() + " ...,CALL " + c.program(),
             "called by " + t.when().label(), true);
+        child.takeArgs(this, c.args());
         // The program starts at the computed moment: its lines up to its first wait run now.
         Outcome o = child.tick(0);
         if (o instanceof Outcome.Alarmed al) {

@@ -154,7 +154,8 @@ public final class Motion {
   /**
    * {@code TB t sec,action}, {@code TA t sec,action} or {@code DB d mm,action} with an action
    * RobotRun runs: an output ({@code DO[1]=ON}, {@code RO[2]=PULSE,0.5sec}, {@code GO[1]=R[3]} ...)
-   * or {@code CALL PROG} (no arguments), whose program runs beside the motion.
+   * or {@code CALL PROG} / {@code CALL PROG(args)}, whose program runs beside the motion (its
+   * arguments read when the action fires).
    *
    * @param amount seconds (TB, TA) or millimetres (DB)
    * @param text the option as written ({@code "TB   .20sec,DO[1]=ON"}), so it is written back unchanged
@@ -165,8 +166,8 @@ public final class Motion {
       Objects.requireNonNull(action, "action");
       Objects.requireNonNull(text, "text");
       if (!(action instanceof Instruction.SetIo || action instanceof Instruction.Pulse
-          || action instanceof Instruction.Call c && c.args().isEmpty())) {
-        throw new IllegalArgumentException("a TB/TA/DB action RobotRun runs is an output or a CALL without arguments: "
+          || action instanceof Instruction.Call c && c.nameRegister().isEmpty())) {
+        throw new IllegalArgumentException("a TB/TA/DB action RobotRun runs is an output or a CALL of a named program: "
             + action);
       }
       if (!(amount >= 0) || Double.isInfinite(amount)) {

@@ -1123,7 +1123,7 @@ public final class TpStatementParser extends TpTokenCursor {
       TpStatementParser p = new TpStatementParser(new ArrayList<>(rest.subList(k + 3, rest.size())));
       Instruction action = p.statement();
       if (p.peek().is(Kind.EOL) && (action instanceof Instruction.SetIo || action instanceof Instruction.Pulse
-          || action instanceof Instruction.Call c && c.args().isEmpty() && c.nameRegister().isEmpty())
+          || action instanceof Instruction.Call c && c.nameRegister().isEmpty())
           && Double.isFinite(amount)) {
         return new Motion.TimedAction(when, amount, action, raw.text());
       }

@@ -231,10 +231,12 @@ class LsReaderTest {
         ""));
     assertThat(((Motion.TimedAction) ((Instruction.Move) r.program().line(5)).options().get(0)).when())
         .isEqualTo(Motion.When.DISTANCE_BEFORE);
-    // A CALL without arguments runs (its program beside the motion); with arguments it is kept as written.
+    // A CALL runs (its program beside the motion), with its arguments too (issue 25).
     assertThat(((Instruction.Move) r.program().line(6)).options().get(0)).isEqualTo(new Motion.TimedAction(
         Motion.When.DISTANCE_BEFORE, 10, new Instruction.Call("X", java.util.List.of()), "DB   10.0mm,CALL X"));
-    assertThat(((Instruction.Move) r.program().line(7)).options().get(0)).isInstanceOf(Motion.RawOption.class);
+    assertThat(((Instruction.Move) r.program().line(7)).options().get(0)).isEqualTo(new Motion.TimedAction(
+        Motion.When.DISTANCE_BEFORE, 10, new Instruction.Call("X", java.util.List.of(new Expr.IntConst(1))),
+        "DB   10.0mm,CALL X(1)"));
     Instruction.Move m1 = (Instruction.Move) r.program().line(1);
     assertThat(m1.options()).containsExactly(new Motion.TimedAction(Motion.When.TIME_BEFORE, 0.2,
         new Instruction.SetIo(org.robotrun.program.IoKind.DO, org.robotrun.program.Item.of(3, "VAC"), new Expr.OnOff(true)),
@@ -244,9 +246,8 @@ class LsReaderTest {
     assertThat(ta.action()).isInstanceOf(Instruction.Pulse.class);
     assertThat(((Instruction.Move) r.program().line(3)).options().get(0)).isInstanceOf(Motion.TimedAction.class);
     assertThat(((Instruction.Move) r.program().line(4)).options().get(0)).isInstanceOf(Motion.TimedAction.class);
-    // only the CALL with arguments is reported (it is not run); the line comes back as written
-    assertThat(messages(r)).filteredOn(m -> m.contains("not supported")).containsExactly(
-        "t.ls:10: warning: not supported: DISTANCE BEFORE (DB) (the motion runs without it)");
+    // every one of them runs: nothing is reported; the line comes back as written
+    assertThat(messages(r)).filteredOn(m -> m.contains("not supported")).isEmpty();
     assertThat(LsWriter.write(r.program().withoutSource())).contains("   1:L P[1] 100mm/sec CNT100 TB    .20sec,DO[3:VAC]=ON    ;");
   }
 
@@ -271,7 +272,7 @@ class LsReaderTest {
         {"SO[1]=ON", "not supported: assigning SO[] (the controller sets it) (the line alarms when it runs)"},
         {"TOOL_OFFSET CONDITION PR[2],UTOOL[3]", "not supported: TOOL_OFFSET CONDITION with UTOOL (the line alarms when it runs)"},
         {"L P[1] max_speed FINE", "not supported: max_speed (the line alarms when it runs)"},
-        {"L P[1] 100mm/sec FINE TB .50sec,CALL X(1)", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
+        {"L P[1] 100mm/sec FINE TB .50sec,POINT_LOGIC", "warning: not supported: TIME BEFORE/AFTER (TB/TA) (the motion runs without it)"},
         {"R[1]=1 ; ! trailing remark", "text after ';': a line holds one statement (put a remark on its own '!' line)"},
         {"AR[1]=5", "AR[] holds the CALL arguments: a program can read it but not set it"},
         {"/L P[1] 10% FINE", "expected a statement, found '/' (a commented-out line starts with '//')"},

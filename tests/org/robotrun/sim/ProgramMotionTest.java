@@ -332,6 +332,24 @@ class ProgramMotionTest {
   }
 
   @Test
+  void aTimeBeforeCallPassesItsArgumentsReadWhenTheActionFires() {
+    // TB ...,CALL PROG(args): the arguments land in the program's AR[] as with a CALL (read when it fires).
+    Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(groupless("SIGNAL", "DO[AR[1]]=ON", "R[7]=AR[2]"));
+    c.saveProgram(program("J P[1:HOME] 100% FINE", "R[5]=2.5", "L P[2:A] 500mm/sec FINE TB .50sec,CALL SIGNAL(4,R[5])",
+        "R[1]=1"));
+    c.run("FORMS", 1, true);
+    for (int i = 0; i < 20_000 && c.busy(); i++) {
+      sim.step();
+    }
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.registers().bit(IoKind.DO, 4)).isTrue();
+    assertThat(c.registers().number(7)).isEqualTo(2.5);
+    assertThat(c.registers().number(1)).isEqualTo(1);
+  }
+
+  @Test
   void aProgramCalledByTimeBeforeMayNotMove() {
     Simulation sim = DefaultCell.simulation(ControllerTest.MODEL);
     Controller c = sim.controllers().get(0);
