@@ -360,6 +360,11 @@ public final class LsWriter {
       case Motion.Skip x -> {
         sb.append("Skip,");
         label(x.label(), sb);
+        x.store().ifPresent(r -> {
+          sb.append(',');
+          item("PR", r, sb);
+          sb.append(x.storeJoint() ? "=JPOS" : "=LPOS");
+        });
       }
       case Motion.Wjnt x -> sb.append("Wjnt");
       case Motion.Inc x -> sb.append("INC");

@@ -343,7 +343,7 @@ public final class TpLine {
       case Motion.OffsetPr p -> t -> withOption(m, at, new Motion.OffsetPr(ExprText.parseItem("PR", t)));
       case Motion.ToolOffsetPr p -> t -> withOption(m, at, new Motion.ToolOffsetPr(ExprText.parseItem("PR", t)));
       case Motion.Acc a -> t -> withOption(m, at, new Motion.Acc(intIn(t, 0, 150, "ACC")));
-      case Motion.Skip s -> t -> withOption(m, at, new Motion.Skip(parseLabel(t)));
+      case Motion.Skip s -> t -> withOption(m, at, new Motion.Skip(parseLabel(t), s.store(), s.storeJoint()));
       case Motion.Offset x -> null;
       case Motion.ToolOffset x -> null;
       case Motion.Wjnt x -> null;
@@ -374,7 +374,7 @@ public final class TpLine {
       case Motion.OffsetPr p -> "Offset," + ExprText.item("PR", p.register());
       case Motion.ToolOffsetPr p -> "Tool_Offset," + ExprText.item("PR", p.register());
       case Motion.Acc a -> "ACC" + a.percent();
-      case Motion.Skip s -> "Skip," + ExprText.label(s.label());
+      case Motion.Skip s -> "Skip," + ExprText.label(s.label()) + s.storeText(r -> ExprText.item("PR", r));
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";
       case Motion.TimedAction x -> x.text();

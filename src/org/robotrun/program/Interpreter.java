@@ -110,6 +110,8 @@ public final class Interpreter {
   private boolean motionHeld;
   private boolean motionBackward;
   private Ops.LabelTarget motionSkip;
+  /** The high-speed skip of the motion being waited for (its PR takes the skip position), or null. */
+  private Motion.Skip motionSkipStore;
   /** TIME BEFORE actions of the motion in flight, not fired yet. */
   private final java.util.List<Motion.TimedAction> motionBefore = new java.util.ArrayList<>(2);
   /** TIME AFTER actions of the motion in flight, started when it is done. */
@@ -385,6 +387,7 @@ public final class Interpreter {
       waitLine = kept;
       if (waitKind == W_MOTION) {
         motionSkip = ((Ops.MoveOp) now.ops[kept]).skip;
+        motionSkipStore = ((Ops.MoveOp) now.ops[kept]).skipStore;
       } else if (waitKind == W_CONDITION) {
         waitOp = (Ops.WaitConditionOp) now.ops[kept];
       }
@@ -398,6 +401,7 @@ public final class Interpreter {
     }
     // running: a motion or a timed WAIT of a changed line finishes; the program goes on after it
     motionSkip = null;
+    motionSkipStore = null;
     waitLine = Math.max(0, Math.min(map.position(waitLine), now.ops.length - 1));
     return map.position(oldPc);
   }
@@ -578,7 +582,13 @@ public final class Interpreter {
               }
               if (motionSkip != null && skipCondition != null && !motionHeld && skipCondition.bool(this, "SKIP CONDITION")) {
                 // The skip condition turned true: the arm stops and the program goes on with the
-                // next line, without the jump (FANUC Skip,LBL[] semantics).
+                // next line, without the jump (FANUC Skip,LBL[] semantics). A high-speed skip
+                // stores where the arm was in its PR.
+                if (motionSkipStore != null) {
+                  int i = Nodes.check("PR", new Nodes.Idx(motionSkipStore.store().get().index()).resolve(this),
+                      Registers.PR_COUNT);
+                  regs.pr[i] = motionSkipStore.storeJoint() ? port.currentJpos() : port.currentLpos();
+                }
                 port.cancel(motionHandle);
                 waitKind = W_NONE;
                 motionSkip = null;
@@ -1096,6 +1106,7 @@ public final class Interpreter {
         motionHeld = false;
         motionBackward = backward;
         motionSkip = backward ? null : op.skip;
+        motionSkipStore = backward ? null : op.skipStore;
         motionBefore.clear();
         motionAfter.clear();
         if (!backward) {

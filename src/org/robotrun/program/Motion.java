@@ -124,9 +124,31 @@ public final class Motion {
    * {@code Skip,LBL[i]}: the motion stops when the SKIP CONDITION turns true (the program goes on
    * with the next line); it jumps to the label when the motion ends without the condition.
    */
-  public record Skip(LabelRef label) implements Option {
+  public record Skip(LabelRef label, java.util.Optional<Item> store, boolean storeJoint) implements Option {
     public Skip {
       Objects.requireNonNull(label, "label");
+      Objects.requireNonNull(store, "store");
+      if (store.isEmpty() && storeJoint) {
+        throw new IllegalArgumentException("storeJoint without a PR to store into");
+      }
+    }
+
+    /** {@code Skip,LBL[i]}. */
+    public Skip(LabelRef label) {
+      this(label, java.util.Optional.empty(), false);
+    }
+
+    /**
+     * {@code Skip,LBL[i],PR[j]=LPOS} (or {@code =JPOS}): high-speed skip, which also stores where
+     * the arm was when the condition turned true in PR[j].
+     */
+    public static Skip storing(LabelRef label, Item register, boolean joint) {
+      return new Skip(label, java.util.Optional.of(register), joint);
+    }
+
+    /** How the option is written after {@code Skip,LBL[i]}: {@code ""} or {@code ",PR[j]=LPOS"}. */
+    public String storeText(java.util.function.Function<Item, String> pr) {
+      return store.map(r -> "," + pr.apply(r) + "=" + (storeJoint ? "JPOS" : "LPOS")).orElse("");
     }
   }
 

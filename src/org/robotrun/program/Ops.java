@@ -884,10 +884,19 @@ final class Ops {
     final Instruction.Move move;
     /** Skip,LBL[] target or null. */
     final LabelTarget skip;
+    /** High-speed skip: the option, whose PR takes the position where the skip condition turned true; or null. */
+    final Motion.Skip skipStore;
 
     MoveOp(Instruction.Move move, LabelTarget skip) {
       this.move = move;
       this.skip = skip;
+      Motion.Skip store = null;
+      for (Motion.Option o : move.options()) {
+        if (o instanceof Motion.Skip s && s.store().isPresent()) {
+          store = s;
+        }
+      }
+      this.skipStore = store;
     }
 
     @Override

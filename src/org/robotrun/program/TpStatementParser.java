@@ -906,8 +906,11 @@ public final class TpStatementParser extends TpTokenCursor {
 
   private Motion.Target motionTarget() {
     TpToken w = next();
-    if (peek().is(Kind.LBRACKET) && peek(1).is(Kind.WORD) && peek(1).text().regionMatches(true, 0, "GP", 0, 2)) {
-      // J PR[GP1:1,7]: a target of a multi-group robot with its extended axes
+    if (peek().is(Kind.LBRACKET) && peek(1).is(Kind.WORD) && peek(1).text().regionMatches(true, 0, "GP", 0, 2)
+        && !(peek(1).isWord("GP1") && peek(2).is(Kind.COLON)
+            && (peek(3).is(Kind.NUMBER) && !peek(4).is(Kind.COMMA) || peek(3).isWord("R") && peek(7).is(Kind.RBRACKET)))) {
+      // J PR[GP2:1], J PR[GP1:1,7]: a target of another motion group, or with extended axes
+      // (J PR[GP1:5] names group 1, the arm RobotRun moves, and runs)
       throw unsupported(peek(1), "a group in " + w.text().toUpperCase(Locale.ROOT) + "[GPn:...] (multi-group)", false);
     }
     if (w.isWord("P")) {
@@ -1051,9 +1054,20 @@ public final class TpStatementParser extends TpTokenCursor {
           expect(Kind.COMMA, "',LBL[n]' after Skip");
           expectWordNamed("LBL", "LBL[n] after Skip,");
           LabelRef l = labelRef();
+          if (peek().is(Kind.COMMA) && peek(1).isWord("PR") && peek(2).is(Kind.LBRACKET)) {
+            // Skip,LBL[1],PR[2]=LPOS: high-speed skip, storing where the condition turned true
+            next();
+            next();
+            Item pr = item("PR");
+            expect(Kind.EQ, "'=' then LPOS or JPOS after Skip,LBL[n],PR[i]");
+            TpToken what = expectWord("LPOS or JPOS");
+            if (!what.isWord("LPOS") && !what.isWord("JPOS")) {
+              throw error(what, "expected LPOS or JPOS after Skip,LBL[n],PR[i]=, found " + what.describe());
+            }
+            return Motion.Skip.storing(l, pr, what.isWord("JPOS"));
+          }
           if (peek().is(Kind.COMMA)) {
-            // Skip,LBL[1],PR[2]=LPOS: high-speed skip storing the position
-            return rawOption(t, "high-speed skip Skip,LBL[],PR[]=LPOS");
+            return rawOption(t, "Skip,LBL[] with " + TpToken.clip(peek(1).text()));
           }
           return new Motion.Skip(l);
         }

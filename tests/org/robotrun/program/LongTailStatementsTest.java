@@ -134,4 +134,48 @@ class LongTailStatementsTest {
     Rig string = new Rig(program("MAIN", false, "SR[1]='A'", "R[2]=ABS[SR[1]]"));
     assertThat(string.alarm(string.run()).code()).isEqualTo("INTP-205");
   }
+
+  @Test
+  void highSpeedSkipStoresWhereTheArmWasWhenTheConditionTurnedTrue() {
+    // Skip,LBL[n],PR[i]=LPOS: as Skip,LBL[n], and PR[i] takes the position at the skip.
+    Program p = program("MAIN", true, "SKIP CONDITION DI[1]=ON", "L P[1] 100mm/sec FINE Skip,LBL[9],PR[3:HIT]=LPOS",
+        "R[1]=1", "L P[2] 100mm/sec FINE Skip,LBL[9],PR[4]=JPOS", "R[2]=1", "END", "LBL[9]", "R[3]=9");
+    Rig rig = new Rig(InterpreterSettings.defaults(), 1.0, p);
+    rig.interp.forward();
+    for (int i = 0; i < 25; i++) {
+      rig.tick(Rig.TICK_SEC);
+    }
+    rig.regs.setBit(IoKind.DI, 1, true);
+    for (int i = 0; i < 5; i++) {
+      rig.tick(Rig.TICK_SEC);
+    }
+    assertThat(rig.regs.number(1)).isEqualTo(1);
+    assertThat(rig.regs.position(3)).isInstanceOf(Position.Cartesian.class);
+    // the second motion's condition holds from its start: it stops at once and stores joints
+    assertThat(rig.runUntilStopped(Rig.TICK_SEC, 2000)).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.regs.position(4)).isInstanceOf(Position.Joint.class);
+    assertThat(rig.regs.number(2)).isEqualTo(1);
+    assertThat(rig.regs.number(3)).isZero();
+    assertThat(rig.port.cancelled()).hasSize(2);
+  }
+
+  @Test
+  void highSpeedSkipWithoutTheConditionJumpsAndLeavesThePrAlone() {
+    Program p = program("MAIN", true, "SKIP CONDITION DI[1]=ON", "L P[1] 100mm/sec FINE Skip,LBL[9],PR[3]=LPOS",
+        "R[1]=1", "END", "LBL[9]", "R[3]=9");
+    Rig rig = new Rig(p);
+    Position before = rig.regs.position(3);
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.regs.number(3)).isEqualTo(9);
+    assertThat(rig.regs.number(1)).isZero();
+    assertThat(rig.regs.position(3)).isEqualTo(before);
+  }
+
+  @Test
+  void aMotionToAPrOfGroupOneReadsAsThePr() {
+    Program p = program("MAIN", true, "J PR[GP1:5:PICK] 100% FINE", "L PR[GP1:R[2]] 100mm/sec FINE");
+    Instruction.Move m = (Instruction.Move) p.line(1);
+    assertThat(m.target()).isEqualTo(new Motion.Register(Item.of(5, "PICK")));
+    assertThat(((Instruction.Move) p.line(2)).target()).isEqualTo(new Motion.Register(new Item(Index.viaRegister(2), "")));
+  }
 }
