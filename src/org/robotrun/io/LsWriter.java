@@ -357,6 +357,10 @@ public final class LsWriter {
         item("PR", x.register(), sb);
       }
       case Motion.Acc x -> sb.append("ACC").append(x.percent());
+      case Motion.AccRegister x -> {
+        sb.append("ACC ");
+        item("R", x.register(), sb);
+      }
       case Motion.Skip x -> {
         sb.append("Skip,");
         label(x.label(), sb);

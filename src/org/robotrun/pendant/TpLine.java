@@ -343,6 +343,7 @@ public final class TpLine {
       case Motion.OffsetPr p -> t -> withOption(m, at, new Motion.OffsetPr(ExprText.parseItem("PR", t)));
       case Motion.ToolOffsetPr p -> t -> withOption(m, at, new Motion.ToolOffsetPr(ExprText.parseItem("PR", t)));
       case Motion.Acc a -> t -> withOption(m, at, new Motion.Acc(intIn(t, 0, 150, "ACC")));
+      case Motion.AccRegister a -> t -> withOption(m, at, new Motion.AccRegister(ExprText.parseItem("R", t)));
       case Motion.Skip s -> t -> withOption(m, at, new Motion.Skip(parseLabel(t), s.store(), s.storeJoint()));
       case Motion.Offset x -> null;
       case Motion.ToolOffset x -> null;
@@ -355,6 +356,7 @@ public final class TpLine {
       case Motion.OffsetPr p -> ExprText.index(p.register().index());
       case Motion.ToolOffsetPr p -> ExprText.index(p.register().index());
       case Motion.Acc a -> Integer.toString(a.percent());
+      case Motion.AccRegister a -> ExprText.index(a.register().index());
       case Motion.Skip s -> ExprText.index(s.label().index());
       case Motion.Offset x -> "";
       case Motion.ToolOffset x -> "";
@@ -374,6 +376,7 @@ public final class TpLine {
       case Motion.OffsetPr p -> "Offset," + ExprText.item("PR", p.register());
       case Motion.ToolOffsetPr p -> "Tool_Offset," + ExprText.item("PR", p.register());
       case Motion.Acc a -> "ACC" + a.percent();
+      case Motion.AccRegister a -> "ACC " + ExprText.item("R", a.register());
       case Motion.Skip s -> "Skip," + ExprText.label(s.label()) + s.storeText(r -> ExprText.item("PR", r));
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";

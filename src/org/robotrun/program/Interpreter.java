@@ -1184,6 +1184,13 @@ public final class Interpreter {
           }
           acc = x.percent();
         }
+        case Motion.AccRegister x -> {
+          double v = registerNumber(x.register(), "ACC");
+          if (!Nodes.isWhole(v) || v < 0 || v > 150) {
+            throw new AlarmSignal(AlarmKind.BAD_VALUE, "ACC R[...]=" + v + ": expected a whole number 0..150");
+          }
+          acc = (int) v;
+        }
         case Motion.Skip x -> {
           // Handled after the motion (see MoveOp.skip).
         }

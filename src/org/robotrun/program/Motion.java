@@ -120,6 +120,13 @@ public final class Motion {
   /** {@code ACCn}: acceleration override in percent. */
   public record Acc(int percent) implements Option {}
 
+  /** {@code ACC R[i]}: acceleration override in percent, read from R[i] when the motion starts. */
+  public record AccRegister(Item register) implements Option {
+    public AccRegister {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
   /**
    * {@code Skip,LBL[i]}: the motion stops when the SKIP CONDITION turns true (the program goes on
    * with the next line); it jumps to the label when the motion ends without the condition.

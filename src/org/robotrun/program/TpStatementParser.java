@@ -1078,6 +1078,11 @@ public final class TpStatementParser extends TpTokenCursor {
           return new Motion.Inc();
         }
         default -> {
+          if (w.equals("ACC") && peek().isWord("R") && peek(1).is(Kind.LBRACKET)) {
+            // ACC R[5]: the acceleration override a register holds
+            next();
+            return new Motion.AccRegister(item("R"));
+          }
           if (w.startsWith("ACC") && allDigits(w, 3)) {
             int acc = parseIntOrFail(t, w.substring(3));
             if (acc > 150 && acc <= 500) {

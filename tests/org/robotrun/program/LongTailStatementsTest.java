@@ -178,4 +178,15 @@ class LongTailStatementsTest {
     assertThat(m.target()).isEqualTo(new Motion.Register(Item.of(5, "PICK")));
     assertThat(((Instruction.Move) p.line(2)).target()).isEqualTo(new Motion.Register(new Item(Index.viaRegister(2), "")));
   }
+
+  @Test
+  void accFromARegisterIsReadWhenTheMotionStarts() {
+    Rig rig = new Rig(program("MAIN", true, "R[5]=40", "L P[1] 100mm/sec FINE ACC R[5]", "R[5]=151",
+        "L P[2] 100mm/sec FINE ACC R[5]"));
+    Alarm a = rig.alarm(rig.run());
+    assertThat(rig.port.requests()).hasSize(1);
+    assertThat(rig.port.requests().get(0).accPercent()).isEqualTo(40);
+    assertThat(a.code()).isEqualTo("INTP-304");
+    assertThat(a.line()).isEqualTo(4);
+  }
 }
