@@ -104,17 +104,39 @@ public final class Workbench implements SimulatorWindow.Panels {
     pendantNow = java.util.Objects.requireNonNull(source, "source");
   }
 
-  /** Adds menus drawn in the main menu bar before View and Help (the File menu goes first). */
-  /** A section of the left column drawn by another part of the window (the operator panel), open at first. */
+  /** A section of the left column drawn by another part of the window (vision), after the robot's; open at first. */
   public void addSection(String title, Runnable drawContents) {
-    sections.add(new Section(title, drawContents));
+    sections.add(new Section(title, null, false, drawContents));
   }
 
-  private record Section(String title, Runnable drawContents) {}
+  /** A section drawn before the robot's (the robot selector: which robot the rest is about). */
+  public void addLeadSection(String title, Runnable drawContents) {
+    sections.add(new Section(title, null, true, drawContents));
+  }
+
+  /** A controller panel, shown after the robot's section when {@link PanelRules} (or the View menu) says so. */
+  public void addPanel(PanelRules.Panel panel, Runnable drawContents) {
+    sections.add(new Section(panel.title(), panel, false, drawContents));
+  }
+
+  /** What the cell uses now, for {@link PanelRules} (asked once a frame). */
+  public void setCellUse(Supplier<PanelRules.CellUse> use) {
+    cellUse = java.util.Objects.requireNonNull(use, "use");
+  }
+
+  private record Section(String title, PanelRules.Panel panel, boolean lead, Runnable drawContents) {}
 
   private final List<Section> sections = new ArrayList<>();
   private final java.util.Map<String, Boolean> sectionOpen = new java.util.HashMap<>();
+  private Supplier<PanelRules.CellUse> cellUse = () -> PanelRules.CellUse.FREE_PLAY;
+  private PanelRules.CellUse use = PanelRules.CellUse.FREE_PLAY;
 
+  /** Whether the left column shows {@code s} this frame. */
+  private boolean shown(Section s) {
+    return s.panel() == null || PanelRules.shown(s.panel(), use, state.panels);
+  }
+
+  /** Adds menus drawn in the main menu bar before View and Help (the File menu goes first). */
   public void addMenus(MenuContributor contributor) {
     menus.add(contributor);
   }
@@ -256,6 +278,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     framebufferW = framebufferWidth;
     framebufferH = framebufferHeight;
     float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    use = cellUse.get();
     float menuH = drawMenuBar();
     layout = WindowLayout.compute(dw, dh, menuH, scale, PendantPanel.naturalWidth(), state);
     // the first-start card is docked along the bottom of the 3D view: the scene is framed above it
@@ -364,6 +387,26 @@ public final class Workbench implements SimulatorWindow.Panels {
           state.editorOpen = !state.editorOpen;
           showSidebar();
         }
+        // the controller's panels: shown when the cell uses them, or as the student chose here
+        boolean first = true;
+        for (Section sec : sections) {
+          if (sec.panel() == null) {
+            continue;
+          }
+          if (first) {
+            ImGui.separator();
+            first = false;
+          }
+          boolean on = shown(sec);
+          if (ImGui.menuItem(sec.title(), "", on)) {
+            state.panels.put(sec.panel().key(), !on);
+            if (!on) {
+              sectionOpen.put(sec.title(), true);
+              showSidebar();
+            }
+            onLayoutChange.run();
+          }
+        }
         ImGui.separator();
         if (ImGui.menuItem("Reset view", "Home")) {
           camera.reset();
@@ -403,17 +446,13 @@ public final class Workbench implements SimulatorWindow.Panels {
       if (state.taskOpen) {
         Txt.wrapped(task.isBlank() ? "No task: this cell is free play. Help > First steps shows how to start." : task);
       }
-      for (Section extra : sections) {
-        boolean open = section(extra.title(), sectionOpen.getOrDefault(extra.title(), true));
-        sectionOpen.put(extra.title(), open);
-        if (open) {
-          extra.drawContents().run();
-        }
-      }
+      drawSections(true);
+      // the robot's position comes before the controller's panels
       state.robotOpen = section("Robot", state.robotOpen);
       if (state.robotOpen) {
         RobotStatusPanel.drawContents(robot.modelName(), robot.jointNames(), robot.pendantDeg(), robot.flangeInWorld());
       }
+      drawSections(false);
       state.cellOpen = section("Cell", state.cellOpen);
       if (state.cellOpen) {
         cellPanel.drawContents();
@@ -428,6 +467,19 @@ public final class Workbench implements SimulatorWindow.Panels {
       }
     }
     ImGui.end();
+  }
+
+  private void drawSections(boolean lead) {
+    for (Section extra : sections) {
+      if (extra.lead() != lead || !shown(extra)) {
+        continue;
+      }
+      boolean open = section(extra.title(), sectionOpen.getOrDefault(extra.title(), true));
+      sectionOpen.put(extra.title(), open);
+      if (open) {
+        extra.drawContents().run();
+      }
+    }
   }
 
   private static boolean section(String title, boolean open) {
