@@ -630,7 +630,7 @@ public final class GuiCommand implements Callable<Integer> {
           // the one snapshot of this frame: the 3D view and the camera views draw it
           org.robotrun.sim.SceneSnapshot scene = s.sim().snapshot().scene();
           s.frameScene().set(scene);
-          return scene;
+          return s.bench().marked(scene);
         },
         s.bench(),
         () -> {

@@ -148,8 +148,15 @@ public final class PendantPanel {
     ImGui.beginChild("lcd", 0, lineH * Lcd.HEIGHT + 10, true, ImGuiWindowFlags.NoScrollbar);
     lcdRect = new SimulatorWindow.Fill(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
         ImGui.getWindowHeight(), LCD_BG_R, LCD_BG_G, LCD_BG_B);
+    String driven = pendant().robotLabel();  // a cell of several robots: the driven one's name
     for (int i = 0; i < Lcd.HEIGHT; i++) {
       String row = lcd.row(i);
+      if (i == 0 && !driven.isEmpty() && row.startsWith(driven)) {
+        // the name on the status line in the colour that marks the robot in the 3D view
+        float x = ImGui.getCursorScreenPosX(), y = ImGui.getCursorScreenPosY();
+        ImGui.getWindowDrawList().addRectFilled(x - 2, y, x + ImGui.calcTextSize(driven).x + 2, y + ImGui.getTextLineHeight(),
+            ImGui.colorConvertFloat4ToU32(DrivenRobotMark.R, DrivenRobotMark.G, DrivenRobotMark.B, 1f), 2f);
+      }
       if (lcd.isAlarmRow(i) && !row.isBlank()) {
         // the alarm line (a long alarm wraps onto the rows below)
         ImGui.pushStyleColor(ImGuiCol.Text, 0.75f, 0.05f, 0.05f, 1f);

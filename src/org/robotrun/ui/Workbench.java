@@ -290,6 +290,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
     frameScene(dw, dh);
     drawSidebar(layout.sidebar());
+    drawDrivenRobotLabel();
     pendantPanel.draw(layout.pendant());
     float w = pendantPanel.takeUserWidth();
     if (w > 0) {
@@ -328,6 +329,91 @@ public final class Workbench implements SimulatorWindow.Panels {
       out.add(pendantPanel.lcdFill());
     }
     return out;
+  }
+
+  private SceneSnapshot lastScene;
+
+  /**
+   * The frame's scene as the 3D view draws it: in a cell of several robots, the robot the pendant
+   * drives tinted ({@link DrivenRobotMark}); its name label is drawn with the panels.
+   */
+  public SceneSnapshot marked(SceneSnapshot frameScene) {
+    String driven = pendantNow.get().robotLabel();  // set only in a cell of several robots
+    lastScene = frameScene;
+    return DrivenRobotMark.tinted(frameScene, driven, driven.isEmpty() ? 1 : 2);
+  }
+
+  /** The driven robot's name beside its base in the 3D view, off the work (a cell of several robots only). */
+  private void drawDrivenRobotLabel() {
+    String driven = pendantNow.get().robotLabel();
+    WindowLayout.Rect v = layout.view();
+    if (driven.isEmpty() || lastScene == null || !v.visible() || framebufferW <= 0 || framebufferH <= 0) {
+      return;
+    }
+    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    Matrix4f vp = camera.viewProjection(framebufferW, framebufferH);
+    String prefix = driven + "/";
+    float[] base = null;
+    List<LabelLayout.Box> work = new ArrayList<>();
+    List<Vector3f> pts = new ArrayList<>();
+    for (DrawItem it : lastScene.items()) {
+      if (it.name().startsWith(prefix)) {
+        if (base == null) {
+          // the first item of a robot is its base link
+          base = project(vp, (float) it.X_WS().x(), (float) it.X_WS().y(), (float) it.X_WS().z(), dw, dh);
+        }
+        continue;
+      }
+      pts.clear();
+      SceneBounds.addCorners(it, pts);
+      float x0 = Float.MAX_VALUE, y0 = Float.MAX_VALUE, x1 = -Float.MAX_VALUE, y1 = -Float.MAX_VALUE;
+      boolean behind = false;
+      for (Vector3f p : pts) {
+        float[] sp = project(vp, p.x, p.y, p.z, dw, dh);
+        if (sp == null) {
+          behind = true;
+          break;
+        }
+        x0 = Math.min(x0, sp[0]);
+        y0 = Math.min(y0, sp[1]);
+        x1 = Math.max(x1, sp[0]);
+        y1 = Math.max(y1, sp[1]);
+      }
+      if (!behind && !pts.isEmpty()) {
+        work.add(new LabelLayout.Box(x0 - v.x(), y0 - v.y(), x1 - x0, y1 - y0));
+      }
+    }
+    if (base == null) {
+      return;
+    }
+    float pad = 3;
+    float tw = ImGui.calcTextSize(driven).x + 2 * pad, th = ImGui.getTextLineHeight() + 2 * pad;
+    var place = DrivenRobotMark.labelPlace(base[0] - v.x(), base[1] - v.y(), tw, th, v.w(), v.h(), work);
+    if (place.isEmpty()) {
+      return;
+    }
+    LabelLayout.Box b = place.get().box();
+    float bx = v.x() + (float) b.x(), by = v.y() + (float) b.y();
+    int amber = ImGui.colorConvertFloat4ToU32(DrivenRobotMark.R, DrivenRobotMark.G, DrivenRobotMark.B, 1f);
+    imgui.ImDrawList dl = ImGui.getBackgroundDrawList();
+    dl.pushClipRect(v.x(), v.y(), v.right(), v.bottom());
+    if (place.get().leader()) {
+      double[] end = b.nearestPoint(base[0] - v.x(), base[1] - v.y());
+      dl.addLine(base[0], base[1], v.x() + (float) end[0], v.y() + (float) end[1], amber, 2f);
+    }
+    dl.addCircleFilled(base[0], base[1], 3, amber);
+    dl.addRectFilled(bx, by, bx + tw, by + th, amber, 3f);
+    dl.addText(bx + pad, by + pad, ImGui.colorConvertFloat4ToU32(0.05f, 0.05f, 0.05f, 1f), driven);
+    dl.popClipRect();
+  }
+
+  /** A cell point on the display (pixels), or null behind the camera. */
+  private static float[] project(Matrix4f vp, float x, float y, float z, float dw, float dh) {
+    Vector4f c = new Vector4f(x, y, z, 1).mul(vp);
+    if (c.w <= 0) {
+      return null;
+    }
+    return new float[] {(c.x / c.w * 0.5f + 0.5f) * dw, (0.5f - c.y / c.w * 0.5f) * dh};
   }
 
   /** Frames the scene in the free middle part; at the first frame, backs off until it all fits. */
