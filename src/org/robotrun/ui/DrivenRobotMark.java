@@ -8,7 +8,7 @@ import org.robotrun.sim.SceneSnapshot;
 
 /**
  * Which arm the pendant drives, shown where the eye is, in a cell of several robots: the driven
- * robot's bodies tinted toward {@link #COLOUR} in the 3D view, its name on a label of that colour
+ * robot's bodies tinted toward the mark's amber in the 3D view with an amber disc around its foot, its name on a label of that colour
  * beside its base, placed off the work (parts, fixtures, the other arms), and the same name in the
  * same colour on the pendant's status line. A cell of one robot gets none of it.
  *
@@ -34,9 +34,17 @@ public final class DrivenRobotMark {
       return scene;
     }
     String prefix = robot + "/";
-    List<DrawItem> out = new ArrayList<>(scene.items().size());
+    List<DrawItem> out = new ArrayList<>(scene.items().size() + 1);
+    String baseLink = null;
+    List<org.joml.Vector3f> baseCorners = new ArrayList<>();
     for (DrawItem it : scene.items()) {
       if (it.name().startsWith(prefix)) {
+        if (baseLink == null) {
+          baseLink = it.name();  // a robot's first item is its base link
+        }
+        if (it.name().equals(baseLink)) {
+          SceneBounds.addCorners(it, baseCorners);
+        }
         DrawItem.Color c = it.color();
         out.add(new DrawItem(it.name(), it.shape(), it.X_WS(), new DrawItem.Color(mix(c.r(), R), mix(c.g(), G),
             mix(c.b(), B), c.a())));
@@ -44,8 +52,32 @@ public final class DrivenRobotMark {
         out.add(it);
       }
     }
+    ring(baseCorners).ifPresent(out::add);
     return new SceneSnapshot(scene.simTimeSec(), out, scene.floorZ());
   }
+
+  /** A flat amber disc under the base, wider than it: a ring around the robot's foot seen from above. */
+  private static Optional<DrawItem> ring(List<org.joml.Vector3f> corners) {
+    if (corners.isEmpty()) {
+      return Optional.empty();
+    }
+    float x0 = Float.MAX_VALUE, y0 = Float.MAX_VALUE, z0 = Float.MAX_VALUE, x1 = -Float.MAX_VALUE, y1 = -Float.MAX_VALUE;
+    for (org.joml.Vector3f c : corners) {
+      x0 = Math.min(x0, c.x);
+      y0 = Math.min(y0, c.y);
+      z0 = Math.min(z0, c.z);
+      x1 = Math.max(x1, c.x);
+      y1 = Math.max(y1, c.y);
+    }
+    double radius = Math.max(x1 - x0, y1 - y0) / 2 * RING_SCALE + RING_MARGIN_MM;
+    return Optional.of(new DrawItem(RING_NAME, new org.robotrun.sim.DrawShape.Cylinder(radius, RING_THICKNESS_MM),
+        org.robotrun.math.Transform.translation((x0 + x1) / 2, (y0 + y1) / 2, z0 + RING_THICKNESS_MM / 2),
+        new DrawItem.Color(R, G, B, 1f)));
+  }
+
+  /** The disc under the driven robot's base: its name in the draw list, and its size against the base's. */
+  static final String RING_NAME = "driven-robot-ring";
+  static final double RING_SCALE = 1.25, RING_MARGIN_MM = 40, RING_THICKNESS_MM = 3;
 
   private static float mix(float c, float m) {
     return c + (m - c) * TINT;

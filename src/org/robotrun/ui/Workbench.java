@@ -364,6 +364,9 @@ public final class Workbench implements SimulatorWindow.Panels {
         }
         continue;
       }
+      if (it.name().equals(DrivenRobotMark.RING_NAME)) {
+        continue;  // the mark's own disc
+      }
       pts.clear();
       SceneBounds.addCorners(it, pts);
       float x0 = Float.MAX_VALUE, y0 = Float.MAX_VALUE, x1 = -Float.MAX_VALUE, y1 = -Float.MAX_VALUE;

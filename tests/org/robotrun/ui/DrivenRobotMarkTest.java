@@ -24,7 +24,12 @@ class DrivenRobotMarkTest {
   void onlyTheDrivenRobotsBodiesAreTintedTowardTheMarkColour() {
     SceneSnapshot scene = two.snapshot().scene();
     SceneSnapshot marked = DrivenRobotMark.tinted(scene, "robot2", 2);
-    assertThat(marked.items()).hasSameSizeAs(scene.items());
+    // one more item: the disc around the driven robot's foot, centred under its base (robot2 stands at x 1500)
+    assertThat(marked.items()).hasSize(scene.items().size() + 1);
+    DrawItem ring = marked.items().get(scene.items().size());
+    assertThat(ring.name()).isEqualTo(DrivenRobotMark.RING_NAME);
+    assertThat(ring.X_WS().x()).isCloseTo(1500, org.assertj.core.data.Offset.offset(1.0));
+    assertThat(ring.X_WS().y()).isCloseTo(0, org.assertj.core.data.Offset.offset(1.0));
     int tinted = 0;
     for (int i = 0; i < scene.items().size(); i++) {
       DrawItem a = scene.items().get(i), b = marked.items().get(i);
