@@ -432,6 +432,7 @@ public final class GuiCommand implements Callable<Integer> {
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
     // Menus of other parts of the window go into the menu bar here, left of View and Help.
     bench.setPendantSource(selector);
+    bench.setMinimumSizeHandler(w::setMinimumSize);
     if (selector.size() > 1) {
       bench.addLeadSection(org.robotrun.ui.RobotSelector.TITLE, selector::drawContents);
     }

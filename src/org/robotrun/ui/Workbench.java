@@ -78,6 +78,13 @@ public final class Workbench implements SimulatorWindow.Panels {
   private int framebufferH;
   private boolean framed;
   private Runnable onLayoutChange = () -> {};
+  private int[] minimumSize = new int[0];
+  private java.util.function.Consumer<int[]> onMinimumSize = m -> {};
+
+  /** Told the least window size (display pixels, width and height) at which the whole pendant shows, when it changes. */
+  public void setMinimumSizeHandler(java.util.function.Consumer<int[]> handler) {
+    onMinimumSize = java.util.Objects.requireNonNull(handler, "handler");
+  }
 
   /**
    * @param editorPanel the cell editor, or null when the cell cannot be edited
@@ -281,6 +288,12 @@ public final class Workbench implements SimulatorWindow.Panels {
     use = cellUse.get();
     float menuH = drawMenuBar();
     layout = WindowLayout.compute(dw, dh, menuH, scale, PendantPanel.naturalWidth(), state);
+    int[] min = WindowLayout.minimumSize(menuH, PendantPanel.naturalWidth(), PendantPanel.minimumHeight());
+    if (!Arrays.equals(min, minimumSize)) {
+      // the window may not shrink below what the pendant's keys need (the style is known from the first frame)
+      minimumSize = min;
+      onMinimumSize.accept(min);
+    }
     // the first-start card is docked along the bottom of the 3D view: the scene is framed above it
     WindowLayout.Rect fullView = layout.view();
     float card = help.welcomeDock(fullView);
