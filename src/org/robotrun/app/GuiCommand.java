@@ -493,11 +493,22 @@ public final class GuiCommand implements Callable<Integer> {
       for (Controller c : sim.controllers()) {
         production |= c.uop().setup().isPresent();
         bg |= !c.bgLogic().slots().isEmpty();
-        tasksRun[0] |= !c.tasks().list().isEmpty();
+        tasksRun[0] |= !c.tasks().list().isEmpty() || runsATask(c);
         notT1 |= c.mode() != org.robotrun.control.RobotControl.Mode.T1;
       }
       return new org.robotrun.ui.PanelRules.CellUse(task, production, bg, tasksRun[0], notT1);
     };
+  }
+
+  /** Whether a program of {@code c} has a RUN statement (the cell uses a second task). */
+  private static boolean runsATask(Controller c) {
+    for (String name : c.programNames()) {
+      Program p = c.program(name).orElse(null);
+      if (p != null && p.lines().stream().anyMatch(l -> l instanceof org.robotrun.program.Instruction.Run)) {
+        return true;
+      }
+    }
+    return false;
   }
 
   /** The course the Labs menu lists: {@code --course}, else the shipped one when it is there (null: no Labs menu). */

@@ -7,7 +7,7 @@ import java.util.Map;
  * student chose otherwise in the View menu (the choice is kept with the layout). A beginner in
  * free play sees the task, the robot and the cell; the operator panel comes with an exercise or a
  * production setup, or once the mode switch has left T1; the PLC panel with a production setup;
- * the task list once a second task (RUN) has run; BG Logic when a program is in a BG slot or the
+ * the task list once a program RUNs a second task (or one has run); BG Logic when a program is in a BG slot or the
  * cell has a production setup (its exercises add one).
  */
 public final class PanelRules {
@@ -44,7 +44,7 @@ public final class PanelRules {
    * @param task the cell is an exercise (it has a task text)
    * @param productionSetup a robot has a "production" setup (UOP, PNS/RSR, a PLC sequence)
    * @param bgPrograms a program is in a BG Logic slot
-   * @param tasksRun a second task has run since the cell was opened (a RUN)
+   * @param tasksRun a program has a RUN statement, or a second task has run since the cell was opened
    * @param modeNotT1 a robot's mode switch is at T2 or AUTO
    */
   public record CellUse(boolean task, boolean productionSetup, boolean bgPrograms, boolean tasksRun, boolean modeNotT1) {
