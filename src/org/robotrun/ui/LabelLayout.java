@@ -5,10 +5,11 @@ import java.util.List;
 import java.util.Optional;
 
 /**
- * Places text labels beside points of an image so that no two labels overlap, none covers another
- * label's point or an obstacle, and none leaves the image; each as near its point as it can be.
- * A label goes to the right of its point when there is room, else left, above, below or at a
- * corner, else on rings of growing distance around the point; a label that had to move away is
+ * Places text labels beside parts of an image so that no two labels overlap, none covers a
+ * label's point or an obstacle, and none leaves the image; each as near its part as it can be,
+ * and off every part when there is room. A label goes to the right of its part when there is
+ * room, else left, above, below or at a corner, else on rings of growing distance around its
+ * point; a label that had to move away is
  * marked for a leader line to its point. A label that fits nowhere is left out (the caller lists
  * it elsewhere), so the rules above always hold.
  *
@@ -62,8 +63,16 @@ public final class LabelLayout {
     }
   }
 
-  /** A label to place: its point and its text's size (pixels). */
-  public record Label(double pointX, double pointY, double w, double h) {}
+  /**
+   * A label to place: its point, its text's size, and the part it names (pixels): the label goes
+   * beside the part, on no other part, when there is room, else beside the point.
+   */
+  public record Label(double pointX, double pointY, double w, double h, Box part) {
+    /** A label for a point alone. */
+    public Label(double pointX, double pointY, double w, double h) {
+      this(pointX, pointY, w, h, new Box(pointX - POINT_HALF, pointY - POINT_HALF, 2 * POINT_HALF, 2 * POINT_HALF));
+    }
+  }
 
   /**
    * Where a label went.
@@ -78,30 +87,44 @@ public final class LabelLayout {
    * {@code obstacles}; one answer per label, in order, empty for a label that fits nowhere.
    */
   public static List<Optional<Placed>> place(List<Label> labels, double width, double height, List<Box> obstacles) {
-    List<Box> taken = new ArrayList<>(obstacles);
+    List<Box> points = new ArrayList<>(obstacles);
+    List<Box> parts = new ArrayList<>(obstacles);
     for (Label l : labels) {
-      taken.add(new Box(l.pointX() - POINT_HALF, l.pointY() - POINT_HALF, 2 * POINT_HALF, 2 * POINT_HALF));
+      points.add(new Box(l.pointX() - POINT_HALF, l.pointY() - POINT_HALF, 2 * POINT_HALF, 2 * POINT_HALF));
+      parts.add(l.part());
+      parts.add(points.get(points.size() - 1));
     }
     List<Box> labelBoxes = new ArrayList<>();
     List<Optional<Placed>> out = new ArrayList<>(labels.size());
+    // first off every part, then (for a label that found no room so) off every point only
     for (Label l : labels) {
-      Optional<Placed> p = placeOne(l, width, height, taken, labelBoxes);
+      Optional<Placed> p = placeOne(l, l.part(), width, height, parts, labelBoxes);
       p.ifPresent(x -> labelBoxes.add(x.box()));
       out.add(p);
+    }
+    for (int i = 0; i < labels.size(); i++) {
+      if (out.get(i).isEmpty()) {
+        Label l = labels.get(i);
+        Optional<Placed> p = placeOne(l, points.get(obstacles.size() + i), width, height, points, labelBoxes);
+        p.ifPresent(x -> labelBoxes.add(x.box()));
+        out.set(i, p);
+      }
     }
     return out;
   }
 
-  private static Optional<Placed> placeOne(Label l, double width, double height, List<Box> taken, List<Box> labelBoxes) {
+  private static Optional<Placed> placeOne(Label l, Box part, double width, double height, List<Box> taken,
+      List<Box> labelBoxes) {
     if (!(l.w() > 0 && l.h() > 0) || l.w() > width || l.h() > height) {
       return Optional.empty();
     }
     double px = l.pointX(), py = l.pointY(), w = l.w(), h = l.h();
-    double d = POINT_HALF + GAP;
-    // beside the point: right, left, above, below, then the four corners
+    double d = GAP;
+    // beside the part: right, left, above, below, then the four corners
     double[][] near = {
-      {px + d, py - h / 2}, {px - d - w, py - h / 2}, {px - w / 2, py - d - h}, {px - w / 2, py + d},
-      {px + d, py - d - h}, {px - d - w, py - d - h}, {px + d, py + d}, {px - d - w, py + d},
+      {part.right() + d, py - h / 2}, {part.x() - d - w, py - h / 2}, {px - w / 2, part.y() - d - h},
+      {px - w / 2, part.bottom() + d}, {part.right() + d, part.y() - d - h}, {part.x() - d - w, part.y() - d - h},
+      {part.right() + d, part.bottom() + d}, {part.x() - d - w, part.bottom() + d},
     };
     for (double[] c : near) {
       Box b = new Box(c[0], c[1], w, h);
@@ -112,7 +135,8 @@ public final class LabelLayout {
     // rings of growing distance around the point, the box centred on the ring
     double step = Math.max(4, h / 2);
     double maxR = Math.hypot(width, height);
-    for (double r = step + Math.max(w, h) / 2; r <= maxR; r += step) {
+    double start = Math.hypot(part.w(), part.h()) / 2 + Math.max(w, h) / 2;
+    for (double r = start; r <= maxR; r += step) {
       for (int k = 0; k < RING_DIRECTIONS; k++) {
         double a = 2 * Math.PI * k / RING_DIRECTIONS;
         Box b = new Box(px + r * Math.cos(a) - w / 2, py + r * Math.sin(a) - h / 2, w, h);

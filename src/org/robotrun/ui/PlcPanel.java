@@ -75,7 +75,7 @@ public final class PlcPanel {
         }
         ImGui.endTable();
       }
-      Txt.disabled("*IMSTP, *HOLD, *SFSPD stop when OFF.\nSTART and PROD_START act when switched OFF again.");
+      Txt.disabledWrapped("*IMSTP, *HOLD, *SFSPD stop when OFF. START and PROD_START act when switched OFF again.", false);
       ImGui.treePop();
     }
     ImGui.setNextItemOpen(setup.isPresent(), imgui.flag.ImGuiCond.Once);
@@ -151,7 +151,8 @@ public final class PlcPanel {
     BgLogic.Offer offer = controller.bgLogic().offer(controller.programNames());
     List<String> names = offer.programs();
     if (names.isEmpty()) {
-      Txt.disabled("No program can run as BG Logic (see why below)");
+      Txt.disabledWrapped(controller.bgLogic().slots().isEmpty() ? "No program can run as BG Logic: \"Not offered\" says why"
+          : "No other program can run as BG Logic: \"Not offered\" says why", false);
     }
     if (!names.isEmpty()) {
       bgChoice = Math.max(0, Math.min(bgChoice, names.size() - 1));

@@ -186,8 +186,16 @@ public final class VisionPanel implements Workbench.MenuContributor, AutoCloseab
             y0 + (float) o[2 * d + 1] * s, foundColour, 2f);
       }
       dl.addCircleFilled(x0 + (float) l.u() * s, y0 + (float) l.v() * s, 3, foundColour);
+      double u0 = Double.MAX_VALUE, v0 = Double.MAX_VALUE, u1 = -Double.MAX_VALUE, v1 = -Double.MAX_VALUE;
+      for (int c = 0; c < 4; c++) {
+        u0 = Math.min(u0, o[2 * c] * s);
+        v0 = Math.min(v0, o[2 * c + 1] * s);
+        u1 = Math.max(u1, o[2 * c] * s);
+        v1 = Math.max(v1, o[2 * c + 1] * s);
+      }
+      // the part's outline: its label goes beside it, on no part, where there is room
       boxes.add(new LabelLayout.Label(l.u() * s, l.v() * s, ImGui.calcTextSize(l.text()).x + 2 * pad,
-          ImGui.getTextLineHeight() + 2 * pad));
+          ImGui.getTextLineHeight() + 2 * pad, new LabelLayout.Box(u0, v0, u1 - u0, v1 - v0)));
     }
     // no label over another or off the image; one moved away from its part gets a leader line
     List<java.util.Optional<LabelLayout.Placed>> placed = LabelLayout.place(boxes, cam.widthPx() * s, cam.heightPx() * s,

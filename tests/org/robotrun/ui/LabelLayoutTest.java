@@ -61,6 +61,35 @@ class LabelLayoutTest {
   }
 
   @Test
+  void labelsGoBesideTheirPartAndOffEveryPartWhenThereIsRoom() {
+    // four 40 px parts of a tray, two by two, as RUN_FIND outlines them
+    List<Label> labels = new ArrayList<>();
+    for (int i = 0; i < 4; i++) {
+      double cx = 250 + 60 * (i % 2), cy = 150 + 100 * (i / 2);
+      labels.add(new Label(cx, cy, W, H, new Box(cx - 20, cy - 20, 40, 40)));
+    }
+    List<Optional<Placed>> p = LabelLayout.place(labels, 640, 480, List.of());
+    assertInvariants(labels, p, 640, 480, List.of());
+    for (int i = 0; i < 4; i++) {
+      Box b = p.get(i).orElseThrow().box();
+      for (Label other : labels) {
+        assertThat(b.overlaps(other.part())).as("label %d off every part", i).isFalse();
+      }
+      if (!p.get(i).get().leader()) {
+        // touching its part's side, within the gap
+        assertThat(b.distanceTo(labels.get(i).pointX(), labels.get(i).pointY()))
+            .isLessThanOrEqualTo(Math.hypot(20, 20) + LabelLayout.GAP + 1e-9);
+      }
+    }
+    // parts that fill the image: the labels still find room, over parts if they must, never over each other
+    List<Label> packed = List.of(new Label(100, 60, 150, H, new Box(0, 0, 200, 120)),
+        new Label(100, 180, 150, H, new Box(0, 120, 200, 120)));
+    List<Optional<Placed>> q = LabelLayout.place(packed, 200, 240, List.of());
+    assertInvariants(packed, q, 200, 240, List.of());
+    assertThat(q).allMatch(Optional::isPresent);
+  }
+
+  @Test
   void labelsKeepOffObstaclesAndEveryPoint() {
     List<Label> labels = List.of(new Label(300, 200, W, H), new Label(320, 205, W, H), new Label(100, 400, W, H));
     List<Box> obstacles = List.of(new Box(305, 150, 250, 100));
