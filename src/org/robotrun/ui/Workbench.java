@@ -596,7 +596,8 @@ public final class Workbench implements SimulatorWindow.Panels {
       return;
     }
     WindowLayout.Rect v = layout.view();
-    ImGui.setNextWindowPos(v.x() + 8, v.bottom() - 8, ImGuiCond.Always, 0f, 1f);
+    // centred along the bottom: the axis triad keeps the lower left corner
+    ImGui.setNextWindowPos(v.x() + v.w() / 2, v.bottom() - 8, ImGuiCond.Always, 0.5f, 1f);
     ImGui.setNextWindowBgAlpha(0.85f);
     ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), ImGui.getFontSize() * 15);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize
