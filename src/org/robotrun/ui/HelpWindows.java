@@ -114,6 +114,11 @@ public final class HelpWindows {
       if (hasTask && columns != 4) {
         Txt.wrapped("Your task: " + task);
       }
+      if (hasTask) {
+        // the task is here because the left column is hidden; the panels it names are there
+        Txt.disabledWrapped("The side panel (View > Side panel) has the task, the robot's position and the "
+            + "controller's panels this cell uses.", false);
+      }
       if (ImGui.button("Got it")) {
         welcome.set(false);
       }
