@@ -114,17 +114,14 @@ public final class HelpWindows {
       if (hasTask && columns != 4) {
         Txt.wrapped("Your task: " + task);
       }
-      if (hasTask) {
-        // the task is here because the left column is hidden; the panels it names are there
-        Txt.disabledWrapped("The side panel (View > Side panel) has the task, the robot's position and the "
-            + "controller's panels this cell uses.", false);
-      }
       if (ImGui.button("Got it")) {
         welcome.set(false);
       }
       ImGui.sameLine();
       Txt.disabledWrapped("Every key: Help > Key map (Ctrl+H). Hover a pendant key to see its keyboard key. "
-          + "A course of graded labs: the Labs menu (start with lab 1). This card again: Help > First steps.", false);
+          + "A course of graded labs: the Labs menu (start with lab 1). This card again: Help > First steps."
+          // the task is on this card when the left column is hidden; the panels a task names are there
+          + (hasTask ? " The robot's position and the controller's panels: View > Side panel." : ""), false);
       welcomeHeight = ImGui.getWindowHeight();
       welcomeRect = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
           ImGui.getWindowHeight());
