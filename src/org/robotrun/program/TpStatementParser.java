@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import org.robotrun.program.TpToken.Kind;
@@ -209,6 +210,55 @@ public final class TpStatementParser extends TpTokenCursor {
     Expr e = p.peek().is(Kind.STRING) && p.peek(1).is(Kind.EOL) ? new Expr.StringConst(p.next().text()) : p.expression();
     p.expectEnd("the end of the expression");
     return e;
+  }
+
+  /**
+   * Parses the text of one statement, as {@link TpText#statement} prints it and a /MN line holds
+   * it between {@code "N:"} and {@code ;}: the fragment entry point for a whole line. A C motion's
+   * end point may be on a continuation line ({@code "C P[1]\n    :  P[2] 100mm/sec FINE"}). A
+   * statement RobotRun keeps but does not run is given back as {@link Instruction.Unsupported}
+   * holding the text, as the .LS reader keeps it.
+   *
+   * @throws TpSyntaxError naming line (of {@code text}), column and what was expected
+   */
+  public static Parsed statementText(String text) {
+    String[] lines = Objects.requireNonNull(text, "text").split("\n", -1);
+    List<TpToken> tokens = new ArrayList<>(TpLexer.tokenize(lines[0], 1, 1, true));
+    for (int k = 1; k < lines.length; k++) {
+      int colon = lines[k].indexOf(':');
+      if (colon < 0 || !lines[k].substring(0, colon).isBlank()) {
+        throw new TpSyntaxError(k + 1, "expected a continuation line ':  ...', found '" + TpToken.clip(lines[k].strip()) + "'");
+      }
+      tokens.remove(tokens.size() - 1);
+      tokens.addAll(TpLexer.tokenize(lines[k].substring(colon + 1), k + 1, colon + 2, false));
+    }
+    try {
+      return parse(tokens, l -> l >= 1 && l <= lines.length ? lines[l - 1] : null);
+    } catch (TpSyntaxError e) {
+      if (e.unsupported().isPresent()) {
+        return new Parsed(new Instruction.Unsupported(text.strip(), e.unsupported().get(), e.runnable()), List.of());
+      }
+      throw e;
+    }
+  }
+
+  /** Parses typed text as a CALL's program and arguments: {@code NAME}, {@code NAME(1,'A,B',R[2])}. */
+  public static Instruction.Call callText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Instruction.Call c = (Instruction.Call) p.call();
+    p.expectEnd("the end of the CALL");
+    return c;
+  }
+
+  /**
+   * Parses typed text as the right side of {@code PR[i]=}: {@code PR[2]}, {@code P[3]}, {@code LPOS},
+   * {@code UFRAME[1]}, {@code PR[1]+PR[2]}, {@code LPOS-PR[4]}.
+   */
+  public static Instruction.PosSource posSourceText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Instruction.PosSource s = p.positionSource();
+    p.expectEnd("the end of the position");
+    return s;
   }
 
   /** Parses typed text as an index: {@code 5} or {@code R[2]}. */
@@ -561,7 +611,7 @@ public final class TpStatementParser extends TpTokenCursor {
       next();
       if (!peek().is(Kind.RPAREN)) {
         do {
-          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+          args.add(expression());
         } while (accept(Kind.COMMA));
       }
       expect(Kind.RPAREN, "')' closing the macro's arguments");
@@ -606,6 +656,11 @@ public final class TpStatementParser extends TpTokenCursor {
     }
     Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
     expect(Kind.EQ, "'=' after PR[...]");
+    return new Instruction.AssignPosReg(reg, positionSource());
+  }
+
+  /** The right side of {@code PR[i]=}: one source, or a sum of PR[], P[], LPOS and JPOS terms. */
+  private Instruction.PosSource positionSource() {
     Instruction.PosSource src = posSource(true);
     if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
       // PR[1]=LPOS-LPOS, PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: a sum of positions
@@ -629,7 +684,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       src = new Instruction.PosSum(first, rest);
     }
-    return new Instruction.AssignPosReg(reg, src);
+    return src;
   }
 
   /** One operand of {@code PR[i]=...}: PR[j] (or PR[j]±PR[k] when {@code pair}), P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]. */
@@ -721,7 +776,7 @@ public final class TpStatementParser extends TpTokenCursor {
             // CALL SUB(SPEED=5): arguments by name, a feature of newer systems
             throw unsupported(peek(), "named CALL arguments (NAME=value)", false);
           }
-          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+          args.add(expression());
         } while (accept(Kind.COMMA));
       }
       expect(Kind.RPAREN, "')' closing the CALL arguments");
@@ -898,11 +953,11 @@ public final class TpStatementParser extends TpTokenCursor {
     Motion.SpeedUnit unit = speedUnit();
     if (!unit.fits(type)) {
       String allowed = type == Motion.Type.J ? "%, sec or msec" : "mm/sec, cm/min, inch/min, deg/sec, sec or msec";
-      throw error("speed unit " + unitText(unit) + " does not fit a " + type + " motion: expected " + allowed);
+      throw error("speed unit " + TpText.unit(unit) + " does not fit a " + type + " motion: expected " + allowed);
     }
     // A constant speed out of range would only alarm at run time; say so when the file is read.
     if (value instanceof Motion.SpeedConst c) {
-      String shown = FanucFormat.plain(c.value()) + unitText(unit);
+      String shown = FanucFormat.plain(c.value()) + TpText.unit(unit);
       if (!(c.value() > 0)) {
         throw error("speed " + shown + ": expected a speed greater than 0");
       }
@@ -947,19 +1002,6 @@ public final class TpStatementParser extends TpTokenCursor {
       case "inch/min" -> Motion.SpeedUnit.INCH_PER_MIN;
       case "deg/sec" -> Motion.SpeedUnit.DEG_PER_SEC;
       default -> throw error(t, "unknown speed unit '" + full + "': expected mm/sec, cm/min, inch/min or deg/sec");
-    };
-  }
-
-  /** How a unit is written in TP; the writer uses the same table. */
-  public static String unitText(Motion.SpeedUnit unit) {
-    return switch (unit) {
-      case PERCENT -> "%";
-      case SEC -> "sec";
-      case MSEC -> "msec";
-      case MM_PER_SEC -> "mm/sec";
-      case CM_PER_MIN -> "cm/min";
-      case INCH_PER_MIN -> "inch/min";
-      case DEG_PER_SEC -> "deg/sec";
     };
   }
 
