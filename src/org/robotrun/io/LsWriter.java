@@ -294,7 +294,12 @@ public final class LsWriter {
   private static boolean closesWithWideGap(Instruction in) {
     return in instanceof Instruction.AssignRegister
         || in instanceof Instruction.AssignPosReg
-        || in instanceof Instruction.AssignPosElement;
+        || in instanceof Instruction.AssignPosElement
+        // iRVision lines, as a controller lists them: "VISION RUN_FIND 'FIND'    ;", "R[4]=VR[1].MODELID    ;"
+        || in instanceof Instruction.AssignFromVr
+        || in instanceof Instruction.VisionRunFind
+        || in instanceof Instruction.VisionGetOffset
+        || in instanceof Instruction.VisionGetNFound;
   }
 
   private static void move(Instruction.Move m, StringBuilder sb) {

@@ -282,6 +282,32 @@ public final class TpLine {
           f.add(Field.fixed("%"));
         }
       }
+      case Instruction.VisionRunFind v -> {
+        f.add(Field.fixed("VISION RUN_FIND "));
+        f.add(processField(v.process(), Instruction.VisionRunFind::new));
+      }
+      case Instruction.VisionGetOffset v -> {
+        f.add(Field.fixed("VISION GET_OFFSET "));
+        f.add(processField(v.process(), x -> new Instruction.VisionGetOffset(x, v.vr(), v.label())));
+        f.add(Field.fixed(" "));
+        f.add(itemField("VR", v.vr(), i -> new Instruction.VisionGetOffset(v.process(), i, v.label())));
+        f.add(Field.fixed(" JMP,"));
+        f.add(labelField(v.label(), l -> new Instruction.VisionGetOffset(v.process(), v.vr(), l)));
+      }
+      case Instruction.VisionGetNFound v -> {
+        f.add(Field.fixed("VISION GET_NFOUND "));
+        f.add(processField(v.process(), x -> new Instruction.VisionGetNFound(x, v.register())));
+        f.add(Field.fixed(" "));
+        f.add(itemField("R", v.register(), i -> new Instruction.VisionGetNFound(v.process(), i)));
+      }
+      case Instruction.AssignFromVr v -> {
+        f.add(itemField("R", v.register(), i -> new Instruction.AssignFromVr(i, v.vr(), v.field(), v.element())));
+        f.add(Field.fixed("="));
+        f.add(itemField("VR", v.vr(), i -> new Instruction.AssignFromVr(v.register(), i, v.field(), v.element())));
+        String field = "." + v.field().name() + (v.field() == Instruction.VisionField.MES ? "[" + v.element() + "]" : "");
+        f.add(new Field(field, Field.Edit.choice(List.of(".MODELID", ".ENC", ".MES[1]"), k ->
+            new Instruction.AssignFromVr(v.register(), v.vr(), Instruction.VisionField.values()[k], k == 2 ? 1 : 0))));
+      }
       case Instruction.Blank b -> { }
       // Kept as written; the pendant shows it and can delete or comment it out, not edit it.
       case Instruction.Unsupported u -> f.add(Field.fixed(u.text()));
@@ -338,6 +364,7 @@ public final class TpLine {
       case Motion.Offset x -> null;
       case Motion.Wjnt x -> null;
       case Motion.Inc x -> null;
+      case Motion.VisionOffset v -> t -> withOption(m, at, new Motion.VisionOffset(ExprText.parseItem("VR", t)));
       case Motion.RawOption x -> null;
       case Motion.TimedAction x -> null;
     };
@@ -349,6 +376,7 @@ public final class TpLine {
       case Motion.Offset x -> "";
       case Motion.Wjnt x -> "";
       case Motion.Inc x -> "";
+      case Motion.VisionOffset v -> TpText.index(v.vr().index());
       case Motion.RawOption x -> "";
       case Motion.TimedAction x -> "";
     };
@@ -590,6 +618,27 @@ public final class TpLine {
       }
     }
     return new Expr.IntConst(NumberEntry.wholeWithin("OVERRIDE", t, 1, 100));
+  }
+
+  /** A vision process: typed {@code 'NAME'} (or a bare name) or {@code SR[i]}. */
+  private static Field processField(Instruction.VisionProcess p, Function<Instruction.VisionProcess, Instruction> make) {
+    String text = switch (p) {
+      case Instruction.VisionProcessName n -> TpText.expr(new Expr.StringConst(n.name()));
+      case Instruction.VisionProcessInRegister r -> TpText.item("SR", r.register());
+    };
+    return new Field(text, Field.Edit.entry(text, t -> {
+      String u = t.trim();
+      if (u.toUpperCase(Locale.ROOT).startsWith("SR[")) {
+        return make.apply(new Instruction.VisionProcessInRegister(ExprText.parseItem("SR", u)));
+      }
+      if (u.length() >= 2 && (u.charAt(0) == '\'' || u.charAt(0) == '"') && u.charAt(u.length() - 1) == u.charAt(0)) {
+        u = u.substring(1, u.length() - 1);
+      }
+      if (u.isEmpty() || u.indexOf('\'') >= 0 && u.indexOf('"') >= 0) {
+        throw new BadText("expected a vision process: 'NAME' or SR[i]");
+      }
+      return make.apply(new Instruction.VisionProcessName(u.toUpperCase(Locale.ROOT)));
+    }));
   }
 
   private static Field indexField(Index i, Function<Index, Instruction> make) {

@@ -362,6 +362,9 @@ public final class TpStatementParser extends TpTokenCursor {
       case "R" -> {
         Item reg = item("R");
         expect(Kind.EQ, "'=' after R[...]");
+        if (peek().isWord("VR") && peek(1).is(Kind.LBRACKET)) {
+          yield visionRead(reg);
+        }
         if (peek().is(Kind.STRING) && peek(1).is(Kind.EOL)) {
           throw error("R[] holds a number, not a string constant: put the text in a string register SR[i]");
         }
@@ -478,6 +481,7 @@ public final class TpStatementParser extends TpTokenCursor {
         next();
         yield new Instruction.When(cond, (Instruction.Call) call());
       }
+      case "VISION" -> vision(t);
       case "JMP" -> jump();
       case "CALL" -> call();
       case "RUN" -> run();
@@ -662,6 +666,9 @@ public final class TpStatementParser extends TpTokenCursor {
   /** The right side of {@code PR[i]=}: one source, or a sum of PR[], P[], LPOS and JPOS terms. */
   private Instruction.PosSource positionSource() {
     Instruction.PosSource src = posSource(true);
+    if ((peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) && src instanceof Instruction.FromVisionRegister) {
+      throw unsupported(peek(), "PR[i]=vision registers VR[] in position arithmetic", false);
+    }
     if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
       // PR[1]=LPOS-LPOS, PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: a sum of positions
       if (!Instruction.PosSum.isTerm(src) && !(src instanceof Instruction.PosArithmetic)) {
@@ -706,6 +713,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "LPOS" -> new Instruction.CurrentLpos();
       case "JPOS" -> new Instruction.CurrentJpos();
+      case "VR" -> visionPosition(s);
       case "UFRAME", "UTOOL" -> {
         Item frame = item(s.text().toUpperCase(Locale.ROOT));
         yield new Instruction.FromFrame(s.isWord("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame.index(), frame.comment());
@@ -738,6 +746,105 @@ public final class TpStatementParser extends TpTokenCursor {
       return new Instruction.Pulse(kind, port, width);
     }
     return new Instruction.SetIo(kind, port, expression());
+  }
+
+  // ---- iRVision (docs/vision.md) -----------------------------------------------------------
+
+  /**
+   * {@code VISION RUN_FIND p}, {@code VISION GET_OFFSET p VR[i] JMP,LBL[j]} ({@code JMP LBL},
+   * {@code JUMP,LBL} alike) or {@code VISION GET_NFOUND p R[i]}, p a {@code 'NAME'} or {@code SR[i]}.
+   * Any other VISION form (SET_REFERENCE, CAMERA_CALIB ...) or a malformed one is kept as written
+   * and alarms when it runs ("iRVision"), as before it was read.
+   */
+  private Instruction vision(TpToken visionWord) {
+    try {
+      TpToken what = expectWord("RUN_FIND, GET_OFFSET or GET_NFOUND after VISION");
+      String w = what.text().toUpperCase(Locale.ROOT);
+      Instruction in = switch (w) {
+        case "RUN_FIND" -> new Instruction.VisionRunFind(visionProcess());
+        case "GET_OFFSET" -> {
+          Instruction.VisionProcess p = visionProcess();
+          expectWordNamed("VR", "VR[i] after the vision process");
+          Item vr = item("VR");
+          TpToken jmp = expectWord("JMP,LBL[n] after VR[i]");
+          if (!jmp.isWord("JMP") && !jmp.isWord("JUMP")) {
+            throw error(jmp, "expected JMP,LBL[n] after VR[i], found " + jmp.describe());
+          }
+          accept(Kind.COMMA);
+          expectWordNamed("LBL", "LBL[n] after JMP");
+          yield new Instruction.VisionGetOffset(p, vr, labelRef());
+        }
+        case "GET_NFOUND" -> {
+          Instruction.VisionProcess p = visionProcess();
+          expectWordNamed("R", "R[i] after the vision process");
+          yield new Instruction.VisionGetNFound(p, item("R"));
+        }
+        default -> throw unsupported(visionWord, "iRVision", false);
+      };
+      expectEnd("the end of the VISION statement");
+      return in;
+    } catch (TpSyntaxError e) {
+      if (e.unsupported().isPresent()) {
+        throw e;
+      }
+      throw unsupported(visionWord, "iRVision", false);
+    }
+  }
+
+  private Instruction.VisionProcess visionProcess() {
+    if (peek().is(Kind.STRING)) {
+      return new Instruction.VisionProcessName(next().text());
+    }
+    expectWordNamed("SR", "a vision process: 'NAME' or SR[i]");
+    return new Instruction.VisionProcessInRegister(item("SR"));
+  }
+
+  /** {@code R[i]=VR[j].MODELID|ENC|MES[k]} after {@code R[i]=}; any other use of VR[] in an expression is kept, not run. */
+  private Instruction visionRead(Item reg) {
+    TpToken vrWord = next();
+    Item vr = item("VR");
+    if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".") && peek(1).is(Kind.WORD)) {
+      next();
+      TpToken f = next();
+      String field = f.text().toUpperCase(Locale.ROOT);
+      Instruction.AssignFromVr read = null;
+      if ((field.equals("MODELID") || field.equals("ENC")) && peek().is(Kind.EOL)) {
+        read = new Instruction.AssignFromVr(reg, vr, Instruction.VisionField.valueOf(field), 0);
+      } else if (field.equals("MES") && peek().is(Kind.LBRACKET) && peek(1).is(Kind.NUMBER) && peek(2).is(Kind.RBRACKET)
+          && peek(3).is(Kind.EOL) && allDigits(peek(1).text(), 0) && peek(1).text().length() <= 2) {
+        int k = Integer.parseInt(peek(1).text());
+        if (k >= 1 && k <= 10) {
+          next();
+          next();
+          next();
+          read = new Instruction.AssignFromVr(reg, vr, Instruction.VisionField.MES, k);
+        }
+      }
+      if (read != null) {
+        return read;
+      }
+    }
+    throw unsupported(vrWord, "vision registers VR[] in an expression", false);
+  }
+
+  /** {@code VR[j].OFFSET} or {@code VR[j].FOUND_POS[1]} after {@code PR[i]=} (the word VR consumed). */
+  private Instruction.PosSource visionPosition(TpToken vrWord) {
+    Item vr = item("VR");
+    if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".") && peek(1).is(Kind.WORD)) {
+      if (peek(1).isWord("OFFSET")) {
+        next();
+        next();
+        return new Instruction.FromVisionRegister(vr, false);
+      }
+      if (peek(1).isWord("FOUND_POS") && peek(2).is(Kind.LBRACKET) && peek(3).is(Kind.NUMBER)
+          && peek(3).text().equals("1") && peek(4).is(Kind.RBRACKET)) {
+        for (int k = 0; k < 5; k++) {
+          next();
+        }
+        return new Instruction.FromVisionRegister(vr, true);
+      }
+    }
+    throw unsupported(vrWord, "PR[i]=vision registers VR[]", false);
   }
 
   private Instruction jump() {
@@ -1066,6 +1173,15 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         case "WJNT" -> {
           return new Motion.Wjnt();
+        }
+        case "VOFFSET" -> {
+          if (!peek().is(Kind.COMMA) || !peek(1).isWord("VR") || !peek(2).is(Kind.LBRACKET)) {
+            // VOFFSET alone: the offset of a VOFFSET CONDITION, which RobotRun does not run
+            return rawOption(t, optionKind(w));
+          }
+          next();
+          next();
+          return new Motion.VisionOffset(item("VR"));
         }
         case "INC" -> {
           return new Motion.Inc();

@@ -205,7 +205,42 @@ public final class TpText {
       case Instruction.Blank b -> {
         // nothing: "   5:   ;"
       }
+      case Instruction.VisionRunFind v -> {
+        sb.append("VISION RUN_FIND ");
+        process(v.process(), sb);
+      }
+      case Instruction.VisionGetOffset v -> {
+        sb.append("VISION GET_OFFSET ");
+        process(v.process(), sb);
+        sb.append(' ');
+        item("VR", v.vr(), sb);
+        sb.append(" JMP,");
+        label(v.label(), sb);
+      }
+      case Instruction.VisionGetNFound v -> {
+        sb.append("VISION GET_NFOUND ");
+        process(v.process(), sb);
+        sb.append(' ');
+        item("R", v.register(), sb);
+      }
+      case Instruction.AssignFromVr a -> {
+        item("R", a.register(), sb);
+        sb.append('=');
+        item("VR", a.vr(), sb);
+        sb.append('.').append(a.field().name());
+        if (a.field() == Instruction.VisionField.MES) {
+          sb.append('[').append(a.element()).append(']');
+        }
+      }
       case Instruction.Unsupported u -> sb.append(u.text());
+    }
+  }
+
+  /** {@code 'NAME'} or {@code SR[i]}. */
+  private static void process(Instruction.VisionProcess p, StringBuilder sb) {
+    switch (p) {
+      case Instruction.VisionProcessName n -> exprUnchecked(new Expr.StringConst(n.name()), sb);
+      case Instruction.VisionProcessInRegister r -> item("SR", r.register(), sb);
     }
   }
 
@@ -291,6 +326,7 @@ public final class TpText {
       case Motion.Skip x -> "Skip," + label(x.label());
       case Motion.Wjnt x -> "Wjnt";
       case Motion.Inc x -> "INC";
+      case Motion.VisionOffset x -> "VOFFSET," + item("VR", x.vr());
       case Motion.TimedAction x -> x.text();
       case Motion.RawOption x -> {
         int nl = x.text().indexOf('\n');
@@ -315,6 +351,10 @@ public final class TpText {
       case Instruction.CurrentLpos c -> sb.append("LPOS");
       case Instruction.CurrentJpos c -> sb.append("JPOS");
       case Instruction.FromFrame f -> frame(f.kind(), f.frame(), f.comment(), sb);
+      case Instruction.FromVisionRegister v -> {
+        item("VR", v.vr(), sb);
+        sb.append(v.foundPos() ? ".FOUND_POS[1]" : ".OFFSET");
+      }
       case Instruction.PosSum p -> {
         posSource(p.first(), sb);
         for (Instruction.PosTerm t : p.rest()) {

@@ -226,6 +226,7 @@ public final class TpModels {
     m.put(Motion.Skip.class, label().map(Motion.Skip::new));
     m.put(Motion.Wjnt.class, Arbitraries.just(new Motion.Wjnt()));
     m.put(Motion.Inc.class, Arbitraries.just(new Motion.Inc()));
+    m.put(Motion.VisionOffset.class, item().map(Motion.VisionOffset::new));
     m.put(Motion.TimedAction.class, Combinators.combine(Arbitraries.of(Motion.When.values()),
         Arbitraries.integers().between(0, 2000).map(v -> v / 100.0), timedActionBody(), Arbitraries.of(true, false))
         .as((when, amount, action, longForm) -> {
@@ -240,6 +241,7 @@ public final class TpModels {
         }));
     m.put(Motion.RawOption.class, Arbitraries.of(
         new Motion.RawOption("PTH", "PTH"),
+        new Motion.RawOption("VOFFSET", "vision offset VOFFSET"),
         new Motion.RawOption("RTCP", "remote TCP (RTCP)"),
         new Motion.RawOption("COORD[1]", "coordinated motion COORD"),
         new Motion.RawOption("CR50", "motion option CR50"),
@@ -296,6 +298,7 @@ public final class TpModels {
         .map(s -> (Instruction.PosSource) s);
     return Arbitraries.oneOf(posTerm(),
         Combinators.combine(Arbitraries.of(FrameKind.values()), index(), comment()).as(Instruction.FromFrame::new),
+        Combinators.combine(item(), Arbitraries.of(true, false)).as(Instruction.FromVisionRegister::new),
         sum,
         Combinators.combine(item(), Arbitraries.of(true, false), item()).as(Instruction.PosArithmetic::new));
   }
@@ -400,9 +403,23 @@ public final class TpModels {
         Arbitraries.integers().between(1, 1000).map(v -> (Expr) new Expr.RealConst(v / 10.0)),
         item().map(Expr.Register::new)).map(Instruction.SetOverride::new));
     m.put(Instruction.Blank.class, Arbitraries.just(new Instruction.Blank()));
+    Arbitrary<Instruction.VisionProcess> process = Arbitraries.oneOf(
+        stringValue().filter(v -> !v.isEmpty()).map(Instruction.VisionProcessName::new),
+        item().map(Instruction.VisionProcessInRegister::new));
+    m.put(Instruction.VisionRunFind.class, process.map(Instruction.VisionRunFind::new));
+    m.put(Instruction.VisionGetOffset.class, Combinators.combine(process, item(), label())
+        .as(Instruction.VisionGetOffset::new));
+    m.put(Instruction.VisionGetNFound.class, Combinators.combine(process, item()).as(Instruction.VisionGetNFound::new));
+    m.put(Instruction.AssignFromVr.class, Combinators.combine(item(), item(), Arbitraries.of(Instruction.VisionField.values()),
+        Arbitraries.integers().between(1, 10)).as((r, vr, f, k) ->
+            new Instruction.AssignFromVr(r, vr, f, f == Instruction.VisionField.MES ? k : 0)));
     m.put(Instruction.Unsupported.class, Arbitraries.of(
         new Instruction.Unsupported("COL DETECT ON", "COL DETECT", true),
         new Instruction.Unsupported("LOCK PREG", "LOCK PREG", true),
+        new Instruction.Unsupported("VISION SET_REFERENCE 'FIND1'", "iRVision", false),
+        new Instruction.Unsupported("VISION GET_OFFSET 'A' VR[1]", "iRVision", false),
+        new Instruction.Unsupported("R[1]=VR[1].MES[11]", "vision registers VR[] in an expression", false),
+        new Instruction.Unsupported("PR[1]=VR[1].FOUND_POS[2]", "PR[i]=vision registers VR[]", false),
         new Instruction.Unsupported("PALLETIZING-B_1", "palletizing", false),
         new Instruction.Unsupported("Arc Start[1]", "arc welding", false),
         new Instruction.Unsupported("CALL SR[3]", "CALL through a string register SR[]", false)));
