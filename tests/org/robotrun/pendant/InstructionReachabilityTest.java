@@ -9,13 +9,14 @@ import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Program;
 
 /** Every statement of the program model (one record per TP statement) can be entered with keys. */
 class InstructionReachabilityTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private static Set<Class<?>> statementTypes() {

@@ -8,6 +8,7 @@ import static org.robotrun.pendant.PendantKeys.run;
 import java.util.List;
 import java.util.OptionalDouble;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
@@ -23,7 +24,7 @@ import org.robotrun.program.Program;
  * old value kept.
  */
 class PendantNumberEntryTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private String prompt() {
