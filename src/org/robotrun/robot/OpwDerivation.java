@@ -11,15 +11,18 @@ import org.robotrun.math.Vec3;
  * parameters from the chain itself, so that any arm (a library file or an imported URDF) gets
  * the closed form when its geometry allows it. Nothing is read from a hand-written block.
  *
- * <p>Method, from the joint axis lines at q = 0 in the base frame: J1 must lie on the base z
- * axis; J2 horizontal (perpendicular to J1), J3 parallel to J2; J4 perpendicular to J3, J5 to
- * J4, J6 to J5; J4, J5 and J6 through one point C (the wrist centre); the flange on the J6 axis
- * with its z along it. The OPW frame's x is the horizontal direction perpendicular to J2 that
+ * <p>Method, from the joint axis lines at q = 0 in OPW's base frame O (B itself, or B turned and
+ * moved so that its z lies along J1): J2 horizontal (perpendicular to J1), J3 parallel to J2;
+ * J4 perpendicular to J3, J5 to J4, J6 to J5; J4, J5 and J6 through one point C (the wrist
+ * centre). The OPW frame's x is the horizontal direction perpendicular to J2 that
  * points toward C, which gives the J1 offset; a1, c1 are J2's position in that frame, b is C's
  * lateral offset, c2 the J2–J3 distance, c3 and a2 the J3→C vector along and across the J4
- * axis, c4 the C→flange distance. Offsets are the OPW angles at q = 0 (negated) and the sign
+ * axis, c4 the distance from C along J6 to the flange's foot on the J6 axis. Offsets are the OPW angles at q = 0 (negated) and the sign
  * corrections compare each joint axis with OPW's positive axis, choosing J5's and J6's signs so
- * that their offsets are 0 where possible (FANUC's own choice). The result is then checked: an
+ * that their offsets are 0 where possible (FANUC's own choice). A base whose z is not along J1
+ * (or whose origin is off the J1 axis) and a flange whose z is not along J6 (or whose origin is
+ * off it) are carried as constant corrections ({@link OpwParameters#base()},
+ * {@link OpwParameters#flange()}). The result is then checked: an
  * OPW forward kinematics of the parameters must reproduce the chain's flange pose on 64 joint
  * vectors within the limits (1e-6 mm, 1e-9 rad), else the chain is not treated as OPW.
  */
@@ -48,10 +51,19 @@ public final class OpwDerivation {
     }
     Transform F0 = L[6].compose(m.X_6F());
     Vec3 z = Vec3.Z;
-    // J1 along ±z through the base origin.
+    // OPW's base frame O: B itself when J1 lies along ±z through B's origin (every library
+    // arm), else z along J1, origin at the foot of B's origin on the J1 axis (a turned or moved
+    // URDF base: wall, ceiling, offset mount). Everything below is measured in O.
+    Transform X_BO = Transform.IDENTITY;
     if (Math.abs(d[0].x()) > ANGLE_TOL || Math.abs(d[0].y()) > ANGLE_TOL
         || Math.abs(p[0].x()) > LENGTH_TOL || Math.abs(p[0].y()) > LENGTH_TOL) {
-      return Optional.empty();
+      X_BO = frameOnAxis(p[0], d[0]);
+      Transform X_OB = X_BO.inverse();
+      for (int i = 0; i < 6; i++) {
+        p[i] = X_OB.apply(p[i]);
+        d[i] = X_OB.rotate(d[i]);
+      }
+      F0 = X_OB.compose(F0);
     }
     int s1 = d[0].z() > 0 ? 1 : -1;
     if (Math.abs(d[1].dot(z)) > ANGLE_TOL || d[1].cross(d[2]).norm() > ANGLE_TOL
@@ -106,16 +118,14 @@ public final class OpwDerivation {
     double th5 = Math.atan2(s6 * w.x(), s6 * w.z());
     Transform Rw = Ra.compose(Transform.rotation(0, 0, 1, th4)).compose(Transform.rotation(0, 1, 0, th5));
     Transform M = Rw.inverse().compose(F0.withTranslation(0, 0, 0));
-    if (Math.abs(M.r22() - 1) > ANGLE_TOL) {
-      return Optional.empty();
-    }
-    double th6 = Math.atan2(M.r10(), M.r00());
+    // The canonical flange F' sits on the J6 axis (z along it) at the foot of the flange's
+    // origin; where the file's flange is F' turned about z (every library arm), that turn is
+    // J6's offset, else J6's offset is 0 and the rest is the constant correction X_F'F.
+    boolean zAlong = Math.abs(M.r22() - 1) <= ANGLE_TOL;
+    double th6 = zAlong ? Math.atan2(M.r10(), M.r00()) : 0;
     Vec3 ez = Rw.axis(2);
     Vec3 cf = F0.translationVector().minus(c);
     double c4 = cf.dot(ez);
-    if (cf.minus(ez.times(c4)).norm() > LENGTH_TOL) {
-      return Optional.empty();
-    }
     double[] offsets = {
       ClosedFormIk.wrap(-phi), ClosedFormIk.wrap(-th2), ClosedFormIk.wrap(-th3),
       ClosedFormIk.wrap(-th4), ClosedFormIk.wrap(-th5), ClosedFormIk.wrap(-th6)
@@ -123,8 +133,38 @@ public final class OpwDerivation {
     for (int i = 0; i < 6; i++) {
       offsets[i] = tidy(offsets[i]);
     }
-    return Optional.of(new OpwParameters(tidy(a1), tidy(a2), tidy(b), tidy(c1), tidy(c2), tidy(c3), tidy(c4),
-        offsets, new int[] {s1, s2, s3, s4, s5, s6}));
+    int[] signs = {s1, s2, s3, s4, s5, s6};
+    OpwParameters plain = new OpwParameters(tidy(a1), tidy(a2), tidy(b), tidy(c1), tidy(c2), tidy(c3), tidy(c4),
+        offsets, signs);
+    Transform X_FpF = Transform.IDENTITY;
+    if (!zAlong || cf.minus(ez.times(c4)).norm() > LENGTH_TOL) {
+      X_FpF = orIdentity(forwardOpw(plain, new double[6]).inverse().compose(F0));
+    }
+    if (X_BO == Transform.IDENTITY && X_FpF == Transform.IDENTITY) {
+      return Optional.of(plain);
+    }
+    return Optional.of(new OpwParameters(plain.a1(), plain.a2(), plain.b(), plain.c1(), plain.c2(), plain.c3(),
+        plain.c4(), offsets, signs, X_BO, X_FpF));
+  }
+
+  /** A frame with its z along the unit direction d, its origin the foot of B's origin on the line (p, d). */
+  private static Transform frameOnAxis(Vec3 p, Vec3 d) {
+    Vec3 zo = d.normalized();
+    Vec3 o = p.minus(zo.times(p.dot(zo)));
+    Vec3 xo = Vec3.X.minus(zo.times(zo.x()));
+    if (xo.norm() < 0.5) {
+      xo = Vec3.Y.minus(zo.times(zo.y()));
+    }
+    xo = xo.normalized();
+    Vec3 yo = zo.cross(xo);
+    return Transform.of(new double[] {xo.x(), yo.x(), zo.x(), xo.y(), yo.y(), zo.y(), xo.z(), yo.z(), zo.z()},
+        o.x(), o.y(), o.z());
+  }
+
+  /** The identity itself when {@code t} differs from it only by round-off, else {@code t}. */
+  private static Transform orIdentity(Transform t) {
+    return t.distanceTo(Transform.IDENTITY) < 1e-9 && t.rotationAngleTo(Transform.IDENTITY) < 1e-12
+        ? Transform.IDENTITY : t;
   }
 
   /** Rounds away the last bits of round-off (e.g. -90.00000000000001° or 1e-14 mm). */
@@ -133,8 +173,17 @@ public final class OpwDerivation {
     return Math.abs(v - r) < 1e-12 * Math.max(1, Math.abs(v)) ? r : v;
   }
 
-  /** OPW forward kinematics (flange pose in B) of the parameters: the check against the chain. */
+  /**
+   * OPW forward kinematics (flange pose in B) of the parameters, corrections included
+   * ({@code X_BO · OPW(q) · X_F'F}): the check against the chain.
+   */
   public static Transform forward(OpwParameters o, double[] q) {
+    Transform f = forwardOpw(o, q);
+    return o.corrected() ? o.base().compose(f).compose(o.flange()) : f;
+  }
+
+  /** The canonical OPW flange F' in OPW's base frame O (no corrections). */
+  static Transform forwardOpw(OpwParameters o, double[] q) {
     double[] t = new double[6];
     for (int i = 0; i < 6; i++) {
       t[i] = o.sign(i) * q[i] - o.offsetRad(i);
