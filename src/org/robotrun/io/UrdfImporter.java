@@ -45,8 +45,14 @@ public final class UrdfImporter {
    * @param bodies one line per collision body: where it came from and, for fitted boxes, the
    *     box's volume against the mesh's convex hull
    * @param notes what was assumed or merged, one line each
+   * @param meshFiles the mesh files read (for {@link UrdfCache}'s content hash)
    */
-  public record Result(RobotModel model, List<BodyReport> bodies, List<String> notes) {}
+  public record Result(RobotModel model, List<BodyReport> bodies, List<String> notes, List<Path> meshFiles) {
+
+    public Result(RobotModel model, List<BodyReport> bodies, List<String> notes) {
+      this(model, bodies, notes, List.of());
+    }
+  }
 
   /**
    * One collision body of the imported model.
@@ -258,6 +264,7 @@ public final class UrdfImporter {
     private final List<String> notes = new ArrayList<>();
     private final List<BodyReport> bodies = new ArrayList<>();
     private final Map<String, Path> found = new HashMap<>();
+    private final java.util.Set<Path> meshFiles = new java.util.LinkedHashSet<>();
 
     Build(String source, Path urdf, UrdfReader.Robot robot, Chain chain, Map<String, Path> packages) {
       this.source = source;
@@ -295,7 +302,7 @@ public final class UrdfImporter {
       } catch (IllegalArgumentException e) {
         throw new FileFormatException(source, 0, e.getMessage());
       }
-      return new Result(model, bodies, notes);
+      return new Result(model, bodies, notes, List.copyOf(meshFiles));
     }
 
     private JointSpec joint(UrdfReader.Joint j) {
@@ -503,6 +510,7 @@ public final class UrdfImporter {
       if (!AssimpMeshes.supports(file.toString())) {
         throw new FileFormatException(source, line, "mesh '" + filename + "': expected an .stl, .obj or .dae file");
       }
+      meshFiles.add(file);
       return file;
     }
 
