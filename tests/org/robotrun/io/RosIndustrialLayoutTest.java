@@ -33,7 +33,7 @@ import org.robotrun.robot.RobotModel;
  * the OPW closed form (base and flange corrections where the frames are not OPW's) and round
  * trip 2000 targets in the ground truth's CONFIG, inside the limits.
  */
-class RosIndustrialLayoutTest {
+public class RosIndustrialLayoutTest {
   static final JsonNode FACTS = readFacts();
 
   @TempDir
@@ -146,6 +146,11 @@ class RosIndustrialLayoutTest {
   }
 
   // ---- writing the layouts ----------------------------------------------------------------
+
+  /** Writes one chain of the facts in one layout (for other tests). */
+  public static void writeLayout(Path file, String id, String layout) throws java.io.IOException {
+    TestArms.write(file, urdf(FACTS.get(id), id, Layout.valueOf(layout)));
+  }
 
   /** The URDF of one chain in one layout (metres, radians), numbers from the chain facts. */
   static String urdf(JsonNode m, String id, Layout layout) {
