@@ -78,6 +78,8 @@ public final class ClosedFormIk implements IkSolver {
   private final double[] xffp = new double[12];
   private final double[] scratch = new double[12];
   private final double[] opwTarget = new double[12];
+  /** Newton steps that finish each answer when the chain is OPW only to within rounding; else null. */
+  private final NewtonPolish polish;
 
   /** @throws IllegalArgumentException if the model has no OPW parameters */
   public ClosedFormIk(RobotModel model) {
@@ -93,6 +95,7 @@ public final class ClosedFormIk implements IkSolver {
     c3 = p.c3();
     c4 = p.c4();
     corrected = p.corrected();
+    polish = p.approximate() ? new NewtonPolish(chain) : null;
     KinematicChain.pack(p.base().inverse(), xob, 0);
     KinematicChain.pack(p.flange().inverse(), xffp, 0);
     kappa = Math.sqrt(a2 * a2 + c3 * c3);
@@ -331,6 +334,9 @@ public final class ClosedFormIk implements IkSolver {
               q[i] = clampToLimits(q[i], i);
             }
             if (inside) {
+              if (polish != null) {
+                polish.polish(q, target);
+              }
               out.add(new Solution(q, configOf(q)));
             }
           }
@@ -530,6 +536,9 @@ public final class ClosedFormIk implements IkSolver {
   }
 
   private IkResult solved(double[] q) {
+    if (polish != null) {
+      polish.polish(q, target);
+    }
     chain.flangePose(q, fk, null);
     double dx = fk[9] - target[9], dy = fk[10] - target[10], dz = fk[11] - target[11];
     double pos = Math.sqrt(dx * dx + dy * dy + dz * dz);

@@ -32,16 +32,28 @@ public final class OpwDerivation {
   /** Length tolerance (mm) of the intersection tests. */
   private static final double LENGTH_TOL = 1e-6;
   private static final int VERIFY_SAMPLES = 64;
+  /** Tolerances for a chain that is OPW only to within its file's rounding (rad, mm). */
+  static final double LOOSE_ANGLE_TOL = 1e-4;
+  static final double LOOSE_LENGTH_TOL = 0.05;
+  /** How far the approximate OPW FK may then be from the chain's (mm, rad). */
+  private static final double LOOSE_FIT_MM = 1.0;
+  private static final double LOOSE_FIT_RAD = 2e-3;
 
   private OpwDerivation() {}
 
   /** The OPW parameters of a chain, or empty when it is not an OPW arm (its own opw is ignored). */
   public static Optional<OpwParameters> derive(RobotModel m) {
-    Optional<OpwParameters> p = geometry(m);
-    return p.filter(o -> verify(m, o));
+    Optional<OpwParameters> p = geometry(m, ANGLE_TOL, LENGTH_TOL).filter(o -> verify(m, o, 1e-6, 1e-9));
+    if (p.isPresent()) {
+      return p;
+    }
+    // OPW only to within the rounding of the file's numbers: the closed form gives a start that
+    // Newton steps on the chain finish (OpwParameters.approximate).
+    return geometry(m, LOOSE_ANGLE_TOL, LOOSE_LENGTH_TOL).filter(o -> verify(m, o, LOOSE_FIT_MM, LOOSE_FIT_RAD))
+        .map(OpwParameters::asApproximate);
   }
 
-  private static Optional<OpwParameters> geometry(RobotModel m) {
+  private static Optional<OpwParameters> geometry(RobotModel m, double at, double lt) {
     Transform[] L = ForwardKinematics.linkPosesInBase(m, new double[6]);
     Vec3[] p = new Vec3[6];
     Vec3[] d = new Vec3[6];
@@ -66,20 +78,20 @@ public final class OpwDerivation {
       F0 = X_OB.compose(F0);
     }
     int s1 = d[0].z() > 0 ? 1 : -1;
-    if (Math.abs(d[1].dot(z)) > ANGLE_TOL || d[1].cross(d[2]).norm() > ANGLE_TOL
-        || Math.abs(d[3].dot(d[2])) > ANGLE_TOL || Math.abs(d[4].dot(d[3])) > ANGLE_TOL
-        || Math.abs(d[5].dot(d[4])) > ANGLE_TOL) {
+    if (Math.abs(d[1].dot(z)) > at || d[1].cross(d[2]).norm() > at
+        || Math.abs(d[3].dot(d[2])) > at || Math.abs(d[4].dot(d[3])) > at
+        || Math.abs(d[5].dot(d[4])) > at) {
       return Optional.empty();
     }
-    Optional<Vec3> c45 = intersection(p[3], d[3], p[4], d[4]);
-    if (c45.isEmpty() || lineDistance(c45.get(), p[5], d[5]) > LENGTH_TOL) {
+    Optional<Vec3> c45 = intersection(p[3], d[3], p[4], d[4], lt);
+    if (c45.isEmpty() || lineDistance(c45.get(), p[5], d[5]) > lt) {
       return Optional.empty();
     }
     Vec3 c = c45.get();
     // The OPW frame: x horizontal, perpendicular to J2, toward the wrist centre (else toward +x).
     Vec3 xO = d[1].cross(z).normalized();
     double toward = c.minus(p[1]).dot(xO);
-    if (toward < -LENGTH_TOL || (Math.abs(toward) <= LENGTH_TOL && xO.x() < 0)) {
+    if (toward < -lt || (Math.abs(toward) <= lt && xO.x() < 0)) {
       xO = xO.times(-1);
     }
     Vec3 yO = z.cross(xO);
@@ -92,7 +104,7 @@ public final class OpwDerivation {
     double c2 = Math.hypot(x3, z3);
     double th2 = Math.atan2(x3, z3);
     // Forearm direction f along the J4 axis, pointing from J3 toward C.
-    if (Math.abs(d[3].dot(yO)) > ANGLE_TOL) {
+    if (Math.abs(d[3].dot(yO)) > at) {
       return Optional.empty();
     }
     double fx = d[3].dot(xO), fz = d[3].z();
@@ -200,7 +212,7 @@ public final class OpwDerivation {
     return R.withTranslation(f.x(), f.y(), f.z());
   }
 
-  private static boolean verify(RobotModel m, OpwParameters o) {
+  private static boolean verify(RobotModel m, OpwParameters o, double mm, double rad) {
     Random rnd = new Random(20251126L);
     double[] q = new double[6];
     for (int k = 0; k < VERIFY_SAMPLES; k++) {
@@ -209,7 +221,7 @@ public final class OpwDerivation {
       }
       Transform a = forward(o, q);
       Transform b = ForwardKinematics.flangePoseInBase(m, q);
-      if (a.distanceTo(b) > 1e-6 || a.rotationAngleTo(b) > 1e-9) {
+      if (a.distanceTo(b) > mm || a.rotationAngleTo(b) > rad) {
         return false;
       }
     }
@@ -218,6 +230,11 @@ public final class OpwDerivation {
 
   /** The common point of two lines (closest points within {@link #LENGTH_TOL}), if not parallel. */
   static Optional<Vec3> intersection(Vec3 p, Vec3 d, Vec3 q, Vec3 e) {
+    return intersection(p, d, q, e, LENGTH_TOL);
+  }
+
+  /** As {@link #intersection(Vec3, Vec3, Vec3, Vec3)} with closest points within {@code tol} (mm). */
+  static Optional<Vec3> intersection(Vec3 p, Vec3 d, Vec3 q, Vec3 e, double tol) {
     Vec3 n = d.cross(e);
     double nn = n.dot(n);
     if (nn < ANGLE_TOL * ANGLE_TOL) {
@@ -228,7 +245,7 @@ public final class OpwDerivation {
     double t = r.cross(d).dot(n) / nn;
     Vec3 a = p.plus(d.times(s));
     Vec3 b = q.plus(e.times(t));
-    return a.distanceTo(b) <= LENGTH_TOL ? Optional.of(a.plus(b).times(0.5)) : Optional.empty();
+    return a.distanceTo(b) <= tol ? Optional.of(a.plus(b).times(0.5)) : Optional.empty();
   }
 
   /** Distance of a point from a line. */

@@ -17,15 +17,30 @@ import org.robotrun.math.Transform;
  * axis with z along it). The chain's flange pose is then {@code X_BF = X_BO · OPW(q) · X_F'F},
  * so the closed form solves for {@code X_BO⁻¹ · X_BF · X_F'F⁻¹}. Both are the identity for
  * every library arm.
+ *
+ * <p>{@code approximate}: the chain is OPW only to within the rounding of its file's numbers
+ * (axes up to 1e-4 rad off, lines up to 0.05 mm apart, e.g. a URDF's {@code rpy="0 1.5708 0"});
+ * the closed form's answers are then finished by a few Newton steps on the chain itself.
  */
 public record OpwParameters(
     double a1, double a2, double b, double c1, double c2, double c3, double c4,
-    double[] offsetsRad, int[] signs, Transform base, Transform flange) {
+    double[] offsetsRad, int[] signs, Transform base, Transform flange, boolean approximate) {
 
   /** Parameters without corrections (base and flange frames already where OPW puts them). */
   public OpwParameters(double a1, double a2, double b, double c1, double c2, double c3, double c4,
       double[] offsetsRad, int[] signs) {
-    this(a1, a2, b, c1, c2, c3, c4, offsetsRad, signs, Transform.IDENTITY, Transform.IDENTITY);
+    this(a1, a2, b, c1, c2, c3, c4, offsetsRad, signs, Transform.IDENTITY, Transform.IDENTITY, false);
+  }
+
+  /** Exact parameters with corrections. */
+  public OpwParameters(double a1, double a2, double b, double c1, double c2, double c3, double c4,
+      double[] offsetsRad, int[] signs, Transform base, Transform flange) {
+    this(a1, a2, b, c1, c2, c3, c4, offsetsRad, signs, base, flange, false);
+  }
+
+  /** The same parameters marked approximate (see the class comment). */
+  public OpwParameters asApproximate() {
+    return new OpwParameters(a1, a2, b, c1, c2, c3, c4, offsetsRad, signs, base, flange, true);
   }
 
   public OpwParameters {

@@ -29,7 +29,10 @@ import org.robotrun.math.Vec3;
  *       (U/D: the elbow's side), J4 the rest of the planar rotation.
  * </ol>
  * Every solution is checked against the chain's FK at use (the result carries the error), and
- * the derivation itself at load on 32 random joint vectors ({@link #applies}).
+ * the derivation itself at load on 32 random joint vectors ({@link #applies}). A chain that fits
+ * the family only to within the rounding of its file's numbers (axes up to 1e-4 rad off
+ * parallel, J5 and J6 up to 0.05 mm apart, e.g. {@code rpy="1.5708 0 0"}) gets the same closed
+ * form on its slightly-off geometry, each answer finished by a few Newton steps on the chain.
  *
  * <h2>CONFIG</h2>
  * The flags are the controller's, carried to this geometry (as {@link ChainConfig} does for the
@@ -59,9 +62,14 @@ public final class UrTypeIk implements IkSolver {
   /** |n × J6| below this leaves J6 free (the wrist singularity). */
   private static final double WRIST_SINGULAR = 1e-9;
   private static final int VERIFY_SAMPLES = 32;
+  /** Looser tolerances for a chain of the family only to within its file's rounding (rad, mm). */
+  private static final double LOOSE_ANGLE_TOL = 1e-4;
+  private static final double LOOSE_LENGTH_TOL = 0.05;
 
   private final RobotModel model;
   private final KinematicChain chain;
+  /** Newton steps that finish each answer when the geometry fits only to within rounding; else null. */
+  private final NewtonPolish polish;
   private final double[] lower;
   private final double[] upper;
   // Joint frames: rotation (row-major), translation, axis (joint frame), for J1, J5, J6.
@@ -144,11 +152,13 @@ public final class UrTypeIk implements IkSolver {
       p[i] = L[i + 1].translationVector();
       d[i] = L[i + 1].rotate(model.joint(i).axis()).normalized();
     }
-    String why = structure(d);
+    String why = structure(d, LOOSE_ANGLE_TOL);
     if (why != null) {
       throw new IllegalArgumentException(model.id() + ": not a three-parallel-axes arm (" + why + ")");
     }
-    Optional<Vec3> wB = OpwDerivation.intersection(p[4], d[4], p[5], d[5]);
+    boolean exact = structure(d, ANGLE_TOL) == null && OpwDerivation.intersection(p[4], d[4], p[5], d[5]).isPresent();
+    polish = exact ? null : new NewtonPolish(chain);
+    Optional<Vec3> wB = OpwDerivation.intersection(p[4], d[4], p[5], d[5], exact ? LENGTH_TOL : LOOSE_LENGTH_TOL);
     if (wB.isEmpty()) {
       throw new IllegalArgumentException(model.id() + ": not a three-parallel-axes arm (the J5 and J6 axes do not meet)");
     }
@@ -244,7 +254,7 @@ public final class UrTypeIk implements IkSolver {
       p[i] = L[i + 1].translationVector();
       d[i] = L[i + 1].rotate(model.joint(i).axis()).normalized();
     }
-    if (structure(d) != null || OpwDerivation.intersection(p[4], d[4], p[5], d[5]).isEmpty()) {
+    if (structure(d, LOOSE_ANGLE_TOL) != null || OpwDerivation.intersection(p[4], d[4], p[5], d[5], LOOSE_LENGTH_TOL).isEmpty()) {
       return false;
     }
     try {
@@ -256,8 +266,8 @@ public final class UrTypeIk implements IkSolver {
   }
 
   /** Null when the axis directions at q = 0 fit the family, else what does not. */
-  private static String structure(Vec3[] d) {
-    if (d[1].cross(d[2]).norm() > ANGLE_TOL || d[2].cross(d[3]).norm() > ANGLE_TOL) {
+  private static String structure(Vec3[] d, double tol) {
+    if (d[1].cross(d[2]).norm() > tol || d[2].cross(d[3]).norm() > tol) {
       return "J2, J3 and J4 are not parallel";
     }
     if (d[0].cross(d[1]).norm() < 1e-3) {
@@ -285,13 +295,17 @@ public final class UrTypeIk implements IkSolver {
         if ((valid & (1 << s)) == 0) {
           continue;
         }
-        chain.flangePose(java.util.Arrays.copyOfRange(base, 6 * s, 6 * s + 6), fk, null);
+        double[] b = java.util.Arrays.copyOfRange(base, 6 * s, 6 * s + 6);
+        if (polish != null) {
+          polish.polish(b, target);
+        }
+        chain.flangePose(b, fk, null);
         if (poseError(fk, target) > 1e-6) {
           return false;
         }
         boolean same = true;
         for (int i = 0; i < 6; i++) {
-          same &= Math.abs(ClosedFormIk.wrap(base[6 * s + i] - q[i])) < 1e-6;
+          same &= Math.abs(ClosedFormIk.wrap(b[i] - q[i])) < 1e-6;
         }
         found |= same && configOf(q).sameBranch(flags(s));
       }
@@ -438,6 +452,9 @@ public final class UrTypeIk implements IkSolver {
                   q[4] += TWO_PI * t5;
                   q[5] += TWO_PI * t6;
                   if (firstOutside(q) < 0) {
+                    if (polish != null) {
+                      polish.polish(q, target);
+                    }
                     clampAll(q);
                     out.add(new Solution(q, configOf(q)));
                   }
@@ -458,7 +475,11 @@ public final class UrTypeIk implements IkSolver {
     List<double[]> out = new ArrayList<>();
     for (int s = 0; s < BASE_SOLUTIONS; s++) {
       if ((valid & (1 << s)) != 0) {
-        out.add(java.util.Arrays.copyOfRange(base, 6 * s, 6 * s + 6));
+        double[] q = java.util.Arrays.copyOfRange(base, 6 * s, 6 * s + 6);
+        if (polish != null) {
+          polish.polish(q, target);
+        }
+        out.add(q);
       }
     }
     return out;
@@ -673,6 +694,9 @@ public final class UrTypeIk implements IkSolver {
   }
 
   private IkResult solved(double[] q) {
+    if (polish != null) {
+      polish.polish(q, target);
+    }
     chain.flangePose(q, fk, null);
     double dx = fk[9] - target[9], dy = fk[10] - target[10], dz = fk[11] - target[11];
     return new IkResult.Solved(q.clone(), Math.sqrt(dx * dx + dy * dy + dz * dz), ClosedFormIk.rotationAngle(fk, target), 0);

@@ -104,6 +104,36 @@ public class RosIndustrialLayoutTest {
   }
 
   @Test
+  void anglesRoundedToFourDecimalsStillGetTheClosedFormFinishedOnTheChain() throws Exception {
+    // FANUC-style file with every joint about z and its origins' rpy written as 1.5708, -1.5708,
+    // 3.1416: the axes are 4e-6 rad off OPW's, so the parameters are approximate and each answer
+    // is finished by Newton steps on the chain.
+    String text = urdf(FACTS.get("m20ia"), "m20ia", Layout.Z_AXES);
+    java.util.regex.Matcher mm = java.util.regex.Pattern.compile("rpy=\"([^\"]*)\"").matcher(text);
+    StringBuilder rounded = new StringBuilder();
+    while (mm.find()) {
+      StringBuilder r = new StringBuilder();
+      for (String v : mm.group(1).split(" ")) {
+        r.append(r.isEmpty() ? "" : " ").append(String.format(java.util.Locale.ROOT, "%.4f", Double.parseDouble(v)));
+      }
+      mm.appendReplacement(rounded, "rpy=\"" + r + "\"");
+    }
+    mm.appendTail(rounded);
+    assertThat(rounded.toString()).contains("1.5708");
+    Path file = tmp.resolve("rounded.urdf");
+    TestArms.write(file, rounded.toString());
+    RobotModel model = UrdfImporter.importRobot(file, Map.of()).model();
+    assertThat(model.opw()).isPresent();
+    assertThat(model.opw().get().approximate()).isTrue();
+    IkSolver solver = IkSolver.forModel(model);
+    assertThat(solver.kind()).isEqualTo(ClosedFormIk.KIND);
+    roundTrip(model, solver, 500, 5);
+    // The exact file is not approximate.
+    TestArms.write(file, text);
+    assertThat(UrdfImporter.importRobot(file, Map.of()).model().opw().get().approximate()).isFalse();
+  }
+
+  @Test
   void aWristWhoseAxesMissOnePointIsNotTakenForOpwEvenWithCorrections() throws Exception {
     Path file = tmp.resolve("offset6.urdf");
     // J6 moved 20 mm sideways: no wrist centre, so no closed form (the derivation must not

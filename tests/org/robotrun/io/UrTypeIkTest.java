@@ -90,6 +90,17 @@ class UrTypeIkTest {
   }
 
   @Test
+  void anglesRoundedToFourDecimalsStillGetTheClosedForm() throws Exception {
+    // rpy="1.5708 0 0" as hand-written files give it: axes 4e-6 rad off parallel.
+    Path f = tmp.resolve("rounded.urdf");
+    TestArms.write(f, dhUrdf("rounded", DH.get("ur10e"), false, Math.PI).replace("1.5707963267948966", "1.5708"));
+    RobotModel m = UrdfImporter.importRobot(f, Map.of()).model();
+    IkSolver solver = IkSolver.forModel(m);
+    assertThat(solver.kind()).isEqualTo(UrTypeIk.KIND);
+    RosIndustrialLayoutTest.roundTrip(m, solver, 500, 11);
+  }
+
+  @Test
   void eightSolutionsWithEightDifferentFlagTriples() throws Exception {
     RobotModel m = arm("ur10e");
     UrTypeIk ik = new UrTypeIk(m);
