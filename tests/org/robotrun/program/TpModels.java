@@ -100,6 +100,7 @@ public final class TpModels {
     m.put(Expr.StringReg.class, item().map(Expr.StringReg::new));
     m.put(Expr.StringFunc.class, Arbitraries.of(Expr.StringFn.values()).flatMap(fn ->
         tight(1).list().ofSize(fn.arity()).map(args -> new Expr.StringFunc(fn, args))));
+    m.put(Expr.MathFunc.class, Combinators.combine(Arbitraries.of(Expr.MathFn.values()), tight(1)).as(Expr.MathFunc::new));
     m.put(Expr.Unary.class, unary(2));
     m.put(Expr.Binary.class, binary(2));
     m.put(Expr.Group.class, expr(1).map(Expr.Group::new));
@@ -213,7 +214,8 @@ public final class TpModels {
             .as((k, i, on) -> new Instruction.SetIo(k, i, new Expr.OnOff(on))),
         Combinators.combine(Arbitraries.of(IoKind.DO, IoKind.RO), item()).as((k, i) ->
             new Instruction.Pulse(k, i, OptionalDouble.of(0.5))),
-        programName().map(n -> new Instruction.Call(n, List.of())));
+        programName().map(n -> new Instruction.Call(n, List.of())),
+        Combinators.combine(programName(), tight(1).list().ofMinSize(1).ofMaxSize(2)).as(Instruction.Call::new));
   }
 
   /** Every kind of motion option, one generator each. */
@@ -222,8 +224,11 @@ public final class TpModels {
     m.put(Motion.Offset.class, Arbitraries.just(new Motion.Offset()));
     m.put(Motion.OffsetPr.class, item().map(Motion.OffsetPr::new));
     m.put(Motion.ToolOffsetPr.class, item().map(Motion.ToolOffsetPr::new));
+    m.put(Motion.ToolOffset.class, Arbitraries.just(new Motion.ToolOffset()));
     m.put(Motion.Acc.class, Arbitraries.integers().between(0, 150).map(Motion.Acc::new));
-    m.put(Motion.Skip.class, label().map(Motion.Skip::new));
+    m.put(Motion.AccRegister.class, item().map(Motion.AccRegister::new));
+    m.put(Motion.Skip.class, Arbitraries.oneOf(label().map(Motion.Skip::new),
+        Combinators.combine(label(), item(), Arbitraries.of(true, false)).as(Motion.Skip::storing)));
     m.put(Motion.Wjnt.class, Arbitraries.just(new Motion.Wjnt()));
     m.put(Motion.Inc.class, Arbitraries.just(new Motion.Inc()));
     m.put(Motion.VisionOffset.class, item().map(Motion.VisionOffset::new));
@@ -245,7 +250,7 @@ public final class TpModels {
         new Motion.RawOption("RTCP", "remote TCP (RTCP)"),
         new Motion.RawOption("COORD[1]", "coordinated motion COORD"),
         new Motion.RawOption("CR50", "motion option CR50"),
-        new Motion.RawOption("TB .50sec,CALL OPEN(1)", "TIME BEFORE/AFTER (TB/TA)")));
+        new Motion.RawOption("TB .50sec,POINT_LOGIC", "TIME BEFORE/AFTER (TB/TA)")));
     return m;
   }
 
@@ -347,7 +352,8 @@ public final class TpModels {
     m.put(Instruction.Payload.class, Combinators.combine(index(), comment()).as(Instruction.Payload::new));
     m.put(Instruction.Label.class, Combinators.combine(small(), comment()).as(Instruction.Label::new));
     m.put(Instruction.Jump.class, label().map(Instruction.Jump::new));
-    m.put(Instruction.Call.class, call());
+    m.put(Instruction.Call.class, Arbitraries.oneOf(call(),
+        Combinators.combine(item(), tight(1).list().ofMaxSize(2)).as(Instruction.Call::viaString)));
     m.put(Instruction.Run.class, call().map(c -> new Instruction.Run(c.program(), c.args())));
     m.put(Instruction.End.class, Arbitraries.just(new Instruction.End()));
     m.put(Instruction.Pause.class, Arbitraries.just(new Instruction.Pause()));
@@ -391,6 +397,7 @@ public final class TpModels {
         Arbitraries.oneOf(Arbitraries.integers().between(0, 9).map(Index::of),
             Combinators.combine(small(), comment()).as(Index.Indirect::new)).optional())
         .as(Instruction.OffsetCondition::new));
+    m.put(Instruction.ToolOffsetCondition.class, item().map(Instruction.ToolOffsetCondition::new));
     m.put(Instruction.MacroCall.class, Combinators.combine(macroName(), expr(1).list().ofMaxSize(3))
         .as(Instruction.MacroCall::new));
     m.put(Instruction.Monitor.class, Combinators.combine(programName(), Arbitraries.of(true, false))
@@ -422,7 +429,7 @@ public final class TpModels {
         new Instruction.Unsupported("PR[1]=VR[1].FOUND_POS[2]", "PR[i]=vision registers VR[]", false),
         new Instruction.Unsupported("PALLETIZING-B_1", "palletizing", false),
         new Instruction.Unsupported("Arc Start[1]", "arc welding", false),
-        new Instruction.Unsupported("CALL SR[3]", "CALL through a string register SR[]", false)));
+        new Instruction.Unsupported("RUN SR[3]", "RUN through a string register SR[]", false)));
     return m;
   }
 
