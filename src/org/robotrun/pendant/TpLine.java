@@ -72,7 +72,7 @@ public final class TpLine {
         o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + TpText.index(j) + "]")));
       }
       case Instruction.ToolOffsetCondition o -> {
-        f.add(Field.fixed("TOOL_OFFSET CONDITION"));
+        f.add(Field.fixed("TOOL_OFFSET CONDITION "));
         f.add(itemField("PR", o.register(), Instruction.ToolOffsetCondition::new));
       }
       case Instruction.MacroCall c -> {
