@@ -821,7 +821,7 @@ public final class Pendant {
         keys = List.of("", "", "", "YES", "NO");
       }
     }
-    return Lcd.of(statusLine(), control.activeAlarm().map(RobotControl.AlarmEntry::display).orElse(""), title, body,
+    return Lcd.of(statusLine(), control.activeAlarm().or(control::lastWarning).map(RobotControl.AlarmEntry::display).orElse(""), title, body,
         prompt, keys);
   }
 
