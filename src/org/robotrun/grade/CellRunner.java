@@ -44,9 +44,15 @@ final class CellRunner {
    *
    * @param index 0 for the nominal run, 1..count for the variations
    */
-  record Variant(int index, Scenario scenario, int overridePct, Map<Integer, Position.Cartesian> offsetRegisters) {
+  record Variant(int index, Scenario scenario, int overridePct, Map<Integer, Position.Cartesian> offsetRegisters,
+      boolean visionSeedVaried) {
+    Variant(int index, Scenario scenario, int overridePct, Map<Integer, Position.Cartesian> offsetRegisters) {
+      this(index, scenario, overridePct, offsetRegisters, false);
+    }
+
     String label() {
-      return index == 0 ? "nominal run" : "variation " + index + " (override " + overridePct + "%)";
+      return index == 0 ? "nominal run" : "variation " + index + " (override " + overridePct + "%"
+          + (visionSeedVaried ? ", vision seed " + scenario.vision().seed() : "") + ")";
     }
   }
 
@@ -80,7 +86,14 @@ final class CellRunner {
     }
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
         : rng.nextInt(v.overrideMinPct(), v.overrideMaxPct() + 1);
-    return new Variant(i, base.withWorld(world), override, regs);
+    Scenario out = base.withWorld(world);
+    if (v.varyVisionSeed() && !base.vision().placements().isEmpty()) {
+      // the seed `robotrun run --seed N` takes, so a student can replay the variation that failed
+      long s = base.vision().seed();
+      long next = org.robotrun.io.VisionJson.isValidSeed((double) s + i) ? s + i : s - i;
+      out = out.withVision(base.vision().withSeed(next));
+    }
+    return new Variant(i, out, override, regs, v.varyVisionSeed() && !base.vision().placements().isEmpty());
   }
 
   private static double draw(SplittableRandom rng, double range) {
