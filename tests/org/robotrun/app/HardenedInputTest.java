@@ -276,19 +276,40 @@ class HardenedInputTest {
     Path loop = dir.resolve("LOOP.LS");
     Files.createSymbolicLink(loop, loop);
     for (Path p : new Path[] {f, loop, Path.of("/dev/zero")}) {
-      CommandLine cl = Main.commandLine();
-      StringWriter out = new StringWriter();
-      StringWriter err = new StringWriter();
-      cl.setOut(new PrintWriter(out));
-      cl.setErr(new PrintWriter(err));
-      int exit = cl.execute("check", "--format", "json", p.toString());
-      assertThat(exit).as(p.toString()).isEqualTo(2);
-      assertThat(err.toString()).startsWith(p + ": cannot read: ");
-      JsonNode json = new ObjectMapper().readTree(out.toString());
+      // through run(), which captures System.out as well: picocli used to send the JSON to the old System.out
+      Run r = run("check", "--format", "json", p.toString());
+      assertThat(r.exit()).as(p.toString()).isEqualTo(2);
+      assertThat(r.err()).startsWith(p + ": cannot read: ");
+      JsonNode json = new ObjectMapper().readTree(r.out());
       assertThat(json.get("errors").asInt()).as(p.toString()).isEqualTo(1);
       assertThat(json.get("diagnostics").get(0).get("file").asText()).isEqualTo(p.toString());
       assertThat(json.get("diagnostics").get(0).get("message").asText()).startsWith("cannot read: ");
     }
+  }
+
+  /**
+   * The root cause of the JSON that went missing: picocli's default execution strategy remembers
+   * System.out from when the CommandLine was made and, when System.out has changed since, puts a
+   * writer on the old stream in place of the one given to setOut. Output must go to setOut's writer.
+   */
+  @Test
+  void outputGoesToTheWriterGivenEvenWhenSystemOutChangedAfterTheCommandLineWasMade() {
+    CommandLine cl = Main.commandLine();
+    StringWriter out = new StringWriter();
+    cl.setOut(new PrintWriter(out));
+    cl.setErr(new PrintWriter(new StringWriter()));
+    PrintStream oldOut = System.out;
+    ByteArrayOutputStream sysOut = new ByteArrayOutputStream();
+    System.setOut(new PrintStream(sysOut, true, StandardCharsets.UTF_8));
+    int exit;
+    try {
+      exit = cl.execute("check", "--format", "json", "scenarios/programs/PICKPLACE.LS");
+    } finally {
+      System.setOut(oldOut);
+    }
+    assertThat(exit).isZero();
+    assertThat(out.toString()).startsWith("{\"diagnostics\":").contains("\"errors\":0");
+    assertThat(sysOut.toString(StandardCharsets.UTF_8)).isEmpty();
   }
 
   @Test
