@@ -250,6 +250,14 @@ public final class PendantCommand implements Callable<Integer> {
     while (true) {
       WorkspaceSession s = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
           m -> System.err.println("robotrun: " + m));
+      Path progs = s.workspace.folder().resolve(org.robotrun.io.Workspace.PROGRAMS);
+      if (!s.workspace.readOnly() && Files.exists(progs, java.nio.file.LinkOption.NOFOLLOW_LINKS)
+          && !Files.isDirectory(progs, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+        // programs/ that is a file, a link or a FIFO: no program could be saved (issue 26)
+        s.close();
+        throw new UserError("--workspace: " + progs + " is not a folder (a workspace keeps its programs in "
+            + "programs/); the script was not run, since nothing it did could be saved", Main.EXIT_FAILED);
+      }
       if (!s.workspace.readOnly()) {
         return s;
       }

@@ -211,4 +211,24 @@ class WorkspaceCommandsTest {
     // run --workspace still runs it (read-only: nothing is written)
     assertThat(run("run", "--workspace", unpacked.toString()).err()).doesNotContain("Exception");
   }
+
+  /** Issue 26: a programs/ that is a file let the script run, then lost its programs. */
+  @Test
+  void aScriptOnAWorkspaceWhoseProgramsIsAFileIsRefusedBeforeItRuns(@TempDir Path tmp) throws Exception {
+    Path ws = tmp.resolve("ws");
+    Path keys = script(tmp);
+    assertThat(run("pendant", "--workspace", ws.toString(), "--keys", keys.toString()).exitCode()).isZero();
+    Path programs = ws.resolve("programs");
+    try (var files = Files.list(programs)) {
+      for (Path f : files.toList()) {
+        Files.delete(f);
+      }
+    }
+    Files.delete(programs);
+    Files.writeString(programs, "x");
+    Run r = run("pendant", "--workspace", ws.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(1);
+    assertThat(r.err()).contains("programs is not a folder").contains("the script was not run");
+    assertThat(Files.readString(programs)).isEqualTo("x");
+  }
 }
