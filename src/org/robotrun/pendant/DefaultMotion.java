@@ -49,6 +49,11 @@ record DefaultMotion(Motion.Type type, Motion.Speed speed, Motion.Termination te
 
   /** Parses {@code L 200mm/sec CNT50} / {@code J 50% FINE} (the "P[]" is optional). */
   static DefaultMotion parse(String text) throws BadText {
+    return parse(text, TpLine.DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** As above for a robot whose maximum TCP speed is {@code maxMmPerSec} (mm/s). */
+  static DefaultMotion parse(String text, double maxMmPerSec) throws BadText {
     String[] parts = text.trim().replace("P[]", " ").trim().split("\\s+");
     if (parts.length != 3) {
       throw new BadText("expected 'type speed termination', e.g. L 200mm/sec CNT50");
@@ -79,6 +84,6 @@ record DefaultMotion(Motion.Type type, Motion.Speed speed, Motion.Termination te
     }
     double v = NumberEntry.positive("Speed", s.substring(0, split));
     Motion.Termination term = TpLine.parseTermination(parts[2]);
-    return new DefaultMotion(type, TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(v), unit)), term);
+    return new DefaultMotion(type, TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(v), unit), maxMmPerSec), term);
   }
 }

@@ -28,11 +28,22 @@ import org.robotrun.program.Program;
 public final class TpLine {
   private TpLine() {}
 
-  /** The fields of {@code in}; {@code program} names local positions, {@code programs} feeds CALL choices. */
+  /** The fields of {@code in} for a robot with the controller's default maximum TCP speed. */
   public static List<Field> fields(Instruction in, Program program, List<String> programs) {
+    return fields(in, program, programs, DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** The default top of the mm/sec range ($SPEEDLIM) when the robot's own is not known. */
+  static final double DEFAULT_MAX_MM_PER_SEC = 2000;
+
+  /**
+   * The fields of {@code in}; {@code program} names local positions, {@code programs} feeds CALL
+   * choices, {@code maxMmPerSec} is the robot's maximum TCP speed (the top of the mm/sec range).
+   */
+  public static List<Field> fields(Instruction in, Program program, List<String> programs, double maxMmPerSec) {
     List<Field> f = new ArrayList<>();
     switch (in) {
-      case Instruction.Move m -> move(m, program, f);
+      case Instruction.Move m -> move(m, program, f, maxMmPerSec);
       case Instruction.AssignRegister a -> {
         f.add(itemField("R", a.register(), i -> new Instruction.AssignRegister(i, a.value())));
         f.add(Field.fixed("="));
@@ -160,7 +171,7 @@ public final class TpLine {
         f.add(exprField(i.condition(), e -> new Instruction.IfAction(e, i.action())));
         f.add(Field.fixed(","));
         // The action's own fields, each edit rebuilding the IF around the edited action.
-        for (Field a : fields(i.action(), program, programs)) {
+        for (Field a : fields(i.action(), program, programs, maxMmPerSec)) {
           f.add(a.mapped(x -> Instruction.IfAction.allowedAction(x) ? new Instruction.IfAction(i.condition(), x) : i));
         }
       }
@@ -295,8 +306,9 @@ public final class TpLine {
 
   // ---- motion --------------------------------------------------------------------------------
 
-  private static void move(Instruction.Move m, Program program, List<Field> f) {
-    f.add(new Field(m.type().name(), Field.Edit.choice(List.of("J", "L", "C", "A"), k -> withType(m, Motion.Type.values()[k]))));
+  private static void move(Instruction.Move m, Program program, List<Field> f, double maxMmPerSec) {
+    f.add(new Field(m.type().name(), Field.Edit.choice(List.of("J", "L", "C", "A"),
+        k -> withType(m, Motion.Type.values()[k], maxMmPerSec))));
     f.add(Field.fixed(" "));
     f.add(targetField(m.target(), program, t -> new Instruction.Move(m.type(), t, m.circularEnd(), m.speed(), m.termination(), m.options())));
     if (m.circularEnd().isPresent()) {
@@ -309,10 +321,11 @@ public final class TpLine {
       case Motion.SpeedConst c -> ExprText.plain(c.value());
       case Motion.SpeedRegister r -> ExprText.item("R", r.register());
     };
-    f.add(new Field(speed, Field.Edit.entry(speed, t -> withSpeed(m, checkedSpeed(new Motion.Speed(speedValue(t), m.speed().unit()))))));
+    f.add(new Field(speed, Field.Edit.entry(speed,
+        t -> withSpeed(m, checkedSpeed(new Motion.Speed(speedValue(t), m.speed().unit()), maxMmPerSec)))));
     List<Motion.SpeedUnit> units = Arrays.stream(Motion.SpeedUnit.values()).filter(u -> u.fits(m.type())).toList();
     f.add(new Field(unit(m.speed().unit()), Field.Edit.choice(units.stream().map(TpLine::unit).toList(),
-        k -> withSpeed(m, speedInRange(new Motion.Speed(m.speed().value(), units.get(k)))))));
+        k -> withSpeed(m, speedInRange(new Motion.Speed(m.speed().value(), units.get(k)), maxMmPerSec)))));
     f.add(Field.fixed(" "));
     String term = switch (m.termination()) {
       case Motion.Fine x -> "FINE";
@@ -373,13 +386,14 @@ public final class TpLine {
     };
   }
 
-  static Instruction.Move withType(Instruction.Move m, Motion.Type type) {
+  static Instruction.Move withType(Instruction.Move m, Motion.Type type, double maxMmPerSec) {
     Motion.Speed speed = m.speed();
     if (!speed.unit().fits(type)) {
       // J uses % of the joints' top speed, L/C/A a TCP speed: a unit that does not fit becomes the
       // new type's default unit, keeping the number (as the controller does when retyping), within
       // the unit's range (L 2000mm/sec becomes J 100%).
-      speed = speedInRange(new Motion.Speed(speed.value(), type == Motion.Type.J ? Motion.SpeedUnit.PERCENT : Motion.SpeedUnit.MM_PER_SEC));
+      speed = speedInRange(new Motion.Speed(speed.value(), type == Motion.Type.J ? Motion.SpeedUnit.PERCENT : Motion.SpeedUnit.MM_PER_SEC),
+          maxMmPerSec);
     }
     Optional<Motion.Target> end = Optional.empty();
     if (type == Motion.Type.C) {
@@ -391,16 +405,18 @@ public final class TpLine {
 
   /**
    * The range a controller takes for a motion speed in {@code unit} (R-30iB operator's manual,
-   * motion speed table, recalled: % 1-100, mm/sec 1-2000 (the robot's default maximum Cartesian
-   * speed, $MRR_GRP.$SPEEDLIM), cm/min 1-12000, inch/min 0.1-4724.4, deg/sec 1-520 (the default
-   * $ROTSPEEDLIM), sec 0.1-3200, msec 1-32000): {@code {lo, hi}}.
+   * motion speed table, recalled: % 1-100, mm/sec 1 to the robot's maximum Cartesian speed
+   * $MRR_GRP.$SPEEDLIM ({@code maxMmPerSec}, 2000 by default), cm/min and inch/min up to the same
+   * speed (12000 and 4724.4 for 2000 mm/sec), deg/sec 1-520 (the default $ROTSPEEDLIM), sec
+   * 0.1-3200, msec 1-32000): {@code {lo, hi}}.
    */
-  static double[] speedRange(Motion.SpeedUnit unit) {
+  static double[] speedRange(Motion.SpeedUnit unit, double maxMmPerSec) {
     return switch (unit) {
       case PERCENT -> new double[] {1, 100};
-      case MM_PER_SEC -> new double[] {1, 2000};
-      case CM_PER_MIN -> new double[] {1, 12000};
-      case INCH_PER_MIN -> new double[] {0.1, 4724.4};
+      case MM_PER_SEC -> new double[] {1, maxMmPerSec};
+      case CM_PER_MIN -> new double[] {1, Math.floor(maxMmPerSec * 6)};
+      // 0.1 inch/min steps, rounded down so the top never exceeds the mm/sec maximum
+      case INCH_PER_MIN -> new double[] {0.1, Math.floor(maxMmPerSec * 60 / 25.4 * 10) / 10};
       case DEG_PER_SEC -> new double[] {1, 520};
       case SEC -> new double[] {0.1, 3200};
       case MSEC -> new double[] {1, 32000};
@@ -413,8 +429,13 @@ public final class TpLine {
    * is checked when the line runs).
    */
   static Motion.Speed checkedSpeed(Motion.Speed s) throws BadText {
+    return checkedSpeed(s, DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** As {@link #checkedSpeed(Motion.Speed)} for a robot whose maximum TCP speed is {@code maxMmPerSec}. */
+  static Motion.Speed checkedSpeed(Motion.Speed s, double maxMmPerSec) throws BadText {
     if (s.value() instanceof Motion.SpeedConst c) {
-      double[] r = speedRange(s.unit());
+      double[] r = speedRange(s.unit(), maxMmPerSec);
       if (!(c.value() >= r[0] && c.value() <= r[1])) {
         throw new BadText("Speed " + ExprText.plain(c.value()) + unit(s.unit()) + ": Value out of range, enter "
             + ExprText.plain(r[0]) + " to " + ExprText.plain(r[1]) + " " + unit(s.unit()), true);
@@ -424,9 +445,9 @@ public final class TpLine {
   }
 
   /** {@code s} with its constant moved into its unit's range (a unit chosen from the list). */
-  static Motion.Speed speedInRange(Motion.Speed s) {
+  static Motion.Speed speedInRange(Motion.Speed s, double maxMmPerSec) {
     if (s.value() instanceof Motion.SpeedConst c) {
-      double[] r = speedRange(s.unit());
+      double[] r = speedRange(s.unit(), maxMmPerSec);
       return new Motion.Speed(new Motion.SpeedConst(Math.max(r[0], Math.min(r[1], c.value()))), s.unit());
     }
     return s;
