@@ -75,12 +75,12 @@ class CollisionWorldEdgeTest {
   }
 
   // Method: two cubes face to face along each world axis, gaps of 2e-6 mm (beyond the contact
-  // tolerance, 1e-6 mm: apart), 0 (touching) and -0.1 mm; a third cube sharing the first's
-  // starting x.
+  // tolerance, 1e-6 mm: apart), 5e-7 mm (within it: touching, so the broad phase's bounds must
+  // keep the pair), 0 (touching) and -0.1 mm; a third cube sharing the first's starting x.
   @Test
   void contactsAtTheToleranceAndEqualStartingX() {
     for (int axis = 0; axis < 3; axis++) {
-      for (double gap : new double[] {2e-6, 0, -0.1}) {
+      for (double gap : new double[] {2e-6, 5e-7, 0, -0.1}) {
         CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
         double[] c = {0, 0, 0};
         c[axis] = 20 + gap;
@@ -106,7 +106,8 @@ class CollisionWorldEdgeTest {
     CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
     int n = 60;
     for (int i = 0; i < n; i++) {
-      world.add(Body.part("p" + i, "p" + i), Obb.axisAligned(i * 0.01, 0, 0, 1, 1, 1));
+      // Later handles further left: the sweep meets them in the reverse order of their handles.
+      world.add(Body.part("p" + i, "p" + i), Obb.axisAligned(-i * 0.01, 0, 0, 1, 1, 1));
     }
     int far = world.add(Body.part("far", "far"), Obb.axisAligned(0, 0, 500, 1, 1, 1));
     assertThat(world.update()).isEqualTo(n * (n - 1) / 2);
@@ -146,7 +147,8 @@ class CollisionWorldEdgeTest {
     world.update();
     world.update();
     assertThat(asked.get()).isEqualTo(780);
-    assertThat(world.cacheBytes()).isPositive();
+    // At most half full (open addressing), and linear in the pairs: 9 bytes a slot (key + answer).
+    assertThat(world.cacheBytes()).isGreaterThanOrEqualTo(2L * 780 * 9).isLessThanOrEqualTo(8L * 780 * 9 + 9 * 1024);
     AtomicInteger asked2 = new AtomicInteger();
     world.setFilter((a, b) -> {
       asked2.incrementAndGet();
@@ -179,6 +181,30 @@ class CollisionWorldEdgeTest {
       assertThatThrownBy(() -> world.isTouching(bad)).isInstanceOf(IndexOutOfBoundsException.class);
       assertThatThrownBy(() -> world.setBox(bad, Obb.axisAligned(0, 0, 0, 1, 1, 1))).isInstanceOf(IndexOutOfBoundsException.class);
       assertThatThrownBy(() -> world.setPose(bad, Transform.IDENTITY, Transform.IDENTITY)).isInstanceOf(IndexOutOfBoundsException.class);
+    }
+  }
+
+  // Method: setPose(X_WL, X_LB) against X_WL·X_LB composed by Transform, for seeded general
+  // poses (every rotation element and translation non-zero); the half sizes stay.
+  @Test
+  void setPoseIsTheComposedTransformForGeneralPoses() {
+    CollisionWorld world = new CollisionWorld(PairFilter.DIFFERENT_OWNERS);
+    int h = world.add(Body.part("p", "p"), Obb.axisAligned(0, 0, 0, 3, 4, 5));
+    Random rnd = new Random(12);
+    for (int k = 0; k < 20; k++) {
+      Transform X_WL = Transform.fromRpy(rnd.nextDouble() * 900 - 450, rnd.nextDouble() * 900 - 450, rnd.nextDouble() * 900,
+          rnd.nextDouble() * 6 - 3, rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 6 - 3);
+      Transform X_LB = Transform.fromRpy(rnd.nextDouble() * 200 - 100, rnd.nextDouble() * 200 - 100, rnd.nextDouble() * 200 - 100,
+          rnd.nextDouble() * 6 - 3, rnd.nextDouble() * 3 - 1.5, rnd.nextDouble() * 6 - 3);
+      world.setPose(h, X_WL, X_LB);
+      Transform expected = X_WL.compose(X_LB);
+      Obb box = world.box(h);
+      assertThat(box.pose().distanceTo(expected)).isLessThan(1e-9);
+      double[] a = box.pose().rotationRowMajor(), b = expected.rotationRowMajor();
+      for (int i = 0; i < 9; i++) {
+        assertThat(a[i]).isCloseTo(b[i], org.assertj.core.api.Assertions.within(1e-12));
+      }
+      assertThat(new double[] {box.hx(), box.hy(), box.hz()}).containsExactly(3, 4, 5);
     }
   }
 
