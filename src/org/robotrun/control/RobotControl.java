@@ -243,6 +243,12 @@ public interface RobotControl {
     }
   }
 
+  /**
+   * The fastest TCP speed this robot's programs may ask for (mm/s, the controller's
+   * $MRR_GRP.$SPEEDLIM for its model): the top of the mm/sec range the pendant accepts.
+   */
+  double maxLinearSpeedMmPerSec();
+
   /** Whether the pendant's TP ENABLE switch is on. */
   boolean tpEnabled();
 

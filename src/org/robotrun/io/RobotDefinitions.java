@@ -244,9 +244,11 @@ public final class RobotDefinitions {
 
     try {
       // The closed form's parameters come from the chain (OpwDerivation), never from the file.
-      return RobotModel.fromChain(
+      RobotModel model = RobotModel.fromChain(
           r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links,
           root.path("coupledJ3").asBoolean(false));
+      // the controller's $SPEEDLIM for this arm (mm/s); the default when the file does not say
+      return root.has("maxLinearSpeed") ? model.withMaxLinearSpeed(r.number(root, "maxLinearSpeed", "")) : model;
     } catch (IllegalArgumentException e) {
       throw new FileFormatException(source, 0, e.getMessage());
     }

@@ -417,7 +417,7 @@ public final class ScenarioReader {
       }
       for (Map.Entry<String, LocatedJson> e : o.members().entrySet()) {
         String path = join(at, "userAlarms." + e.getKey());
-        Integer n = index(e.getKey(), MAX_USER_ALARM, o.keyLines().get(e.getKey()), path, "user alarm");
+        Integer n = keyIndex(e.getKey(), MAX_USER_ALARM, o.keyLines().get(e.getKey()), path, "user alarm");
         if (!(e.getValue() instanceof JString text)) {
           error(e.getValue().line(), path, "expected the alarm text as a string, got " + e.getValue().describe());
           continue;
@@ -902,7 +902,7 @@ public final class ScenarioReader {
       }
       for (Map.Entry<String, LocatedJson> e : regs.members().entrySet()) {
         String at = join(where, "registers." + e.getKey());
-        Integer index = index(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
+        Integer index = keyIndex(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
         Double v = finite(e.getValue(), at);
         if (index != null && v != null) {
           out.put(index, v);
@@ -924,7 +924,7 @@ public final class ScenarioReader {
         }
         for (String key : set.members().keySet()) {
           String at = join(where, "frames." + kind + "." + key);
-          Integer n = index(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
+          Integer n = keyIndex(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
           Transform pose = pose(set, key, join(where, "frames." + kind));
           if (n != null && pose != null) {
             (kind.equals("tool") ? tool : user).put(n, pose);
@@ -1031,19 +1031,6 @@ public final class ScenarioReader {
         v[k] = d == null ? 0 : d;
       }
       return ok ? Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform() : null;
-    }
-
-    private Integer index(String key, int max, int line, String path, String what) {
-      try {
-        int n = Integer.parseInt(key);
-        if (n >= 1 && n <= max) {
-          return n;
-        }
-      } catch (NumberFormatException e) {
-        // reported below
-      }
-      error(line, path, "expected a " + what + " number 1.." + max + " as the key, got \"" + key + "\"");
-      return null;
     }
 
     private static String describeArray(LocatedJson v) {

@@ -326,6 +326,11 @@ public final class ControllerPort implements RobotControl {
   // ---- switches -------------------------------------------------------------------------------
 
   @Override
+  public double maxLinearSpeedMmPerSec() {
+    return controller.model().maxLinearSpeedMmPerSec();
+  }
+
+  @Override
   public boolean tpEnabled() {
     return controller.uop().tpEnabled();
   }
