@@ -112,7 +112,8 @@ public final class RobotDefinitions {
 
   /**
    * Loads a robot from a file: RobotRun's JSON (display meshes named in it are read relative to
-   * its folder) or a URDF (imported in memory, as {@code robotrun robot import} would).
+   * its folder) or a URDF (imported in memory, as {@code robotrun robot import} would, with the
+   * package folders a scenario gave for it; kept by {@link UrdfCache} while unchanged).
    *
    * @throws FileFormatException naming the file, line or field, and what was expected
    */
@@ -122,7 +123,7 @@ public final class RobotDefinitions {
       throw new FileFormatException(name, 0, "robot file not found (paths are relative to the scenario file)");
     }
     if (name.toLowerCase(Locale.ROOT).endsWith(".urdf")) {
-      return UrdfImporter.importRobot(file, java.util.Map.of()).model();
+      return UrdfCache.load(file);
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
     try {

@@ -80,9 +80,13 @@ public record RobotModel(
     return opw.isEmpty() ? bare : new RobotModel(id, displayName, joints, X_6F, X_WB, links, opw, coupledJ3);
   }
 
-  /** "spherical" (the OPW closed form applies), "offset" (the CRX layout) or "other". */
+  /**
+   * "spherical" (the OPW closed form applies), "offset" (the CRX layout), "parallel" (three
+   * parallel axes and an offset wrist, the UR layout) or "other".
+   */
   public String wristKind() {
-    return opw.isPresent() ? "spherical" : OffsetWristIk.applies(this) ? "offset" : "other";
+    return opw.isPresent() ? "spherical" : OffsetWristIk.applies(this) ? "offset"
+        : UrTypeIk.applies(this) ? "parallel" : "other";
   }
 
   public JointSpec joint(int i) {

@@ -8,6 +8,8 @@ import static org.robotrun.pendant.PendantKeys.run;
 import java.util.List;
 import java.util.OptionalDouble;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
+import org.robotrun.io.RobotDefinitions;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
@@ -23,7 +25,7 @@ import org.robotrun.program.Program;
  * old value kept.
  */
 class PendantNumberEntryTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private String prompt() {
@@ -249,7 +251,9 @@ class PendantNumberEntryTest {
   @Test
   void theMmPerSecRangeEndsAtTheRobotsOwnMaximumFromTheControlPort() {
     // a CRX's controller limits a TCP speed to 1000 mm/s (its model's $SPEEDLIM), not 2000
-    control.setMaxLinearSpeedMmPerSec(1000);
+    RobotControl control = RealController.control(RobotDefinitions.load("crx10ia"));
+    assertThat(control.maxLinearSpeedMmPerSec()).isEqualTo(1000);
+    Pendant p = new Pendant(control);
     run(p, """
         SELECT
         F1
@@ -261,7 +265,7 @@ class PendantNumberEntryTest {
         """);
     Program before = control.program("N").orElseThrow();
     run(p, "RIGHT *3\nTYPE 1500\nENTER\n");
-    assertThat(prompt()).isEqualTo("Speed 1500mm/sec: Value out of range, enter 1 to 1000 mm/sec");
+    assertThat(p.lcd().promptLine().strip()).isEqualTo("Speed 1500mm/sec: Value out of range, enter 1 to 1000 mm/sec");
     assertThat(control.program("N").orElseThrow()).isEqualTo(before);
     run(p, "TYPE 1000\nENTER\n");
     assertThat(control.program("N").orElseThrow().line(1)).isInstanceOfSatisfying(Instruction.Move.class,
