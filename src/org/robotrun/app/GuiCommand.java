@@ -360,6 +360,11 @@ public final class GuiCommand implements Callable<Integer> {
       if (sim.controllers().size() > 1) {
         p.setRobotLabel(c.name());
       }
+      if (ws != null && ws.session.workspace.readOnly()) {
+        // A hand-in (or a workspace another RobotRun holds) is looked at, never changed in
+        // silence: program edits are refused where the student types (docs/workspace.md).
+        p.setReadOnly(readOnlyEditMessage(ws.session.workspace.readOnlyReason()));
+      }
       pendants.add(p);
     }
     programs.forEach(pendants.get(0).control()::saveProgram);
@@ -566,6 +571,12 @@ public final class GuiCommand implements Callable<Integer> {
   }
 
   /** The File menu of a workspace window, with the guard that keeps unsaved work from closing silently. */
+  /** The pendant's prompt line at a refused edit in a read-only workspace (at most two LCD lines' worth). */
+  static String readOnlyEditMessage(String reason) {
+    String why = reason.replace(": opened read-only, nothing is saved", "");
+    return "READ-ONLY (" + why + "): edits are refused. File > Save a copy as... gives a workspace you can edit";
+  }
+
   private static FileMenu fileMenu(WindowCell ws, UserDirs dirs, SimulatorWindow w, Path[] switchTo) {
     FileDialogs dialogs = new FileDialogs();
     java.util.function.BooleanSupplier[] closeGuard = {() -> true};

@@ -91,12 +91,23 @@ final class GuiFileActions implements FileMenu.Actions {
 
   @Override
   public String saveCopy(Path folder) {
-    String saved = saveNow();
+    boolean readOnly = current.get().session.workspace.readOnly();
+    // A read-only workspace (a hand-in) refuses edits, so what is on disk is all there is to copy.
+    String saved = readOnly ? "" : saveNow();
     if (!saved.isEmpty()) {
       return saved;
     }
-    String m = WorkspaceFiles.saveCopy(workspaceFolder(), folder.toAbsolutePath().normalize());
-    return m.isEmpty() ? "A copy was saved in " + folder + " (you keep working in " + workspaceFolder() + ")." : m;
+    Path to = folder.toAbsolutePath().normalize();
+    String m = WorkspaceFiles.saveCopy(workspaceFolder(), to);
+    if (!m.isEmpty()) {
+      return m;
+    }
+    if (readOnly) {
+      // "save as a new workspace": the copy is the student's to edit, so the window opens it
+      String opened = openWorkspace(to, false);
+      return opened.isEmpty() ? "" : "A copy was saved in " + to + ", but it could not be opened: " + opened;
+    }
+    return "A copy was saved in " + folder + " (you keep working in " + workspaceFolder() + ").";
   }
 
   @Override

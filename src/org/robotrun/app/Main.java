@@ -114,6 +114,13 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
   static CommandLine commandLine() {
     CommandLine cl = new CommandLine(new Main());
+    // Not picocli's default strategy object: it is one of the old handlers, which remember
+    // System.out as it was when the CommandLine was made, and picocli's backwards compatibility
+    // then replaces the writer given to setOut with one on that stream whenever System.out has
+    // been changed since (a test capturing System.out, an embedding program): the output of every
+    // command went to the old stream. A plain strategy keeps setOut's writer (issue 26).
+    CommandLine.RunLast runLast = new CommandLine.RunLast();
+    cl.setExecutionStrategy(runLast::execute);
     cl.setExecutionExceptionHandler(Main::onExecutionException);
     cl.setParameterExceptionHandler(Main::onParameterException);
     return cl;

@@ -41,7 +41,7 @@ import picocli.CommandLine.Spec;
       "With --workspace DIR the workspace is opened (or created) first and everything the script changes is saved back to it when the script ends (and at each SHOW); a second RobotRun on the same workspace opens it read-only. Opening it is a cold start too (T1, 10%%).",
       "Exit codes: 0 script ran (pendant errors show on its prompt line), 1 --save or the workspace could not be written "
           + "(a --workspace that cannot be saved to: held by another RobotRun for more than 10 s, read-only, a hand-in "
-          + "zip: the script is not run), 2 bad option, unreadable program or malformed script (file:line)."
+          + "zip or unpacked folder: the script is not run), 2 bad option, unreadable program or malformed script (file:line)."
     })
 public final class PendantCommand implements Callable<Integer> {
   /** The override a cold start sets ($SCR.$COLDOVRD on a controller): 10%. */
@@ -250,6 +250,14 @@ public final class PendantCommand implements Callable<Integer> {
     while (true) {
       WorkspaceSession s = WorkspaceSession.open(workspace, false, java.util.Optional::empty,
           m -> System.err.println("robotrun: " + m));
+      Path progs = s.workspace.folder().resolve(org.robotrun.io.Workspace.PROGRAMS);
+      if (!s.workspace.readOnly() && Files.exists(progs, java.nio.file.LinkOption.NOFOLLOW_LINKS)
+          && !Files.isDirectory(progs, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+        // programs/ that is a file, a link or a FIFO: no program could be saved (issue 26)
+        s.close();
+        throw new UserError("--workspace: " + progs + " is not a folder (a workspace keeps its programs in "
+            + "programs/); the script was not run, since nothing it did could be saved", Main.EXIT_FAILED);
+      }
       if (!s.workspace.readOnly()) {
         return s;
       }

@@ -308,6 +308,14 @@ public final class RunCommand implements Callable<Integer> {
     if (r.robots().size() > 1) {
       lines.add(String.format(Locale.ROOT, "cell cycle time %.3f s", r.cycleTimeSec()));
     }
+    // WARN alarms (a refused RUN or PLC start): the programs went on, but the user must see them
+    for (org.robotrun.sim.Controller rc : sim.controllers()) {
+      String who = sim.controllers().size() > 1 ? rc.name() + ": " : "";
+      rc.warnings().stream().limit(20).forEach(a -> lines.add(who + "warning " + a.display()));
+      if (rc.warnings().size() > 20) {
+        lines.add(who + "... " + (rc.warnings().size() - 20) + " more warnings (see --report)");
+      }
+    }
     lines.forEach(l -> System.out.println(TerminalText.safe(l)));
     if (session != null) {
       session.close();

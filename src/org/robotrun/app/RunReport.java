@@ -106,6 +106,19 @@ final class RunReport {
       o.put("a", e.bodyA());
       o.put("b", e.bodyB());
     }
+    // WARN alarms (a refused RUN or PLC start): raised, shown, and every program went on
+    ArrayNode warnings = root.putArray("warnings");
+    for (Controller c : sim.controllers()) {
+      for (ControllerAlarm a : c.warnings()) {
+        ObjectNode o = warnings.addObject();
+        o.put("robot", c.name());
+        o.put("timeSec", round(a.simTimeSec(), 6));
+        o.put("code", a.code());
+        o.put("message", a.message());
+        o.put("program", a.program());
+        o.put("line", a.line());
+      }
+    }
     return root;
   }
 

@@ -82,9 +82,15 @@ final class WorkspaceSession implements AutoCloseable {
       folder = unpacked;
       readOnly = true;
     }
+    // An unpacked hand-in (a folder with the manifest.json File > Hand in writes, as Gradescope
+    // unpacks it) is the student's handed-in work: looked at, never changed (its manifest would no
+    // longer match), as a zip is. Issue 26.
+    boolean unpackedHandIn = unpacked == null
+        && Files.isRegularFile(dir.resolve(HandIn.MANIFEST), java.nio.file.LinkOption.NOFOLLOW_LINKS);
     Workspace ws;
     try {
-      ws = unpacked != null ? Workspace.openHandIn(folder, newCell()) : Workspace.open(folder, newCell(), readOnly);
+      ws = unpacked != null || unpackedHandIn ? Workspace.openHandIn(folder, newCell())
+          : Workspace.open(folder, newCell(), readOnly);
     } catch (WorkspaceException e) {
       deleteTree(unpacked);
       throw new UserError(e.getMessage());

@@ -375,6 +375,14 @@ public interface RobotControl {
   /** The active alarm, if any. */
   Optional<AlarmEntry> activeAlarm();
 
+  /**
+   * The newest WARN alarm since the last RESET (a refused RUN or PLC start): nothing stopped for
+   * it; the pendant shows it on its alarm line while no alarm is active.
+   */
+  default Optional<AlarmEntry> lastWarning() {
+    return Optional.empty();
+  }
+
   /** Alarm history, newest first. */
   List<AlarmEntry> alarmHistory();
 

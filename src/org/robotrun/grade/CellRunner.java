@@ -44,9 +44,15 @@ final class CellRunner {
    *
    * @param index 0 for the nominal run, 1..count for the variations
    */
-  record Variant(int index, Scenario scenario, int overridePct, Map<Integer, Position.Cartesian> offsetRegisters) {
+  record Variant(int index, Scenario scenario, int overridePct, Map<Integer, Position.Cartesian> offsetRegisters,
+      boolean visionSeedVaried) {
+    Variant(int index, Scenario scenario, int overridePct, Map<Integer, Position.Cartesian> offsetRegisters) {
+      this(index, scenario, overridePct, offsetRegisters, false);
+    }
+
     String label() {
-      return index == 0 ? "nominal run" : "variation " + index + " (override " + overridePct + "%)";
+      return index == 0 ? "nominal run" : "variation " + index + " (override " + overridePct + "%"
+          + (visionSeedVaried ? ", vision seed " + scenario.vision().seed() : "") + ")";
     }
   }
 
@@ -80,7 +86,14 @@ final class CellRunner {
     }
     int override = v.overrideMinPct() == v.overrideMaxPct() ? v.overrideMinPct()
         : rng.nextInt(v.overrideMinPct(), v.overrideMaxPct() + 1);
-    return new Variant(i, base.withWorld(world), override, regs);
+    Scenario out = base.withWorld(world);
+    if (v.varyVisionSeed() && !base.vision().placements().isEmpty()) {
+      // the seed `robotrun run --seed N` takes, so a student can replay the variation that failed
+      long s = base.vision().seed();
+      long next = org.robotrun.io.VisionJson.isValidSeed((double) s + i) ? s + i : s - i;
+      out = out.withVision(base.vision().withSeed(next));
+    }
+    return new Variant(i, out, override, regs, v.varyVisionSeed() && !base.vision().placements().isEmpty());
   }
 
   private static double draw(SplittableRandom rng, double range) {
@@ -145,13 +158,28 @@ final class CellRunner {
       }
     }
     List<org.robotrun.math.Vec3> path = new ArrayList<>();
-    HeadlessRun.CellResult r = HeadlessRun.runCell(sim, mains, maxSimSec, s -> {
+    java.util.function.Consumer<Simulation> afterTick = s -> {
       org.robotrun.math.Xyzwpr t = c.tcpInWorld();
       path.add(new org.robotrun.math.Vec3(t.x(), t.y(), t.z()));
       if ((s.ticks() & 63) == 0 && System.nanoTime() - deadlineNanos > 0) {
         throw new WallClockExceeded();
       }
-    }, () -> false, "");
+    };
+    // A cell its PLC starts (production.ROBOT.runStartsFromPlc) is started as `robotrun run` starts
+    // it: the PLC sequence selects and starts the program; a start of our own would clash with it
+    // (PROG-007: the program is already running). Issue 26.
+    Optional<org.robotrun.world.ProductionSetup.Robot> plc = v.scenario().production().of(c.name())
+        .filter(org.robotrun.world.ProductionSetup.Robot::startFromPlc);
+    HeadlessRun.CellResult r;
+    if (plc.isPresent()) {
+      List<String> bad = org.robotrun.sim.ProductionRun.check(c.name(), plc.get(), c);
+      if (!bad.isEmpty()) {
+        throw new IllegalArgumentException(String.join("; ", bad));
+      }
+      r = org.robotrun.sim.ProductionRun.run(sim, c, maxSimSec, afterTick, () -> false, "");
+    } else {
+      r = HeadlessRun.runCell(sim, mains, maxSimSec, afterTick, () -> false, "");
+    }
     List<RunOutcome.RobotOutcome> robots = new ArrayList<>();
     for (Controller x : sim.controllers()) {
       HeadlessRun.RobotResult rr = r.robots().stream().filter(y -> y.robot().equals(x.name())).findFirst().orElse(null);
@@ -166,6 +194,7 @@ final class CellRunner {
     Optional<ControllerAlarm> alarm = sim.controllers().size() == 1 ? one.alarm() : r.alarm();
     return new RunOutcome(v.label(), finished, alarm, r.cycleTimeSec(),
         sim.world(), Map.copyOf(sim.heldParts()), new ArrayList<>(sim.collisionEvents()), c.registers(), c.frames(),
-        sim.snapshot().scene(), startParents, List.copyOf(robots), List.copyOf(path));
+        sim.snapshot().scene(), startParents, List.copyOf(robots), List.copyOf(path),
+        sim.controllers().stream().flatMap(x -> x.warnings().stream()).toList());
   }
 }

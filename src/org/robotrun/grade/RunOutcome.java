@@ -27,11 +27,12 @@ import org.robotrun.world.World;
  * @param startParents each part's parent at the start, to tell a moved part
  * @param robots every robot of the cell, in scenario order
  * @param tcpPath the first robot's active TCP in WORLD at every tick, for {@link Check.TcpVisits}
+ * @param warnings the WARN alarms of every robot (a refused RUN or PLC start), oldest first per robot
  */
 public record RunOutcome(String label, boolean finished, Optional<ControllerAlarm> alarm, double cycleTimeSec,
     World world, Map<String, String> heldParts, List<CollisionEvent> collisions, Registers registers,
     FrameTable frames, SceneSnapshot scene, Map<String, Optional<String>> startParents, List<RobotOutcome> robots,
-    List<org.robotrun.math.Vec3> tcpPath) {
+    List<org.robotrun.math.Vec3> tcpPath, List<ControllerAlarm> warnings) {
 
   /** The robot a check looks at: by name, or the first robot when none is named. */
   public RobotOutcome robot(Optional<String> name) {

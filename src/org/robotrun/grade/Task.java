@@ -87,17 +87,26 @@ public record Task(String file, String title, Path scenario, String program, Lim
    * @param parts parts whose start poses are jittered
    * @param overrideMinPct lowest speed override drawn for a variation
    * @param overrideMaxPct highest (the nominal run uses 100)
+   * @param varyVisionSeed variation i places the scenario's vision parts with {@code vision.seed + i}
+   *     (the nominal run with the scenario's own seed), so a vision program is graded over several
+   *     placements
    */
-  public record Variations(int count, long seed, List<PartJitter> parts, int overrideMinPct, int overrideMaxPct) {
-    public static final Variations NONE = new Variations(0, 0, List.of(), 100, 100);
+  public record Variations(int count, long seed, List<PartJitter> parts, int overrideMinPct, int overrideMaxPct,
+      boolean varyVisionSeed) {
+    public static final Variations NONE = new Variations(0, 0, List.of(), 100, 100, false);
 
     public Variations {
       parts = List.copyOf(parts);
     }
 
+    /** Variations that leave the vision seed alone. */
+    public Variations(int count, long seed, List<PartJitter> parts, int overrideMinPct, int overrideMaxPct) {
+      this(count, seed, parts, overrideMinPct, overrideMaxPct, false);
+    }
+
     /** The same variations, {@code n} of them. */
     public Variations withCount(int n) {
-      return new Variations(n, seed, parts, overrideMinPct, overrideMaxPct);
+      return new Variations(n, seed, parts, overrideMinPct, overrideMaxPct, varyVisionSeed);
     }
   }
 

@@ -56,7 +56,7 @@ public final class TaskReader {
   private static final Set<String> ROBOT_TYPES = Set.of("runsToEnd", "noMotionStop", "cycleTime", "programUse",
       "endState", "frame");
   private static final Set<String> LIMITS = Set.of("simSeconds", "wallSeconds");
-  private static final Set<String> VARIATIONS = Set.of("count", "seed", "overridePct", "parts");
+  private static final Set<String> VARIATIONS = Set.of("count", "seed", "overridePct", "parts", "varyVisionSeed");
   private static final Set<String> OVERRIDE = Set.of("min", "max");
   private static final Set<String> JITTER = Set.of("part", "xMm", "yMm", "rDeg", "offsetRegister");
   private static final Set<String> COMMON = Set.of("name", "type", "points", "message", "hidden", "runs");
@@ -308,7 +308,19 @@ public final class TaskReader {
         });
         parts.add(new Task.PartJitter(part.orElse(""), x, y, r, reg));
       }
-      return new Task.Variations(count, seed, parts, min, max);
+      boolean varyVision = false;
+      LocatedJson vv = o.members().get("varyVisionSeed");
+      if (vv != null) {
+        if (!(vv instanceof LocatedJson.JBool b)) {
+          error(vv.line(), "variations.varyVisionSeed", "expected true or false, got " + vv.describe());
+        } else if (b.value() && scenario != null && scenario.vision().placements().isEmpty()) {
+          error(vv.line(), "variations.varyVisionSeed", "the scenario has no vision placements: another vision seed "
+              + "would move nothing (docs/vision.md, \"placements\")");
+        } else {
+          varyVision = b.value();
+        }
+      }
+      return new Task.Variations(count, seed, parts, min, max, varyVision);
     }
 
     private List<Check> checks(JObject top, Scenario scenario) {

@@ -86,7 +86,8 @@ public final class ScenarioReader {
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
   private static final Set<String> OBJECT = Set.of(
-      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent", "touchable");
+      "name", "kind", "shape", "size", "radius", "height", "file", "scale", "color", "pose", "parent", "touchable",
+      "startPose", "startParent");
   private static final Map<String, Set<String>> SHAPE_FIELDS = Map.of(
       "box", Set.of("size"), "cylinder", Set.of("radius", "height"), "mesh", Set.of("file", "scale"));
   private static final Set<String> POSE = Set.of("x", "y", "z", "w", "p", "r");
@@ -675,6 +676,7 @@ public final class ScenarioReader {
       }
       Map<String, ObjectKind> kinds = new LinkedHashMap<>();
       List<Parented> parented = new ArrayList<>();
+      List<Parented> startParented = new ArrayList<>();
       for (int i = 0; i < arr.items().size(); i++) {
         String at = "objects[" + i + "]";
         JObject o = object(arr.items().get(i), at, OBJECT);
@@ -719,11 +721,32 @@ public final class ScenarioReader {
             parent.ifPresent(p -> parented.add(new Parented(objName.get(), p, at + ".parent", o.members().get("parent").line())));
           }
         }
-        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null && !ownParent) {
-          out.add(WorldObject.of(objName.get(), kind.get(), shape, colour, pose, parent).withTouchable(touchable));
+        // A saved cell whose object is not where Reset scene puts it: where it starts (issue 26).
+        Transform startPose = pose;
+        Optional<String> startParent = parent;
+        boolean startOk = true;
+        if (o.members().containsKey("startPose")) {
+          startPose = pose(o, "startPose", at);
+          startParent = string(o, "startParent", at, false);
+          if (objName.isPresent() && startParent.isPresent() && startParent.get().equals(objName.get())) {
+            error(o.members().get("startParent").line(), at + ".startParent", "'" + objName.get() + "' cannot be its own parent");
+            startOk = false;
+          } else if (objName.isPresent() && startParent.isPresent()) {
+            startParented.add(new Parented(objName.get(), startParent.get(), at + ".startParent",
+                o.members().get("startParent").line()));
+          }
+        } else if (o.members().containsKey("startParent")) {
+          error(o.members().get("startParent").line(), at + ".startParent", "needs \"startPose\" beside it (where the object starts)");
+          startOk = false;
+        }
+        if (objName.isPresent() && kind.isPresent() && shape != null && pose != null && !ownParent && startPose != null
+            && startOk) {
+          out.add(new WorldObject(objName.get(), kind.get(), shape, colour, pose, parent, startPose, startParent,
+              touchable));
         }
       }
       checkParents(kinds, parented);
+      checkParents(kinds, startParented);
       return out;
     }
 

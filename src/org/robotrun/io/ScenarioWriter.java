@@ -295,6 +295,14 @@ public final class ScenarioWriter {
     if (o.touchable()) {
       g.writeBooleanField("touchable", true);
     }
+    // An object not where Reset scene puts it (a part carried or set down): where it starts too,
+    // so a reopened cell resets (and a vision cell places its parts) as the saved one did.
+    if (!o.startPose().equals(o.pose()) || !o.startParent().equals(o.parent())) {
+      pose(g, "startPose", o.startPose());
+      if (o.startParent().isPresent()) {
+        g.writeStringField("startParent", o.startParent().get());
+      }
+    }
     g.writeEndObject();
   }
 

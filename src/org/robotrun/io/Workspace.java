@@ -156,7 +156,8 @@ public final class Workspace implements AutoCloseable {
     }
     FileChannel channel = null;
     FileLock lock = null;
-    String readOnlyReason = !readOnly ? "" : handIn ? "a hand-in opens read-only (from a temporary copy)" : "opened read-only";
+    String readOnlyReason = !readOnly ? "" : handIn
+        ? "a hand-in opens read-only (File > Save a copy as... gives a workspace to edit)" : "opened read-only";
     boolean lockBusy = false;
     String lockProblem = readOnly ? "" : specialLock(abs.resolve(LOCK));
     if (!lockProblem.isEmpty()) {

@@ -93,7 +93,9 @@ public final class WorkspaceCapture {
         users.put(n, frames.transform(FrameKind.USER, n));
       }
     }
-    return base.withRobots(robots).withWorld(world).withPrograms(List.of(), main)
+    // The vision setup as it is now: a Reset with a new seed changed the seed the parts were placed by.
+    Scenario withVision = sim.vision().isPresent() ? base.withVision(sim.vision().get().setup()) : base;
+    return withVision.withRobots(robots).withWorld(world).withPrograms(List.of(), main)
         .withPresets(new TreeMap<>(), tools, users).withCamera(camera.isPresent() ? camera : base.camera());
   }
 

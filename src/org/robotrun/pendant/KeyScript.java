@@ -130,6 +130,18 @@ public final class KeyScript {
     for (int i = 0; i < lines.size(); i++) {
       int n = i + 1;
       String raw = lines.get(i);
+      if (i == 0 && raw.startsWith("\uFEFF")) {
+        raw = raw.substring(1);  // a UTF-8 byte order mark (Windows editors write one)
+      }
+      // Plain text only: a NUL or another control character (a binary file, a bad encoding) is
+      // named, never stripped and run as if it were not there (issue 26).
+      for (int c = 0; c < raw.length(); c++) {
+        char ch = raw.charAt(c);
+        if (ch != '\t' && (Character.isISOControl(ch) || ch == '\uFEFF')) {
+          return bad(file, n, String.format(Locale.ROOT, "control character U+%04X at column %d: a key script is plain "
+              + "text (UTF-8)", (int) ch, c + 1));
+        }
+      }
       String t = raw.strip();
       if (t.isEmpty() || t.startsWith("#")) {
         continue;

@@ -674,11 +674,33 @@ public final class Pendant {
     return message;
   }
 
+  /** Why programs cannot be changed here ("" when they can): shown on the prompt line at each refused edit. */
+  private String readOnly = "";
+
+  /**
+   * Makes every program read-only, as a write-protected program is on a controller: creating,
+   * deleting, copying, renaming, a comment, a line edit, TOUCHUP and UNDO are refused with
+   * {@code why} on the prompt line, and nothing changes (a hand-in opened to look at, issue 26).
+   * Running, jogging and the data screens still work; they change nothing of the hand-in.
+   */
+  public void setReadOnly(String why) {
+    readOnly = why == null ? "" : why;
+  }
+
+  /** Why programs cannot be changed here, "" when they can. */
+  public String readOnlyReason() {
+    return readOnly;
+  }
+
   /**
    * Changes program {@code name} through {@code edit}, keeping the old version for undo. A
    * running program is not edited (message instead). Returns whether it changed.
    */
   boolean editProgram(String name, UnaryOperator<Program> edit) {
+    if (!readOnly.isEmpty()) {
+      message = readOnly;
+      return false;
+    }
     ExecutionStatus st = control.status();
     if (st.state() == ExecState.RUNNING && st.program().equals(name)) {
       message = "Program is running: HOLD or abort it before editing";
@@ -821,7 +843,7 @@ public final class Pendant {
         keys = List.of("", "", "", "YES", "NO");
       }
     }
-    return Lcd.of(statusLine(), control.activeAlarm().map(RobotControl.AlarmEntry::display).orElse(""), title, body,
+    return Lcd.of(statusLine(), control.activeAlarm().or(control::lastWarning).map(RobotControl.AlarmEntry::display).orElse(""), title, body,
         prompt, keys);
   }
 

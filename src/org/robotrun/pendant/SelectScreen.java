@@ -61,6 +61,12 @@ final class SelectScreen implements Screen {
   public void key(Pendant p, Key k) {
     List<String> names = p.control().programNames();
     String sel = selected(p);
+    boolean edits = k == Key.F1 || k == Key.F2 || k == Key.F3 || k == Key.F4 || k == Key.F5;
+    if (edits && !p.readOnlyReason().isEmpty()) {
+      // CREATE, DELETE, COPY, DETAIL (comment), RENAME: refused, nothing changes
+      p.message(p.readOnlyReason());
+      return;
+    }
     switch (k) {
       case UP -> cursor = Math.max(0, cursor - 1);
       case DOWN -> cursor = Math.min(Math.max(0, names.size() - 1), cursor + 1);

@@ -55,15 +55,16 @@ public enum AlarmCode {
       "A value is outside what the instruction accepts: OVERRIDE outside 1..100, a frame number outside 0..10, CNT "
           + "outside 0..100, ACC outside 0..150, a speed not above 0; or arithmetic overflowed what a register holds.",
       "Change the value on the line to one inside the range the message shows."),
-  INTP_105("INTP-105", AlarmSeverity.ABORT, "Run request failed", Source.VERIFIED,
-      "A program could not be started as a task: RUN (or a UOP start, RSR or PNS) named a program that is already "
-          + "running, that does not exist, or that needs motion group 1 while another task holds it (cause PROG-040).",
+  INTP_105("INTP-105", AlarmSeverity.WARN, "Run request failed", Source.VERIFIED,
+      "A program could not be started from the PLC (a UOP start, RSR or PNS) or by BG Logic: it is already running, "
+          + "does not exist, or needs motion group 1 while another task holds it (cause PROG-040). A warning: the "
+          + "programs already running go on.",
       "Read the cause in the message. Wait until the other task ends (or ABORT it), give a program that only sets "
           + "I/O and registers no motion group (DEFAULT_GROUP = *,*,*,*,*), or create the program the PLC selects."),
-  INTP_267("INTP-267", AlarmSeverity.ABORT, "RUN stmt failed", Source.RECALLED,
+  INTP_267("INTP-267", AlarmSeverity.WARN, "RUN stmt failed", Source.RECALLED,
       "A RUN statement could not start its program as a task. The cause follows the code: PROG-007 (the program is "
           + "already running), PROG-040 (motion group 1 is held by another task), or the program does not exist "
-          + "(MEMO-073).",
+          + "(MEMO-073). A warning: the program that ran RUN goes on with its next line, and so does every other.",
       "Read the cause. Let the running copy end (or ABORT it), give the program you RUN no motion group "
           + "(DEFAULT_GROUP = *,*,*,*,*) when another task moves the arm, or load the program the RUN names."),
   PROG_007("PROG-007", AlarmSeverity.WARN, "Program is already running", Source.RECALLED,

@@ -673,6 +673,21 @@ public final class Interpreter {
     return alarmOutcome;
   }
 
+  /**
+   * An alarm raised by the running line: a WARN goes to the task port (the controller keeps and
+   * shows it) and the program goes on; any other severity is thrown, to stop the program as
+   * {@link #raise} does.
+   */
+  void warnOrThrow(AlarmSignal a) {
+    AlarmSeverity s = AlarmCode.of(a.code).map(AlarmCode::severity).orElse(a.kind.entry().severity());
+    if (s != AlarmSeverity.WARN) {
+      throw a;
+    }
+    String program = cur != null ? cur.prog.name : selected;
+    int line = cur != null ? Math.max(1, cur.pc) : cursorLine;
+    taskPort.warning(new Alarm(a.kind, a.code, program, line, a.getMessage()));
+  }
+
   /** Whether the alarm's severity pauses the program (PAUSE, STOP, SERVO) rather than ending it. */
   private static boolean pausesProgram(AlarmSignal a) {
     AlarmSeverity s = AlarmCode.of(a.code).map(AlarmCode::severity).orElse(a.kind.entry().severity());
@@ -985,6 +1000,19 @@ public final class Interpreter {
           + " " + role + " moves the robot");
     }
     Interpreter child = new Interpreter(store, regs, port, settings);
+    // An action program cannot RUN a task here (refused as before); its WARN alarms reach the controller.
+    TaskPort parentPort = taskPort;
+    child.setTaskPort(new TaskPort() {
+      @Override
+      public java.util.Optional<String> run(String program) {
+        return TaskPort.NONE.run(program);
+      }
+
+      @Override
+      public void warning(Alarm alarm) {
+        parentPort.warning(alarm);
+      }
+    });
     child.ownsPulseClock = false;  // the pulses it starts count down with the caller's (shared I/O)
     child.setAdvancesTimers(false);  // TIMER[] advance once per tick, in the program that started it
     child.select(name);

@@ -21,6 +21,13 @@ public interface TaskPort {
   Optional<String> run(String program);
 
   /**
+   * A WARN alarm a program raised (a RUN the controller refused): the program went on; the
+   * controller keeps and shows it (docs/alarms.md). A port without a controller drops it.
+   */
+  default void warning(Alarm alarm) {
+  }
+
+  /**
    * The state of background-logic slot {@code slot} (1-based) as {@code $MIX_BG[slot].$STATUS}
    * reads it: 2 running, 1 stopped, 0 no program in the slot (see SystemVariables).
    */

@@ -107,6 +107,10 @@ public final class Controller implements MotionPort {
   private String jogMessage = "";
   private final List<ControllerAlarm> activeAlarms = new ArrayList<>();
   private final Deque<ControllerAlarm> history = new ArrayDeque<>();
+  /** WARN alarms since the controller started (the last 1000): nothing stopped for them. */
+  private final Deque<ControllerAlarm> warnings = new ArrayDeque<>();
+  /** The newest WARN alarm since the last RESET: the pendant shows it while no alarm is active. */
+  private ControllerAlarm shownWarning;
   private final Deque<MotionTiming> timings = new ArrayDeque<>();
   private Alarm lastInterpreterAlarm;
   private double timeSec;
@@ -173,6 +177,11 @@ public final class Controller implements MotionPort {
       @Override
       public Optional<String> run(String program) {
         return tasks.run(program);
+      }
+
+      @Override
+      public void warning(Alarm alarm) {
+        taskAlarm(alarm);
       }
 
       @Override
@@ -758,6 +767,7 @@ public final class Controller implements MotionPort {
       return;
     }
     activeAlarms.clear();
+    shownWarning = null;
     interpreter.reset();
     lastInterpreterAlarm = null;
   }
@@ -857,9 +867,45 @@ public final class Controller implements MotionPort {
     }
   }
 
-  /** An alarm a task or a BG program raised: shown like the main program's. */
+  /**
+   * An alarm a task, a BG program or a program's WARN raised: by its severity (docs/alarms.md). A
+   * WARN is kept in the history and shown, and every program goes on; any other is active and holds
+   * the main program and the tasks until RESET.
+   */
   void taskAlarm(Alarm al) {
-    addAlarm(new ControllerAlarm(al.code(), al.message(), al.program(), al.line(), timeSec));
+    ControllerAlarm a = new ControllerAlarm(al.code(), al.message(), al.program(), al.line(), timeSec);
+    if (isWarning(a.code())) {
+      addWarning(a);
+    } else {
+      addAlarm(a);
+    }
+  }
+
+  /** WARN alarms raised so far, oldest first (the last 1000): nothing stopped for them. */
+  public List<ControllerAlarm> warnings() {
+    return List.copyOf(warnings);
+  }
+
+  /** The newest WARN alarm since the last RESET, if any (the pendant shows it while no alarm is active). */
+  public Optional<ControllerAlarm> shownWarning() {
+    return Optional.ofNullable(shownWarning);
+  }
+
+  private static boolean isWarning(String code) {
+    return org.robotrun.program.AlarmCode.of(code).map(x -> x.severity() == org.robotrun.program.AlarmSeverity.WARN)
+        .orElse(false);
+  }
+
+  private void addWarning(ControllerAlarm a) {
+    shownWarning = a;
+    history.addFirst(a);
+    while (history.size() > HISTORY) {
+      history.removeLast();
+    }
+    warnings.addLast(a);
+    while (warnings.size() > 1000) {
+      warnings.removeFirst();
+    }
   }
 
   /** A servo alarm from the UOP (*IMSTP): the arm stops at once, the programs pause. */
@@ -867,10 +913,18 @@ public final class Controller implements MotionPort {
     raiseAlarm(code.code(), code.text());
   }
 
-  /** INTP-105 for a start from the PLC the controller refused (the programs already running go on). */
+  /**
+   * INTP-105 for a start from the PLC or BG Logic the controller refused: a WARN (docs/alarms.md),
+   * so the programs already running go on.
+   */
   void raiseRunFailed(String why) {
-    addAlarm(new ControllerAlarm(org.robotrun.program.AlarmCode.INTP_105.code(), "Run request failed: " + why, "", 0,
-        timeSec));
+    ControllerAlarm a = new ControllerAlarm(org.robotrun.program.AlarmCode.INTP_105.code(), "Run request failed: " + why,
+        "", 0, timeSec);
+    if (isWarning(a.code())) {
+      addWarning(a);
+    } else {
+      addAlarm(a);
+    }
   }
 
   /** Whether a SERVO-severity alarm is active (servo power off until RESET). */

@@ -521,6 +521,11 @@ public final class ControllerPort implements RobotControl {
   }
 
   @Override
+  public Optional<AlarmEntry> lastWarning() {
+    return controller.shownWarning().map(ControllerPort::entry);
+  }
+
+  @Override
   public List<AlarmEntry> alarmHistory() {
     return controller.alarmHistory().stream().map(ControllerPort::entry).toList();
   }

@@ -73,9 +73,12 @@ public final class ProductionRun {
         if (!done && sim.ticks() % STOP_CHECK_TICKS == 0 && stop.getAsBoolean()) {
           alarm = Optional.of(new ControllerAlarm(HeadlessRun.WALL_LIMIT_CODE, stopReason, s.program(), s.line(), t));
         } else if (!done && t - t0 >= maxSimSec) {
+          // A start the controller refused is a warning (the PLC waits on): say so, it is why nothing ran.
+          String refused = started || c.warnings().isEmpty() ? ""
+              : "; the PLC's start was refused: " + c.warnings().get(c.warnings().size() - 1).display();
           alarm = Optional.of(new ControllerAlarm(HeadlessRun.TIME_LIMIT_CODE, String.format(java.util.Locale.ROOT,
               "time limit reached: the PLC-started cell ran %.1f s of simulated time without ending (PLC step %d of %d)",
-              maxSimSec, c.uop().plcStep() + 1, c.uop().setup().map(x -> x.plc().size()).orElse(0)),
+              maxSimSec, c.uop().plcStep() + 1, c.uop().setup().map(x -> x.plc().size()).orElse(0)) + refused,
               s.program(), s.line(), t));
         }
       }

@@ -95,7 +95,17 @@ public final class Tasks {
     MotionPort port = motion ? controller : new NoGroupPort(controller);
     Interpreter in = new Interpreter(store, controller.registers(), port, settings);
     in.leavePulsesToCaller();
-    in.setTaskPort(this::run);
+    in.setTaskPort(new org.robotrun.program.TaskPort() {
+      @Override
+      public Optional<String> run(String name) {
+        return Tasks.this.run(name);
+      }
+
+      @Override
+      public void warning(Alarm alarm) {
+        controller.taskAlarm(alarm);
+      }
+    });
     // A RUN task finds parts with the same vision system as the main program (issue 16).
     in.setVisionPort(controller.interpreter().visionPort());
     in.setAdvancesTimers(false);

@@ -40,6 +40,8 @@ public final class SimulatorWindow implements AutoCloseable {
   private boolean orbiting;
   private boolean panning;
   private KeyHandler keyHandler = (key, action) -> false;
+  /** Keys typed into a text field stay the field's, press and release (issue 26). */
+  private final TypingKeyFilter typingFilter = new TypingKeyFilter();
   private IntPredicate charHandler = codepoint -> false;
   private Runnable focusLost = () -> {};
   private Runnable focusGained = () -> {};
@@ -276,14 +278,13 @@ public final class SimulatorWindow implements AutoCloseable {
         keyEdges.record(key, action == GLFW_PRESS);
       }
       // Only an open text field keeps the keyboard (not a panel that merely has the focus);
-      // function keys still reach the pendant then. Releases always go through, so a key held
-      // while a text field took focus still stops.
+      // function keys still reach the pendant then. A key held while a text field took focus
+      // still stops when let go; a key typed into the field stays the field's (TypingKeyFilter).
       boolean typing = ImGui.getIO().getWantTextInput();
       if (action == GLFW_PRESS && !typing && shortcuts.onShortcut(key, mods)) {
         return;
       }
-      boolean functionKey = key >= GLFW_KEY_F1 && key <= GLFW_KEY_F12;
-      if (action != GLFW_RELEASE && typing && !functionKey) {
+      if (!typingFilter.pass(key, action, typing)) {
         return;
       }
       if (key == GLFW_KEY_HOME && action == GLFW_PRESS) {

@@ -52,7 +52,11 @@ public final class PartPlacement {
           shape = k.shape();
           colour = k.colour();
         }
-        out = out.with(new WorldObject(o.name(), o.kind(), shape, colour, pose, o.startParent(), pose, o.startParent(), o.touchable()));
+        // A part that is not at its start (a saved cell reopened mid-run) stays where it is; only
+        // its start is the placement's, so Reset scene puts it there (issue 26).
+        boolean atStart = o.pose().equals(o.startPose()) && o.parent().equals(o.startParent());
+        out = out.with(new WorldObject(o.name(), o.kind(), shape, colour, atStart ? pose : o.pose(),
+            atStart ? o.startParent() : o.parent(), pose, o.startParent(), o.touchable()));
       }
     }
     return out;

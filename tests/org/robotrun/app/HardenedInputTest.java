@@ -276,19 +276,40 @@ class HardenedInputTest {
     Path loop = dir.resolve("LOOP.LS");
     Files.createSymbolicLink(loop, loop);
     for (Path p : new Path[] {f, loop, Path.of("/dev/zero")}) {
-      CommandLine cl = Main.commandLine();
-      StringWriter out = new StringWriter();
-      StringWriter err = new StringWriter();
-      cl.setOut(new PrintWriter(out));
-      cl.setErr(new PrintWriter(err));
-      int exit = cl.execute("check", "--format", "json", p.toString());
-      assertThat(exit).as(p.toString()).isEqualTo(2);
-      assertThat(err.toString()).startsWith(p + ": cannot read: ");
-      JsonNode json = new ObjectMapper().readTree(out.toString());
+      // through run(), which captures System.out as well: picocli used to send the JSON to the old System.out
+      Run r = run("check", "--format", "json", p.toString());
+      assertThat(r.exit()).as(p.toString()).isEqualTo(2);
+      assertThat(r.err()).startsWith(p + ": cannot read: ");
+      JsonNode json = new ObjectMapper().readTree(r.out());
       assertThat(json.get("errors").asInt()).as(p.toString()).isEqualTo(1);
       assertThat(json.get("diagnostics").get(0).get("file").asText()).isEqualTo(p.toString());
       assertThat(json.get("diagnostics").get(0).get("message").asText()).startsWith("cannot read: ");
     }
+  }
+
+  /**
+   * The root cause of the JSON that went missing: picocli's default execution strategy remembers
+   * System.out from when the CommandLine was made and, when System.out has changed since, puts a
+   * writer on the old stream in place of the one given to setOut. Output must go to setOut's writer.
+   */
+  @Test
+  void outputGoesToTheWriterGivenEvenWhenSystemOutChangedAfterTheCommandLineWasMade() {
+    CommandLine cl = Main.commandLine();
+    StringWriter out = new StringWriter();
+    cl.setOut(new PrintWriter(out));
+    cl.setErr(new PrintWriter(new StringWriter()));
+    PrintStream oldOut = System.out;
+    ByteArrayOutputStream sysOut = new ByteArrayOutputStream();
+    System.setOut(new PrintStream(sysOut, true, StandardCharsets.UTF_8));
+    int exit;
+    try {
+      exit = cl.execute("check", "--format", "json", "scenarios/programs/PICKPLACE.LS");
+    } finally {
+      System.setOut(oldOut);
+    }
+    assertThat(exit).isZero();
+    assertThat(out.toString()).startsWith("{\"diagnostics\":").contains("\"errors\":0");
+    assertThat(sysOut.toString(StandardCharsets.UTF_8)).isEmpty();
   }
 
   @Test
@@ -307,6 +328,42 @@ class HardenedInputTest {
       Run r = run(cmd);
       assertThat(r.exit()).isEqualTo(2);
       assertThat(r.err()).contains("--seed: expected a whole number of at most 15 digits (as vision.seed)");
+    }
+  }
+
+  /**
+   * Issue 26, "more of the same kind": a scenario file that is empty, UTF-16, has a NUL, NaN,
+   * Infinity, a number of 400 digits, a 5 MB line, nesting 5000 deep, or is a folder: every command
+   * that reads a scenario answers with one line naming the file, exit 2, no trace.
+   */
+  @Test
+  void hostileScenarioFilesAreOneClearLineForEveryCommand(@TempDir Path dir) throws Exception {
+    String good = Files.readString(Path.of("scenarios/empty-cell.json"));
+    java.util.Map<String, byte[]> files = new java.util.LinkedHashMap<>();
+    files.put("empty.json", new byte[0]);
+    files.put("utf16.json", good.getBytes(StandardCharsets.UTF_16));
+    files.put("nul.json", (good.substring(0, 20) + "\u0000" + good.substring(20)).getBytes(StandardCharsets.UTF_8));
+    files.put("nan.json", good.replaceFirst("\"x\": 0", "\"x\": NaN").getBytes(StandardCharsets.UTF_8));
+    files.put("inf.json", good.replaceFirst("\"x\": 0", "\"x\": -Infinity").getBytes(StandardCharsets.UTF_8));
+    files.put("big.json", good.replaceFirst("\"x\": 0", "\"x\": 1" + "0".repeat(400)).getBytes(StandardCharsets.UTF_8));
+    files.put("long.json", ("{\"format\": 1, \"name\": \"" + "a".repeat(5_000_000) + "\"}").getBytes(StandardCharsets.UTF_8));
+    files.put("deep.json", ("{\"format\": 1, \"robots\": " + "[".repeat(5000) + "]".repeat(5000) + "}").getBytes(StandardCharsets.UTF_8));
+    for (var e : files.entrySet()) {
+      Files.write(dir.resolve(e.getKey()), e.getValue());
+    }
+    Files.createDirectory(dir.resolve("folder.json"));
+    java.util.List<String> names = new java.util.ArrayList<>(files.keySet());
+    names.add("folder.json");
+    for (String n : names) {
+      String f = dir.resolve(n).toString();
+      for (String[] args : new String[][] {{"run", "--scenario", f, "--max-sim-seconds", "1"},
+          {"render", "--scenario", f, "--out", dir.resolve("x.png").toString()},
+          {"pendant", "--scenario", f, "--keys", f}}) {
+        Run r = run(args);
+        assertThat(r.exit()).as(n + " " + args[0] + ": " + r.err()).isEqualTo(2);
+        assertThat(r.err()).as(n + " " + args[0]).contains(n).doesNotContain("Exception").doesNotContain("internal error")
+            .doesNotContain("\tat ");
+      }
     }
   }
 }

@@ -322,7 +322,9 @@ class LabsTest {
     String lab = "10-multitasking";
     assertThat(programs(lab, "reference", 100).score()).isEqualTo(max(lab));
     programs(lab, "call", 55, "Started with RUN", "The motion does not wait");
-    programs(lab, "with-group", 35, "Runs to the end", "COUNTER counted", "The motion does not wait");
+    // COUNTER with group 1: its RUN is refused with INTP-267 / PROG-040, a warning (docs/alarms.md),
+    // so PNS0001 runs to its end without the counting
+    programs(lab, "with-group", 75, "COUNTER counted");
   }
 
   @Test

@@ -167,4 +167,68 @@ class WorkspaceCommandsTest {
     assertThat(r.exitCode()).isEqualTo(1);
     assertThat(r.err()).contains("a hand-in opens read-only").contains("the script was not run");
   }
+
+  /** Issue 26: an unpacked hand-in (a folder with manifest.json, as Gradescope gives it) took the script's edits. */
+  @Test
+  void aScriptOnAnUnpackedHandInFolderIsRefusedAndTheFolderIsUntouched(@TempDir Path tmp) throws Exception {
+    Path ws = tmp.resolve("ws");
+    Path keys = script(tmp);
+    assertThat(run("pendant", "--workspace", ws.toString(), "--keys", keys.toString()).exitCode()).isZero();
+    Path zip = tmp.resolve("h.zip");
+    HandIn.write(ws, zip, "Ada", "test", false);
+    // unpacked as unzip (and Gradescope) do: every entry, manifest.json included
+    Path unpacked = tmp.resolve("unpacked");
+    try (java.util.zip.ZipFile z = new java.util.zip.ZipFile(zip.toFile())) {
+      for (var e : java.util.Collections.list(z.entries())) {
+        Path out = unpacked.resolve(e.getName());
+        if (e.isDirectory()) {
+          Files.createDirectories(out);
+          continue;
+        }
+        Files.createDirectories(out.getParent());
+        try (var in = z.getInputStream(e)) {
+          Files.copy(in, out);
+        }
+      }
+    }
+    assertThat(unpacked.resolve(HandIn.MANIFEST)).isRegularFile();
+    java.util.Map<Path, String> before = new java.util.TreeMap<>();
+    try (var files = Files.walk(unpacked)) {
+      for (Path f : files.filter(Files::isRegularFile).toList()) {
+        before.put(unpacked.relativize(f), Files.readString(f));
+      }
+    }
+    Run r = run("pendant", "--workspace", unpacked.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(1);
+    assertThat(r.err()).contains("a hand-in opens read-only").contains("the script was not run");
+    java.util.Map<Path, String> after = new java.util.TreeMap<>();
+    try (var files = Files.walk(unpacked)) {
+      for (Path f : files.filter(Files::isRegularFile).toList()) {
+        after.put(unpacked.relativize(f), Files.readString(f));
+      }
+    }
+    assertThat(after).isEqualTo(before);
+    // run --workspace still runs it (read-only: nothing is written)
+    assertThat(run("run", "--workspace", unpacked.toString()).err()).doesNotContain("Exception");
+  }
+
+  /** Issue 26: a programs/ that is a file let the script run, then lost its programs. */
+  @Test
+  void aScriptOnAWorkspaceWhoseProgramsIsAFileIsRefusedBeforeItRuns(@TempDir Path tmp) throws Exception {
+    Path ws = tmp.resolve("ws");
+    Path keys = script(tmp);
+    assertThat(run("pendant", "--workspace", ws.toString(), "--keys", keys.toString()).exitCode()).isZero();
+    Path programs = ws.resolve("programs");
+    try (var files = Files.list(programs)) {
+      for (Path f : files.toList()) {
+        Files.delete(f);
+      }
+    }
+    Files.delete(programs);
+    Files.writeString(programs, "x");
+    Run r = run("pendant", "--workspace", ws.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(1);
+    assertThat(r.err()).contains("programs is not a folder").contains("the script was not run");
+    assertThat(Files.readString(programs)).isEqualTo("x");
+  }
 }

@@ -1,136 +1,219 @@
 package org.robotrun.app;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.within;
 
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
 import java.util.Optional;
-import org.junit.jupiter.api.Test;
+import java.util.TreeMap;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.robotrun.io.RobotDefinitions;
+import org.robotrun.io.ScenarioLoad;
+import org.robotrun.io.ScenarioReader;
+import org.robotrun.io.Workspace;
+import org.robotrun.io.WorkspaceCapture;
 import org.robotrun.math.Transform;
-import org.robotrun.math.Vec3;
 import org.robotrun.math.Xyzwpr;
-import org.robotrun.program.Config;
-import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
-import org.robotrun.program.Position;
-import org.robotrun.program.Program;
+import org.robotrun.program.Registers;
+import org.robotrun.sim.CellStepper;
 import org.robotrun.sim.Controller;
-import org.robotrun.sim.HeadlessRun;
-import org.robotrun.world.CameraView;
+import org.robotrun.sim.ScenarioCell;
+import org.robotrun.sim.Simulation;
+import org.robotrun.sim.VisionSystem;
+import org.robotrun.world.ObjectKind;
+import org.robotrun.world.Scenario;
+import org.robotrun.world.World;
 import org.robotrun.world.WorldObject;
 
-/** Every piece of a workspace's state survives save → open, headless. */
+/**
+ * Issue 26: saving a cell and opening it again, at any moment, gives back the same scene. For
+ * every shipped scenario, run at its start, mid-run and at its end: the workspace is saved, opened
+ * again as the window and {@code run --workspace} open it, and everything is compared: each
+ * object's pose in the cell, parent, shape and colour, where Reset scene puts it, what holds it, the
+ * joints, every register, position register and output, the selected program and line; and a
+ * Reset with a new seed places the parts of both the same way, on their fixture.
+ */
 class WorkspaceRoundTripTest {
-  private static final double MM = 1e-6;  // tolerance for lengths (mm) and angles (deg) written with 15 digits
 
-  @Test
-  void aWorkspaceMadeFromAScenarioKeepsItsModeSwitch(@TempDir Path tmp) throws Exception {
-    // An AUTO exercise opened with --scenario must open in AUTO (the copy into the workspace dropped the mode).
-    String text = Files.readString(Path.of("scenarios/pick-and-place.json"));
-    assertThat(text).doesNotContain("\"mode\"");
-    Path sc = tmp.resolve("auto.json");
-    Files.writeString(sc, text.replaceFirst("\\{", "{\"mode\": \"AUTO\", ")
-        .replace("\"programs/", "\"" + Path.of("scenarios").toAbsolutePath() + "/programs/"));
-    Path dir = WorkspaceFiles.createFromScenario(sc, tmp.resolve("ws"));
-    assertThat(Files.readString(dir.resolve("cell.json"))).containsPattern("\"mode\"\\s*:\\s*\"AUTO\"");
+  static Stream<String> scenarios() throws IOException {
+    try (Stream<Path> s = Files.walk(Path.of("scenarios"))) {
+      return s.filter(p -> p.toString().endsWith(".json") && !p.toString().endsWith(".task.json")
+          && !p.getFileName().toString().equals("course.json") && !p.getFileName().toString().equals("task.json")).map(Path::toString).sorted().toList().stream();
+    }
   }
 
-  @Test
-  void everyPieceOfStateSurvivesSaveAndOpen(@TempDir Path tmp) {
-    Path dir = WorkspaceFiles.createFromScenario(Path.of("scenarios/pick-and-place.json"), tmp.resolve("ws"));
-    CameraView view = new CameraView(new Vec3(100, -50, 200), 1800, Math.toRadians(30), Math.toRadians(25));
-    Optional<CameraView> camera = Optional.of(view);
-    WorldObject movedPart;
-    Position.Joint jointsAfterRun;
-    Program pickplace;
-    try (WorkspaceSession s = WorkspaceSession.open(dir, false, () -> camera, m -> {})) {
-      assertThat(s.problems()).isEmpty();
-      Controller c = s.sim.controllers().get(0);
-      // Run the exercise: the parts move onto the tray and the arm ends somewhere else than at the start.
-      HeadlessRun.Result r = HeadlessRun.run(s.sim, c, "PICKPLACE", 120, sim -> {});
-      assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
-      movedPart = s.sim.world().find("part1").orElseThrow();
-      assertThat(movedPart.pose()).isNotEqualTo(movedPart.startPose());
-      jointsAfterRun = c.currentJoints();
-      pickplace = c.program("PICKPLACE").orElseThrow();
-      c.registers().setInteger(5, 42);
-      c.registers().setReal(6, 3.0);
-      c.registers().setReal(7, -1.25);
-      c.registers().setString(2, "Part \"A\" ok");
-      c.registers().setString(25, "x".repeat(254));
-      c.registers().setPosition(3, new Position.Cartesian(10, 20, 30, 1, 2, 3, new Config(true, false, false, 1, 0, -1)));
-      c.registers().setPosition(4, new Position.Joint(1, -2, 3, -4, 5, -6));
-      c.registers().setBit(IoKind.DO, 7, true);
-      c.registers().setValue(IoKind.GO, 2, 13);
-      c.registers().setBit(IoKind.F, 9, true);
-      c.setRegisterComment("R", 5, "count");
-      c.setRegisterComment("PR", 3, "above tray");
-      c.setOverridePct(35);
-      c.frames().setTransform(FrameKind.USER, 4, Xyzwpr.ofDegrees(300, 100, 50, 0, 0, 45).toTransform());
-      c.frames().setComment(FrameKind.USER, 4, "fixture B");
-      c.frames().setTransform(FrameKind.TOOL, 3, Transform.translation(0, 10, 150));
-      c.frames().select(FrameKind.TOOL, 3);
-      c.frames().select(FrameKind.USER, 4);
-      c.saveProgram(Program.of("EMPTY", java.util.List.of()));
-      assertThat(s.autosave.saveNow(5000)).isEmpty();
-    }
-    assertThat(dir.resolve("programs/EMPTY.LS")).exists();
+  private static Scenario read(String file) {
+    ScenarioLoad l = ScenarioReader.read(Path.of(file));
+    assertThat(l).as(file).isInstanceOf(ScenarioLoad.Loaded.class);
+    return ((ScenarioLoad.Loaded) l).scenario();
+  }
 
-    try (WorkspaceSession s = WorkspaceSession.open(dir, false, Optional::empty, m -> {})) {
-      assertThat(s.problems()).isEmpty();
-      Controller c = s.sim.controllers().get(0);
-      for (int j = 1; j <= 6; j++) {
-        assertThat(c.currentJoints().element(j)).as("J%d", j).isCloseTo(jointsAfterRun.element(j), within(MM));
+  /** Starts each robot's main program (the PLC starts its own) and steps {@code seconds}, or until all are idle. */
+  private static void run(Simulation sim, Scenario sc, double seconds) {
+    for (int i = 0; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
+      boolean plc = sc.production().of(c.name()).map(p -> p.startFromPlc()).orElse(false);
+      Optional<String> main = sc.preload(i).mainProgram();
+      if (!plc && main.isPresent() && c.program(main.get()).isPresent() && c.status().program().isEmpty()) {
+        c.run(main.get(), 1, true);
       }
-      WorldObject part = s.sim.world().find("part1").orElseThrow();
-      assertThat(part.parent()).isEqualTo(movedPart.parent());
-      assertThat(Xyzwpr.fromTransform(part.pose()).position().minus(Xyzwpr.fromTransform(movedPart.pose()).position()).norm())
-          .isLessThan(MM);
-      assertThat(c.registers().number(5)).isEqualTo(42);
-      assertThat(c.registers().isInteger(5)).isTrue();
-      assertThat(c.registers().number(6)).isEqualTo(3.0);
-      assertThat(c.registers().isInteger(6)).as("R[6] stays a real").isFalse();
-      assertThat(c.registers().number(7)).isEqualTo(-1.25);
-      assertThat(c.registers().string(2)).isEqualTo("Part \"A\" ok");
-      assertThat(c.registers().string(25)).isEqualTo("x".repeat(254));
-      assertThat(c.registers().string(1)).isEmpty();
-      assertThat(c.registers().position(3)).isEqualTo(new Position.Cartesian(10, 20, 30, 1, 2, 3, new Config(true, false, false, 1, 0, -1)));
-      assertThat(c.registers().position(4)).isEqualTo(new Position.Joint(1, -2, 3, -4, 5, -6));
-      assertThat(c.registers().bit(IoKind.DO, 7)).isTrue();
-      assertThat(c.registers().value(IoKind.GO, 2)).isEqualTo(13);
-      assertThat(c.registers().bit(IoKind.F, 9)).isTrue();
-      assertThat(c.registerComment("R", 5)).isEqualTo("count");
-      assertThat(c.registerComment("PR", 3)).isEqualTo("above tray");
-      assertThat(c.overridePct()).isEqualTo(35);
-      assertThat(c.frames().active(FrameKind.TOOL)).isEqualTo(3);
-      assertThat(c.frames().active(FrameKind.USER)).isEqualTo(4);
-      assertThat(c.frames().comment(FrameKind.USER, 4)).isEqualTo("fixture B");
-      assertThat(Xyzwpr.fromTransform(c.frames().transform(FrameKind.USER, 4)).rDeg()).isCloseTo(45, within(MM));
-      assertThat(c.frames().transform(FrameKind.TOOL, 3).translationVector().z()).isCloseTo(150, within(MM));
-      assertThat(c.programNames()).containsExactlyInAnyOrder("PICKPLACE", "EMPTY");
-      assertThat(c.program("PICKPLACE").orElseThrow().lines()).isEqualTo(pickplace.lines());
-      CameraView back = s.workspace.scenario().camera().orElseThrow();
-      assertThat(back.distanceMm()).isCloseTo(1800, within(MM));
-      assertThat(Math.toDegrees(back.yawRad())).isCloseTo(30, within(MM));
-      assertThat(s.workspace.scenario().mainProgram()).contains("PICKPLACE");
+    }
+    CellStepper stepper = new CellStepper(sim);
+    double end = sim.timeSec() + seconds;
+    while (sim.timeSec() < end) {
+      stepper.tick();
+      if (sim.controllers().stream().allMatch(c -> !c.busy() && c.status().state() != org.robotrun.sim.ExecutionStatus.State.RUNNING)
+          && sim.timeSec() > 0.5) {
+        break;
+      }
     }
   }
 
-  @Test
-  void anUnchangedWorkspaceWritesNothing(@TempDir Path tmp) throws Exception {
-    Path dir = WorkspaceFiles.createFromScenario(Path.of("scenarios/pick-and-place.json"), tmp.resolve("ws"));
-    try (WorkspaceSession s = WorkspaceSession.open(dir, false, Optional::empty, m -> {})) {
-      s.autosave.saveNow(5000);  // the first save writes cell.json in the workspace's own layout
+  private static Simulation build(Scenario sc) {
+    Simulation sim = ScenarioCell.build(sc, RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+    // the scenario's programs, as run --scenario loads them
+    for (int i = 0; i < sim.controllers().size(); i++) {
+      Controller c = sim.controllers().get(i);
+      for (Path p : sc.preload(i).programs()) {
+        try {
+          org.robotrun.io.LsReadResult r = org.robotrun.io.LsReader.read(p);
+          if (!r.hasErrors()) {
+            c.saveProgram(r.program());
+          }
+        } catch (IOException e) {
+          throw new java.io.UncheckedIOException(e);
+        }
+      }
     }
-    var before = Files.getLastModifiedTime(dir.resolve("programs/PICKPLACE.LS"));
-    var cellBefore = Files.readString(dir.resolve("cell.json"));
-    Thread.sleep(20);
-    try (WorkspaceSession s = WorkspaceSession.open(dir, false, Optional::empty, m -> {})) {
-      assertThat(s.autosave.saveNow(5000)).isEmpty();
+    return sim;
+  }
+
+  /** Everything a user sees of the cell, as text with poses rounded to 1e-6 mm / deg. */
+  static Map<String, String> state(Simulation sim) {
+    Map<String, String> out = new TreeMap<>();
+    World w = sim.world();
+    World start = w.reset();
+    Map<String, String> held = sim.heldParts();
+    for (WorldObject o : w.objects()) {
+      out.put("object " + o.name(), o.kind() + " " + o.shape() + " " + o.colour().hex() + " at " + pose(w.poseInCell(o.name()))
+          + " on " + o.parent().orElse("-") + " held by " + held.getOrDefault(o.name(), "-"));
+      out.put("start " + o.name(), pose(start.poseInCell(o.name())) + " on " + start.find(o.name()).orElseThrow().parent().orElse("-"));
     }
-    assertThat(Files.getLastModifiedTime(dir.resolve("programs/PICKPLACE.LS"))).isEqualTo(before);
-    assertThat(Files.readString(dir.resolve("cell.json"))).isEqualTo(cellBefore);
+    for (Controller c : sim.controllers()) {
+      String r = c.name() + " ";
+      org.robotrun.program.Position.Joint q = c.currentJoints();
+      StringBuilder js = new StringBuilder();
+      for (int i = 1; i <= 6; i++) {
+        js.append(num(q.element(i))).append(' ');
+      }
+      out.put(r + "joints", js.toString());
+      Registers regs = c.registers();
+      for (int i = 1; i <= Registers.R_COUNT; i++) {
+        out.put(r + "R[" + i + "]", regs.number(i) + (regs.isInteger(i) ? "i" : "r"));
+      }
+      for (int i = 1; i <= Registers.PR_COUNT; i++) {
+        out.put(r + "PR[" + i + "]", position(regs.position(i)));
+      }
+      for (IoKind k : IoKind.values()) {
+        if (!k.writable()) {
+          continue;
+        }
+        for (int i = 1; i <= regs.ioSize(k); i++) {
+          out.put(r + k + "[" + i + "]", Integer.toString(regs.value(k, i)));
+        }
+      }
+      out.put(r + "override", Integer.toString(c.overridePct()));
+      out.put(r + "frames", c.frames().active(org.robotrun.program.Instruction.FrameKind.TOOL) + "/"
+          + c.frames().active(org.robotrun.program.Instruction.FrameKind.USER));
+      out.put(r + "program", c.programNames().toString());
+    }
+    return out;
+  }
+
+  private static String position(org.robotrun.program.Position p) {
+    StringBuilder b = new StringBuilder(p.getClass().getSimpleName());
+    for (int i = 1; i <= 6; i++) {
+      b.append(' ').append(num(p.element(i)));
+    }
+    if (p instanceof org.robotrun.program.Position.Cartesian c) {
+      b.append(' ').append(c.config());
+    }
+    return b.toString();
+  }
+
+  /** Rounded to 1e-6 (the file keeps 15 significant digits), -0 as 0. */
+  private static String num(double v) {
+    String s = String.format(java.util.Locale.ROOT, "%.6f", v);
+    return s.matches("-0\\.0+") ? s.substring(1) : s;
+  }
+
+  private static String pose(Transform t) {
+    Xyzwpr p = Xyzwpr.fromTransform(t);
+    return "(" + num(p.x()) + " " + num(p.y()) + " " + num(p.z()) + " " + num(p.wDeg()) + " " + num(p.pDeg()) + " "
+        + num(p.rDeg()) + ")";
+  }
+
+  private static Simulation saveAndReopen(Scenario sc, Simulation sim, Path dir) throws Exception {
+    Files.createDirectories(dir);
+    try (Workspace ws = Workspace.open(dir, sc)) {
+      ws.save(WorkspaceCapture.capture(sc, sim, Optional.empty(), "", dir));
+    }
+    try (Workspace ws = Workspace.open(dir, sc, true)) {
+      assertThat(ws.problems()).isEmpty();
+      Simulation back = ScenarioCell.build(ws.scenario(), RobotDefinitions::load, Simulation.DEFAULT_TICK_SEC);
+      WorkspaceCapture.restore(ws, back);
+      return back;
+    }
+  }
+
+  @ParameterizedTest
+  @MethodSource("scenarios")
+  void aCellSavedAtStartMidRunAndAtItsEndComesBackTheSame(String file, @TempDir Path tmp) throws Exception {
+    Scenario sc = read(file);
+    Simulation sim = build(sc);
+    List<String> phases = List.of("start", "mid-run", "end");
+    double[] seconds = {0, 1.5, 120};
+    for (int k = 0; k < phases.size(); k++) {
+      if (seconds[k] > 0) {
+        run(sim, sc, seconds[k]);
+      }
+      Simulation back = saveAndReopen(sc, sim, tmp.resolve("ws" + k));
+      Map<String, String> was = state(sim);
+      Map<String, String> now = state(back);
+      // a held part is taken again by the gripper whose output is still ON at the first tick
+      List<String> diffs = new ArrayList<>();
+      for (String key : was.keySet()) {
+        String a = was.get(key);
+        String b = now.getOrDefault(key, "(missing)");
+        if (!a.equals(b) && !(key.startsWith("object ") && a.replaceAll(" held by .*", "").equals(b.replaceAll(" held by .*", "")))) {
+          diffs.add(key + ": " + a + " -> " + b);
+        }
+      }
+      assertThat(diffs).as(file + " saved at " + phases.get(k)).isEmpty();
+      // held parts: taken again at the first tick
+      new CellStepper(back).tick();
+      assertThat(back.heldParts()).as(file + " held at " + phases.get(k)).isEqualTo(sim.heldParts());
+      // Reset with a new seed: the same placement in both, every part of a placement on its fixture
+      if (sim.vision().isPresent() && !sim.vision().get().setup().placements().isEmpty()) {
+        VisionSystem.reseed(sim, sim.vision().get().setup(), 77);
+        Simulation again = saveAndReopen(sc, sim, tmp.resolve("seed" + k));
+        VisionSystem.reseed(again, again.vision().get().setup(), 77);
+        assertThat(state(again)).as(file + " reseeded at " + phases.get(k)).isEqualTo(state(sim));
+        World w = sim.world();
+        for (WorldObject o : w.objects()) {
+          if (o.kind() == ObjectKind.PART) {
+            assertThat(o.parent()).as(o.name()).isEqualTo(sc.world().find(o.name()).orElseThrow().parent());
+          }
+        }
+      }
+    }
   }
 }

@@ -127,4 +127,16 @@ class KeyScriptTest {
     assertThat(out.toString()).startsWith("-- SHOW (line 2, t=0.500 s) --").contains("SELECT");
     assertThat(out.toString().lines().filter(l -> l.startsWith("|"))).hasSize(Lcd.HEIGHT);
   }
+
+  /** Issue 26: a NUL after SELECT was stripped and the line ran as SELECT. */
+  @Test
+  void controlCharactersAreNamedNotStrippedAndABomIsRead() {
+    for (String bad : new String[] {"SELECT\u0000", "SEL\u0000ECT", "TYPE A\u001bB", "ENTER\u000b", "F1\uFEFF"}) {
+      KeyScript.Parsed r = parse("ENTER\n" + bad + "\n");
+      assertThat(r).as(bad).isInstanceOf(KeyScript.Parsed.Bad.class);
+      assertThat(((KeyScript.Parsed.Bad) r).error().display()).as(bad).startsWith("t.keys:2: control character U+");
+    }
+    assertThat(parse("\uFEFFSELECT\nENTER\n")).isInstanceOf(KeyScript.Parsed.Ok.class);
+    assertThat(parse("\tSELECT\t\n")).isInstanceOf(KeyScript.Parsed.Ok.class);
+  }
 }

@@ -105,7 +105,8 @@ class BgLogicTest {
     Controller c = sim.controllers().get(0);
     c.bgLogic().configure(List.of("GHOST"));
     steps(sim, 2);
-    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.warnings()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.activeAlarms()).isEmpty();
     assertThat(c.bgLogic().slots().get(0).running()).isFalse();
   }
 

@@ -138,9 +138,11 @@ class UopTest {
     sim.step();
     u.setUi(Uop.PROD_START, false);
     steps(sim, 2);
-    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
-    assertThat(c.activeAlarms().get(0).message()).contains("PNS0102 does not exist");
-    assertThat(u.uo(Uop.FAULT)).isTrue();
+    // a refused start is a WARN (docs/alarms.md): kept and shown, but not active and no FAULT
+    assertThat(c.warnings()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.warnings().get(0).message()).contains("PNS0102 does not exist");
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(u.uo(Uop.FAULT)).isFalse();
     // FAULT RESET (rising edge) clears it
     u.setUi(Uop.FAULT_RESET, true);
     steps(sim, 2);
@@ -293,8 +295,8 @@ class UopTest {
     sim.step();
     u.setUi(Uop.PROD_START, false);
     steps(sim, 2);
-    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
-    assertThat(c.activeAlarms().get(0).message()).contains("style 4");
+    assertThat(c.warnings()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.warnings().get(0).message()).contains("style 4");
   }
 
   @Test
