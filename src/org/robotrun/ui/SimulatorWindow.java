@@ -68,7 +68,8 @@ public final class SimulatorWindow implements AutoCloseable {
   private double pressX;
   private double pressY;
   private boolean dragged;
-  private long frames;
+  /** Read by other threads too (a benchmark's timer). */
+  private volatile long frames;
   private float contentScale = 1f;
   /** After the last input, keep drawing this long (hover highlights, tooltips settle). */
   private static final long IDLE_AFTER_NANOS = 500_000_000L;
@@ -551,7 +552,17 @@ public final class SimulatorWindow implements AutoCloseable {
     mayClose = handler;
   }
 
-  /** Ends {@link #run} after the current frame, as the window's close button does. */
+  /**
+   * What the window's close button does: asks the close handler ({@link #setCloseHandler}: unsaved
+   * work), then ends {@link #run} after the current frame unless it refused.
+   */
+  public void closeButton() {
+    if (mayClose.getAsBoolean()) {
+      glfwSetWindowShouldClose(window, true);
+    }
+  }
+
+  /** Ends {@link #run} after the current frame, without asking the close handler. */
   public void requestClose() {
     glfwSetWindowShouldClose(window, true);
   }
