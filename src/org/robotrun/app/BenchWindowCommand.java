@@ -42,7 +42,9 @@ import picocli.CommandLine.Spec;
           + "every 5 s). load: the machine's 1-minute load average at the phase's end. close_ms: from the close "
           + "request to the end of the window's process, timed from this process, which starts the window in a "
           + "child JVM (extra JVM options for it in ROBOTRUN_BENCH_JAVA_OPTS, e.g. to profile it).",
-      "CPU figures stay comparable on a loaded machine; fps does not (quote the load with them)."
+      "CPU figures stay comparable on a loaded machine; fps does not (quote the load with them). "
+          + "ROBOTRUN_BENCH_DETAIL=1 also prints, on stderr, each phase's CPU per frame of the window thread, Mesa's "
+          + "threads and the simulation, and the wall time per frame in each part of a frame."
     })
 public final class BenchWindowCommand implements Callable<Integer> {
   @Spec CommandSpec spec;
@@ -72,7 +74,14 @@ public final class BenchWindowCommand implements Callable<Integer> {
       throw new UserError("--seconds: expected more than 0 and at most 600, got " + WallClock.format(seconds));
     }
     Path cell = scenario != null ? scenario : shippedScenario();
-    String prog = program != null ? program.toUpperCase(Locale.ROOT) : firstProgram(cell);
+    List<String> names = programNames(cell);
+    if (names.isEmpty()) {
+      throw new UserError("--scenario: " + cell + " has no program for the run phase; give a scenario with one");
+    }
+    String prog = program == null ? names.get(0) : program.toUpperCase(Locale.ROOT);
+    if (!names.contains(prog)) {
+      throw new UserError("--program: " + cell + " has no program " + prog + " (it has " + String.join(", ", names) + ")");
+    }
     Path tmp = Files.createTempDirectory("robotrun-bench-window");
     try {
       return runWindow(cell.toAbsolutePath(), prog, tmp);
@@ -160,19 +169,15 @@ public final class BenchWindowCommand implements Callable<Integer> {
         + "the current folder; give a scenario");
   }
 
-  /** The first program of the scenario's first robot (the cell-wide list first). */
-  private static String firstProgram(Path cell) {
+  /** The programs of the scenario's first robot, the cell-wide list first. */
+  private static List<String> programNames(Path cell) {
     Scenario sc = ScenarioFiles.load(cell);
     List<Path> files = new ArrayList<>(sc.programs());
     if (!sc.robots().isEmpty()) {
       files.addAll(sc.robots().get(0).programs());
     }
     try {
-      List<Program> progs = RunCommand.loadPrograms(files);
-      if (progs.isEmpty()) {
-        throw new UserError("--scenario: " + cell + " has no program for the run phase; give a scenario with one");
-      }
-      return progs.get(0).name();
+      return RunCommand.loadPrograms(files).stream().map(Program::name).toList();
     } catch (IOException e) {
       throw new UserError("--scenario: " + cell + ": cannot read a program (" + e.getMessage() + ")");
     }

@@ -233,12 +233,12 @@ final class WindowBench {
   }
 
   /** The figures at one instant. */
-  private record Sample(long nanos, long frames, long processCpu, long windowCpu, long glCpu, long simCpu) {}
+  private record Sample(long nanos, long frames, long processCpu, long windowCpu, long glCpu, long simCpu, long[] parts) {}
 
   private Sample sample() {
     return new Sample(System.nanoTime(), session.window().frames(), ProcessCpu.processNanos(),
         threads.getThreadCpuTime(windowThread.threadId()), ProcessCpu.nativeThreadsNanos(ProcessCpu.GL_THREADS),
-        simCpuNanos.get());
+        simCpuNanos.get(), session.window().phaseNanos());
   }
 
   private void report(String name, Sample s, Sample e) {
@@ -254,6 +254,12 @@ final class WindowBench {
       System.err.printf(Locale.ROOT, "robotrun: %s per frame: window thread %.2f ms, GL threads %.2f ms, simulation %.2f ms%n",
           name, (e.windowCpu() - s.windowCpu()) / 1e6 / frames, (e.glCpu() - s.glCpu()) / 1e6 / frames,
           (e.simCpu() - s.simCpu()) / 1e6 / frames);
+      StringBuilder parts = new StringBuilder();
+      for (int i = 0; i < e.parts().length; i++) {
+        parts.append(String.format(Locale.ROOT, " %s %.2f", org.robotrun.ui.SimulatorWindow.PHASES.get(i),
+            (e.parts()[i] - s.parts()[i]) / 1e6 / frames));
+      }
+      System.err.println("robotrun: " + name + " wall ms per frame:" + parts);
     }
     out.flush();
   }
