@@ -36,7 +36,7 @@ import picocli.CommandLine.Spec;
       "Output, one line per phase, then the close:",
       "  phase=idle|jog|run fps=F cpu_pct=P frame_cpu_ms=M frames=N seconds=S load=L",
       "  close_ms=C",
-      "cpu_pct: the process's CPU time over the phase (every thread) in % of one core. frame_cpu_ms: CPU time per "
+      "cpu_pct: the process's CPU time over the phase (every thread) in %% of one core. frame_cpu_ms: CPU time per "
           + "drawn frame of the window's thread and of Mesa's software rasteriser threads (llvmpipe, Linux), "
           + "less the time spent stepping the simulation; '-' when the phase drew no frame (an idle window draws "
           + "every 5 s). load: the machine's 1-minute load average at the phase's end. close_ms: from the close "
