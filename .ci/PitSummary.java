@@ -1,17 +1,23 @@
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 
 /**
- * Prints PIT's mutation score per package from target/pit-reports/mutations.xml and checks the
- * goals of issue 31: at least 85 % of mutants killed in robot, motion, collision and program, 75 %
- * in sim. Score = mutants detected (killed or timed out) / all mutants, no-coverage counted as
- * survived, as PIT's own "mutation score". Exit 1 when a package with a goal is under it (unless
- * {@code --warn} or PIT_GOALS=warn), 2 when the report cannot be read. Run by the mutation profile after PIT:
- * {@code java .ci/PitSummary.java target/pit-reports/mutations.xml [--warn]}.
+ * Prints PIT's mutation score per package and checks the goals of issue 31: at least 85 % of
+ * mutants killed in robot, motion, collision and program, 75 % in sim. Reads every
+ * {@code mutations.xml} under the given folder (the mutation profile writes one per package set,
+ * target/pit-reports/SET/) or the one file given. Score = mutants detected (killed or timed out) /
+ * all mutants, no-coverage counted as survived, as PIT's own "mutation score". {@code --survivors}
+ * also lists every surviving and uncovered mutant by class, line and mutator. Exit 1 when a package
+ * with a goal is under it (unless {@code --warn} or PIT_GOALS=warn), 2 when no report can be read.
+ * Run by the mutation profile after PIT:
+ * {@code java .ci/PitSummary.java target/pit-reports [--warn] [--survivors]}.
  */
 public class PitSummary {
     static final Map<String, Integer> GOALS = Map.of(
@@ -19,36 +25,56 @@ public class PitSummary {
             "org.robotrun.program", 85, "org.robotrun.sim", 75);
 
     public static void main(String[] args) throws Exception {
-        if (args.length < 1) {
-            System.err.println("usage: java .ci/PitSummary.java mutations.xml [--warn]");
+        List<String> rest = new ArrayList<>(List.of(args));
+        boolean warnOnly = rest.remove("--warn") || "warn".equals(System.getenv("PIT_GOALS"));
+        boolean survivors = rest.remove("--survivors");
+        if (rest.size() != 1) {
+            System.err.println("usage: java .ci/PitSummary.java target/pit-reports|mutations.xml [--warn] [--survivors]");
             System.exit(2);
         }
-        boolean warnOnly = (args.length > 1 && args[1].equals("--warn")) || "warn".equals(System.getenv("PIT_GOALS"));
-        Path xml = Path.of(args[0]);
-        if (!Files.isReadable(xml)) {
-            System.err.println("pit-summary: " + xml + " not found (did PIT run?)");
+        Path where = Path.of(rest.get(0));
+        List<Path> reports = new ArrayList<>();
+        if (Files.isDirectory(where)) {
+            try (Stream<Path> s = Files.walk(where)) {
+                s.filter(p -> p.getFileName().toString().equals("mutations.xml")).sorted().forEach(reports::add);
+            }
+        } else if (Files.isReadable(where)) {
+            reports.add(where);
+        }
+        if (reports.isEmpty()) {
+            System.err.println("pit-summary: no mutations.xml in " + where + " (did PIT run?)");
             System.exit(2);
         }
-        String text = Files.readString(xml);
-        Pattern mutation = Pattern.compile(
-                "<mutation\\b[^>]*\\bstatus='([A-Z_]+)'[^>]*>.*?<mutatedClass>([^<]+)</mutatedClass>", Pattern.DOTALL);
+        Pattern mutation = Pattern.compile("<mutation\\b[^>]*\\bstatus='([A-Z_]+)'[^>]*>(.*?)</mutation>", Pattern.DOTALL);
         Map<String, int[]> byPackage = new TreeMap<>(); // total, detected, noCoverage
-        Matcher m = mutation.matcher(text);
-        while (m.find()) {
-            String status = m.group(1);
-            String cls = m.group(2);
-            int dot = cls.lastIndexOf('.');
-            String pkg = dot < 0 ? "" : cls.substring(0, dot);
-            int[] c = byPackage.computeIfAbsent(pkg, k -> new int[3]);
-            c[0]++;
-            if (status.equals("KILLED") || status.equals("TIMED_OUT") || status.equals("MEMORY_ERROR")) c[1]++;
-            if (status.equals("NO_COVERAGE")) c[2]++;
+        Map<String, List<String>> left = new TreeMap<>();
+        for (Path xml : reports) {
+            Matcher m = mutation.matcher(Files.readString(xml));
+            while (m.find()) {
+                String status = m.group(1);
+                String body = m.group(2);
+                String cls = field(body, "mutatedClass");
+                int dot = cls.lastIndexOf('.');
+                String pkg = dot < 0 ? "" : cls.substring(0, dot);
+                int[] c = byPackage.computeIfAbsent(pkg, k -> new int[3]);
+                c[0]++;
+                boolean detected = status.equals("KILLED") || status.equals("TIMED_OUT") || status.equals("MEMORY_ERROR");
+                if (detected) c[1]++;
+                if (status.equals("NO_COVERAGE")) c[2]++;
+                if (!detected && survivors) {
+                    String mutator = field(body, "mutator");
+                    mutator = mutator.substring(mutator.lastIndexOf('.') + 1);
+                    left.computeIfAbsent(pkg, k -> new ArrayList<>()).add(String.format("    %s:%s %s.%s %s: %s",
+                            cls.substring(dot + 1), field(body, "lineNumber"), cls.substring(dot + 1),
+                            field(body, "mutatedMethod"), status, mutator + " (" + field(body, "description") + ")"));
+                }
+            }
         }
         if (byPackage.isEmpty()) {
-            System.err.println("pit-summary: no mutations in " + xml);
+            System.err.println("pit-summary: no mutations in " + reports);
             System.exit(2);
         }
-        System.out.println("pit-summary: mutation score per package (killed / all; goal from issue 31)");
+        System.out.println("pit-summary: mutation score per package (killed / all; goal from issue 31), from " + reports.size() + " report(s)");
         boolean under = false;
         int total = 0, detected = 0;
         for (var e : byPackage.entrySet()) {
@@ -62,9 +88,21 @@ public class PitSummary {
             System.out.printf("  %-28s %5d/%-5d %5.1f%%  (no coverage %d)%s%n", e.getKey(), c[1], c[0], pct, c[2], verdict);
         }
         System.out.printf("  %-28s %5d/%-5d %5.1f%%%n", "all", detected, total, 100.0 * detected / total);
+        for (var e : left.entrySet()) {
+            System.out.println("  survivors in " + e.getKey() + ":");
+            e.getValue().forEach(System.out::println);
+        }
+        System.out.flush();
         if (under && !warnOnly) {
-            System.err.println("pit-summary: a package is under its mutation-score goal (see above)");
+            System.out.println("pit-summary: a package is under its mutation-score goal (see above)");
             System.exit(1);
         }
+    }
+
+    private static String field(String body, String tag) {
+        int a = body.indexOf("<" + tag + ">");
+        int b = body.indexOf("</" + tag + ">");
+        if (a < 0 || b < a) return "?";
+        return body.substring(a + tag.length() + 2, b).replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&");
     }
 }

@@ -22,6 +22,7 @@ import org.robotrun.robot.KinematicChain;
 import org.robotrun.robot.NumericIk;
 import org.robotrun.robot.ResolvedRate;
 import org.robotrun.robot.RobotModel;
+import org.robotrun.robot.UrTypeIk;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -43,7 +44,8 @@ import picocli.CommandLine.Spec;
       "Times: System.nanoTime around each solve only, in the last of several",
       "passes (see --warmup, --warmup-ms).",
       "The robot's own solver (--solver auto: closed-form where the chain is OPW, offset-wrist",
-      "for the CRX layout, else numeric) and closed-form/offset-wrist pick the branch by the",
+      "for the CRX layout, ur-type for three parallel axes with an offset wrist, else numeric)",
+      "and closed-form/offset-wrist/ur-type pick the branch by the",
       "CONFIG of the row's ground truth; numeric starts from --start. resolved-rate times one step per target",
       "(ground-truth joints; 100 mm/s along X, 0.2 rad/s about Z) and prints",
       "  steps=M damped=K median_us=X p99_us=Y",
@@ -77,7 +79,7 @@ public final class BenchIkCommand implements Callable<Integer> {
       description = "Numeric solver start: home (q = 0), random (s1..s6) or near (n1..n6). Default: ${DEFAULT-VALUE}.")
   String start;
 
-  @Option(names = "--solver", defaultValue = "auto", paramLabel = "auto|closed-form|offset-wrist|numeric|resolved-rate",
+  @Option(names = "--solver", defaultValue = "auto", paramLabel = "auto|closed-form|offset-wrist|ur-type|numeric|resolved-rate",
       description = "Solver to measure. Default: ${DEFAULT-VALUE}.")
   String solver;
 
@@ -98,9 +100,9 @@ public final class BenchIkCommand implements Callable<Integer> {
     if (!List.of("home", "random", "near").contains(start)) {
       throw new ParameterException(spec.commandLine(), "--start: expected home, random or near, got '" + start + "'");
     }
-    if (!List.of("auto", "closed-form", "offset-wrist", "numeric", "resolved-rate").contains(solver)) {
+    if (!List.of("auto", "closed-form", "offset-wrist", "ur-type", "numeric", "resolved-rate").contains(solver)) {
       throw new ParameterException(spec.commandLine(),
-          "--solver: expected auto, closed-form, offset-wrist, numeric or resolved-rate, got '" + solver + "'");
+          "--solver: expected auto, closed-form, offset-wrist, ur-type, numeric or resolved-rate, got '" + solver + "'");
     }
     if ((targets == null) == (generate == null)) {
       throw new ParameterException(spec.commandLine(), "give either --targets FILE or --generate N");
@@ -151,6 +153,13 @@ public final class BenchIkCommand implements Callable<Integer> {
       case "offset-wrist" -> {
         if (!OffsetWristIk.applies(robot)) {
           throw new UserError(robot.id() + " does not have the CRX layout: use --solver auto or numeric", Main.EXIT_FAILED);
+        }
+        yield own;
+      }
+      case "ur-type" -> {
+        if (!UrTypeIk.KIND.equals(own.kind())) {
+          throw new UserError(robot.id() + " does not have three parallel axes with an offset wrist: use --solver auto or numeric",
+              Main.EXIT_FAILED);
         }
         yield own;
       }

@@ -456,13 +456,18 @@ public final class GuiCommand implements Callable<Integer> {
         sc == null ? "" : sc.description(), () -> sim.snapshot().scene(), layout);
     // Menus of other parts of the window go into the menu bar here, left of View and Help.
     bench.setPendantSource(selector);
+    bench.setMinimumSizeHandler(w::setMinimumSize);
     if (selector.size() > 1) {
-      bench.addSection(org.robotrun.ui.RobotSelector.TITLE, selector::drawContents);
+      bench.addLeadSection(org.robotrun.ui.RobotSelector.TITLE, selector::drawContents);
     }
-    bench.addSection(OperatorPanel.TITLE, new OperatorPanel(selector)::drawContents);
+    // the controller's panels, each shown when the cell uses it (PanelRules) or the View menu asks
+    bench.addPanel(org.robotrun.ui.PanelRules.Panel.OPERATOR, new OperatorPanel(selector)::drawContents);
     // the PLC panel follows the robot the selector chose (each robot has its own UOP)
-    bench.addSection(org.robotrun.ui.PlcPanel.TITLE,
-        new org.robotrun.ui.PlcPanel(() -> sim.controllers().get(selector.selected()))::drawContents);
+    org.robotrun.ui.PlcPanel plc = new org.robotrun.ui.PlcPanel(() -> sim.controllers().get(selector.selected()));
+    bench.addPanel(org.robotrun.ui.PanelRules.Panel.PLC, plc::drawContents);
+    bench.addPanel(org.robotrun.ui.PanelRules.Panel.TASKS, plc::drawTasks);
+    bench.addPanel(org.robotrun.ui.PanelRules.Panel.BG_LOGIC, plc::drawBgLogic);
+    bench.setCellUse(cellUse(sim, sc != null && !sc.description().isBlank()));
     PendantKeyboard keyboard = new PendantKeyboard(selector);
     // Keys held on the robot left behind are let go before the pendant changes hands.
     selector.onBeforeSwitch(() -> {
@@ -502,6 +507,32 @@ public final class GuiCommand implements Callable<Integer> {
       pendantPanel.releaseLatched();
     });
     return new Session(w, bench, sim, controller, pendant, editor, settings, ws, selector, new CellStepper(sim), frameScene);
+  }
+
+  /** What the cell uses now, over every robot, for the left column's panel rules; a RUN seen once keeps the task list. */
+  static java.util.function.Supplier<org.robotrun.ui.PanelRules.CellUse> cellUse(Simulation sim, boolean task) {
+    boolean[] tasksRun = {false};
+    return () -> {
+      boolean production = false, bg = false, notT1 = false;
+      for (Controller c : sim.controllers()) {
+        production |= c.uop().setup().isPresent();
+        bg |= !c.bgLogic().slots().isEmpty();
+        tasksRun[0] |= !c.tasks().list().isEmpty() || runsATask(c);
+        notT1 |= c.mode() != org.robotrun.control.RobotControl.Mode.T1;
+      }
+      return new org.robotrun.ui.PanelRules.CellUse(task, production, bg, tasksRun[0], notT1);
+    };
+  }
+
+  /** Whether a program of {@code c} has a RUN statement (the cell uses a second task). */
+  private static boolean runsATask(Controller c) {
+    for (String name : c.programNames()) {
+      Program p = c.program(name).orElse(null);
+      if (p != null && p.lines().stream().anyMatch(l -> l instanceof org.robotrun.program.Instruction.Run)) {
+        return true;
+      }
+    }
+    return false;
   }
 
   /** The course the Labs menu lists: {@code --course}, else the shipped one when it is there (null: no Labs menu). */
@@ -651,7 +682,7 @@ public final class GuiCommand implements Callable<Integer> {
           // the one snapshot of this frame: the 3D view and the camera views draw it
           org.robotrun.sim.SceneSnapshot scene = s.sim().snapshot().scene();
           s.frameScene().set(scene);
-          return scene;
+          return s.bench().marked(scene);
         },
         s.bench(),
         () -> {

@@ -156,7 +156,20 @@ public interface RobotControl {
 
   // ---- position ----------------------------------------------------------------------------
 
-  /** The current joint position (deg, coupled J3). */
+  /**
+   * The arm's joint names, base to wrist, as its robot file gives them ("J1".."J6" for every
+   * library arm; an imported URDF's own names): what the pendant labels joints with.
+   */
+  default List<String> jointNames() {
+    return List.of("J1", "J2", "J3", "J4", "J5", "J6");
+  }
+
+  /** Whether the pendant shows J3 coupled to J2 (FANUC's convention), as the arm's model says. */
+  default boolean coupledJ3() {
+    return true;
+  }
+
+  /** The current joint position (deg, J3 coupled where {@link #coupledJ3()} says). */
   Position.Joint currentJoints();
 
   /**
@@ -242,6 +255,12 @@ public interface RobotControl {
       return this != AUTO;
     }
   }
+
+  /**
+   * The fastest TCP speed this robot's programs may ask for (mm/s, the controller's
+   * $MRR_GRP.$SPEEDLIM for its model): the top of the mm/sec range the pendant accepts.
+   */
+  double maxLinearSpeedMmPerSec();
 
   /** Whether the pendant's TP ENABLE switch is on. */
   boolean tpEnabled();

@@ -84,7 +84,7 @@ final class ProgramUse {
               found.add(Check.Feature.OFFSET_PR);
             } else if (o instanceof Motion.ToolOffsetPr) {
               found.add(Check.Feature.TOOL_OFFSET_PR);
-            } else if (o instanceof Motion.RawOption r && r.text().toUpperCase(java.util.Locale.ROOT).startsWith("VOFFSET")) {
+            } else if (o instanceof Motion.VisionOffset) {
               found.add(Check.Feature.VOFFSET);
             }
           }

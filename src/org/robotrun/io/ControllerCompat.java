@@ -100,6 +100,9 @@ public final class ControllerCompat {
 
   /** The controller option a line needs beyond a standard controller, if any. */
   static Optional<String> option(Instruction in) {
+    if (usesVision(in)) {
+      return Optional.of("iRVision");
+    }
     String kind = switch (in) {
       case Instruction.Unsupported u -> u.what();
       case Instruction.Move m -> m.options().stream()
@@ -134,6 +137,19 @@ public final class ControllerCompat {
       return Optional.of("error recovery");
     }
     return Optional.empty();
+  }
+
+  /** An iRVision statement, a VR[] read or a motion with VOFFSET,VR[i]. */
+  private static boolean usesVision(Instruction in) {
+    return switch (in) {
+      case Instruction.VisionRunFind v -> true;
+      case Instruction.VisionGetOffset v -> true;
+      case Instruction.VisionGetNFound v -> true;
+      case Instruction.AssignFromVr v -> true;
+      case Instruction.AssignPosReg a -> a.source() instanceof Instruction.FromVisionRegister;
+      case Instruction.Move m -> m.options().stream().anyMatch(Motion.VisionOffset.class::isInstance);
+      default -> false;
+    };
   }
 
   /** A statement the named controller's system software does not have yet, if this is one. */

@@ -15,15 +15,33 @@ import org.robotrun.io.LocatedJson.JString;
  * strict readers of scenario and task files build on it.
  */
 public abstract class JsonFieldReader {
+  /** Where a reader of one section of a file reports its problems: the reader of the whole file. */
+  @FunctionalInterface
+  public interface ErrorSink {
+    void add(int line, String path, String message);
+  }
+
   protected final String file;
   protected final List<ScenarioError> errors = new ArrayList<>();
+  private final ErrorSink sink;
 
   protected JsonFieldReader(String file) {
     this.file = file;
+    this.sink = null;
+  }
+
+  /** A reader of a section whose problems go to {@code sink} (the file's reader names the file). */
+  protected JsonFieldReader(ErrorSink sink) {
+    this.file = "";
+    this.sink = java.util.Objects.requireNonNull(sink, "sink");
   }
 
   protected final void error(int line, String path, String message) {
-    errors.add(new ScenarioError(file, line, path, message));
+    if (sink != null) {
+      sink.add(line, path, message);
+    } else {
+      errors.add(new ScenarioError(file, line, path, message));
+    }
   }
 
   /** {@code at.key}, or {@code key} at the top. */
@@ -74,6 +92,39 @@ public abstract class JsonFieldReader {
       return null;
     }
     return a;
+  }
+
+  /**
+   * The whole-number field {@code key} of {@code o} within {@code min..max}, or {@code fallback}
+   * when it is absent or (with an error) anything else.
+   */
+  protected final int integer(JObject o, String key, String at, int min, int max, int fallback) {
+    LocatedJson v = o.members().get(key);
+    if (v == null) {
+      return fallback;
+    }
+    if (!(v instanceof LocatedJson.JNumber n) || !n.integral() || n.value() < min || n.value() > max) {
+      error(v.line(), join(at, key), "expected a whole number " + min + ".." + max + ", got " + v.describe());
+      return fallback;
+    }
+    return (int) n.value();
+  }
+
+  /**
+   * An object key that is a table index ({@code "registers": {"3": ...}}): 1..max, or null with
+   * an error naming {@code what} ("register", "user frame").
+   */
+  protected final Integer keyIndex(String key, int max, int line, String path, String what) {
+    try {
+      int n = Integer.parseInt(key);
+      if (n >= 1 && n <= max) {
+        return n;
+      }
+    } catch (NumberFormatException e) {
+      // reported below
+    }
+    error(line, path, "expected a " + what + " number 1.." + max + " as the key, got \"" + key + "\"");
+    return null;
   }
 
   /** The string field {@code key} of {@code o}, or empty (with an error when it is required or not a string). */

@@ -153,13 +153,15 @@ final class LsProgramChecks {
     }
   }
 
-  /** Labels a line may jump to: JMP, IF/SELECT branches, WAIT ... TIMEOUT and motion Skip. */
+  /** Labels a line may jump to: JMP, IF/SELECT branches, WAIT ... TIMEOUT, VISION GET_OFFSET and motion Skip. */
   private static List<LabelRef> labelTargets(Instruction in) {
     List<LabelRef> out = new ArrayList<>(1);
     if (in instanceof Instruction.Jump j) {
       out.add(j.label());
     } else if (in instanceof Instruction.WaitCondition w) {
       w.timeoutLabel().ifPresent(out::add);
+    } else if (in instanceof Instruction.VisionGetOffset v) {
+      out.add(v.label());
     } else if (in instanceof Instruction.Move m) {
       for (Motion.Option o : m.options()) {
         if (o instanceof Motion.Skip s) {

@@ -637,8 +637,7 @@ public final class LsReader {
           }
           if (in instanceof Instruction.Move m) {
             for (var o : m.options()) {
-              if (o instanceof org.robotrun.program.Motion.RawOption r
-                  && org.robotrun.program.VisionStatement.voffset(r.text()).isEmpty()) {
+              if (o instanceof org.robotrun.program.Motion.RawOption r) {
                 notSupported(line, 1, r.what(), true, " (the motion runs without it)");
               }
             }
@@ -651,11 +650,8 @@ public final class LsReader {
           if (e.unsupported().isPresent()) {
             String what = e.unsupported().get();
             in = new Instruction.Unsupported(rawText, what, e.runnable());
-            // The iRVision forms RobotRun runs are kept as written but are not "not supported".
-            if (!org.robotrun.program.VisionStatement.runs(rawText)) {
-              notSupported(e.line(), e.column(), what, e.runnable(),
-                  e.runnable() ? " (the line is skipped when it runs)" : " (the line alarms when it runs)");
-            }
+            notSupported(e.line(), e.column(), what, e.runnable(),
+                e.runnable() ? " (the line is skipped when it runs)" : " (the line alarms when it runs)");
           } else {
             diags.add(Diagnostic.of(file, e.line(), e.column(), Diagnostic.Severity.ERROR, Diagnostic.Kind.SYNTAX,
                 e.getMessage()));

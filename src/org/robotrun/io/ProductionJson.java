@@ -326,18 +326,6 @@ public final class ProductionJson extends JsonFieldReader {
     return b.value();
   }
 
-  private int integer(JObject o, String key, String at, int min, int max, int dflt) {
-    LocatedJson v = o.members().get(key);
-    if (v == null) {
-      return dflt;
-    }
-    if (!(v instanceof JNumber n) || !n.integral() || n.value() < min || n.value() > max) {
-      error(v.line(), join(at, key), "expected a whole number " + min + ".." + max + ", got " + v.describe());
-      return dflt;
-    }
-    return (int) n.value();
-  }
-
   /** An array of {@code count} numbers (or of one, when {@code exact} is false); null after an error. */
   private List<Double> numbers(JObject o, String key, String at, int count, boolean exact, double min, double max) {
     JArray a = array(o, key, at, exact);

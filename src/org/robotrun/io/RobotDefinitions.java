@@ -112,7 +112,8 @@ public final class RobotDefinitions {
 
   /**
    * Loads a robot from a file: RobotRun's JSON (display meshes named in it are read relative to
-   * its folder) or a URDF (imported in memory, as {@code robotrun robot import} would).
+   * its folder) or a URDF (imported in memory, as {@code robotrun robot import} would, with the
+   * package folders a scenario gave for it; kept by {@link UrdfCache} while unchanged).
    *
    * @throws FileFormatException naming the file, line or field, and what was expected
    */
@@ -122,7 +123,7 @@ public final class RobotDefinitions {
       throw new FileFormatException(name, 0, "robot file not found (paths are relative to the scenario file)");
     }
     if (name.toLowerCase(Locale.ROOT).endsWith(".urdf")) {
-      return UrdfImporter.importRobot(file, java.util.Map.of()).model();
+      return UrdfCache.load(file);
     }
     Path dir = file.toAbsolutePath().normalize().getParent();
     try {
@@ -244,9 +245,11 @@ public final class RobotDefinitions {
 
     try {
       // The closed form's parameters come from the chain (OpwDerivation), never from the file.
-      return RobotModel.fromChain(
+      RobotModel model = RobotModel.fromChain(
           r.text(root, "id", ""), r.text(root, "name", ""), joints, X_6F, X_WB, links,
           root.path("coupledJ3").asBoolean(false));
+      // the controller's $SPEEDLIM for this arm (mm/s); the default when the file does not say
+      return root.has("maxLinearSpeed") ? model.withMaxLinearSpeed(r.number(root, "maxLinearSpeed", "")) : model;
     } catch (IllegalArgumentException e) {
       throw new FileFormatException(source, 0, e.getMessage());
     }

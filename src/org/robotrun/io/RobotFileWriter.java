@@ -61,6 +61,9 @@ public final class RobotFileWriter {
       units.put("length", "mm");
       units.put("angle", "deg");
       root.put("coupledJ3", model.coupledJ3());
+      if (model.maxLinearSpeedMmPerSec() != RobotModel.DEFAULT_MAX_LINEAR_SPEED_MM_PER_SEC) {
+        root.put("maxLinearSpeed", model.maxLinearSpeedMmPerSec());
+      }
       ObjectNode wib = root.putObject("worldInBase");
       wib.put("x", -model.X_WB().x());
       wib.put("y", -model.X_WB().y());

@@ -81,7 +81,7 @@ public final class ScenarioReader {
       "format", "name", "description", "robots", "objects", "programs", "mainProgram", "registers", "frames", "camera",
       "onCollision", "state", "mode", "wiring", "production", VisionJson.KEY);
   private static final Set<String> ROBOT = Set.of("name", "model", "basePose", "endEffector", "jointsDeg", "toolIo",
-      "io", "userAlarms", "programs", "mainProgram", "macros", "registers", "frames", "mode");
+      "io", "userAlarms", "programs", "mainProgram", "macros", "registers", "frames", "mode", "packages");
   /** Highest UALM[i] a scenario may give a text for. */
   static final int MAX_USER_ALARM = 200;
   private static final Set<String> TOOL_IO = Set.of("output", "actuated", "holding");
@@ -296,7 +296,8 @@ public final class ScenarioReader {
               + Workspace.robotFolder(robotName) + "/ would collide with a program file; give the robot another name");
         }
         Optional<String> modelText = string(r, "model", at, true);
-        Optional<RobotModel> model = modelText.flatMap(m -> model(m, r, at));
+        Map<String, Path> packages = packages(r, at, modelText);
+        Optional<RobotModel> model = packages == null ? Optional.empty() : modelText.flatMap(m -> model(m, r, at, packages));
         Transform X_CB = r.members().containsKey("basePose") ? pose(r, "basePose", at) : Transform.IDENTITY;
         EndEffectorType tool = string(r, "endEffector", at, false).map(s -> endEffector(s, r, at)).orElse(EndEffectorType.FACEPLATE);
         double[] jointsRad = joints(r, at, model);
@@ -417,7 +418,7 @@ public final class ScenarioReader {
       }
       for (Map.Entry<String, LocatedJson> e : o.members().entrySet()) {
         String path = join(at, "userAlarms." + e.getKey());
-        Integer n = index(e.getKey(), MAX_USER_ALARM, o.keyLines().get(e.getKey()), path, "user alarm");
+        Integer n = keyIndex(e.getKey(), MAX_USER_ALARM, o.keyLines().get(e.getKey()), path, "user alarm");
         if (!(e.getValue() instanceof JString text)) {
           error(e.getValue().line(), path, "expected the alarm text as a string, got " + e.getValue().describe());
           continue;
@@ -485,8 +486,49 @@ public final class ScenarioReader {
       return RobotDefinitions.isPath(text) ? dir.resolve(text).toAbsolutePath().normalize().toString() : text;
     }
 
+    /**
+     * The robot's {@code "packages"}: package name to folder (relative to the scenario) for a
+     * {@code .urdf} model's {@code package://} mesh paths; empty when absent, null after an error.
+     */
+    private Map<String, Path> packages(JObject r, String at, Optional<String> modelText) {
+      if (!r.members().containsKey("packages")) {
+        return Map.of();
+      }
+      String where = join(at, "packages");
+      JObject o = member(r, "packages", at, null, false);
+      if (o == null) {
+        return null;
+      }
+      if (modelText.isEmpty() || !modelText.get().toLowerCase(java.util.Locale.ROOT).endsWith(".urdf")) {
+        error(r.keyLines().get("packages"), where, "package folders are for a model that names a .urdf file, got model '"
+            + modelText.orElse("") + "'");
+        return null;
+      }
+      Map<String, Path> out = new TreeMap<>();
+      boolean ok = true;
+      for (Map.Entry<String, LocatedJson> e : o.members().entrySet()) {
+        String path = join(where, e.getKey());
+        if (!(e.getValue() instanceof JString folder)) {
+          error(e.getValue().line(), path, "expected the package's folder as a path (relative to the scenario), got "
+              + e.getValue().describe());
+          ok = false;
+          continue;
+        }
+        Path p = resolve(folder.value(), folder.line(), path);
+        if (p == null) {
+          ok = false;
+        } else if (!Files.isDirectory(p)) {
+          error(folder.line(), path, "package folder not found: " + p);
+          ok = false;
+        } else {
+          out.put(e.getKey(), p.toAbsolutePath().normalize());
+        }
+      }
+      return ok ? out : null;
+    }
+
     /** The model a robot names: a library id or a robot file (relative to the scenario), via {@link RobotDefinitions#resolve}. */
-    private Optional<RobotModel> model(String id, JObject r, String at) {
+    private Optional<RobotModel> model(String id, JObject r, String at, Map<String, Path> packages) {
       if (models.containsKey(id)) {
         return Optional.of(models.get(id));
       }
@@ -502,6 +544,9 @@ public final class ScenarioReader {
         Path file = resolve(id, line, at + ".model");
         if (file == null) {
           return Optional.empty();
+        }
+        if (file.toString().toLowerCase(java.util.Locale.ROOT).endsWith(".urdf")) {
+          UrdfCache.rememberPackages(file, packages);
         }
         try {
           RobotModel m = RobotDefinitions.loadFile(file);
@@ -902,7 +947,7 @@ public final class ScenarioReader {
       }
       for (Map.Entry<String, LocatedJson> e : regs.members().entrySet()) {
         String at = join(where, "registers." + e.getKey());
-        Integer index = index(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
+        Integer index = keyIndex(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
         Double v = finite(e.getValue(), at);
         if (index != null && v != null) {
           out.put(index, v);
@@ -924,7 +969,7 @@ public final class ScenarioReader {
         }
         for (String key : set.members().keySet()) {
           String at = join(where, "frames." + kind + "." + key);
-          Integer n = index(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
+          Integer n = keyIndex(key, MAX_FRAME, set.keyLines().get(key), at, kind + " frame");
           Transform pose = pose(set, key, join(where, "frames." + kind));
           if (n != null && pose != null) {
             (kind.equals("tool") ? tool : user).put(n, pose);
@@ -1031,19 +1076,6 @@ public final class ScenarioReader {
         v[k] = d == null ? 0 : d;
       }
       return ok ? Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform() : null;
-    }
-
-    private Integer index(String key, int max, int line, String path, String what) {
-      try {
-        int n = Integer.parseInt(key);
-        if (n >= 1 && n <= max) {
-          return n;
-        }
-      } catch (NumberFormatException e) {
-        // reported below
-      }
-      error(line, path, "expected a " + what + " number 1.." + max + " as the key, got \"" + key + "\"");
-      return null;
     }
 
     private static String describeArray(LocatedJson v) {

@@ -118,6 +118,14 @@ public final class ScenarioWriter {
         // A robot file is kept as an absolute path once read; written relative, like meshes.
         g.writeStringField("model", RobotDefinitions.isPath(r.modelId()) && Path.of(r.modelId()).isAbsolute()
             ? relative(dir, Path.of(r.modelId())) : r.modelId());
+        if (r.modelId().toLowerCase(java.util.Locale.ROOT).endsWith(".urdf") && Path.of(r.modelId()).isAbsolute()
+            && !UrdfCache.packagesFor(Path.of(r.modelId())).isEmpty()) {
+          g.writeObjectFieldStart("packages");
+          for (Map.Entry<String, Path> p : new java.util.TreeMap<>(UrdfCache.packagesFor(Path.of(r.modelId()))).entrySet()) {
+            g.writeStringField(p.getKey(), relative(dir, p.getValue()));
+          }
+          g.writeEndObject();
+        }
         pose(g, "basePose", r.X_CB());
         g.writeStringField("endEffector", r.endEffector().fileName());
         g.writeArrayFieldStart("jointsDeg");

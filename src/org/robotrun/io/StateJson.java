@@ -23,7 +23,7 @@ import org.robotrun.sim.FrameTable;
  * by {@link ScenarioWriter}, read by {@link ScenarioReader} with a JSON path and line for every
  * problem.
  */
-final class StateJson {
+final class StateJson extends JsonFieldReader {
   private static final Set<String> FIELDS = Set.of(
       "overridePct", "utool", "uframe", "registers", "positionRegisters", "outputs", "comments", "created", "toolFrames", "userFrames", "robots", "stringRegisters");
   private static final Set<String> CARTESIAN = Set.of("x", "y", "z", "w", "p", "r", "config");
@@ -31,7 +31,22 @@ final class StateJson {
   private static final Pattern CONFIG = Pattern.compile(
       "\\s*([NF])\\s+([UD])\\s+([TB])\\s*,\\s*(-?\\d+)\\s*,\\s*(-?\\d+)\\s*,\\s*(-?\\d+)\\s*");
 
-  private StateJson() {}
+  /** Where this state's fields are: {@code state}, or {@code state.robots.NAME} for a later robot's. */
+  private final String root;
+  private int problems;
+
+  private StateJson(ErrorSink errors, String root) {
+    super(errors);
+    this.root = root;
+  }
+
+  /** Counts the problems reported through {@code errors}, so a state with any is not taken. */
+  private static ErrorSink counted(ErrorSink errors, int[] count) {
+    return (line, path, message) -> {
+      count[0]++;
+      errors.add(line, path, message);
+    };
+  }
 
   // ---- writing --------------------------------------------------------------------------------
 
@@ -158,40 +173,28 @@ final class StateJson {
 
   // ---- reading --------------------------------------------------------------------------------
 
-  /** Collects problems as {@link ScenarioError}s with the file's name. */
-  interface Errors {
-    void add(int line, String path, String message);
+  /** The state in {@code o}, or null after reporting every problem to {@code errors}. */
+  static SavedState read(JObject o, ErrorSink errors) {
+    int[] count = {0};
+    SavedState s = new StateJson(counted(errors, count), "state").state(o);
+    return count[0] == 0 ? s : null;
   }
 
-  /** The state in {@code o}, or null after reporting every problem to {@code errors}. */
-  static SavedState read(JObject o, Errors errors) {
-    int[] count = {0};
-    Errors counting = (line, path, message) -> {
-      count[0]++;
-      errors.add(line, path, message);
-    };
-    for (String key : o.members().keySet()) {
-      if (!FIELDS.contains(key)) {
-        counting.add(o.keyLines().get(key), "state." + key, "unknown field (expected one of " + String.join(", ",
-            FIELDS.stream().sorted().toList()) + ")");
-      }
-    }
-    int override = integer(o, "overridePct", 1, 100, -1, counting);
-    int utool = integer(o, "utool", 0, FrameTable.COUNT, -1, counting);
-    int uframe = integer(o, "uframe", 0, FrameTable.COUNT, -1, counting);
-    String created = o.members().get("created") instanceof JString s ? s.value() : "";
-    if (o.members().containsKey("created") && !(o.members().get("created") instanceof JString)) {
-      counting.add(o.members().get("created").line(), "state.created", "expected a time as text, got "
-          + o.members().get("created").describe());
-    }
+  /** The fields of one state object (the JSON field helpers are {@link JsonFieldReader}'s). */
+  private SavedState state(JObject o) {
+    object(o, root, FIELDS);
+    int override = integer(o, "overridePct", root, 1, 100, -1);
+    int utool = integer(o, "utool", root, 0, FrameTable.COUNT, -1);
+    int uframe = integer(o, "uframe", root, 0, FrameTable.COUNT, -1);
+    String created = string(o, "created", root, false).orElse("");
     TreeMap<Integer, SavedState.Register> registers = new TreeMap<>();
-    JObject regs = object(o, "registers", counting);
+    JObject regs = member(o, "registers", root, null, false);
     if (regs != null) {
       regs.members().forEach((key, v) -> {
-        String at = "state.registers." + key;
-        Integer i = index(key, Registers.R_COUNT, regs.keyLines().get(key), at, counting);
+        String at = join(root, "registers." + key);
+        Integer i = keyIndex(key, Registers.R_COUNT, regs.keyLines().get(key), at, "register");
         if (!(v instanceof JNumber n) || !Double.isFinite(n.value())) {
-          counting.add(v.line(), at, "expected a number, got " + v.describe());
+          error(v.line(), at, "expected a number, got " + v.describe());
         } else if (i != null) {
           // an integer is written without a fraction; any whole number a double holds exactly comes back one
           registers.put(i, new SavedState.Register(n.value(), n.integral() && Math.abs(n.value()) <= MAX_EXACT_INTEGER));
@@ -199,55 +202,55 @@ final class StateJson {
       });
     }
     TreeMap<Integer, String> strings = new TreeMap<>();
-    JObject srObj = object(o, "stringRegisters", counting);
+    JObject srObj = member(o, "stringRegisters", root, null, false);
     if (srObj != null) {
       srObj.members().forEach((key, v) -> {
-        String at = "state.stringRegisters." + key;
-        Integer i = index(key, Registers.SR_COUNT, srObj.keyLines().get(key), at, counting);
+        String at = join(root, "stringRegisters." + key);
+        Integer i = keyIndex(key, Registers.SR_COUNT, srObj.keyLines().get(key), at, "string register");
         if (!(v instanceof JString t)) {
-          counting.add(v.line(), at, "expected text, got " + v.describe());
+          error(v.line(), at, "expected text, got " + v.describe());
         } else if (t.value().length() > Registers.SR_LENGTH) {
-          counting.add(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.value().length());
+          error(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.value().length());
         } else if (i != null) {
           strings.put(i, t.value());
         }
       });
     }
     TreeMap<Integer, Position> prs = new TreeMap<>();
-    JObject prObj = object(o, "positionRegisters", counting);
+    JObject prObj = member(o, "positionRegisters", root, null, false);
     if (prObj != null) {
       prObj.members().forEach((key, v) -> {
-        String at = "state.positionRegisters." + key;
-        Integer i = index(key, Registers.PR_COUNT, prObj.keyLines().get(key), at, counting);
-        Position p = position(v, at, counting);
+        String at = join(root, "positionRegisters." + key);
+        Integer i = keyIndex(key, Registers.PR_COUNT, prObj.keyLines().get(key), at, "position register");
+        Position p = position(v, at);
         if (i != null && p != null) {
           prs.put(i, p);
         }
       });
     }
     TreeMap<String, Integer> outputs = new TreeMap<>();
-    JObject outObj = object(o, "outputs", counting);
+    JObject outObj = member(o, "outputs", root, null, false);
     if (outObj != null) {
       outObj.members().forEach((key, v) -> {
-        String at = "state.outputs." + key;
+        String at = join(root, "outputs." + key);
         SavedState.Item item = SavedState.Item.parse(key);
         IoKind kind = item == null ? null : ioKind(item.table());
         if (kind == null || !kind.writable() || item.index() < 1 || item.index() > org.robotrun.program.IoRanges.MAX_SIZE) {
-          counting.add(outObj.keyLines().get(key), at, "expected an output or flag such as DO[1], RO[1], GO[1], F[1], got \""
+          error(outObj.keyLines().get(key), at, "expected an output or flag such as DO[1], RO[1], GO[1], F[1], got \""
               + key + "\"");
         } else if (!(v instanceof JNumber n) || !n.integral() || (!kind.group() && n.value() != 0 && n.value() != 1)
             || Math.abs(n.value()) > Integer.MAX_VALUE) {
-          counting.add(v.line(), at, kind.group() ? "expected an integer, got " + v.describe() : "expected 0 or 1, got " + v.describe());
+          error(v.line(), at, kind.group() ? "expected an integer, got " + v.describe() : "expected 0 or 1, got " + v.describe());
         } else {
           outputs.put(kind.name() + "[" + item.index() + "]", (int) n.value());
         }
       });
     }
     TreeMap<String, String> comments = new TreeMap<>();
-    JObject comObj = object(o, "comments", counting);
+    JObject comObj = member(o, "comments", root, null, false);
     if (comObj != null) {
       comObj.members().forEach((key, v) -> {
-        String at = "state.comments." + key;
+        String at = join(root, "comments." + key);
         SavedState.Item item = SavedState.Item.parse(key);
         int max = item == null ? -1 : switch (item.table()) {
           case "R" -> Registers.R_COUNT;
@@ -256,55 +259,52 @@ final class StateJson {
           default -> -1;
         };
         if (item == null || item.index() < 1 || item.index() > max) {
-          counting.add(comObj.keyLines().get(key), at, "expected R[i], PR[i], UT[i] or UF[i], got \"" + key + "\"");
+          error(comObj.keyLines().get(key), at, "expected R[i], PR[i], UT[i] or UF[i], got \"" + key + "\"");
         } else if (!(v instanceof JString s)) {
-          counting.add(v.line(), at, "expected text, got " + v.describe());
+          error(v.line(), at, "expected text, got " + v.describe());
         } else {
           comments.put(item.table() + "[" + item.index() + "]", s.value());
         }
       });
     }
-    TreeMap<Integer, Position> toolFrames = frames(o, "toolFrames", counting);
-    TreeMap<Integer, Position> userFrames = frames(o, "userFrames", counting);
+    TreeMap<Integer, Position> toolFrames = frames(o, "toolFrames", "tool frame");
+    TreeMap<Integer, Position> userFrames = frames(o, "userFrames", "user frame");
     TreeMap<String, SavedState> robots = new TreeMap<>();
-    JObject robObj = object(o, "robots", counting);
+    JObject robObj = member(o, "robots", root, null, false);
     if (robObj != null) {
       robObj.members().forEach((name, v) -> {
-        String at = "state.robots." + name;
-        if (!(v instanceof JObject ro)) {
-          counting.add(v.line(), at, "expected an object, got " + v.describe());
+        String at = join(root, "robots." + name);
+        JObject ro = object(v, at, null);
+        if (ro == null) {
           return;
         }
         if (ro.members().containsKey("robots")) {
-          counting.add(ro.keyLines().get("robots"), at + ".robots", "a robot's state holds no other robots");
+          error(ro.keyLines().get("robots"), at + ".robots", "a robot's state holds no other robots");
           return;
         }
         // The same fields, their paths under this robot.
-        SavedState rs = read(ro, (line, path, message) -> counting.add(line,
-            path.startsWith("state.") ? at + path.substring("state".length()) : path, message));
-        if (rs != null) {
+        int[] count = {0};
+        SavedState rs = new StateJson(counted(this::error, count), at).state(ro);
+        if (count[0] == 0) {
           robots.put(name, rs);
         }
       });
-    }
-    if (count[0] != 0) {
-      return null;
     }
     return new SavedState(override, utool, uframe, registers, prs, outputs, comments, created, toolFrames, userFrames,
         robots, strings);
   }
 
   /** UT[i] / UF[i] of a robot after the first: Cartesian positions by number 1..10. */
-  private static TreeMap<Integer, Position> frames(JObject o, String key, Errors errors) {
+  private TreeMap<Integer, Position> frames(JObject o, String key, String what) {
     TreeMap<Integer, Position> out = new TreeMap<>();
-    JObject f = object(o, key, errors);
+    JObject f = member(o, key, root, null, false);
     if (f != null) {
       f.members().forEach((k, v) -> {
-        String at = "state." + key + "." + k;
-        Integer i = index(k, FrameTable.COUNT, f.keyLines().get(k), at, errors);
-        Position p = position(v, at, errors);
+        String at = join(root, key + "." + k);
+        Integer i = keyIndex(k, FrameTable.COUNT, f.keyLines().get(k), at, what);
+        Position p = position(v, at);
         if (p instanceof Position.Joint) {
-          errors.add(v.line(), at, "expected a Cartesian frame (x, y, z, w, p, r), got joint values");
+          error(v.line(), at, "expected a Cartesian frame (x, y, z, w, p, r), got joint values");
         } else if (i != null && p != null) {
           out.put(i, p);
         }
@@ -322,9 +322,9 @@ final class StateJson {
     return null;
   }
 
-  private static Position position(LocatedJson v, String at, Errors errors) {
+  private Position position(LocatedJson v, String at) {
     if (!(v instanceof JObject p)) {
-      errors.add(v.line(), at, "expected {x, y, z, w, p, r, config} or {joints: [6 numbers]}, got " + v.describe());
+      error(v.line(), at, "expected {x, y, z, w, p, r, config} or {joints: [6 numbers]}, got " + v.describe());
       return null;
     }
     boolean joint = p.members().containsKey("joints");
@@ -332,13 +332,13 @@ final class StateJson {
     boolean ok = true;
     for (String key : p.members().keySet()) {
       if (!allowed.contains(key)) {
-        errors.add(p.keyLines().get(key), at + "." + key, "unknown field (expected " + (joint ? "joints" : "x, y, z, w, p, r, config") + ")");
+        error(p.keyLines().get(key), at + "." + key, "unknown field (expected " + (joint ? "joints" : "x, y, z, w, p, r, config") + ")");
         ok = false;
       }
     }
     if (joint) {
       if (!(p.members().get("joints") instanceof JArray a) || a.items().size() != 6) {
-        errors.add(p.members().get("joints").line(), at + ".joints", "expected an array of 6 joint angles in degrees");
+        error(p.members().get("joints").line(), at + ".joints", "expected an array of 6 joint angles in degrees");
         return null;
       }
       double[] q = new double[6];
@@ -346,7 +346,7 @@ final class StateJson {
         if (a.items().get(k) instanceof JNumber n && PoseLimits.angleOk(n.value())) {
           q[k] = n.value();
         } else {
-          errors.add(a.items().get(k).line(), at + ".joints[" + k + "]", "expected an angle within +-"
+          error(a.items().get(k).line(), at + ".joints[" + k + "]", "expected an angle within +-"
               + (long) PoseLimits.MAX_ANGLE_DEG + " deg, got " + a.items().get(k).describe());
           ok = false;
         }
@@ -362,7 +362,7 @@ final class StateJson {
       }
       boolean good = f instanceof JNumber n && (k < 3 ? Math.abs(n.value()) <= PoseLimits.MAX_COORDINATE_MM : PoseLimits.angleOk(n.value()));
       if (!good) {
-        errors.add(f == null ? p.line() : f.line(), at + "." + names[k], f == null ? "missing" : (k < 3
+        error(f == null ? p.line() : f.line(), at + "." + names[k], f == null ? "missing" : (k < 3
             ? "expected a position within +-" + (long) PoseLimits.MAX_COORDINATE_MM + " mm, got "
             : "expected an angle within +-" + (long) PoseLimits.MAX_ANGLE_DEG + " deg, got ") + f.describe());
         ok = false;
@@ -375,7 +375,7 @@ final class StateJson {
     if (c != null) {
       Matcher m = c instanceof JString s ? CONFIG.matcher(s.value()) : null;
       if (m == null || !m.matches()) {
-        errors.add(c.line(), at + ".config", "expected a configuration such as \"N U T, 0, 0, 0\", got " + c.describe());
+        error(c.line(), at + ".config", "expected a configuration such as \"N U T, 0, 0, 0\", got " + c.describe());
         ok = false;
       } else {
         config = new Config(m.group(1).equals("F"), m.group(2).equals("U"), m.group(3).equals("T"),
@@ -385,40 +385,4 @@ final class StateJson {
     return ok ? new Position.Cartesian(v6[0], v6[1], v6[2], v6[3], v6[4], v6[5], config) : null;
   }
 
-  private static JObject object(JObject o, String key, Errors errors) {
-    LocatedJson v = o.members().get(key);
-    if (v == null) {
-      return null;
-    }
-    if (v instanceof JObject obj) {
-      return obj;
-    }
-    errors.add(v.line(), "state." + key, "expected an object, got " + v.describe());
-    return null;
-  }
-
-  private static int integer(JObject o, String key, int min, int max, int fallback, Errors errors) {
-    LocatedJson v = o.members().get(key);
-    if (v == null) {
-      return fallback;
-    }
-    if (v instanceof JNumber n && n.integral() && n.value() >= min && n.value() <= max) {
-      return (int) n.value();
-    }
-    errors.add(v.line(), "state." + key, "expected an integer " + min + ".." + max + ", got " + v.describe());
-    return fallback;
-  }
-
-  private static Integer index(String key, int max, int line, String at, Errors errors) {
-    try {
-      int n = Integer.parseInt(key);
-      if (n >= 1 && n <= max) {
-        return n;
-      }
-    } catch (NumberFormatException e) {
-      // reported below
-    }
-    errors.add(line, at, "expected an index 1.." + max + " as the key, got \"" + key + "\"");
-    return null;
-  }
 }

@@ -45,8 +45,14 @@ public final class UrdfImporter {
    * @param bodies one line per collision body: where it came from and, for fitted boxes, the
    *     box's volume against the mesh's convex hull
    * @param notes what was assumed or merged, one line each
+   * @param meshFiles the mesh files read (for {@link UrdfCache}'s content hash)
    */
-  public record Result(RobotModel model, List<BodyReport> bodies, List<String> notes) {}
+  public record Result(RobotModel model, List<BodyReport> bodies, List<String> notes, List<Path> meshFiles) {
+
+    public Result(RobotModel model, List<BodyReport> bodies, List<String> notes) {
+      this(model, bodies, notes, List.of());
+    }
+  }
 
   /**
    * One collision body of the imported model.
@@ -80,7 +86,28 @@ public final class UrdfImporter {
 
   /** The structure: root, the six moving joints in order, and which robot link each URDF link merges into. */
   private record Chain(String root, List<UrdfReader.Joint> moving, Map<String, Integer> linkIndex,
-      Map<String, Transform> X_RL, Map<String, List<UrdfReader.Joint>> children) {
+      Map<String, Transform> X_RL, Map<String, List<UrdfReader.Joint>> children, List<UrdfReader.Joint> tool) {
+
+    /**
+     * Sorts the moving joints below {@code link} (after the arm's sixth joint) into a gripper's
+     * or tool's ({@code tool}: prismatic, mimic, after a 'tool0' or 'flange' link, on a link that
+     * branches into several moving joints, or below such a joint) and the rest ({@code extra}).
+     */
+    static void collectAfter(String link, boolean toolSide, Map<String, List<UrdfReader.Joint>> children,
+        Map<String, Integer> movingBelow, List<UrdfReader.Joint> tool, List<UrdfReader.Joint> extra) {
+      boolean flangeHere = toolSide || FLANGE_NAMES.contains(link);
+      List<UrdfReader.Joint> kids = children.getOrDefault(link, List.of());
+      long branches = kids.stream().filter(j -> (j.actuated() ? 1 : 0) + movingBelow.get(j.child()) > 0).count();
+      for (UrdfReader.Joint j : kids) {
+        boolean side = flangeHere;
+        if (j.actuated()) {
+          boolean isTool = flangeHere || branches > 1 || j.type().equals("prismatic") || j.mimic();
+          (isTool ? tool : extra).add(j);
+          side = side || isTool;
+        }
+        collectAfter(j.child(), side, children, movingBelow, tool, extra);
+      }
+    }
 
     static Chain of(String source, UrdfReader.Robot robot) {
       if (robot.links().isEmpty()) {
@@ -124,42 +151,36 @@ public final class UrdfImporter {
       for (int i = order.size() - 1; i >= 0; i--) {
         String l = order.get(i);
         int n = 0;
-        UrdfReader.Joint first = null;
         for (UrdfReader.Joint j : children.getOrDefault(l, List.of())) {
-          int below = (j.actuated() ? 1 : 0) + movingBelow.get(j.child());
-          if (below > 0) {
+          n += (j.actuated() ? 1 : 0) + movingBelow.get(j.child());
+        }
+        movingBelow.put(l, n);
+      }
+      // Walk the one moving branch from the root up to the sixth moving joint; a link before it
+      // may start at most one branch that moves.
+      List<UrdfReader.Joint> moving = new ArrayList<>();
+      String end = root;
+      boolean more = true;
+      while (more && moving.size() < RobotModel.DOF) {
+        more = false;
+        UrdfReader.Joint first = null;
+        for (UrdfReader.Joint j : children.getOrDefault(end, List.of())) {
+          if ((j.actuated() ? 1 : 0) + movingBelow.get(j.child()) > 0) {
             if (first != null) {
-              throw new FileFormatException(source, robot.links().get(l).line(), "not a serial arm: link '" + l
+              throw new FileFormatException(source, robot.links().get(end).line(), "not a serial arm: link '" + end
                   + "' branches into joints '" + first.name() + "' and '" + j.name()
                   + "', and both lead to moving joints (a tree); RobotRun imports one chain of 6 joints");
             }
             first = j;
           }
-          n += below;
         }
-        movingBelow.put(l, n);
-      }
-      // Walk the one moving branch from the root.
-      List<UrdfReader.Joint> moving = new ArrayList<>();
-      String end = root;
-      boolean more = true;
-      while (more) {
-        more = false;
-        for (UrdfReader.Joint j : children.getOrDefault(end, List.of())) {
-          if ((j.actuated() ? 1 : 0) + movingBelow.get(j.child()) > 0) {
-            if (j.actuated()) {
-              moving.add(j);
-            }
-            end = j.child();
-            more = true;
-            break;
+        if (first != null) {
+          if (first.actuated()) {
+            moving.add(first);
           }
+          end = first.child();
+          more = true;
         }
-      }
-      if (moving.size() != RobotModel.DOF) {
-        throw new FileFormatException(source, 0, "not a serial 6-axis arm: " + moving.size() + " moving joint"
-            + (moving.size() == 1 ? "" : "s") + " from '" + root + "' to '" + end + "' " + moving.stream().map(UrdfReader.Joint::name).toList()
-            + "; RobotRun needs exactly 6");
       }
       for (UrdfReader.Joint j : moving) {
         if (j.type().equals("prismatic")) {
@@ -169,6 +190,23 @@ public final class UrdfImporter {
         if (j.mimic()) {
           throw new FileFormatException(source, j.line(), "joint '" + j.name() + "' mimics another joint: RobotRun needs six independent joints");
         }
+      }
+      // Moving joints after the sixth: a gripper's or tool's (fixed, with a note) or a seventh axis (refused).
+      List<UrdfReader.Joint> tool = new ArrayList<>();
+      List<UrdfReader.Joint> extra = new ArrayList<>();
+      if (moving.size() == RobotModel.DOF) {
+        collectAfter(end, false, children, movingBelow, tool, extra);
+      }
+      if (moving.size() != RobotModel.DOF || !extra.isEmpty()) {
+        List<UrdfReader.Joint> all = new ArrayList<>(moving);
+        all.addAll(extra);
+        all.addAll(tool);
+        String names = all.stream().map(UrdfReader.Joint::name).toList().toString();
+        throw new FileFormatException(source, extra.isEmpty() ? 0 : extra.get(0).line(), "not a serial 6-axis arm: "
+            + all.size() + " moving joint" + (all.size() == 1 ? "" : "s") + " from '" + root + "' to '" + end + "' " + names
+            + "; RobotRun needs exactly 6" + (extra.isEmpty() ? "" : " (joint '" + extra.get(0).name()
+            + "' continues the arm after the sixth; a gripper's joints are imported as fixed when they are prismatic, "
+            + "mimic, after a 'tool0' or 'flange' link, or on a hand that branches into fingers)"));
       }
       // Every URDF link's robot link and its frame there.
       Map<String, Integer> index = new HashMap<>();
@@ -183,12 +221,37 @@ public final class UrdfImporter {
             X_RL.put(j.child(), Transform.IDENTITY);
           } else {
             index.put(j.child(), index.get(l));
-            X_RL.put(j.child(), X_RL.get(l).compose(j.X_PJ()));
+            X_RL.put(j.child(), X_RL.get(l).compose(j.X_PJ()).compose(restMotion(j)));
           }
         }
       }
-      return new Chain(root, moving, index, X_RL, children);
+      return new Chain(root, moving, index, X_RL, children, tool);
     }
+  }
+
+  /** Link names taken as the flange, in order of preference. */
+  static final List<String> FLANGE_NAMES = List.of("tool0", "flange");
+
+  /**
+   * A gripper or tool joint after the arm held still: at 0 when 0 is inside its limits (or it
+   * has none), else at the limit nearest 0; the identity for a fixed joint.
+   */
+  static double restValue(UrdfReader.Joint j) {
+    if (!j.actuated() || j.type().equals("continuous") || j.limit().isEmpty()) {
+      return 0;
+    }
+    UrdfReader.Limit l = j.limit().get();
+    return l.lower() > 0 ? l.lower() : (l.upper() < 0 && l.upper() > l.lower() ? l.upper() : 0);
+  }
+
+  private static Transform restMotion(UrdfReader.Joint j) {
+    double v = restValue(j);
+    if (v == 0) {
+      return Transform.IDENTITY;
+    }
+    Vec3 a = j.axis();
+    return j.type().equals("prismatic") ? Transform.translation(a.x() * v, a.y() * v, a.z() * v)
+        : Transform.rotation(a.x(), a.y(), a.z(), v);
   }
 
   /** Builds the model: joints with limits, flange, meshes and bodies. */
@@ -201,6 +264,7 @@ public final class UrdfImporter {
     private final List<String> notes = new ArrayList<>();
     private final List<BodyReport> bodies = new ArrayList<>();
     private final Map<String, Path> found = new HashMap<>();
+    private final java.util.Set<Path> meshFiles = new java.util.LinkedHashSet<>();
 
     Build(String source, Path urdf, UrdfReader.Robot robot, Chain chain, Map<String, Path> packages) {
       this.source = source;
@@ -211,6 +275,13 @@ public final class UrdfImporter {
     }
 
     Result model() {
+      for (UrdfReader.Joint j : chain.tool()) {
+        double v = restValue(j);
+        boolean linear = j.type().equals("prismatic");
+        notes.add(String.format(Locale.ROOT, "joint '%s' (%s%s, line %d) after the arm's sixth joint: imported as fixed at %.1f %s"
+            + " (a gripper's or tool's joint; RobotRun moves six)", j.name(), j.type(), j.mimic() ? ", mimic" : "", j.line(),
+            linear ? v : Math.toDegrees(v), linear ? "mm" : "deg"));
+      }
       List<JointSpec> joints = new ArrayList<>();
       for (UrdfReader.Joint j : chain.moving()) {
         joints.add(joint(j));
@@ -231,7 +302,7 @@ public final class UrdfImporter {
       } catch (IllegalArgumentException e) {
         throw new FileFormatException(source, 0, e.getMessage());
       }
-      return new Result(model, bodies, notes);
+      return new Result(model, bodies, notes, List.copyOf(meshFiles));
     }
 
     private JointSpec joint(UrdfReader.Joint j) {
@@ -261,13 +332,17 @@ public final class UrdfImporter {
           throw new FileFormatException(source, l.line(), at + " <limit>: expected lower below upper, got lower " + l.lower()
               + " and upper " + l.upper() + " (radians)");
         }
-        if (Double.isNaN(l.velocity()) || !(l.velocity() > 0)) {
-          throw new FileFormatException(source, l.line(), at + " <limit>: expected velocity > 0 (rad/s), got "
-              + (Double.isNaN(l.velocity()) ? "none" : String.valueOf(l.velocity())));
+        if (l.velocity() < 0) {
+          throw new FileFormatException(source, l.line(), at + " <limit>: expected velocity > 0 (rad/s), got " + l.velocity());
         }
         lower = l.lower();
         upper = l.upper();
         speed = l.velocity();
+        if (Double.isNaN(speed) || speed == 0) {
+          // CAD exporters write velocity="0" (or nothing) for "not set".
+          speed = DEFAULT_CONTINUOUS_SPEED;
+          notes.add(at + (Double.isNaN(l.velocity()) ? " gives no velocity" : " gives velocity 0 (not set)") + ": assumed 180°/s");
+        }
       }
       assert parent == chain.moving().indexOf(j);
       return new JointSpec(j.name(), X_PJ, j.axis(), lower, upper, speed);
@@ -290,7 +365,7 @@ public final class UrdfImporter {
     }
 
     private Transform flange() {
-      for (String name : List.of("tool0", "flange")) {
+      for (String name : FLANGE_NAMES) {
         Integer k = chain.linkIndex().get(name);
         if (k != null && k == RobotModel.DOF) {
           notes.add("flange: link '" + name + "'");
@@ -435,6 +510,7 @@ public final class UrdfImporter {
       if (!AssimpMeshes.supports(file.toString())) {
         throw new FileFormatException(source, line, "mesh '" + filename + "': expected an .stl, .obj or .dae file");
       }
+      meshFiles.add(file);
       return file;
     }
 

@@ -79,8 +79,9 @@ final class UrdfReader {
 
   static Robot parse(String source, byte[] bytes) {
     XmlTree.Element root = XmlTree.parse(source, bytes);
-    if (usesXacro(root)) {
-      throw xacro(source);
+    Optional<String[]> x = xacroUse(root);
+    if (x.isPresent()) {
+      throw xacro(source, Integer.parseInt(x.get()[0]), x.get()[1]);
     }
     if (!root.name().equals("robot")) {
       throw new FileFormatException(source, root.line(), "expected a <robot> element at the top, got <" + root.name() + ">");
@@ -120,14 +121,33 @@ final class UrdfReader {
     return new Robot(root.attribute("name").orElse("robot"), links, joints);
   }
 
-  private static boolean usesXacro(XmlTree.Element e) {
-    if (e.name().startsWith("xacro:") || e.attributes().keySet().stream().anyMatch(k -> k.startsWith("xmlns:xacro"))) {
-      return true;
+  /** The first xacro construct (document order): its line and what it is; empty when there is none. */
+  private static Optional<String[]> xacroUse(XmlTree.Element e) {
+    if (e.name().startsWith("xacro:")) {
+      return Optional.of(new String[] {String.valueOf(e.line()), "<" + e.name() + ">"});
     }
-    if (e.attributes().values().stream().anyMatch(s -> s.contains("${") || s.contains("$("))) {
-      return true;
+    for (Map.Entry<String, String> a : e.attributes().entrySet()) {
+      if (a.getKey().startsWith("xmlns:xacro")) {
+        return Optional.of(new String[] {String.valueOf(e.line()), "<" + e.name() + "> declares xmlns:xacro"});
+      }
+      if (a.getValue().contains("${") || a.getValue().contains("$(")) {
+        return Optional.of(new String[] {String.valueOf(e.line()), "<" + e.name() + "> " + a.getKey() + "=\"" + a.getValue() + "\""});
+      }
     }
-    return e.children().stream().anyMatch(UrdfReader::usesXacro);
+    for (XmlTree.Element c : e.children()) {
+      Optional<String[]> r = xacroUse(c);
+      if (r.isPresent()) {
+        return r;
+      }
+    }
+    return Optional.empty();
+  }
+
+  private static FileFormatException xacro(String source, int line, String what) {
+    String base = Path.of(source).getFileName().toString();
+    String out = base.replaceAll("(?i)\\.urdf$", "") + "_expanded.urdf";
+    return new FileFormatException(source, line, what + ": this is a xacro file, which RobotRun does not expand; expand it first"
+        + " with ROS's xacro tool (xacro " + base + " > " + out + ") and import " + out);
   }
 
   private static FileFormatException xacro(String source) {

@@ -25,8 +25,8 @@ public record MotionLimits(
   public static final double JOINT_ACCEL_TIME_SEC = 0.25;
   /** Time for a linear move to reach its commanded speed at ACC100 (s). */
   public static final double LINEAR_ACCEL_TIME_SEC = 0.2;
-  /** The fastest TCP speed a program may ask for (mm/s), as on a small arm's controller. */
-  public static final double LINEAR_MAX_SPEED_MM_PER_SEC = 2000;
+  /** The fastest TCP speed a program may ask for (mm/s) unless the model gives its own. */
+  public static final double LINEAR_MAX_SPEED_MM_PER_SEC = RobotModel.DEFAULT_MAX_LINEAR_SPEED_MM_PER_SEC;
   /** The fastest TCP orientation change (rad/s): 180°/s. */
   public static final double ROTATION_MAX_SPEED_RAD_PER_SEC = Math.PI;
 
@@ -46,7 +46,7 @@ public record MotionLimits(
       v[i] = model.joint(i).maxSpeedRadPerSec();
       a[i] = v[i] / JOINT_ACCEL_TIME_SEC;
     }
-    return new MotionLimits(v, a, LINEAR_MAX_SPEED_MM_PER_SEC, ROTATION_MAX_SPEED_RAD_PER_SEC,
+    return new MotionLimits(v, a, model.maxLinearSpeedMmPerSec(), ROTATION_MAX_SPEED_RAD_PER_SEC,
         ROTATION_MAX_SPEED_RAD_PER_SEC / LINEAR_ACCEL_TIME_SEC);
   }
 

@@ -3,6 +3,9 @@ package org.robotrun.pendant;
 import java.util.List;
 import java.util.Objects;
 import org.robotrun.pendant.ExprText.BadText;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpText;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Motion;
 
@@ -35,50 +38,40 @@ record DefaultMotion(Motion.Type type, Motion.Speed speed, Motion.Termination te
 
   /** {@code L P[] 200mm/sec CNT50}. */
   String display() {
-    String speedText = switch (speed.value()) {
-      case Motion.SpeedConst c -> ExprText.plain(c.value());
-      case Motion.SpeedRegister r -> ExprText.item("R", r.register());
-    };
-    String term = switch (termination) {
-      case Motion.Fine f -> "FINE";
-      case Motion.Cnt c -> "CNT" + c.value();
-      case Motion.CntRegister r -> "CNT " + ExprText.item("R", r.register());
-    };
-    return type + " P[] " + speedText + TpLine.unit(speed.unit()) + " " + term;
+    return type + " P[] " + TpText.speed(speed) + " " + TpText.termination(termination);
   }
 
-  /** Parses {@code L 200mm/sec CNT50} / {@code J 50% FINE} (the "P[]" is optional). */
+  /**
+   * Parses {@code L 200mm/sec CNT50} / {@code J 50% FINE} / {@code L R[2]mm/sec CNT R[3]} (the
+   * "P[]" is optional) with the one parser, as the motion line {@code L P[1] 200mm/sec CNT50}.
+   */
   static DefaultMotion parse(String text) throws BadText {
-    String[] parts = text.trim().replace("P[]", " ").trim().split("\\s+");
-    if (parts.length != 3) {
+    return parse(text, TpLine.DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** As above for a robot whose maximum TCP speed is {@code maxMmPerSec} (mm/s). */
+  static DefaultMotion parse(String text, double maxMmPerSec) throws BadText {
+    String t = text.trim().replace("P[]", " ").trim();
+    int space = t.indexOf(' ');
+    if (space < 0) {
       throw new BadText("expected 'type speed termination', e.g. L 200mm/sec CNT50");
     }
     Motion.Type type;
     try {
-      type = Motion.Type.valueOf(parts[0].toUpperCase(java.util.Locale.ROOT));
+      type = Motion.Type.valueOf(t.substring(0, space).toUpperCase(java.util.Locale.ROOT));
     } catch (IllegalArgumentException e) {
-      throw new BadText("motion type must be J, L, C or A, got '" + parts[0] + "'");
+      throw new BadText("motion type must be J, L, C or A, got '" + t.substring(0, space) + "'");
     }
-    String s = parts[1];
-    int split = 0;
-    while (split < s.length() && (Character.isDigit(s.charAt(split)) || s.charAt(split) == '.')) {
-      split++;
+    String target = type == Motion.Type.C ? " P[1]\n    : P[2] " : " P[1] ";
+    Instruction in;
+    try {
+      in = TpStatementParser.statementText(type + target + t.substring(space + 1).trim()).instruction();
+    } catch (TpSyntaxError e) {
+      throw new BadText(e.getMessage() + " (expected 'type speed termination', e.g. L 200mm/sec CNT50)");
     }
-    String unitText = s.substring(split);
-    Motion.SpeedUnit unit = null;
-    for (Motion.SpeedUnit u : Motion.SpeedUnit.values()) {
-      if (TpLine.unit(u).equalsIgnoreCase(unitText)) {
-        unit = u;
-      }
+    if (!(in instanceof Instruction.Move m) || !m.options().isEmpty()) {
+      throw new BadText("expected 'type speed termination', e.g. L 200mm/sec CNT50");
     }
-    if (unit == null) {
-      throw new BadText("unknown speed unit '" + unitText + "' (%, mm/sec, cm/min, inch/min, deg/sec, sec, msec)");
-    }
-    if (!unit.fits(type)) {
-      throw new BadText("speed unit " + unitText + " does not fit " + type + " motion");
-    }
-    double v = NumberEntry.positive("Speed", s.substring(0, split));
-    Motion.Termination term = TpLine.parseTermination(parts[2]);
-    return new DefaultMotion(type, TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(v), unit)), term);
+    return new DefaultMotion(type, TpLine.checkedSpeed(m.speed(), maxMmPerSec), m.termination());
   }
 }

@@ -65,7 +65,7 @@ final class EditScreen implements Screen {
     if (n < 1 || n > prog.lineCount()) {
       return List.of();
     }
-    return TpLine.fields(prog.line(n), prog, p.control().programNames());
+    return TpLine.fields(prog.line(n), prog, p.control().programNames(), p.control().maxLinearSpeedMmPerSec());
   }
 
   // ---- display -----------------------------------------------------------------------------
@@ -331,7 +331,7 @@ final class EditScreen implements Screen {
       } else {
         p.entry("Default motion (e.g. L 200mm/sec CNT50):", p.defaultMotion.display().replace(" P[]", ""), false, t -> {
           try {
-            p.defaultMotion = DefaultMotion.parse(t);
+            p.defaultMotion = DefaultMotion.parse(t, p.control().maxLinearSpeedMmPerSec());
             p.message("Default motion: " + p.defaultMotion.display());
             return Optional.empty();
           } catch (BadText e) {
@@ -583,7 +583,8 @@ final class EditScreen implements Screen {
       p.entry("Replace '" + from + "' with:", "", false, with -> {
         ProgramEdits.Replaced[] done = new ProgramEdits.Replaced[1];
         p.editProgram(programName, pr -> {
-          done[0] = ProgramEdits.replaceAll(pr, from, with.trim(), p.control().programNames());
+          done[0] = ProgramEdits.replaceAll(pr, from, with.trim(), p.control().programNames(),
+              p.control().maxLinearSpeedMmPerSec());
           return done[0].program();
         });
         if (done[0] == null) {

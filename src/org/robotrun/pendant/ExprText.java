@@ -6,16 +6,13 @@ import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Item;
-import org.robotrun.program.LabelRef;
 import org.robotrun.program.TpStatementParser;
 import org.robotrun.program.TpSyntaxError;
 
 /**
- * Expressions and bracketed items as the pendant shows them ({@code R[1:COUNT]+1},
- * {@code (DI[1]=ON AND R[2]<>0)}) and as the operator types them into a field. The .LS writer
- * in {@code io} has its own printer; the pendant cannot import {@code io}, and an edited field
- * needs the reverse direction (typed text to an {@link Expr}), which the file reader does for
- * whole lines only.
+ * Expressions and bracketed items as the operator types them into a field ({@code R[1:COUNT]+1},
+ * {@code (DI[1]=ON AND R[2]<>0)}), parsed by the TP grammar's one parser with the pendant's entry
+ * checks. They are shown by the one printer of TP text, {@link org.robotrun.program.TpText}.
  */
 public final class ExprText {
   private ExprText() {}
@@ -40,37 +37,7 @@ public final class ExprText {
     }
   }
 
-  // ---- formatting ----------------------------------------------------------------------------
-
-  /** The expression as the pendant shows it. */
-  public static String format(Expr e) {
-    return switch (e) {
-      case Expr.IntConst c -> Integer.toString(c.value());
-      case Expr.RealConst c -> real(c.value());
-      case Expr.OnOff o -> o.on() ? "ON" : "OFF";
-      case Expr.StringConst s -> "'" + s.value() + "'";
-      case Expr.Register r -> item("R", r.register());
-      case Expr.PosElement p -> "PR[" + index(p.register().index()) + "," + index(p.element())
-          + comment(p.register().comment()) + "]";
-      case Expr.Io io -> item(io.kind().name(), io.port());
-      case Expr.Timer t -> item("TIMER", t.timer());
-      case Expr.Arg a -> "AR[" + index(a.index()) + "]";
-      case Expr.SysVar v -> v.name();
-      case Expr.StringReg r -> item("SR", r.register());
-      case Expr.StringFunc f -> f.fn().name() + " " + String.join(",", f.args().stream().map(a ->
-          a instanceof Expr.Binary ? "(" + format(a) + ")" : format(a)).toList());
-      case Expr.Unary u -> u.op().symbol() + format(u.operand());
-      case Expr.Binary b -> format(b.left()) + binary(b.op()) + format(b.right());
-      case Expr.Group g -> "(" + format(g.inner()) + ")";
-    };
-  }
-
-  private static String binary(Expr.BinaryOp op) {
-    return switch (op) {
-      case AND, OR, DIV, MOD -> " " + op.symbol() + " ";
-      default -> op.symbol();
-    };
-  }
+  // ---- numbers on the pendant's screens (TP text itself is program.TpText's) --------------
 
   /** A real the shortest way that reads back the same ({@code 2.5}, {@code 3.0}). */
   public static String real(double v) {
@@ -88,29 +55,6 @@ public final class ExprText {
     return java.math.BigDecimal.valueOf(v).stripTrailingZeros().toPlainString();
   }
 
-  /** {@code KIND[index:comment]}. */
-  public static String item(String kind, Item item) {
-    return kind + "[" + index(item.index()) + comment(item.comment()) + "]";
-  }
-
-  /** {@code LBL[n:comment]}. */
-  public static String label(LabelRef l) {
-    return "LBL[" + index(l.index()) + comment(l.comment()) + "]";
-  }
-
-  /** {@code 5} or {@code R[2]}. */
-  public static String index(Index i) {
-    return switch (i) {
-      case Index.Direct d -> Integer.toString(d.value());
-      case Index.Indirect r -> "R[" + r.register() + comment(r.comment()) + "]";
-      case Index.ViaArg a -> "AR[" + a.arg() + "]";
-    };
-  }
-
-  private static String comment(String c) {
-    return c.isEmpty() ? "" : ":" + c;
-  }
-
   // ---- parsing -------------------------------------------------------------------------------
 
   // Typed text is parsed by the TP grammar's one parser (program.TpStatementParser), so a field
@@ -125,6 +69,11 @@ public final class ExprText {
     } catch (TpSyntaxError x) {
       throw bad(x);
     }
+    return checked(e);
+  }
+
+  /** {@code e} when the pendant takes it as typed: every index within its table, the controller's entry rules. */
+  static Expr checked(Expr e) throws BadText {
     checkRanges(e, 0);
     // The controller's entry rules (program.EntryRules): refused here as the pendant does.
     java.util.Optional<String> refused = org.robotrun.program.EntryRules.refusal(e);

@@ -55,6 +55,9 @@ final class InstMenu {
     return cmp(Expr.BinaryOp.EQ, new Expr.Io(k, Item.of(i)), new Expr.OnOff(true));
   }
 
+  /** The vision process a new VISION line names until the operator types another. */
+  private static final Instruction.VisionProcess VISION_PROCESS = new Instruction.VisionProcessName("FIND");
+
   static final List<Category> CATEGORIES = List.of(
       new Category("Registers", List.of(
           Template.of("R[ ]=...", new Instruction.AssignRegister(Item.of(1), new Expr.IntConst(0))),
@@ -155,11 +158,21 @@ final class InstMenu {
               new Expr.Binary(Expr.BinaryOp.EQ, new Expr.Io(IoKind.DI, Item.of(1)), new Expr.OnOff(true)),
               new Instruction.Call("MAIN", List.of()))))),
       new Category("Multiple control", List.of(
-          Template.of("RUN program", new Instruction.Run("MAIN", List.of())))));
+          Template.of("RUN program", new Instruction.Run("MAIN", List.of())))),
+      // iRVision (docs/vision.md): the process name is edited on the line
+      new Category("Vision", List.of(
+          Template.of("VISION RUN_FIND ...", new Instruction.VisionRunFind(VISION_PROCESS)),
+          Template.of("VISION GET_OFFSET ... VR[ ] JMP,LBL[ ]", new Instruction.VisionGetOffset(VISION_PROCESS, Item.of(1),
+              LabelRef.of(1))),
+          Template.of("VISION GET_NFOUND ... R[ ]", new Instruction.VisionGetNFound(VISION_PROCESS, Item.of(1))),
+          Template.of("R[ ]=VR[ ].MODELID", new Instruction.AssignFromVr(Item.of(1), Item.of(1),
+              Instruction.VisionField.MODELID, 0)),
+          Template.of("PR[ ]=VR[ ].OFFSET", new Instruction.AssignPosReg(Item.of(1),
+              new Instruction.FromVisionRegister(Item.of(1), false))))));
 
   /** Motion options the [CHOICE] key adds to a motion line. */
   static final List<String> MOTION_OPTIONS = List.of("Offset", "Offset,PR[ ]", "Tool_Offset,PR[ ]", "ACC 100",
-      "Skip,LBL[ ]", "Wjnt", "INC");
+      "Skip,LBL[ ]", "Wjnt", "INC", "VOFFSET,VR[ ]");
 
   static org.robotrun.program.Motion.Option motionOption(int i) {
     return switch (i) {
@@ -169,7 +182,8 @@ final class InstMenu {
       case 3 -> new org.robotrun.program.Motion.Acc(100);
       case 4 -> new org.robotrun.program.Motion.Skip(LabelRef.of(1));
       case 5 -> new org.robotrun.program.Motion.Wjnt();
-      default -> new org.robotrun.program.Motion.Inc();
+      case 6 -> new org.robotrun.program.Motion.Inc();
+      default -> new org.robotrun.program.Motion.VisionOffset(Item.of(1));
     };
   }
 }

@@ -114,7 +114,8 @@ final class PositionScreen implements Screen {
     }
     rows.add(String.format(Locale.ROOT, "  UF:%d  UT:%d   %s", f[0], f[1],
         pos.get() instanceof Position.Cartesian c ? "CONF: " + config(c.config()) : "JOINT"));
-    String[] names = pos.get() instanceof Position.Cartesian ? CARTESIAN_NAMES : JOINT_NAMES;
+    String[] names = pos.get() instanceof Position.Cartesian ? CARTESIAN_NAMES
+        : jointLabels(p.control().jointNames()).toArray(String[]::new);
     String[] units = pos.get() instanceof Position.Cartesian ? new String[] {"mm", "mm", "mm", "deg", "deg", "deg"}
         : new String[] {"deg", "deg", "deg", "deg", "deg", "deg"};
     for (int j = 1; j <= 6; j++) {
@@ -211,7 +212,7 @@ final class PositionScreen implements Screen {
     }
     int j = row;
     boolean cartesian = pos.get() instanceof Position.Cartesian;
-    String field = name() + " " + (cartesian ? CARTESIAN_NAMES : JOINT_NAMES)[j - 1];
+    String field = name() + " " + (cartesian ? CARTESIAN_NAMES[j - 1] : jointLabels(p.control().jointNames()).get(j - 1));
     p.entryOrTyped("Enter value:", typed, "", false, t -> {
       double v;
       try {
@@ -225,7 +226,18 @@ final class PositionScreen implements Screen {
   }
 
   private static final String[] CARTESIAN_NAMES = {"X", "Y", "Z", "W", "P", "R"};
-  private static final String[] JOINT_NAMES = {"J1", "J2", "J3", "J4", "J5", "J6"};
+  /** Longest joint label the pendant shows; a longer name from a robot file is cut with "~". */
+  static final int MAX_JOINT_LABEL = 20;
+
+  /** The pendant's joint labels: the robot file's names, each cut to {@link #MAX_JOINT_LABEL}. */
+  static List<String> jointLabels(List<String> names) {
+    List<String> out = new ArrayList<>();
+    for (int i = 0; i < 6; i++) {
+      String n = i < names.size() && !names.get(i).isBlank() ? names.get(i).replaceAll("[^\\x21-\\x7e]", "?") : "J" + (i + 1);
+      out.add(n.length() > MAX_JOINT_LABEL ? n.substring(0, MAX_JOINT_LABEL - 1) + "~" : n);
+    }
+    return out;
+  }
 
   static Optional<Config> parseConfig(String text) {
     String[] parts = text.trim().toUpperCase(Locale.ROOT).split("\\s*,\\s*");

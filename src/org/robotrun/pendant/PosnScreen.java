@@ -25,12 +25,30 @@ final class PosnScreen implements Screen {
     Position.Cartesian u = p.control().currentPose(uf, ut);
     List<String> rows = new ArrayList<>();
     rows.add(" JOINT (deg)");
-    rows.add(String.format(Locale.ROOT, "  J1 %9.3f  J2 %9.3f  J3 %9.3f", j.j1Deg(), j.j2Deg(), j.j3Deg()));
-    rows.add(String.format(Locale.ROOT, "  J4 %9.3f  J5 %9.3f  J6 %9.3f", j.j4Deg(), j.j5Deg(), j.j6Deg()));
+    rows.addAll(jointRows(PositionScreen.jointLabels(p.control().jointNames()),
+        new double[] {j.j1Deg(), j.j2Deg(), j.j3Deg(), j.j4Deg(), j.j5Deg(), j.j6Deg()}));
     rows.add(" WORLD  Tool: " + ut + "   CONF: " + PositionScreen.config(w.config()));
     rows.addAll(cartesian(w));
     rows.add(" USER  Frame: " + uf + "  Tool: " + ut);
     rows.addAll(cartesian(u));
+    return rows;
+  }
+
+  /**
+   * The joints in two rows of three, labelled as the robot file names them ("J1".."J6" on a
+   * library arm, as on the controller); names too long for that take three rows of two.
+   */
+  static List<String> jointRows(List<String> labels, double[] deg) {
+    int w = labels.stream().mapToInt(String::length).max().orElse(2);
+    int perRow = w <= 9 ? 3 : 2;
+    List<String> rows = new ArrayList<>();
+    for (int i = 0; i < deg.length; i += perRow) {
+      StringBuilder r = new StringBuilder();
+      for (int k = i; k < Math.min(deg.length, i + perRow); k++) {
+        r.append(String.format(Locale.ROOT, "  %-" + w + "s %9.3f", labels.get(k), deg[k]));
+      }
+      rows.add(r.toString());
+    }
     return rows;
   }
 

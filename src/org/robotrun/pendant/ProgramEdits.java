@@ -134,12 +134,17 @@ final class ProgramEdits {
    * field's own entry (so the result is valid TP or the field is left alone and counted refused).
    */
   static Replaced replaceAll(Program prog, String from, String to, List<String> programs) {
+    return replaceAll(prog, from, to, programs, TpLine.DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** As above for a robot whose maximum TCP speed is {@code maxMmPerSec} (mm/s). */
+  static Replaced replaceAll(Program prog, String from, String to, List<String> programs, double maxMmPerSec) {
     List<Instruction> lines = new ArrayList<>(prog.lines());
     int replaced = 0;
     int refused = 0;
     for (int n = 0; n < lines.size(); n++) {
       Program view = with(prog, lines, prog.positions());
-      List<Field> fs = TpLine.fields(lines.get(n), view, programs);
+      List<Field> fs = TpLine.fields(lines.get(n), view, programs, maxMmPerSec);
       for (int f = 0; f < fs.size(); f++) {
         Field fd = fs.get(f);
         Optional<Field.Edit> edit = fd.edit();
@@ -161,7 +166,7 @@ final class ProgramEdits {
         } else {
           replaced++;
           lines.set(n, changed.get());
-          fs = TpLine.fields(changed.get(), view, programs);
+          fs = TpLine.fields(changed.get(), view, programs, maxMmPerSec);
         }
       }
     }

@@ -9,6 +9,10 @@ import java.util.OptionalDouble;
 import java.util.function.BiFunction;
 import java.util.function.Function;
 import org.robotrun.pendant.ExprText.BadText;
+import org.robotrun.program.FanucFormat;
+import org.robotrun.program.TpStatementParser;
+import org.robotrun.program.TpSyntaxError;
+import org.robotrun.program.TpText;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
 import org.robotrun.program.Instruction;
@@ -22,21 +26,33 @@ import org.robotrun.program.Program;
 /**
  * An instruction as the EDIT screen shows it: a list of {@link Field}s, each editable one
  * knowing how to build the changed instruction. The text follows FANUC's pendant display
- * ({@code L P[2] 200mm/sec CNT50}); it is a display, not the .LS writer (that lives in
- * {@code io}, which the pendant may not import, and has no notion of fields).
+ * ({@code L P[2] 200mm/sec CNT50}); each field's text is a piece of the one printer of TP text
+ * ({@link TpText}), so a line reads on the pendant as it is written in a file, and typed text is
+ * read by the one parser's fragment entry points ({@link TpStatementParser}).
  */
 public final class TpLine {
   private TpLine() {}
 
-  /** The fields of {@code in}; {@code program} names local positions, {@code programs} feeds CALL choices. */
+  /** The fields of {@code in} for a robot with the controller's default maximum TCP speed. */
   public static List<Field> fields(Instruction in, Program program, List<String> programs) {
+    return fields(in, program, programs, DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** The default top of the mm/sec range ($SPEEDLIM) when the robot's own is not known. */
+  static final double DEFAULT_MAX_MM_PER_SEC = 2000;
+
+  /**
+   * The fields of {@code in}; {@code program} names local positions, {@code programs} feeds CALL
+   * choices, {@code maxMmPerSec} is the robot's maximum TCP speed (the top of the mm/sec range).
+   */
+  public static List<Field> fields(Instruction in, Program program, List<String> programs, double maxMmPerSec) {
     List<Field> f = new ArrayList<>();
     switch (in) {
-      case Instruction.Move m -> move(m, program, f);
+      case Instruction.Move m -> move(m, program, f, maxMmPerSec);
       case Instruction.AssignRegister a -> {
         f.add(itemField("R", a.register(), i -> new Instruction.AssignRegister(i, a.value())));
         f.add(Field.fixed("="));
-        String text = ExprText.format(a.value());
+        String text = TpText.expr(a.value());
         f.add(new Field(text, Field.Edit.entry(text, t -> {
           Expr e = value(t);
           if (e instanceof Expr.StringConst) {
@@ -47,34 +63,32 @@ public final class TpLine {
         })));
       }
       case Instruction.SkipCondition s -> {
-        f.add(Field.fixed("SKIP CONDITION"));
+        f.add(Field.fixed("SKIP CONDITION "));
         f.add(exprField(s.condition(), Instruction.SkipCondition::new));
       }
       case Instruction.OffsetCondition o -> {
-        f.add(Field.fixed("OFFSET CONDITION"));
+        f.add(Field.fixed("OFFSET CONDITION "));
         f.add(itemField("PR", o.register(), i -> new Instruction.OffsetCondition(i, o.userFrame())));
-        o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + ExprText.index(j) + "]")));
+        o.userFrame().ifPresent(j -> f.add(Field.fixed(",UFRAME[" + TpText.index(j) + "]")));
       }
       case Instruction.MacroCall c -> {
         f.add(new Field(c.name(), Field.Edit.both(programs,
             k -> new Instruction.MacroCall(programs.get(k), c.args()), c.name(),
             t -> new Instruction.MacroCall(macroName(t), c.args()))));
         if (!c.args().isEmpty()) {
-          f.add(Field.fixed("(" + String.join(",", c.args().stream().map(ExprText::format).toList()) + ")"));
+          f.add(Field.fixed(TpText.call("", c.args())));
         }
       }
       case Instruction.Monitor mo -> {
-        f.add(Field.fixed(mo.end() ? "MONITOR END" : "MONITOR"));
+        f.add(Field.fixed(mo.end() ? "MONITOR END " : "MONITOR "));
         f.add(new Field(mo.program(), Field.Edit.both(programs, k -> new Instruction.Monitor(programs.get(k), mo.end()),
             mo.program(), t -> new Instruction.Monitor(macroName(t), mo.end()))));
       }
       case Instruction.When w -> {
-        f.add(Field.fixed("WHEN"));
+        f.add(Field.fixed("WHEN "));
         f.add(exprField(w.condition(), e -> new Instruction.When(e, w.action())));
-        f.add(Field.fixed(",CALL"));
-        f.add(new Field(w.action().program(), Field.Edit.both(programs,
-            k -> new Instruction.When(w.condition(), new Instruction.Call(programs.get(k), List.of())),
-            w.action().program(), t -> new Instruction.When(w.condition(), new Instruction.Call(macroName(t), List.of())))));
+        f.add(Field.fixed(",CALL "));
+        f.add(callField(w.action(), programs, c -> new Instruction.When(w.condition(), c)));
       }
       case Instruction.AssignString a -> {
         f.add(itemField("SR", a.register(), i -> new Instruction.AssignString(i, a.value())));
@@ -92,7 +106,7 @@ public final class TpLine {
         f.add(posSourceField(a));
       }
       case Instruction.AssignPosElement a -> {
-        String target = ExprText.format(new Expr.PosElement(a.register(), a.element()));
+        String target = TpText.expr(new Expr.PosElement(a.register(), a.element()));
         f.add(new Field(target,
             Field.Edit.entry(target, t -> {
               Expr e = ExprText.parse(t);
@@ -105,26 +119,29 @@ public final class TpLine {
         f.add(exprField(a.value(), e -> new Instruction.AssignPosElement(a.register(), a.element(), e)));
       }
       case Instruction.SelectFrame s -> {
-        f.add(new Field(frameWord(s.kind()) + "_NUM", Field.Edit.choice(List.of("UFRAME_NUM", "UTOOL_NUM"),
-            k -> new Instruction.SelectFrame(k == 0 ? FrameKind.USER : FrameKind.TOOL, s.number()))));
+        // UTOOL_NUM[GP1]: the group as the line names it, kept through an edit
+        String group = s.groupWritten() ? "[GP1]" : "";
+        f.add(new Field(frameWord(s.kind()) + "_NUM" + group, Field.Edit.choice(List.of("UFRAME_NUM", "UTOOL_NUM"),
+            k -> new Instruction.SelectFrame(k == 0 ? FrameKind.USER : FrameKind.TOOL, s.number(), s.groupWritten()))));
         f.add(Field.fixed("="));
-        f.add(indexField(s.number(), i -> new Instruction.SelectFrame(s.kind(), i)));
+        f.add(indexField(s.number(), i -> new Instruction.SelectFrame(s.kind(), i, s.groupWritten())));
       }
       case Instruction.SetFrame s -> {
         f.add(Field.fixed(frameWord(s.kind()) + "["));
-        f.add(indexField(s.frame(), i -> new Instruction.SetFrame(s.kind(), i, s.register())));
+        f.add(indexField(s.frame(), s.comment(), i -> new Instruction.SetFrame(s.kind(), i, s.comment(), s.register())));
         f.add(Field.fixed("]="));
-        f.add(itemField("PR", s.register(), i -> new Instruction.SetFrame(s.kind(), s.frame(), i)));
+        f.add(itemField("PR", s.register(), i -> new Instruction.SetFrame(s.kind(), s.frame(), s.comment(), i)));
       }
       case Instruction.Payload p -> {
         f.add(Field.fixed("PAYLOAD["));
-        f.add(indexField(p.schedule(), Instruction.Payload::new));
+        f.add(indexField(p.schedule(), p.comment(), i -> new Instruction.Payload(i, p.comment())));
         f.add(Field.fixed("]"));
       }
       case Instruction.Label l -> {
         f.add(Field.fixed("LBL["));
-        f.add(new Field(l.number() + (l.comment().isEmpty() ? "" : ":" + l.comment()),
-            Field.Edit.entry(l.number() + (l.comment().isEmpty() ? "" : ":" + l.comment()), t -> {
+        String shown = TpText.index(new Index.Direct(l.number())) + (l.comment().isEmpty() ? "" : ":" + l.comment());
+        f.add(new Field(shown,
+            Field.Edit.entry(shown, t -> {
               LabelRef r = parseLabel(t);
               if (!(r.index() instanceof Index.Direct d)) {
                 throw new BadText("a label is a plain number (LBL[R[i]] only in JMP)");
@@ -160,7 +177,7 @@ public final class TpLine {
         f.add(exprField(i.condition(), e -> new Instruction.IfAction(e, i.action())));
         f.add(Field.fixed(","));
         // The action's own fields, each edit rebuilding the IF around the edited action.
-        for (Field a : fields(i.action(), program, programs)) {
+        for (Field a : fields(i.action(), program, programs, maxMmPerSec)) {
           f.add(a.mapped(x -> Instruction.IfAction.allowedAction(x) ? new Instruction.IfAction(i.condition(), x) : i));
         }
       }
@@ -180,13 +197,13 @@ public final class TpLine {
         f.add(branchField(s.branch(), programs, b -> new Instruction.Select(s.register(), s.value(), b)));
       }
       case Instruction.SelectCase s -> {
-        f.add(Field.fixed("       ="));
+        f.add(Field.fixed(TpText.SELECT_INDENT + "="));
         f.add(exprField(s.value(), v -> new Instruction.SelectCase(v, s.branch())));
         f.add(Field.fixed(","));
         f.add(branchField(s.branch(), programs, b -> new Instruction.SelectCase(s.value(), b)));
       }
       case Instruction.SelectElse s -> {
-        f.add(Field.fixed("       ELSE,"));
+        f.add(Field.fixed(TpText.SELECT_INDENT + "ELSE,"));
         f.add(branchField(s.branch(), programs, Instruction.SelectElse::new));
       }
       case Instruction.For fo -> {
@@ -203,10 +220,9 @@ public final class TpLine {
         f.add(Field.fixed("WAIT "));
         boolean constant = w.seconds() instanceof Expr.IntConst || w.seconds() instanceof Expr.RealConst;
         // FANUC shows a constant wait with two decimals and no leading zero: WAIT .20(sec)
-        String shown = constant ? String.format(Locale.ROOT, "%.2f", number(w.seconds())).replaceFirst("^(-?)0\\.", "$1.")
-            : ExprText.format(w.seconds());
+        String shown = constant ? FanucFormat.waitSeconds(number(w.seconds())).strip() : TpText.expr(w.seconds());
         f.add(new Field(shown, Field.Edit.entry(shown, t -> new Instruction.WaitTime(waitTime(t)))));
-        if (constant) {
+        if (!(w.seconds() instanceof Expr.Register)) {
           f.add(Field.fixed("(sec)"));
         }
       }
@@ -214,11 +230,11 @@ public final class TpLine {
         f.add(Field.fixed("WAIT "));
         f.add(exprField(w.condition(), e -> new Instruction.WaitCondition(e, w.timeoutLabel())));
         // no timeout: an empty field the cursor can still reach to add one
-        String shown = w.timeoutLabel().map(l -> " TIMEOUT," + ExprText.label(l)).orElse("");
+        String shown = w.timeoutLabel().map(l -> " TIMEOUT," + TpText.label(l)).orElse("");
         f.add(new Field(shown, Field.Edit.both(List.of("no timeout", "TIMEOUT,LBL[...]"),
             k -> new Instruction.WaitCondition(w.condition(),
                 k == 0 ? Optional.empty() : Optional.of(w.timeoutLabel().orElse(LabelRef.of(1)))),
-            w.timeoutLabel().map(ExprText::label).orElse(""),
+            w.timeoutLabel().map(TpText::label).orElse(""),
             t -> new Instruction.WaitCondition(w.condition(),
                 t.isBlank() ? Optional.empty() : Optional.of(parseLabel(t))))));
       }
@@ -231,14 +247,14 @@ public final class TpLine {
       case Instruction.SetIo s -> {
         f.add(ioField(s.kind(), s.port(), (k, p) -> new Instruction.SetIo(k, p, s.value())));
         f.add(Field.fixed("="));
-        f.add(new Field(ExprText.format(s.value()), Field.Edit.both(
+        f.add(new Field(TpText.expr(s.value()), Field.Edit.both(
             s.kind().group() ? List.of() : List.of("ON", "OFF", "PULSE", "R[...]"),
             k -> switch (k) {
               case 0, 1 -> new Instruction.SetIo(s.kind(), s.port(), new Expr.OnOff(k == 0));
               case 2 -> new Instruction.Pulse(s.kind(), s.port(), OptionalDouble.empty());
               default -> new Instruction.SetIo(s.kind(), s.port(), new Expr.Register(Item.of(1)));
             },
-            ExprText.format(s.value()), t -> new Instruction.SetIo(s.kind(), s.port(), value(t)))));
+            TpText.expr(s.value()), t -> new Instruction.SetIo(s.kind(), s.port(), value(t)))));
       }
       case Instruction.Pulse p -> {
         f.add(ioField(p.kind(), p.port(), (k, port) -> new Instruction.Pulse(k, port, p.widthSec())));
@@ -246,8 +262,8 @@ public final class TpLine {
         f.add(new Field("PULSE", Field.Edit.choice(List.of("ON", "OFF", "PULSE"), k -> k == 2 ? p
             : new Instruction.SetIo(p.kind(), p.port(), new Expr.OnOff(k == 0)))));
         // no width ($DEFPULSE applies): an empty field the cursor can still reach to add one
-        String width = p.widthSec().isPresent() ? "," + ExprText.plain(p.widthSec().getAsDouble()) + "sec" : "";
-        f.add(new Field(width, Field.Edit.entry(p.widthSec().isPresent() ? ExprText.plain(p.widthSec().getAsDouble()) : "",
+        String width = p.widthSec().isPresent() ? "," + FanucFormat.plain(p.widthSec().getAsDouble()) + "sec" : "";
+        f.add(new Field(width, Field.Edit.entry(p.widthSec().isPresent() ? FanucFormat.plain(p.widthSec().getAsDouble()) : "",
             t -> new Instruction.Pulse(p.kind(), p.port(),
                 t.isBlank() ? OptionalDouble.empty() : OptionalDouble.of(NumberEntry.positive("Pulse width", t))))));
       }
@@ -266,16 +282,42 @@ public final class TpLine {
       }
       case Instruction.UserAlarm u -> {
         f.add(Field.fixed("UALM["));
-        f.add(indexField(u.number(), Instruction.UserAlarm::new));
+        f.add(indexField(u.number(), u.comment(), i -> new Instruction.UserAlarm(i, u.comment())));
         f.add(Field.fixed("]"));
       }
       case Instruction.SetOverride o -> {
         f.add(Field.fixed("OVERRIDE="));
-        String pct = ExprText.format(o.percent());
+        String pct = TpText.expr(o.percent());
         f.add(new Field(pct, Field.Edit.entry(pct, t -> new Instruction.SetOverride(overridePercent(t)))));
-        if (o.percent() instanceof Expr.IntConst) {
+        if (!(o.percent() instanceof Expr.Register)) {
           f.add(Field.fixed("%"));
         }
+      }
+      case Instruction.VisionRunFind v -> {
+        f.add(Field.fixed("VISION RUN_FIND "));
+        f.add(processField(v.process(), Instruction.VisionRunFind::new));
+      }
+      case Instruction.VisionGetOffset v -> {
+        f.add(Field.fixed("VISION GET_OFFSET "));
+        f.add(processField(v.process(), x -> new Instruction.VisionGetOffset(x, v.vr(), v.label())));
+        f.add(Field.fixed(" "));
+        f.add(itemField("VR", v.vr(), i -> new Instruction.VisionGetOffset(v.process(), i, v.label())));
+        f.add(Field.fixed(" JMP,"));
+        f.add(labelField(v.label(), l -> new Instruction.VisionGetOffset(v.process(), v.vr(), l)));
+      }
+      case Instruction.VisionGetNFound v -> {
+        f.add(Field.fixed("VISION GET_NFOUND "));
+        f.add(processField(v.process(), x -> new Instruction.VisionGetNFound(x, v.register())));
+        f.add(Field.fixed(" "));
+        f.add(itemField("R", v.register(), i -> new Instruction.VisionGetNFound(v.process(), i)));
+      }
+      case Instruction.AssignFromVr v -> {
+        f.add(itemField("R", v.register(), i -> new Instruction.AssignFromVr(i, v.vr(), v.field(), v.element())));
+        f.add(Field.fixed("="));
+        f.add(itemField("VR", v.vr(), i -> new Instruction.AssignFromVr(v.register(), i, v.field(), v.element())));
+        String field = "." + v.field().name() + (v.field() == Instruction.VisionField.MES ? "[" + v.element() + "]" : "");
+        f.add(new Field(field, Field.Edit.choice(List.of(".MODELID", ".ENC", ".MES[1]"), k ->
+            new Instruction.AssignFromVr(v.register(), v.vr(), Instruction.VisionField.values()[k], k == 2 ? 1 : 0))));
       }
       case Instruction.Blank b -> { }
       // Kept as written; the pendant shows it and can delete or comment it out, not edit it.
@@ -295,8 +337,9 @@ public final class TpLine {
 
   // ---- motion --------------------------------------------------------------------------------
 
-  private static void move(Instruction.Move m, Program program, List<Field> f) {
-    f.add(new Field(m.type().name(), Field.Edit.choice(List.of("J", "L", "C", "A"), k -> withType(m, Motion.Type.values()[k]))));
+  private static void move(Instruction.Move m, Program program, List<Field> f, double maxMmPerSec) {
+    f.add(new Field(m.type().name(), Field.Edit.choice(List.of("J", "L", "C", "A"),
+        k -> withType(m, Motion.Type.values()[k], maxMmPerSec))));
     f.add(Field.fixed(" "));
     f.add(targetField(m.target(), program, t -> new Instruction.Move(m.type(), t, m.circularEnd(), m.speed(), m.termination(), m.options())));
     if (m.circularEnd().isPresent()) {
@@ -305,20 +348,14 @@ public final class TpLine {
           t -> new Instruction.Move(m.type(), m.target(), Optional.of(t), m.speed(), m.termination(), m.options())));
     }
     f.add(Field.fixed(" "));
-    String speed = switch (m.speed().value()) {
-      case Motion.SpeedConst c -> ExprText.plain(c.value());
-      case Motion.SpeedRegister r -> ExprText.item("R", r.register());
-    };
-    f.add(new Field(speed, Field.Edit.entry(speed, t -> withSpeed(m, checkedSpeed(new Motion.Speed(speedValue(t), m.speed().unit()))))));
+    String speed = TpText.speedValue(m.speed().value());
+    f.add(new Field(speed, Field.Edit.entry(speed,
+        t -> withSpeed(m, checkedSpeed(new Motion.Speed(speedValue(t), m.speed().unit()), maxMmPerSec)))));
     List<Motion.SpeedUnit> units = Arrays.stream(Motion.SpeedUnit.values()).filter(u -> u.fits(m.type())).toList();
     f.add(new Field(unit(m.speed().unit()), Field.Edit.choice(units.stream().map(TpLine::unit).toList(),
-        k -> withSpeed(m, speedInRange(new Motion.Speed(m.speed().value(), units.get(k)))))));
+        k -> withSpeed(m, speedInRange(new Motion.Speed(m.speed().value(), units.get(k)), maxMmPerSec)))));
     f.add(Field.fixed(" "));
-    String term = switch (m.termination()) {
-      case Motion.Fine x -> "FINE";
-      case Motion.Cnt c -> "CNT" + c.value();
-      case Motion.CntRegister r -> "CNT " + ExprText.item("R", r.register());
-    };
+    String term = TpText.termination(m.termination());
     f.add(new Field(term, Field.Edit.both(List.of("FINE", "CNT"),
         k -> withTerm(m, k == 0 ? new Motion.Fine() : new Motion.Cnt(100)), term.equals("FINE") ? "" : term.substring(3).trim(),
         t -> withTerm(m, parseTermination(t)))));
@@ -340,46 +377,38 @@ public final class TpLine {
       case Motion.Offset x -> null;
       case Motion.Wjnt x -> null;
       case Motion.Inc x -> null;
+      case Motion.VisionOffset v -> t -> withOption(m, at, new Motion.VisionOffset(ExprText.parseItem("VR", t)));
       case Motion.RawOption x -> null;
       case Motion.TimedAction x -> null;
     };
     String initial = switch (o) {
-      case Motion.OffsetPr p -> ExprText.index(p.register().index());
-      case Motion.ToolOffsetPr p -> ExprText.index(p.register().index());
+      case Motion.OffsetPr p -> TpText.index(p.register().index());
+      case Motion.ToolOffsetPr p -> TpText.index(p.register().index());
       case Motion.Acc a -> Integer.toString(a.percent());
-      case Motion.Skip s -> ExprText.index(s.label().index());
+      case Motion.Skip s -> TpText.index(s.label().index());
       case Motion.Offset x -> "";
       case Motion.Wjnt x -> "";
       case Motion.Inc x -> "";
+      case Motion.VisionOffset v -> TpText.index(v.vr().index());
       case Motion.RawOption x -> "";
       case Motion.TimedAction x -> "";
     };
     return new Field(text, Field.Edit.both(List.of("(remove option)"), k -> withoutOption(m, at), initial, entry));
   }
 
-  /** Option text as displayed ({@code Offset,PR[1]}, {@code ACC80}). */
+  /** Option text as displayed ({@code Offset,PR[1]}, {@code ACC80}): the printer's ({@link TpText#option}). */
   public static String optionText(Motion.Option o) {
-    return switch (o) {
-      case Motion.Offset x -> "Offset";
-      case Motion.OffsetPr p -> "Offset," + ExprText.item("PR", p.register());
-      case Motion.ToolOffsetPr p -> "Tool_Offset," + ExprText.item("PR", p.register());
-      case Motion.Acc a -> "ACC" + a.percent();
-      case Motion.Skip s -> "Skip," + ExprText.label(s.label());
-      case Motion.Wjnt x -> "Wjnt";
-      case Motion.Inc x -> "INC";
-      case Motion.TimedAction x -> x.text();
-      // A point-logic block's sub-lines are not shown on the motion's line.
-      case Motion.RawOption x -> x.text().lines().findFirst().orElse("");
-    };
+    return TpText.option(o);
   }
 
-  static Instruction.Move withType(Instruction.Move m, Motion.Type type) {
+  static Instruction.Move withType(Instruction.Move m, Motion.Type type, double maxMmPerSec) {
     Motion.Speed speed = m.speed();
     if (!speed.unit().fits(type)) {
       // J uses % of the joints' top speed, L/C/A a TCP speed: a unit that does not fit becomes the
       // new type's default unit, keeping the number (as the controller does when retyping), within
       // the unit's range (L 2000mm/sec becomes J 100%).
-      speed = speedInRange(new Motion.Speed(speed.value(), type == Motion.Type.J ? Motion.SpeedUnit.PERCENT : Motion.SpeedUnit.MM_PER_SEC));
+      speed = speedInRange(new Motion.Speed(speed.value(), type == Motion.Type.J ? Motion.SpeedUnit.PERCENT : Motion.SpeedUnit.MM_PER_SEC),
+          maxMmPerSec);
     }
     Optional<Motion.Target> end = Optional.empty();
     if (type == Motion.Type.C) {
@@ -391,16 +420,18 @@ public final class TpLine {
 
   /**
    * The range a controller takes for a motion speed in {@code unit} (R-30iB operator's manual,
-   * motion speed table, recalled: % 1-100, mm/sec 1-2000 (the robot's default maximum Cartesian
-   * speed, $MRR_GRP.$SPEEDLIM), cm/min 1-12000, inch/min 0.1-4724.4, deg/sec 1-520 (the default
-   * $ROTSPEEDLIM), sec 0.1-3200, msec 1-32000): {@code {lo, hi}}.
+   * motion speed table, recalled: % 1-100, mm/sec 1 to the robot's maximum Cartesian speed
+   * $MRR_GRP.$SPEEDLIM ({@code maxMmPerSec}, 2000 by default), cm/min and inch/min up to the same
+   * speed (12000 and 4724.4 for 2000 mm/sec), deg/sec 1-520 (the default $ROTSPEEDLIM), sec
+   * 0.1-3200, msec 1-32000): {@code {lo, hi}}.
    */
-  static double[] speedRange(Motion.SpeedUnit unit) {
+  static double[] speedRange(Motion.SpeedUnit unit, double maxMmPerSec) {
     return switch (unit) {
       case PERCENT -> new double[] {1, 100};
-      case MM_PER_SEC -> new double[] {1, 2000};
-      case CM_PER_MIN -> new double[] {1, 12000};
-      case INCH_PER_MIN -> new double[] {0.1, 4724.4};
+      case MM_PER_SEC -> new double[] {1, maxMmPerSec};
+      case CM_PER_MIN -> new double[] {1, Math.floor(maxMmPerSec * 6)};
+      // 0.1 inch/min steps, rounded down so the top never exceeds the mm/sec maximum
+      case INCH_PER_MIN -> new double[] {0.1, Math.floor(maxMmPerSec * 60 / 25.4 * 10) / 10};
       case DEG_PER_SEC -> new double[] {1, 520};
       case SEC -> new double[] {0.1, 3200};
       case MSEC -> new double[] {1, 32000};
@@ -413,8 +444,13 @@ public final class TpLine {
    * is checked when the line runs).
    */
   static Motion.Speed checkedSpeed(Motion.Speed s) throws BadText {
+    return checkedSpeed(s, DEFAULT_MAX_MM_PER_SEC);
+  }
+
+  /** As {@link #checkedSpeed(Motion.Speed)} for a robot whose maximum TCP speed is {@code maxMmPerSec}. */
+  static Motion.Speed checkedSpeed(Motion.Speed s, double maxMmPerSec) throws BadText {
     if (s.value() instanceof Motion.SpeedConst c) {
-      double[] r = speedRange(s.unit());
+      double[] r = speedRange(s.unit(), maxMmPerSec);
       if (!(c.value() >= r[0] && c.value() <= r[1])) {
         throw new BadText("Speed " + ExprText.plain(c.value()) + unit(s.unit()) + ": Value out of range, enter "
             + ExprText.plain(r[0]) + " to " + ExprText.plain(r[1]) + " " + unit(s.unit()), true);
@@ -424,9 +460,9 @@ public final class TpLine {
   }
 
   /** {@code s} with its constant moved into its unit's range (a unit chosen from the list). */
-  static Motion.Speed speedInRange(Motion.Speed s) {
+  static Motion.Speed speedInRange(Motion.Speed s, double maxMmPerSec) {
     if (s.value() instanceof Motion.SpeedConst c) {
-      double[] r = speedRange(s.unit());
+      double[] r = speedRange(s.unit(), maxMmPerSec);
       return new Motion.Speed(new Motion.SpeedConst(Math.max(r[0], Math.min(r[1], c.value()))), s.unit());
     }
     return s;
@@ -456,24 +492,16 @@ public final class TpLine {
     return new Instruction.Move(m.type(), m.target(), m.circularEnd(), m.speed(), m.termination(), opts);
   }
 
-  /** Speed unit as displayed: {@code %}, {@code mm/sec}, {@code sec}. */
+  /** Speed unit as displayed: {@code %}, {@code mm/sec}, {@code sec} ({@link TpText#unit}). */
   public static String unit(Motion.SpeedUnit u) {
-    return switch (u) {
-      case PERCENT -> "%";
-      case SEC -> "sec";
-      case MSEC -> "msec";
-      case MM_PER_SEC -> "mm/sec";
-      case CM_PER_MIN -> "cm/min";
-      case INCH_PER_MIN -> "inch/min";
-      case DEG_PER_SEC -> "deg/sec";
-    };
+    return TpText.unit(u);
   }
 
   private static Field targetField(Motion.Target t, Program program, Function<Motion.Target, Instruction> make) {
     String text = targetText(t, program);
     String initial = switch (t) {
       case Motion.Local l -> Integer.toString(l.number());
-      case Motion.Register r -> "PR[" + ExprText.index(r.register().index()) + "]";
+      case Motion.Register r -> "PR[" + TpText.index(r.register().index()) + "]";
     };
     return new Field(text, Field.Edit.both(List.of("P[...]", "PR[...]"),
         k -> make.apply(k == 0 ? new Motion.Local(number(t), "") : new Motion.Register(Item.of(number(t)))),
@@ -493,9 +521,9 @@ public final class TpLine {
       case Motion.Local l -> {
         String c = !l.comment().isEmpty() ? l.comment()
             : program.position(l.number()).map(p -> p.comment()).orElse("");
-        yield "P[" + l.number() + (c.isEmpty() ? "" : ":" + c) + "]";
+        yield TpText.target(new Motion.Local(l.number(), c));
       }
-      case Motion.Register r -> ExprText.item("PR", r.register());
+      case Motion.Register r -> TpText.target(r);
     };
   }
 
@@ -539,15 +567,15 @@ public final class TpLine {
   // ---- shared field builders -----------------------------------------------------------------
 
   private static Field itemField(String kind, Item item, Function<Item, Instruction> make) {
-    String text = ExprText.item(kind, item);
-    return new Field(text, Field.Edit.entry(ExprText.index(item.index()), t -> make.apply(ExprText.parseItem(kind, t))));
+    String text = TpText.item(kind, item);
+    return new Field(text, Field.Edit.entry(TpText.index(item.index()), t -> make.apply(ExprText.parseItem(kind, t))));
   }
 
   private static Field ioField(IoKind kind, Item port, BiFunction<IoKind, Item, Instruction> make) {
-    String text = ExprText.item(kind.name(), port);
+    String text = TpText.item(kind.name(), port);
     List<IoKind> outs = Arrays.stream(IoKind.values()).filter(IoKind::writable).toList();
     return new Field(text, Field.Edit.both(outs.stream().map(k -> k.name() + "[...]").toList(),
-        k -> make.apply(outs.get(k), port), ExprText.index(port.index()), t -> {
+        k -> make.apply(outs.get(k), port), TpText.index(port.index()), t -> {
           String u = t.trim().toUpperCase(Locale.ROOT);
           if (!u.isEmpty() && Character.isDigit(u.charAt(0))) {
             return make.apply(kind, new Item(ExprText.parseIndex(u), ""));
@@ -561,13 +589,13 @@ public final class TpLine {
   }
 
   private static Field exprField(Expr e, Function<Expr, Instruction> make) {
-    String text = ExprText.format(e);
+    String text = TpText.expr(e);
     return new Field(text, Field.Edit.entry(text, t -> make.apply(value(t))));
   }
 
   /** A FOR bound: the .LS reader takes a whole-number constant, R[i] or AR[i], nothing else. */
   private static Field forBoundField(Expr e, Function<Expr, Instruction> make) {
-    String text = ExprText.format(e);
+    String text = TpText.expr(e);
     return new Field(text, Field.Edit.entry(text, t -> {
       Expr b = ExprText.parse(t);
       if (!(b instanceof Expr.IntConst || b instanceof Expr.Register || b instanceof Expr.Arg)) {
@@ -613,14 +641,41 @@ public final class TpLine {
     return new Expr.IntConst(NumberEntry.wholeWithin("OVERRIDE", t, 1, 100));
   }
 
+  /** A vision process: typed {@code 'NAME'} (or a bare name) or {@code SR[i]}. */
+  private static Field processField(Instruction.VisionProcess p, Function<Instruction.VisionProcess, Instruction> make) {
+    String text = switch (p) {
+      case Instruction.VisionProcessName n -> TpText.expr(new Expr.StringConst(n.name()));
+      case Instruction.VisionProcessInRegister r -> TpText.item("SR", r.register());
+    };
+    return new Field(text, Field.Edit.entry(text, t -> {
+      String u = t.trim();
+      if (u.toUpperCase(Locale.ROOT).startsWith("SR[")) {
+        return make.apply(new Instruction.VisionProcessInRegister(ExprText.parseItem("SR", u)));
+      }
+      if (u.length() >= 2 && (u.charAt(0) == '\'' || u.charAt(0) == '"') && u.charAt(u.length() - 1) == u.charAt(0)) {
+        u = u.substring(1, u.length() - 1);
+      }
+      if (u.isEmpty() || u.indexOf('\'') >= 0 && u.indexOf('"') >= 0) {
+        throw new BadText("expected a vision process: 'NAME' or SR[i]");
+      }
+      return make.apply(new Instruction.VisionProcessName(u.toUpperCase(Locale.ROOT)));
+    }));
+  }
+
   private static Field indexField(Index i, Function<Index, Instruction> make) {
-    String text = ExprText.index(i);
-    return new Field(text, Field.Edit.entry(text, t -> make.apply(ExprText.parseIndex(t))));
+    return indexField(i, "", make);
+  }
+
+  /** An index with its item comment shown after it ({@code 2:TABLE}); an edit changes the index and keeps the comment. */
+  private static Field indexField(Index i, String comment, Function<Index, Instruction> make) {
+    String text = TpText.index(i);
+    return new Field(text + (comment.isEmpty() ? "" : ":" + comment),
+        Field.Edit.entry(text, t -> make.apply(ExprText.parseIndex(t))));
   }
 
   private static Field labelField(LabelRef l, Function<LabelRef, Instruction> make) {
-    String text = ExprText.label(l);
-    return new Field(text, Field.Edit.entry(ExprText.index(l.index()), t -> make.apply(parseLabel(t))));
+    String text = TpText.label(l);
+    return new Field(text, Field.Edit.entry(TpText.index(l.index()), t -> make.apply(parseLabel(t))));
   }
 
   private static Field callField(Instruction.Call c, List<String> programs,
@@ -632,10 +687,7 @@ public final class TpLine {
 
   private static Field branchField(Instruction.Branch b, List<String> programs,
       Function<Instruction.Branch, Instruction> make) {
-    String text = switch (b) {
-      case Instruction.Jump j -> "JMP " + ExprText.label(j.label());
-      case Instruction.Call c -> "CALL " + callText(c);
-    };
+    String text = TpText.branch(b);
     return new Field(text, Field.Edit.both(List.of("JMP LBL[...]", "CALL ..."),
         k -> make.apply(k == 0 ? new Instruction.Jump(LabelRef.of(1))
             : new Instruction.Call(programs.isEmpty() ? "MAIN" : programs.get(0), List.of())),
@@ -658,73 +710,27 @@ public final class TpLine {
     }), text, t -> new Instruction.AssignPosReg(a.register(), parsePosSource(t))));
   }
 
-  /** The right side of {@code PR[i]=…} as displayed. */
+  /** The right side of {@code PR[i]=…} as displayed ({@link TpText#posSource}). */
   public static String posSourceText(Instruction.PosSource s) {
-    return switch (s) {
-      case Instruction.FromPosReg r -> ExprText.item("PR", r.register());
-      case Instruction.FromLocal l -> "P[" + l.number() + (l.comment().isEmpty() ? "" : ":" + l.comment()) + "]";
-      case Instruction.CurrentLpos x -> "LPOS";
-      case Instruction.CurrentJpos x -> "JPOS";
-      case Instruction.FromFrame fr -> frameWord(fr.kind()) + "[" + ExprText.index(fr.frame())
-          + (fr.comment().isEmpty() ? "" : ":" + fr.comment()) + "]";
-      case Instruction.PosArithmetic p -> ExprText.item("PR", p.left()) + (p.add() ? "+" : "-") + ExprText.item("PR", p.right());
-      case Instruction.PosSum p -> {
-        StringBuilder sb = new StringBuilder(posSourceText(p.first()));
-        for (Instruction.PosTerm t : p.rest()) {
-          sb.append(t.add() ? '+' : '-').append(posSourceText(t.term()));
-        }
-        yield sb.toString();
-      }
-    };
+    return TpText.posSource(s);
   }
 
+  /** Typed text as the right side of {@code PR[i]=}, read by the one parser. */
   static Instruction.PosSource parsePosSource(String text) throws BadText {
-    String t = text.trim().toUpperCase(Locale.ROOT).replace(" ", "");
-    switch (t) {
-      case "LPOS" -> {
-        return new Instruction.CurrentLpos();
-      }
-      case "JPOS" -> {
-        return new Instruction.CurrentJpos();
-      }
-      default -> { }
+    try {
+      return TpStatementParser.posSourceText(text);
+    } catch (TpSyntaxError x) {
+      throw new BadText("column " + x.column() + ": " + x.getMessage()
+          + " (expected PR[j], P[j], LPOS, JPOS, UFRAME[n], UTOOL[n] or a sum such as PR[j]+PR[k])");
     }
-    for (FrameKind k : FrameKind.values()) {
-      String w = frameWord(k) + "[";
-      if (t.startsWith(w) && t.endsWith("]")) {
-        return new Instruction.FromFrame(k, ExprText.parseIndex(t.substring(w.length(), t.length() - 1)));
-      }
-    }
-    if (t.startsWith("P[") && t.endsWith("]")) {
-      return new Instruction.FromLocal(intIn(t.substring(2, t.length() - 1), 1, 9999, "position number"), "");
-    }
-    int op = Math.max(t.indexOf("]+PR"), t.indexOf("]-PR"));
-    if (op > 0) {
-      return new Instruction.PosArithmetic(ExprText.parseItem("PR", t.substring(0, op + 1)), t.charAt(op + 1) == '+',
-          ExprText.parseItem("PR", t.substring(op + 2)));
-    }
-    if (t.startsWith("PR")) {
-      return new Instruction.FromPosReg(ExprText.parseItem("PR", t));
-    }
-    throw new BadText("expected PR[j], P[j], LPOS, JPOS, UFRAME[n], UTOOL[n] or PR[j]+PR[k]");
   }
 
   static String frameWord(FrameKind k) {
-    return switch (k) {
-      case USER -> "UFRAME";
-      case TOOL -> "UTOOL";
-    };
+    return TpText.frameWord(k);
   }
 
   static String callText(Instruction.Call c) {
-    if (c.args().isEmpty()) {
-      return c.program();
-    }
-    StringBuilder sb = new StringBuilder(c.program()).append('(');
-    for (int i = 0; i < c.args().size(); i++) {
-      sb.append(i == 0 ? "" : ",").append(ExprText.format(c.args().get(i)));
-    }
-    return sb.append(')').toString();
+    return TpText.call(c.program(), c.args());
   }
 
   /** {@code NAME} or {@code NAME(arg,...)}. */
@@ -737,6 +743,10 @@ public final class TpLine {
     return name;
   }
 
+  /**
+   * {@code NAME} or {@code NAME(arg,...)}, read by the one parser (so a string argument may hold
+   * commas, brackets and either quote: {@code CALL SHOW('A,B]')}, {@code CALL SHOW("it's")}).
+   */
   static Instruction.Call parseCall(String text) throws BadText {
     String t = text.trim();
     int open = t.indexOf('(');
@@ -744,41 +754,17 @@ public final class TpLine {
     if (!Program.isValidName(name)) {
       throw new BadText("'" + name + "' is not a program name (letters, digits, _; a letter first)");
     }
-    List<Expr> args = new ArrayList<>();
-    if (open >= 0) {
-      if (!t.endsWith(")")) {
-        throw new BadText("expected ')' at the end of the arguments");
-      }
-      String inner = t.substring(open + 1, t.length() - 1).trim();
-      if (!inner.isEmpty()) {
-        for (String a : splitTopLevel(inner)) {
-          args.add(ExprText.parse(a));
-        }
-      }
+    Instruction.Call call;
+    try {
+      call = TpStatementParser.callText(t);
+    } catch (TpSyntaxError x) {
+      throw new BadText("column " + x.column() + ": " + x.getMessage());
     }
-    return new Instruction.Call(name, args);
-  }
-
-  private static List<String> splitTopLevel(String s) {
-    List<String> parts = new ArrayList<>();
-    int depth = 0;
-    int start = 0;
-    boolean quoted = false;
-    for (int i = 0; i < s.length(); i++) {
-      char c = s.charAt(i);
-      if (c == '\'') {
-        quoted = !quoted;
-      } else if (!quoted && (c == '(' || c == '[')) {
-        depth++;
-      } else if (!quoted && (c == ')' || c == ']')) {
-        depth--;
-      } else if (!quoted && c == ',' && depth == 0) {
-        parts.add(s.substring(start, i));
-        start = i + 1;
-      }
+    for (Expr a : call.args()) {
+      // the pendant's entry checks, as for any typed expression
+      ExprText.checked(a);
     }
-    parts.add(s.substring(start));
-    return parts;
+    return call;
   }
 
   /**

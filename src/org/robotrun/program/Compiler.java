@@ -115,6 +115,10 @@ final class Compiler {
       case Instruction.WaitCondition w -> "WAIT";
       case Instruction.SetIo s -> "I/O output";
       case Instruction.Pulse p -> "PULSE";
+      case Instruction.VisionRunFind v -> "iRVision";
+      case Instruction.VisionGetOffset v -> "iRVision";
+      case Instruction.VisionGetNFound v -> "iRVision";
+      case Instruction.AssignFromVr v -> "iRVision";
       case Instruction.Unsupported u -> u.what();
       case Instruction.UserAlarm u -> "UALM";
     };
@@ -168,8 +172,10 @@ final class Compiler {
       case Instruction.UserAlarm u -> new Ops.UserAlarmOp(idx(u.number()));
       case Instruction.SetOverride o -> new Ops.OverrideOp(expr(o.percent()));
       // Runnable kinds (settings, monitors) are skipped; running past the others would be wrong.
-      case Instruction.Unsupported u when VisionStatement.runs(u.text()) ->
-          VisionOps.of(VisionStatement.parse(u.text()).orElseThrow(), this::label);
+      case Instruction.VisionRunFind v -> VisionOps.of(v, this::label);
+      case Instruction.VisionGetOffset v -> VisionOps.of(v, this::label);
+      case Instruction.VisionGetNFound v -> VisionOps.of(v, this::label);
+      case Instruction.AssignFromVr v -> VisionOps.of(v, this::label);
       case Instruction.Unsupported u -> u.runnable() ? new Ops.Nop()
           : new Ops.Fail(AlarmKind.NOT_SUPPORTED, "not supported in RobotRun: " + u.what());
     };
@@ -203,6 +209,7 @@ final class Compiler {
       case Instruction.FromFrame f -> new Ops.AssignPrOp(target, s, idx(f.frame()), null);
       case Instruction.PosArithmetic f -> new Ops.AssignPrOp(target, s, idx(f.left().index()), idx(f.right().index()));
       case Instruction.PosSum f -> new Ops.AssignPrOp(target, s, null, null);
+      case Instruction.FromVisionRegister v -> new VisionOps.PositionFromVr(target, idx(v.vr().index()), v.foundPos());
     };
   }
 

@@ -159,6 +159,16 @@ public sealed interface Instruction {
     }
   }
 
+  /**
+   * {@code VR[j].OFFSET} ({@code foundPos} false: the offset a VOFFSET applies) or {@code
+   * VR[j].FOUND_POS[1]} (true: where the part was found), read from a vision register.
+   */
+  record FromVisionRegister(Item vr, boolean foundPos) implements PosSource {
+    public FromVisionRegister {
+      Objects.requireNonNull(vr, "vr");
+    }
+  }
+
   /** {@code PR[j]+PR[k]} ({@code add}) or {@code PR[j]-PR[k]}. */
   record PosArithmetic(Item left, boolean add, Item right) implements PosSource {
     public PosArithmetic {
@@ -401,6 +411,71 @@ public sealed interface Instruction {
     }
   }
 
+  // ---- iRVision (docs/vision.md) ------------------------------------------------------------
+
+  /** The vision process a VISION statement names: {@code 'NAME'}, or {@code SR[i]} holding the name when the line runs. */
+  sealed interface VisionProcess {}
+
+  /** {@code 'FIND_BLOCKS'}. */
+  record VisionProcessName(String name) implements VisionProcess {
+    public VisionProcessName {
+      Objects.requireNonNull(name, "name");
+    }
+  }
+
+  /** {@code SR[i]}: the process named by a string register's value when the line runs. */
+  record VisionProcessInRegister(Item register) implements VisionProcess {
+    public VisionProcessInRegister {
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** {@code VISION RUN_FIND 'NAME'}: snaps and finds; the results wait for GET_OFFSET. */
+  record VisionRunFind(VisionProcess process) implements Instruction {
+    public VisionRunFind {
+      Objects.requireNonNull(process, "process");
+    }
+  }
+
+  /** {@code VISION GET_OFFSET 'NAME' VR[i] JMP,LBL[j]}: the next result into VR[i]; the jump when none is left. */
+  record VisionGetOffset(VisionProcess process, Item vr, LabelRef label) implements Instruction {
+    public VisionGetOffset {
+      Objects.requireNonNull(process, "process");
+      Objects.requireNonNull(vr, "vr");
+      Objects.requireNonNull(label, "label");
+    }
+  }
+
+  /** {@code VISION GET_NFOUND 'NAME' R[i]}: how many the last RUN_FIND found, into R[i]. */
+  record VisionGetNFound(VisionProcess process, Item register) implements Instruction {
+    public VisionGetNFound {
+      Objects.requireNonNull(process, "process");
+      Objects.requireNonNull(register, "register");
+    }
+  }
+
+  /** The numeric fields of a vision register a program reads. */
+  enum VisionField {
+    /** {@code .MODELID}: which model the part matched. */
+    MODELID,
+    /** {@code .ENC}: the conveyor encoder count (0: no tracking). */
+    ENC,
+    /** {@code .MES[k]}: measurement k (1 is the score). */
+    MES
+  }
+
+  /** {@code R[i]=VR[j].MODELID}, {@code .ENC} or {@code .MES[k]} ({@code element} k = 1..10 for MES, 0 otherwise). */
+  record AssignFromVr(Item register, Item vr, VisionField field, int element) implements Instruction {
+    public AssignFromVr {
+      Objects.requireNonNull(register, "register");
+      Objects.requireNonNull(vr, "vr");
+      Objects.requireNonNull(field, "field");
+      if (field == VisionField.MES ? element < 1 || element > 10 : element != 0) {
+        throw new IllegalArgumentException("MES[k] takes k = 1..10, the other fields no element: " + field + " " + element);
+      }
+    }
+  }
+
   // ---- other ------------------------------------------------------------------------------
 
   /** {@code ! text}. */
@@ -521,10 +596,8 @@ public sealed interface Instruction {
 
   /**
    * A statement the controller has and RobotRun does not run yet ({@code SKIP CONDITION},
-   * {@code RUN}, {@code VISION RUN_FIND}, {@code COL DETECT ON} ...): kept as written so it is
-   * written back unchanged, and reported once per kind as {@code not supported: what}. The
-   * iRVision forms {@link VisionStatement} reads from {@code text} are the exception: they run
-   * (compiled from the text) and are not reported.
+   * {@code VISION SET_REFERENCE}, {@code COL DETECT ON} ...): kept as written so it is
+   * written back unchanged, and reported once per kind as {@code not supported: what}.
    *
    * @param text the statement as written, without line number and closing {@code ;}
    * @param what the kind, as the message names it ({@code "SKIP CONDITION"})

@@ -1164,9 +1164,9 @@ public final class Interpreter {
         }
         case Motion.Wjnt x -> wjnt = true;
         case Motion.Inc x -> inc = true;
+        case Motion.VisionOffset x -> voffset = new Nodes.Idx(x.vr().index());
         case Motion.RawOption x -> {
-          // VOFFSET,VR[i] runs (below); other raw options are not run yet: check reported them.
-          voffset = VisionStatement.voffset(x.text()).map(Nodes.Idx::new).orElse(voffset);
+          // not run yet: check reported it
         }
         case Motion.TimedAction x -> {
           // Fired while the motion runs (see serviceWait).

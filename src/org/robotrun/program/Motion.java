@@ -111,6 +111,16 @@ public final class Motion {
     }
   }
 
+  /**
+   * {@code VOFFSET,VR[i]}: shifts the target by the offset the vision register holds, in its user
+   * frame (iRVision, docs/vision.md).
+   */
+  public record VisionOffset(Item vr) implements Option {
+    public VisionOffset {
+      Objects.requireNonNull(vr, "vr");
+    }
+  }
+
   /** {@code ACCn}: acceleration override in percent. */
   public record Acc(int percent) implements Option {}
 
@@ -171,7 +181,7 @@ public final class Motion {
 
   /**
    * A motion option the controller has and RobotRun does not run yet ({@code TB .50sec,CALL X},
-   * {@code VOFFSET,VR[1]}, {@code PTH}, {@code RTCP}): the rest of the line from the option on,
+   * {@code VOFFSET} with a VOFFSET CONDITION, {@code PTH}, {@code RTCP}): the rest of the line from the option on,
    * kept as written. The motion itself runs without it; {@code check} says so.
    *
    * @param text the option text as written, e.g. {@code "TB   .50sec,CALL OPEN"}

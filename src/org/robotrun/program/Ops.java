@@ -758,6 +758,7 @@ final class Ops {
             Nodes.check(frameName(s.kind()), a.resolve(m), Interpreter.FRAME_COUNT));
         case Instruction.PosArithmetic s -> arithmetic(m, s.add());
         case Instruction.PosSum s -> sum(m, s);
+        case Instruction.FromVisionRegister s -> throw new IllegalStateException("compiled as VisionOps.PositionFromVr");
       };
       m.regs.pr[i] = p;
       return NEXT;

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import org.robotrun.program.TpToken.Kind;
@@ -211,6 +212,55 @@ public final class TpStatementParser extends TpTokenCursor {
     return e;
   }
 
+  /**
+   * Parses the text of one statement, as {@link TpText#statement} prints it and a /MN line holds
+   * it between {@code "N:"} and {@code ;}: the fragment entry point for a whole line. A C motion's
+   * end point may be on a continuation line ({@code "C P[1]\n    :  P[2] 100mm/sec FINE"}). A
+   * statement RobotRun keeps but does not run is given back as {@link Instruction.Unsupported}
+   * holding the text, as the .LS reader keeps it.
+   *
+   * @throws TpSyntaxError naming line (of {@code text}), column and what was expected
+   */
+  public static Parsed statementText(String text) {
+    String[] lines = Objects.requireNonNull(text, "text").split("\n", -1);
+    List<TpToken> tokens = new ArrayList<>(TpLexer.tokenize(lines[0], 1, 1, true));
+    for (int k = 1; k < lines.length; k++) {
+      int colon = lines[k].indexOf(':');
+      if (colon < 0 || !lines[k].substring(0, colon).isBlank()) {
+        throw new TpSyntaxError(k + 1, "expected a continuation line ':  ...', found '" + TpToken.clip(lines[k].strip()) + "'");
+      }
+      tokens.remove(tokens.size() - 1);
+      tokens.addAll(TpLexer.tokenize(lines[k].substring(colon + 1), k + 1, colon + 2, false));
+    }
+    try {
+      return parse(tokens, l -> l >= 1 && l <= lines.length ? lines[l - 1] : null);
+    } catch (TpSyntaxError e) {
+      if (e.unsupported().isPresent()) {
+        return new Parsed(new Instruction.Unsupported(text.strip(), e.unsupported().get(), e.runnable()), List.of());
+      }
+      throw e;
+    }
+  }
+
+  /** Parses typed text as a CALL's program and arguments: {@code NAME}, {@code NAME(1,'A,B',R[2])}. */
+  public static Instruction.Call callText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Instruction.Call c = (Instruction.Call) p.call();
+    p.expectEnd("the end of the CALL");
+    return c;
+  }
+
+  /**
+   * Parses typed text as the right side of {@code PR[i]=}: {@code PR[2]}, {@code P[3]}, {@code LPOS},
+   * {@code UFRAME[1]}, {@code PR[1]+PR[2]}, {@code LPOS-PR[4]}.
+   */
+  public static Instruction.PosSource posSourceText(String text) {
+    TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
+    Instruction.PosSource s = p.positionSource();
+    p.expectEnd("the end of the position");
+    return s;
+  }
+
   /** Parses typed text as an index: {@code 5} or {@code R[2]}. */
   public static Index indexText(String text) {
     TpStatementParser p = new TpStatementParser(TpLexer.tokenize(text, 1, 1, false));
@@ -312,6 +362,9 @@ public final class TpStatementParser extends TpTokenCursor {
       case "R" -> {
         Item reg = item("R");
         expect(Kind.EQ, "'=' after R[...]");
+        if (peek().isWord("VR") && peek(1).is(Kind.LBRACKET)) {
+          yield visionRead(reg);
+        }
         if (peek().is(Kind.STRING) && peek(1).is(Kind.EOL)) {
           throw error("R[] holds a number, not a string constant: put the text in a string register SR[i]");
         }
@@ -428,6 +481,7 @@ public final class TpStatementParser extends TpTokenCursor {
         next();
         yield new Instruction.When(cond, (Instruction.Call) call());
       }
+      case "VISION" -> vision(t);
       case "JMP" -> jump();
       case "CALL" -> call();
       case "RUN" -> run();
@@ -561,7 +615,7 @@ public final class TpStatementParser extends TpTokenCursor {
       next();
       if (!peek().is(Kind.RPAREN)) {
         do {
-          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+          args.add(expression());
         } while (accept(Kind.COMMA));
       }
       expect(Kind.RPAREN, "')' closing the macro's arguments");
@@ -606,7 +660,15 @@ public final class TpStatementParser extends TpTokenCursor {
     }
     Item reg = new Item(idx, itemCommentAndClose("PR[...]"));
     expect(Kind.EQ, "'=' after PR[...]");
+    return new Instruction.AssignPosReg(reg, positionSource());
+  }
+
+  /** The right side of {@code PR[i]=}: one source, or a sum of PR[], P[], LPOS and JPOS terms. */
+  private Instruction.PosSource positionSource() {
     Instruction.PosSource src = posSource(true);
+    if ((peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) && src instanceof Instruction.FromVisionRegister) {
+      throw unsupported(peek(), "PR[i]=vision registers VR[] in position arithmetic", false);
+    }
     if (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
       // PR[1]=LPOS-LPOS, PR[1]=P[1]+PR[2], PR[1]=PR[2]+PR[3]-PR[4]: a sum of positions
       if (!Instruction.PosSum.isTerm(src) && !(src instanceof Instruction.PosArithmetic)) {
@@ -629,7 +691,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       src = new Instruction.PosSum(first, rest);
     }
-    return new Instruction.AssignPosReg(reg, src);
+    return src;
   }
 
   /** One operand of {@code PR[i]=...}: PR[j] (or PR[j]±PR[k] when {@code pair}), P[j], LPOS, JPOS, UFRAME[n] or UTOOL[n]. */
@@ -651,6 +713,7 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       case "LPOS" -> new Instruction.CurrentLpos();
       case "JPOS" -> new Instruction.CurrentJpos();
+      case "VR" -> visionPosition(s);
       case "UFRAME", "UTOOL" -> {
         Item frame = item(s.text().toUpperCase(Locale.ROOT));
         yield new Instruction.FromFrame(s.isWord("UFRAME") ? FrameKind.USER : FrameKind.TOOL, frame.index(), frame.comment());
@@ -683,6 +746,105 @@ public final class TpStatementParser extends TpTokenCursor {
       return new Instruction.Pulse(kind, port, width);
     }
     return new Instruction.SetIo(kind, port, expression());
+  }
+
+  // ---- iRVision (docs/vision.md) -----------------------------------------------------------
+
+  /**
+   * {@code VISION RUN_FIND p}, {@code VISION GET_OFFSET p VR[i] JMP,LBL[j]} ({@code JMP LBL},
+   * {@code JUMP,LBL} alike) or {@code VISION GET_NFOUND p R[i]}, p a {@code 'NAME'} or {@code SR[i]}.
+   * Any other VISION form (SET_REFERENCE, CAMERA_CALIB ...) or a malformed one is kept as written
+   * and alarms when it runs ("iRVision"), as before it was read.
+   */
+  private Instruction vision(TpToken visionWord) {
+    try {
+      TpToken what = expectWord("RUN_FIND, GET_OFFSET or GET_NFOUND after VISION");
+      String w = what.text().toUpperCase(Locale.ROOT);
+      Instruction in = switch (w) {
+        case "RUN_FIND" -> new Instruction.VisionRunFind(visionProcess());
+        case "GET_OFFSET" -> {
+          Instruction.VisionProcess p = visionProcess();
+          expectWordNamed("VR", "VR[i] after the vision process");
+          Item vr = item("VR");
+          TpToken jmp = expectWord("JMP,LBL[n] after VR[i]");
+          if (!jmp.isWord("JMP") && !jmp.isWord("JUMP")) {
+            throw error(jmp, "expected JMP,LBL[n] after VR[i], found " + jmp.describe());
+          }
+          accept(Kind.COMMA);
+          expectWordNamed("LBL", "LBL[n] after JMP");
+          yield new Instruction.VisionGetOffset(p, vr, labelRef());
+        }
+        case "GET_NFOUND" -> {
+          Instruction.VisionProcess p = visionProcess();
+          expectWordNamed("R", "R[i] after the vision process");
+          yield new Instruction.VisionGetNFound(p, item("R"));
+        }
+        default -> throw unsupported(visionWord, "iRVision", false);
+      };
+      expectEnd("the end of the VISION statement");
+      return in;
+    } catch (TpSyntaxError e) {
+      if (e.unsupported().isPresent()) {
+        throw e;
+      }
+      throw unsupported(visionWord, "iRVision", false);
+    }
+  }
+
+  private Instruction.VisionProcess visionProcess() {
+    if (peek().is(Kind.STRING)) {
+      return new Instruction.VisionProcessName(next().text());
+    }
+    expectWordNamed("SR", "a vision process: 'NAME' or SR[i]");
+    return new Instruction.VisionProcessInRegister(item("SR"));
+  }
+
+  /** {@code R[i]=VR[j].MODELID|ENC|MES[k]} after {@code R[i]=}; any other use of VR[] in an expression is kept, not run. */
+  private Instruction visionRead(Item reg) {
+    TpToken vrWord = next();
+    Item vr = item("VR");
+    if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".") && peek(1).is(Kind.WORD)) {
+      next();
+      TpToken f = next();
+      String field = f.text().toUpperCase(Locale.ROOT);
+      Instruction.AssignFromVr read = null;
+      if ((field.equals("MODELID") || field.equals("ENC")) && peek().is(Kind.EOL)) {
+        read = new Instruction.AssignFromVr(reg, vr, Instruction.VisionField.valueOf(field), 0);
+      } else if (field.equals("MES") && peek().is(Kind.LBRACKET) && peek(1).is(Kind.NUMBER) && peek(2).is(Kind.RBRACKET)
+          && peek(3).is(Kind.EOL) && allDigits(peek(1).text(), 0) && peek(1).text().length() <= 2) {
+        int k = Integer.parseInt(peek(1).text());
+        if (k >= 1 && k <= 10) {
+          next();
+          next();
+          next();
+          read = new Instruction.AssignFromVr(reg, vr, Instruction.VisionField.MES, k);
+        }
+      }
+      if (read != null) {
+        return read;
+      }
+    }
+    throw unsupported(vrWord, "vision registers VR[] in an expression", false);
+  }
+
+  /** {@code VR[j].OFFSET} or {@code VR[j].FOUND_POS[1]} after {@code PR[i]=} (the word VR consumed). */
+  private Instruction.PosSource visionPosition(TpToken vrWord) {
+    Item vr = item("VR");
+    if (peek().is(Kind.BAD_CHAR) && peek().text().equals(".") && peek(1).is(Kind.WORD)) {
+      if (peek(1).isWord("OFFSET")) {
+        next();
+        next();
+        return new Instruction.FromVisionRegister(vr, false);
+      }
+      if (peek(1).isWord("FOUND_POS") && peek(2).is(Kind.LBRACKET) && peek(3).is(Kind.NUMBER)
+          && peek(3).text().equals("1") && peek(4).is(Kind.RBRACKET)) {
+        for (int k = 0; k < 5; k++) {
+          next();
+        }
+        return new Instruction.FromVisionRegister(vr, true);
+      }
+    }
+    throw unsupported(vrWord, "PR[i]=vision registers VR[]", false);
   }
 
   private Instruction jump() {
@@ -721,7 +883,7 @@ public final class TpStatementParser extends TpTokenCursor {
             // CALL SUB(SPEED=5): arguments by name, a feature of newer systems
             throw unsupported(peek(), "named CALL arguments (NAME=value)", false);
           }
-          args.add(peek().is(Kind.STRING) ? new Expr.StringConst(next().text()) : expression());
+          args.add(expression());
         } while (accept(Kind.COMMA));
       }
       expect(Kind.RPAREN, "')' closing the CALL arguments");
@@ -898,11 +1060,11 @@ public final class TpStatementParser extends TpTokenCursor {
     Motion.SpeedUnit unit = speedUnit();
     if (!unit.fits(type)) {
       String allowed = type == Motion.Type.J ? "%, sec or msec" : "mm/sec, cm/min, inch/min, deg/sec, sec or msec";
-      throw error("speed unit " + unitText(unit) + " does not fit a " + type + " motion: expected " + allowed);
+      throw error("speed unit " + TpText.unit(unit) + " does not fit a " + type + " motion: expected " + allowed);
     }
     // A constant speed out of range would only alarm at run time; say so when the file is read.
     if (value instanceof Motion.SpeedConst c) {
-      String shown = FanucFormat.plain(c.value()) + unitText(unit);
+      String shown = FanucFormat.plain(c.value()) + TpText.unit(unit);
       if (!(c.value() > 0)) {
         throw error("speed " + shown + ": expected a speed greater than 0");
       }
@@ -947,19 +1109,6 @@ public final class TpStatementParser extends TpTokenCursor {
       case "inch/min" -> Motion.SpeedUnit.INCH_PER_MIN;
       case "deg/sec" -> Motion.SpeedUnit.DEG_PER_SEC;
       default -> throw error(t, "unknown speed unit '" + full + "': expected mm/sec, cm/min, inch/min or deg/sec");
-    };
-  }
-
-  /** How a unit is written in TP; the writer uses the same table. */
-  public static String unitText(Motion.SpeedUnit unit) {
-    return switch (unit) {
-      case PERCENT -> "%";
-      case SEC -> "sec";
-      case MSEC -> "msec";
-      case MM_PER_SEC -> "mm/sec";
-      case CM_PER_MIN -> "cm/min";
-      case INCH_PER_MIN -> "inch/min";
-      case DEG_PER_SEC -> "deg/sec";
     };
   }
 
@@ -1024,6 +1173,15 @@ public final class TpStatementParser extends TpTokenCursor {
         }
         case "WJNT" -> {
           return new Motion.Wjnt();
+        }
+        case "VOFFSET" -> {
+          if (!peek().is(Kind.COMMA) || !peek(1).isWord("VR") || !peek(2).is(Kind.LBRACKET)) {
+            // VOFFSET alone: the offset of a VOFFSET CONDITION, which RobotRun does not run
+            return rawOption(t, optionKind(w));
+          }
+          next();
+          next();
+          return new Motion.VisionOffset(item("VR"));
         }
         case "INC" -> {
           return new Motion.Inc();

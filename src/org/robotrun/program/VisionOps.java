@@ -8,7 +8,7 @@ import org.robotrun.program.Nodes.Idx;
 import org.robotrun.program.Ops.LabelTarget;
 import org.robotrun.program.Ops.Op;
 
-/** Compiled iRVision lines ({@link VisionStatement}): RUN_FIND, GET_OFFSET, GET_NFOUND, VR reads. */
+/** Compiled iRVision lines (docs/vision.md): RUN_FIND, GET_OFFSET, GET_NFOUND, VR reads, VOFFSET. */
 final class VisionOps {
   private VisionOps() {}
 
@@ -32,22 +32,47 @@ final class VisionOps {
         + "] holds no vision result (run VISION GET_OFFSET into it first)"));
   }
 
-  static void requireProcess(Interpreter m, String name) {
-    if (!m.vision.hasProcess(name)) {
-      throw alarm(AlarmCode.CVIS_015, "vision process '" + name + "' not found");
+  /**
+   * The vision process a statement names: a constant name, or SR[i]'s value when the line runs
+   * (CVIS-015 when the cell has no process of that name).
+   */
+  static final class Process {
+    private final String name;
+    private final Idx register;
+
+    Process(Instruction.VisionProcess p) {
+      switch (p) {
+        case Instruction.VisionProcessName n -> {
+          name = n.name();
+          register = null;
+        }
+        case Instruction.VisionProcessInRegister r -> {
+          name = null;
+          register = new Idx(r.register().index());
+        }
+      }
+    }
+
+    String resolve(Interpreter m) {
+      String n = name != null ? name : m.regs.string(Nodes.check("SR", register.resolve(m), Registers.SR_COUNT));
+      if (!m.vision.hasProcess(n)) {
+        throw alarm(AlarmCode.CVIS_015, "vision process '" + n + "' not found"
+            + (name != null ? "" : " (the name SR[" + register.resolve(m) + "] holds)"));
+      }
+      return n;
     }
   }
 
   static final class RunFind extends Op {
-    final String process;
+    final Process proc;
 
-    RunFind(String process) {
-      this.process = process;
+    RunFind(Process proc) {
+      this.proc = proc;
     }
 
     @Override
     int exec(Interpreter m) {
-      requireProcess(m, process);
+      String process = proc.resolve(m);
       switch (m.vision.runFind(process)) {
         case VisionPort.Outcome.Found f -> m.regs.vision().stored(process, f.results());
         case VisionPort.Outcome.Failed x -> throw new AlarmSignal(AlarmKind.VISION, x.code(), x.message());
@@ -57,19 +82,19 @@ final class VisionOps {
   }
 
   static final class GetOffset extends Op {
-    final String process;
+    final Process proc;
     final Idx vr;
     final LabelTarget none;
 
-    GetOffset(String process, Idx vr, LabelTarget none) {
-      this.process = process;
+    GetOffset(Process proc, Idx vr, LabelTarget none) {
+      this.proc = proc;
       this.vr = vr;
       this.none = none;
     }
 
     @Override
     int exec(Interpreter m) {
-      requireProcess(m, process);
+      String process = proc.resolve(m);
       int i = vrIndex(m, vr);
       Optional<VisionResult> next = m.regs.vision().next(process);
       if (next == null) {
@@ -86,17 +111,17 @@ final class VisionOps {
   }
 
   static final class GetNFound extends Op {
-    final String process;
+    final Process proc;
     final Idx target;
 
-    GetNFound(String process, Idx target) {
-      this.process = process;
+    GetNFound(Process proc, Idx target) {
+      this.proc = proc;
       this.target = target;
     }
 
     @Override
     int exec(Interpreter m) {
-      requireProcess(m, process);
+      String process = proc.resolve(m);
       int i = Nodes.check("R", target.resolve(m), Registers.R_COUNT);
       int n = m.regs.vision().found(process).orElseThrow(() -> alarm(AlarmCode.CVIS_018,
           "VISION GET_NFOUND '" + process + "' before its VISION RUN_FIND"));
@@ -129,10 +154,10 @@ final class VisionOps {
   static final class NumberFromVr extends Op {
     final Idx target;
     final Idx vr;
-    final VisionStatement.Field field;
+    final Instruction.VisionField field;
     final int element;
 
-    NumberFromVr(Idx target, Idx vr, VisionStatement.Field field, int element) {
+    NumberFromVr(Idx target, Idx vr, Instruction.VisionField field, int element) {
       this.target = target;
       this.vr = vr;
       this.field = field;
@@ -148,7 +173,7 @@ final class VisionOps {
         case ENC -> 0; // no conveyor tracking: the encoder count is 0
         case MES -> element == 1 ? r.score() : 0;
       };
-      boolean integer = field != VisionStatement.Field.MES || v == Math.rint(v);
+      boolean integer = field != Instruction.VisionField.MES || v == Math.rint(v);
       m.regs.r[i] = v;
       m.regs.rIsInteger[i] = integer;
       return Ops.NEXT;
@@ -176,14 +201,15 @@ final class VisionOps {
   }
 
   /** The op for a vision statement. */
-  static Op of(VisionStatement s, java.util.function.Function<LabelRef, LabelTarget> label) {
-    return switch (s) {
-      case VisionStatement.RunFind x -> new RunFind(x.process());
-      case VisionStatement.GetOffset x -> new GetOffset(x.process(), new Idx(x.register()), label.apply(x.label()));
-      case VisionStatement.GetNFound x -> new GetNFound(x.process(), new Idx(x.register()));
-      case VisionStatement.PositionFromVr x -> new PositionFromVr(new Idx(x.target()), new Idx(x.vr()), x.foundPos());
-      case VisionStatement.NumberFromVr x -> new NumberFromVr(new Idx(x.target()), new Idx(x.vr()), x.field(), x.element());
+  static Op of(Instruction in, java.util.function.Function<LabelRef, LabelTarget> label) {
+    return switch (in) {
+      case Instruction.VisionRunFind x -> new RunFind(new Process(x.process()));
+      case Instruction.VisionGetOffset x -> new GetOffset(new Process(x.process()), new Idx(x.vr().index()),
+          label.apply(x.label()));
+      case Instruction.VisionGetNFound x -> new GetNFound(new Process(x.process()), new Idx(x.register().index()));
+      case Instruction.AssignFromVr x -> new NumberFromVr(new Idx(x.register().index()), new Idx(x.vr().index()),
+          x.field(), x.element());
+      default -> throw new IllegalArgumentException("not a vision statement: " + in);
     };
   }
-
 }

@@ -12,7 +12,9 @@ import org.robotrun.math.Transform;
  * the wrist centre gives two J1 values, each with two (J2, J3) elbows; each of those four
  * arms has two wrists, so up to eight solutions, each labelled with a FANUC {@link Config}.
  * Targets are flange poses in the robot base frame B (mm); joint values in the kinematic
- * convention (rad), {@code q = sign·(θ_opw + offset)} as in {@link OpwParameters}.
+ * convention (rad), {@code q = sign·(θ_opw + offset)} as in {@link OpwParameters}. An arm whose
+ * base or flange frame is not where OPW puts it is solved for {@code X_BO⁻¹ · X_BF · X_F'F⁻¹}
+ * (the parameters' constant corrections); the result is still checked against the chain's FK.
  *
  * <h2>CONFIG flags for this family of arms</h2>
  * Let θ be the OPW angles of a joint vector ({@code θ = sign·q − offset}).
@@ -70,6 +72,14 @@ public final class ClosedFormIk implements IkSolver {
   private final double[] fk = new double[12];
   private final double[] cand = new double[6];
   private final double[] best = new double[6];
+  // Base and flange corrections (OpwParameters): X_OB and X_FF', and the target they give.
+  private final boolean corrected;
+  private final double[] xob = new double[12];
+  private final double[] xffp = new double[12];
+  private final double[] scratch = new double[12];
+  private final double[] opwTarget = new double[12];
+  /** Newton steps that finish each answer when the chain is OPW only to within rounding; else null. */
+  private final NewtonPolish polish;
 
   /** @throws IllegalArgumentException if the model has no OPW parameters */
   public ClosedFormIk(RobotModel model) {
@@ -84,6 +94,10 @@ public final class ClosedFormIk implements IkSolver {
     c2 = p.c2();
     c3 = p.c3();
     c4 = p.c4();
+    corrected = p.corrected();
+    polish = p.approximate() ? new NewtonPolish(chain) : null;
+    KinematicChain.pack(p.base().inverse(), xob, 0);
+    KinematicChain.pack(p.flange().inverse(), xffp, 0);
     kappa = Math.sqrt(a2 * a2 + c3 * c3);
     psi = Math.atan2(a2, c3);
     for (int i = 0; i < 6; i++) {
@@ -147,9 +161,10 @@ public final class ClosedFormIk implements IkSolver {
     // The arm is known from the flags alone: T is the front J1 solution, U the +acos elbow
     // (see the class comment), so only that arm's wrist is computed.
     int arm = (config.top() ? 0 : 2) + (config.up() ? 0 : 1);
-    int valid = solveBase(target, 0, 1 << arm);
+    double[] o6 = toOpw(target);
+    int valid = solveBase(o6, 0, 1 << arm);
     if (valid == 0) {
-      return solveBase(target, 0) == 0 ? outOfReach() : new IkResult.Unreachable(
+      return solveBase(o6, 0) == 0 ? outOfReach() : new IkResult.Unreachable(
           IkResult.Reason.OUT_OF_REACH,
           "the pose is out of reach in CONFIG '" + config + "' (only the other arm side reaches it)");
     }
@@ -198,7 +213,7 @@ public final class ClosedFormIk implements IkSolver {
     if (X_BF != target) {
       System.arraycopy(X_BF, 0, target, 0, 12);
     }
-    int valid = solveBase(target, sign[3] * qCurrent[3] - offset[3]);
+    int valid = solveBase(toOpw(target), sign[3] * qCurrent[3] - offset[3]);
     if (valid == 0) {
       return outOfReach();
     }
@@ -218,13 +233,14 @@ public final class ClosedFormIk implements IkSolver {
    */
   public Optional<IkResult.Unreachable> reachability(double[] X_BF) {
     System.arraycopy(X_BF, 0, target, 0, 12);
-    int valid = solveBase(target, 0);
+    double[] o6 = toOpw(target);
+    int valid = solveBase(o6, 0);
     if (valid == 0) {
       return Optional.of(outOfReach());
     }
     // The wrist centre on the J1 axis (a shoulder singularity): J1 is free there, but the base
     // solutions take it from the centre's meaningless azimuth, so the limits say nothing.
-    double cx = target[9] - c4 * target[2], cy = target[10] - c4 * target[5];
+    double cx = o6[9] - c4 * o6[2], cy = o6[10] - c4 * o6[5];
     if (cx * cx + cy * cy - b * b < SHOULDER_FREE_MM * SHOULDER_FREE_MM) {
       return Optional.empty();
     }
@@ -294,7 +310,7 @@ public final class ClosedFormIk implements IkSolver {
   @Override
   public List<Solution> allSolutions(Transform X_BF) {
     KinematicChain.pack(X_BF, target, 0);
-    int valid = solveBase(target, 0);
+    int valid = solveBase(toOpw(target), 0);
     List<Solution> out = new ArrayList<>();
     for (int k = 0; k < BASE_SOLUTIONS; k++) {
       if ((valid & (1 << k)) == 0) {
@@ -318,6 +334,9 @@ public final class ClosedFormIk implements IkSolver {
               q[i] = clampToLimits(q[i], i);
             }
             if (inside) {
+              if (polish != null) {
+                polish.polish(q, target);
+              }
               out.add(new Solution(q, configOf(q)));
             }
           }
@@ -335,12 +354,22 @@ public final class ClosedFormIk implements IkSolver {
    */
   public int solveAllBase(Transform X_BF, double[] out) {
     KinematicChain.pack(X_BF, target, 0);
-    int valid = solveBase(target, 0);
+    int valid = solveBase(toOpw(target), 0);
     System.arraycopy(base, 0, out, 0, base.length);
     return valid;
   }
 
   // ---------------------------------------------------------------------------------------
+
+  /** The packed target in OPW's frames ({@code X_OB · X · X_FF'}); {@code X} itself without corrections. */
+  private double[] toOpw(double[] X) {
+    if (!corrected) {
+      return X;
+    }
+    KinematicChain.compose(xob, X, scratch);
+    KinematicChain.compose(scratch, xffp, opwTarget);
+    return opwTarget;
+  }
 
   /** Fills {@link #base}; returns the validity mask. Brandstötter et al. 2014, eqs. for θ1..θ6. */
   private int solveBase(double[] X, double theta4Singular) {
@@ -507,6 +536,9 @@ public final class ClosedFormIk implements IkSolver {
   }
 
   private IkResult solved(double[] q) {
+    if (polish != null) {
+      polish.polish(q, target);
+    }
     chain.flangePose(q, fk, null);
     double dx = fk[9] - target[9], dy = fk[10] - target[10], dz = fk[11] - target[11];
     double pos = Math.sqrt(dx * dx + dy * dy + dz * dz);

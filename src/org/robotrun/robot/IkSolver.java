@@ -13,7 +13,8 @@ import org.robotrun.math.Transform;
  * <p>{@link #forModel} chooses the solver from the chain when a model is loaded: the OPW closed
  * form where the chain is ortho-parallel with a spherical wrist (parameters derived from the
  * chain, see {@link OpwDerivation}), the one-dimensional search of {@link OffsetWristIk} for
- * the CRX layout (offset wrist), else the numeric solver ({@link NumericSolver}). Solvers hold
+ * the CRX layout (offset wrist), the closed form of {@link UrTypeIk} for three parallel axes
+ * with an offset wrist (the UR layout), else the numeric solver ({@link NumericSolver}). Solvers hold
  * scratch arrays: one per thread.
  */
 public interface IkSolver {
@@ -24,7 +25,7 @@ public interface IkSolver {
   /** The model this solver was built for. */
   RobotModel model();
 
-  /** Which solver this is, for listings and reports: "closed-form", "offset-wrist", "numeric". */
+  /** Which solver this is, for listings and reports: "closed-form", "offset-wrist", "ur-type", "numeric". */
   String kind();
 
   /** The CONFIG of a joint vector. */
@@ -51,11 +52,15 @@ public interface IkSolver {
     if (OffsetWristIk.applies(model)) {
       return new OffsetWristIk(model);
     }
+    if (UrTypeIk.applies(model)) {
+      return new UrTypeIk(model);
+    }
     return new NumericSolver(model);
   }
 
   /** The solver kind {@link #forModel} picks, without building it. */
   static String kindFor(RobotModel model) {
-    return model.opw().isPresent() ? ClosedFormIk.KIND : OffsetWristIk.applies(model) ? OffsetWristIk.KIND : NumericSolver.KIND;
+    return model.opw().isPresent() ? ClosedFormIk.KIND : OffsetWristIk.applies(model) ? OffsetWristIk.KIND
+        : UrTypeIk.applies(model) ? UrTypeIk.KIND : NumericSolver.KIND;
   }
 }

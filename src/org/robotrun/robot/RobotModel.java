@@ -21,6 +21,8 @@ import org.robotrun.math.Transform;
  * @param links seven links: base and links 1..6
  * @param opw closed-form parameters, if the arm is ortho-parallel with a spherical wrist
  * @param coupledJ3 whether the pendant shows J3 coupled to J2 (FANUC convention)
+ * @param maxLinearSpeedMmPerSec the fastest TCP speed a program may ask for ($MRR_GRP.$SPEEDLIM, mm/s):
+ *     {@link #DEFAULT_MAX_LINEAR_SPEED_MM_PER_SEC} unless the robot's file says otherwise
  */
 public record RobotModel(
     String id,
@@ -30,9 +32,18 @@ public record RobotModel(
     Transform X_WB,
     List<LinkSpec> links,
     Optional<OpwParameters> opw,
-    boolean coupledJ3) {
+    boolean coupledJ3,
+    double maxLinearSpeedMmPerSec) {
 
   public static final int DOF = 6;
+  /** The controller's default $SPEEDLIM (mm/s): the top of the mm/sec range on an R-30iB. */
+  public static final double DEFAULT_MAX_LINEAR_SPEED_MM_PER_SEC = 2000;
+
+  /** A model with the controller's default maximum TCP speed. */
+  public RobotModel(String id, String displayName, List<JointSpec> joints, Transform X_6F, Transform X_WB,
+      List<LinkSpec> links, Optional<OpwParameters> opw, boolean coupledJ3) {
+    this(id, displayName, joints, X_6F, X_WB, links, opw, coupledJ3, DEFAULT_MAX_LINEAR_SPEED_MM_PER_SEC);
+  }
 
   public RobotModel {
     joints = List.copyOf(joints);
@@ -43,6 +54,18 @@ public record RobotModel(
     if (links.size() != DOF + 1) {
       throw new IllegalArgumentException("a robot needs 7 links (base and 6), got " + links.size());
     }
+    if (!(maxLinearSpeedMmPerSec >= 1 && maxLinearSpeedMmPerSec <= MAX_LINEAR_SPEED_LIMIT_MM_PER_SEC)) {
+      throw new IllegalArgumentException("maxLinearSpeed: expected 1 to " + (int) MAX_LINEAR_SPEED_LIMIT_MM_PER_SEC
+          + " mm/s, got " + maxLinearSpeedMmPerSec);
+    }
+  }
+
+  /** The largest maximum TCP speed a robot file may give (mm/s). */
+  public static final double MAX_LINEAR_SPEED_LIMIT_MM_PER_SEC = 10_000;
+
+  /** This model with another maximum TCP speed (mm/s). */
+  public RobotModel withMaxLinearSpeed(double mmPerSec) {
+    return new RobotModel(id, displayName, joints, X_6F, X_WB, links, opw, coupledJ3, mmPerSec);
   }
 
   /**
@@ -57,9 +80,13 @@ public record RobotModel(
     return opw.isEmpty() ? bare : new RobotModel(id, displayName, joints, X_6F, X_WB, links, opw, coupledJ3);
   }
 
-  /** "spherical" (the OPW closed form applies), "offset" (the CRX layout) or "other". */
+  /**
+   * "spherical" (the OPW closed form applies), "offset" (the CRX layout), "parallel" (three
+   * parallel axes and an offset wrist, the UR layout) or "other".
+   */
   public String wristKind() {
-    return opw.isPresent() ? "spherical" : OffsetWristIk.applies(this) ? "offset" : "other";
+    return opw.isPresent() ? "spherical" : OffsetWristIk.applies(this) ? "offset"
+        : UrTypeIk.applies(this) ? "parallel" : "other";
   }
 
   public JointSpec joint(int i) {

@@ -125,6 +125,10 @@ public final class BgLogic {
       case Instruction.AssignString a -> "an SR[] assignment";
       case Instruction.Monitor m -> "MONITOR";
       case Instruction.When w -> "WHEN";
+      case Instruction.VisionRunFind v -> "iRVision";
+      case Instruction.VisionGetOffset v -> "iRVision";
+      case Instruction.VisionGetNFound v -> "iRVision";
+      case Instruction.AssignFromVr v -> "vision registers VR[] in an expression";
       case Instruction.Unsupported u -> u.what();
     };
   }

@@ -56,7 +56,6 @@ final class CellCollisions {
   private Transform[] tools;
   /** Per robot: handles of its end effector's boxes (empty without one). */
   private int[][] toolHandles;
-  private final Transform[] X_CL = new Transform[Body.TOOL_LINK + 1];
   /** Per robot: the flange in the cell at the last check. */
   private final Transform[] X_CF;
   private final LinkPoses[] poses;
@@ -100,16 +99,14 @@ final class CellCollisions {
   /** Half size of the floor slab (mm): 20 m square, 10 mm thick. */
   static final double FLOOR_HALF_MM = 10_000;
 
-  CellCollisions(List<Controller> controllers, List<Transform> X_CW, CellState cell, double floorZ) {
+  /** @param poses per robot, its links in the cell (shared with the simulation's flange, computed once a tick) */
+  CellCollisions(List<Controller> controllers, LinkPoses[] poses, CellState cell, double floorZ) {
     this.controllers = controllers;
     this.cell = cell;
     this.floorZ = floorZ;
-    this.poses = new LinkPoses[controllers.size()];
+    this.poses = poses.clone();
     this.lastQ = new double[controllers.size()][];
     this.X_CF = new Transform[controllers.size()];
-    for (int r = 0; r < controllers.size(); r++) {
-      poses[r] = new LinkPoses(controllers.get(r).model(), X_CW.get(r));
-    }
     build();
   }
 
@@ -215,7 +212,7 @@ final class CellCollisions {
       moved = true;
       if (armMoved) {
         lastQ[r] = q;
-        poses[r].compute(q, X_CL);
+        Transform[] X_CL = poses[r].at(q);
         robots.get(r).moveTo(X_CL, collision);
         X_CF[r] = X_CL[Body.TOOL_LINK];
       }

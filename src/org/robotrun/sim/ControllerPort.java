@@ -221,6 +221,16 @@ public final class ControllerPort implements RobotControl {
   // ---- position and jog ----------------------------------------------------------------------
 
   @Override
+  public List<String> jointNames() {
+    return controller.model().joints().stream().map(org.robotrun.robot.JointSpec::name).toList();
+  }
+
+  @Override
+  public boolean coupledJ3() {
+    return controller.model().coupledJ3();
+  }
+
+  @Override
   public Position.Joint currentJoints() {
     return controller.currentJoints();
   }
@@ -324,6 +334,11 @@ public final class ControllerPort implements RobotControl {
   }
 
   // ---- switches -------------------------------------------------------------------------------
+
+  @Override
+  public double maxLinearSpeedMmPerSec() {
+    return controller.model().maxLinearSpeedMmPerSec();
+  }
 
   @Override
   public boolean tpEnabled() {

@@ -30,6 +30,8 @@ public final class Simulation {
   private final List<Transform> X_CW;
   private final CellState cell;
   private final Transform[] X_CF;
+  /** Per robot: its links and flange in the cell, computed once a tick for whoever needs them. */
+  private final LinkPoses[] linkPoses;
   private final double floorZ;
   private final double tickSec;
   private long ticks;
@@ -80,7 +82,9 @@ public final class Simulation {
     this.X_CW = List.copyOf(X_CW);
     this.cell = new CellState(world, this.controllers.stream().map(Controller::name).toList(), endEffectors);
     this.X_CF = new Transform[controllers.size()];
+    this.linkPoses = new LinkPoses[controllers.size()];
     for (int r = 0; r < controllers.size(); r++) {
+      linkPoses[r] = new LinkPoses(this.controllers.get(r).model(), this.X_CW.get(r));
       if (endEffectors.get(r).isPresent()) {
         // The end effector answers RI[1]; the controller's stand-in gripper must not.
         this.controllers.get(r).setDefaultGripperIo(false);
@@ -110,7 +114,8 @@ public final class Simulation {
     for (int r = 0; r < controllers.size(); r++) {
       if (cell.needsFlangePose(r)) {
         Controller c = controllers.get(r);
-        X_CF[r] = X_CW.get(r).compose(ForwardKinematics.flangePoseInWorld(c.model(), c.jointsRad()));
+        // the same chain the collision check moves the links by (one per robot per tick)
+        X_CF[r] = linkPoses[r].flange(c.jointsRad());
       }
     }
     boolean toolsMoved = cell.tick(controllers, X_CF, tickSec);
@@ -118,7 +123,7 @@ public final class Simulation {
     wiring.propagate();
     if (checkCollisions) {
       if (collisions == null) {
-        collisions = new CellCollisions(controllers, X_CW, cell, floorZ);
+        collisions = new CellCollisions(controllers, linkPoses, cell, floorZ);
       }
       List<CellCollisions.NewContact> began = collisions.check(toolsMoved);
       if (!began.isEmpty()) {

@@ -96,7 +96,8 @@ public final class HelpWindows {
     if (ImGui.begin("First steps##card", welcome, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse
         | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoSavedSettings)) {
       boolean hasTask = !task.isBlank();
-      int columns = hasTask && view.w() > ImGui.getFontSize() * 44 ? 4 : 3;
+      // side by side when the view is wide enough to read them so, else one under the other
+      int columns = view.w() < ImGui.getFontSize() * 30 ? 1 : hasTask && view.w() > ImGui.getFontSize() * 44 ? 4 : 3;
       if (ImGui.beginTable("steps", columns, ImGuiTableFlags.SizingStretchSame | ImGuiTableFlags.BordersInnerV)) {
         ImGui.tableNextRow();
         if (columns == 4) {
@@ -110,7 +111,7 @@ public final class HelpWindows {
             + "position. Shift+F9 FWD runs it while Shift is held.");
         ImGui.endTable();
       }
-      if (hasTask && columns == 3) {
+      if (hasTask && columns != 4) {
         Txt.wrapped("Your task: " + task);
       }
       if (ImGui.button("Got it")) {
@@ -118,7 +119,9 @@ public final class HelpWindows {
       }
       ImGui.sameLine();
       Txt.disabledWrapped("Every key: Help > Key map (Ctrl+H). Hover a pendant key to see its keyboard key. "
-          + "A course of graded labs: the Labs menu (start with lab 1). This card again: Help > First steps.", false);
+          + "A course of graded labs: the Labs menu (start with lab 1). This card again: Help > First steps."
+          // the task is on this card when the left column is hidden; the panels a task names are there
+          + (hasTask ? " The robot's position and the controller's panels: View > Side panel." : ""), false);
       welcomeHeight = ImGui.getWindowHeight();
       welcomeRect = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
           ImGui.getWindowHeight());

@@ -21,6 +21,11 @@ public final class LayoutState {
   public boolean robotOpen = true;
   public boolean cellOpen = true;
   public boolean editorOpen;
+  /**
+   * The panels the student showed or hid in the View menu ({@link PanelRules.Panel#key} to shown);
+   * a panel not in it follows {@link PanelRules}.
+   */
+  public final java.util.Map<String, Boolean> panels = new java.util.TreeMap<>();
 
   /** Back to the default layout (Help's first-start card stays dismissed). */
   public void reset() {
@@ -32,6 +37,7 @@ public final class LayoutState {
     robotOpen = true;
     cellOpen = true;
     editorOpen = false;
+    panels.clear();
   }
 
   public Properties toProperties() {
@@ -47,6 +53,7 @@ public final class LayoutState {
     p.setProperty("robotOpen", Boolean.toString(robotOpen));
     p.setProperty("cellOpen", Boolean.toString(cellOpen));
     p.setProperty("editorOpen", Boolean.toString(editorOpen));
+    panels.forEach((k, v) -> p.setProperty("panel." + k, Boolean.toString(v)));
     return p;
   }
 
@@ -63,6 +70,12 @@ public final class LayoutState {
     s.robotOpen = bool(p, "robotOpen", true);
     s.cellOpen = bool(p, "cellOpen", true);
     s.editorOpen = bool(p, "editorOpen", false);
+    for (PanelRules.Panel panel : PanelRules.Panel.values()) {
+      String v = p.getProperty("panel." + panel.key());
+      if (v != null && (v.trim().equals("true") || v.trim().equals("false"))) {
+        s.panels.put(panel.key(), Boolean.parseBoolean(v.trim()));
+      }
+    }
     return s;
   }
 

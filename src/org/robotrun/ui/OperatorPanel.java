@@ -11,7 +11,7 @@ import org.robotrun.pendant.Pendant;
  */
 public final class OperatorPanel {
   /** The section title. */
-  public static final String TITLE = "Operator panel";
+  public static final String TITLE = PanelRules.Panel.OPERATOR.title();
 
   private final java.util.function.Supplier<Pendant> pendantNow;
 

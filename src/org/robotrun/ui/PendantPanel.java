@@ -108,7 +108,7 @@ public final class PendantPanel {
       if (Math.abs(ImGui.getWindowWidth() - requestedWidth) > 0.5f) {
         userWidth = ImGui.getWindowWidth();
       }
-      float keyH = keyHeight(r.h());
+      float keyH = keyHeight(r.h(), Metrics.current());
       switches.draw();
       drawLcd();
       drawFunctionKeys(keyH);
@@ -119,17 +119,57 @@ public final class PendantPanel {
   }
 
   /**
-   * Key height so that the safety switches, the LCD, the function keys, the entry and nine key
-   * rows fit the height.
+   * The sizes the pendant's vertical layout depends on (display pixels): a text line with its
+   * spacing, a button's frame height, the frame height with spacing, the item spacing, the window
+   * padding.
    */
-  private static float keyHeight(float panelHeight) {
-    var style = ImGui.getStyle();
-    float lineH = ImGui.getTextLineHeightWithSpacing();
-    float lcd = lineH * Lcd.HEIGHT + 10 + style.getItemSpacingY();
-    float entry = 2 * ImGui.getFrameHeightWithSpacing() + 2;  // the text entry and the safety switches
-    float rows = 10;  // function keys + nine key rows
-    float left = panelHeight - 2 * style.getWindowPaddingY() - lcd - entry - rows * style.getItemSpacingY() - 4;
-    return Math.max(ImGui.getFrameHeight() - 2, Math.min(ImGui.getFrameHeight() * 1.6f, left / rows));
+  public record Metrics(float lineH, float frameH, float frameHWithSpacing, float spacingY, float paddingY) {
+    /** The current ImGui style's. */
+    static Metrics current() {
+      var style = ImGui.getStyle();
+      return new Metrics(ImGui.getTextLineHeightWithSpacing(), ImGui.getFrameHeight(), ImGui.getFrameHeightWithSpacing(),
+          style.getItemSpacingY(), style.getWindowPaddingY());
+    }
+
+    /** The smallest key height: a key keeps its legend's line. */
+    public float minKeyH() {
+      return frameH - 2;
+    }
+  }
+
+  /** Rows of keys: the function keys and the nine rows of the key block. */
+  static final int KEY_ROWS = 10;
+
+  /** Everything but the keys: padding, the safety switches, the LCD, the text entry, the spacing. */
+  private static float fixedHeight(Metrics m) {
+    float lcd = m.lineH() * Lcd.HEIGHT + 10 + m.spacingY();
+    float entry = 2 * m.frameHWithSpacing() + 2;  // the text entry and the safety switches
+    return 2 * m.paddingY() + lcd + entry + KEY_ROWS * m.spacingY() + 4;
+  }
+
+  /**
+   * Key height so that the safety switches, the LCD, the function keys, the entry and nine key
+   * rows fit the height (never below {@link Metrics#minKeyH}: below {@link #minimumHeight} the
+   * panel scrolls).
+   */
+  static float keyHeight(float panelHeight, Metrics m) {
+    float left = panelHeight - fixedHeight(m);
+    return Math.max(m.minKeyH(), Math.min(m.frameH() * 1.6f, left / KEY_ROWS));
+  }
+
+  /** The height the panel's contents take with keys {@code keyH} high. */
+  static float contentHeight(float keyH, Metrics m) {
+    return fixedHeight(m) + KEY_ROWS * keyH;
+  }
+
+  /** The least panel height at which every key, the jog keys and SHIFT included, shows. */
+  public static float minimumHeight(Metrics m) {
+    return contentHeight(m.minKeyH(), m);
+  }
+
+  /** {@link #minimumHeight(Metrics)} in the current style; needs a frame. */
+  public static float minimumHeight() {
+    return minimumHeight(Metrics.current());
   }
 
   private int drawnLcdHash;
@@ -148,8 +188,15 @@ public final class PendantPanel {
     ImGui.beginChild("lcd", 0, lineH * Lcd.HEIGHT + 10, true, ImGuiWindowFlags.NoScrollbar);
     lcdRect = new SimulatorWindow.Fill(ImGui.getWindowPosX(), ImGui.getWindowPosY(), ImGui.getWindowWidth(),
         ImGui.getWindowHeight(), LCD_BG_R, LCD_BG_G, LCD_BG_B);
+    String driven = pendant().robotLabel();  // a cell of several robots: the driven one's name
     for (int i = 0; i < Lcd.HEIGHT; i++) {
       String row = lcd.row(i);
+      if (i == 0 && !driven.isEmpty() && row.startsWith(driven)) {
+        // the name on the status line in the colour that marks the robot in the 3D view
+        float x = ImGui.getCursorScreenPosX(), y = ImGui.getCursorScreenPosY();
+        ImGui.getWindowDrawList().addRectFilled(x - 2, y, x + ImGui.calcTextSize(driven).x + 2, y + ImGui.getTextLineHeight(),
+            ImGui.colorConvertFloat4ToU32(DrivenRobotMark.R, DrivenRobotMark.G, DrivenRobotMark.B, 1f), 2f);
+      }
       if (lcd.isAlarmRow(i) && !row.isBlank()) {
         // the alarm line (a long alarm wraps onto the rows below)
         ImGui.pushStyleColor(ImGuiCol.Text, 0.75f, 0.05f, 0.05f, 1f);

@@ -16,12 +16,13 @@ import org.robotrun.world.ProductionSetup;
 /**
  * The PLC panel: the cell PLC's side of the UOP signals, driven by hand. Each UI input is a
  * switch (START and PROD_START act when switched off again: their falling edge); each UO output
- * is a lamp. Below: the PLC sequence's step, the running tasks with PAUSE, RESUME and ABORT, and
- * the BG Logic slots (the controller's MENU > SETUP > BG Logic) with START and STOP.
+ * is a lamp, with the PLC sequence's step. Two more sections of the left column: the running tasks
+ * with PAUSE, RESUME and ABORT ({@link #drawTasks}), and the BG Logic slots (the controller's MENU >
+ * SETUP > BG Logic) with START and STOP ({@link #drawBgLogic}).
  */
 public final class PlcPanel {
   /** The section title. */
-  public static final String TITLE = "PLC panel (UOP)";
+  public static final String TITLE = PanelRules.Panel.PLC.title();
 
   private final java.util.function.Supplier<Controller> robot;
   private Controller controller;
@@ -74,7 +75,7 @@ public final class PlcPanel {
         }
         ImGui.endTable();
       }
-      Txt.disabled("*IMSTP, *HOLD, *SFSPD stop when OFF.\nSTART and PROD_START act when switched OFF again.");
+      Txt.disabledWrapped("*IMSTP, *HOLD, *SFSPD stop when OFF. START and PROD_START act when switched OFF again.", false);
       ImGui.treePop();
     }
     ImGui.setNextItemOpen(setup.isPresent(), imgui.flag.ImGuiCond.Once);
@@ -94,8 +95,6 @@ public final class PlcPanel {
       }
       ImGui.treePop();
     }
-    drawTasks();
-    drawBgLogic();
   }
 
   /** Two columns of signals when the side panel is wide enough for their names, else one. */
@@ -103,9 +102,9 @@ public final class PlcPanel {
     return ImGui.getContentRegionAvailX() > 330 ? 2 : 1;
   }
 
-  private void drawTasks() {
-    ImGui.separator();
-    ImGui.textUnformatted("Tasks");
+  /** The running tasks with PAUSE, RESUME and ABORT: the "Tasks" section. */
+  public void drawTasks() {
+    controller = robot.get();
     ExecutionStatus main = controller.status();
     Txt.wrapped(String.format(Locale.ROOT, "main: %s line %d %s", main.program().isEmpty() ? "-" : main.program(),
         main.line(), main.state()));
@@ -132,9 +131,10 @@ public final class PlcPanel {
     }
   }
 
-  private void drawBgLogic() {
-    ImGui.separator();
-    ImGui.textUnformatted(String.format(Locale.ROOT, "BG Logic (scan %.0f ms, %d scans)", controller.bgLogic().scanSec() * 1000,
+  /** The BG Logic slots with START, STOP and REMOVE, and the programs a slot takes: the "BG Logic" section. */
+  public void drawBgLogic() {
+    controller = robot.get();
+    Txt.disabled(String.format(Locale.ROOT, "scan every %.0f ms, %d scans so far", controller.bgLogic().scanSec() * 1000,
         controller.bgLogic().scans()));
     for (BgLogic.Slot s : controller.bgLogic().slots()) {
       ImGui.textUnformatted(s.program() + (s.running() ? "  Running" : "  Stop"));
@@ -151,7 +151,8 @@ public final class PlcPanel {
     BgLogic.Offer offer = controller.bgLogic().offer(controller.programNames());
     List<String> names = offer.programs();
     if (names.isEmpty()) {
-      Txt.disabled("No program can run as BG Logic (see why below)");
+      Txt.disabledWrapped(controller.bgLogic().slots().isEmpty() ? "No program can run as BG Logic: \"Not offered\" says why"
+          : "No other program can run as BG Logic: \"Not offered\" says why", false);
     }
     if (!names.isEmpty()) {
       bgChoice = Math.max(0, Math.min(bgChoice, names.size() - 1));

@@ -71,6 +71,8 @@ public final class SimulatorWindow implements AutoCloseable {
   /** Read by other threads too (a benchmark's timer). */
   private volatile long frames;
   private float contentScale = 1f;
+  /** The least window size (window coordinates), once the first frame knows it; null before. */
+  private int[] minimumSize;
   /** After the last input, keep drawing this long (hover highlights, tooltips settle). */
   private static final long IDLE_AFTER_NANOS = 500_000_000L;
   /** While idle, draw once every this many seconds anyway. */
@@ -308,7 +310,13 @@ public final class SimulatorWindow implements AutoCloseable {
         charHandler.test(codepoint);
       }
     });
-    glfwSetWindowSizeCallback(window, (w, ww, wh) -> lastInputNanos = System.nanoTime());
+    glfwSetWindowSizeCallback(window, (w, ww, wh) -> {
+      lastInputNanos = System.nanoTime();
+      // without a window manager (or one that ignores the size limits) the window is put back
+      if (minimumSize != null && (ww < minimumSize[0] || wh < minimumSize[1])) {
+        glfwSetWindowSize(w, Math.max(ww, minimumSize[0]), Math.max(wh, minimumSize[1]));
+      }
+    });
     glfwSetWindowRefreshCallback(window, w -> lastInputNanos = System.nanoTime());
     // The close button asks first (unsaved work); a refusal keeps the window open.
     glfwSetWindowCloseCallback(window, w -> {
@@ -479,6 +487,20 @@ public final class SimulatorWindow implements AutoCloseable {
   /** Asks the loop to end after this frame. */
   public void close(boolean unused) {
     glfwSetWindowShouldClose(window, true);
+  }
+
+  /**
+   * The least size the window may be resized to (window coordinates; {@code {w, h}}). A window
+   * already smaller grows to it, as far as the screen allows.
+   */
+  public void setMinimumSize(int[] size) {
+    minimumSize = size.clone();
+    glfwSetWindowSizeLimits(window, size[0], size[1], GLFW_DONT_CARE, GLFW_DONT_CARE);
+    int[] w = new int[1], h = new int[1];
+    glfwGetWindowSize(window, w, h);
+    if (w[0] < size[0] || h[0] < size[1]) {
+      glfwSetWindowSize(window, Math.max(w[0], size[0]), Math.max(h[0], size[1]));
+    }
   }
 
   public void setTitle(String title) {

@@ -157,6 +157,9 @@ public final class VisionPanel implements Workbench.MenuContributor, AutoCloseab
         }
       }
       Txt.disabled(String.format(Locale.ROOT, "%d found   frame %.1f ms", found.size(), img.lastFrameNs() / 1e6));
+      for (String t : unplaced) {
+        Txt.colored(0.1f, 1f, 0.25f, 1f, t);
+      }
     }
     ImGui.end();
     if (!keep.get()) {
@@ -172,21 +175,50 @@ public final class VisionPanel implements Workbench.MenuContributor, AutoCloseab
     VisionSetup.Window win = cam.window();
     dl.addRect(x0 + (float) win.left() * s, y0 + (float) win.top() * s, x0 + (float) win.right() * s,
         y0 + (float) win.bottom() * s, windowColour, 0, 0, 1.5f);
-    for (VisionSystem.Label l : system().labels(cam)) {
+    List<VisionSystem.Label> labels = system().labels(cam);
+    float pad = 2;
+    List<LabelLayout.Label> boxes = new java.util.ArrayList<>(labels.size());
+    for (VisionSystem.Label l : labels) {
       double[] o = l.outline();
       for (int c = 0; c < 4; c++) {
         int d = (c + 1) % 4;
         dl.addLine(x0 + (float) o[2 * c] * s, y0 + (float) o[2 * c + 1] * s, x0 + (float) o[2 * d] * s,
             y0 + (float) o[2 * d + 1] * s, foundColour, 2f);
       }
-      float tx = x0 + (float) l.u() * s + 14;
-      float ty = y0 + (float) l.v() * s - 7;
       dl.addCircleFilled(x0 + (float) l.u() * s, y0 + (float) l.v() * s, 3, foundColour);
-      float tw = ImGui.calcTextSize(l.text()).x;
-      dl.addRectFilled(tx - 2, ty - 1, tx + tw + 2, ty + ImGui.getTextLineHeight() + 1, textBg);
-      dl.addText(tx, ty, foundColour, l.text());
+      double u0 = Double.MAX_VALUE, v0 = Double.MAX_VALUE, u1 = -Double.MAX_VALUE, v1 = -Double.MAX_VALUE;
+      for (int c = 0; c < 4; c++) {
+        u0 = Math.min(u0, o[2 * c] * s);
+        v0 = Math.min(v0, o[2 * c + 1] * s);
+        u1 = Math.max(u1, o[2 * c] * s);
+        v1 = Math.max(v1, o[2 * c + 1] * s);
+      }
+      // the part's outline: its label goes beside it, on no part, where there is room
+      boxes.add(new LabelLayout.Label(l.u() * s, l.v() * s, ImGui.calcTextSize(l.text()).x + 2 * pad,
+          ImGui.getTextLineHeight() + 2 * pad, new LabelLayout.Box(u0, v0, u1 - u0, v1 - v0)));
+    }
+    // no label over another or off the image; one moved away from its part gets a leader line
+    List<java.util.Optional<LabelLayout.Placed>> placed = LabelLayout.place(boxes, cam.widthPx() * s, cam.heightPx() * s,
+        List.of());
+    unplaced.clear();
+    for (int i = 0; i < labels.size(); i++) {
+      VisionSystem.Label l = labels.get(i);
+      if (placed.get(i).isEmpty()) {
+        unplaced.add(l.text());
+        continue;
+      }
+      LabelLayout.Box b = placed.get(i).get().box();
+      if (placed.get(i).get().leader()) {
+        double[] end = b.nearestPoint(l.u() * s, l.v() * s);
+        dl.addLine(x0 + (float) l.u() * s, y0 + (float) l.v() * s, x0 + (float) end[0], y0 + (float) end[1], foundColour, 1f);
+      }
+      dl.addRectFilled(x0 + (float) b.x(), y0 + (float) b.y(), x0 + (float) b.right(), y0 + (float) b.bottom(), textBg);
+      dl.addText(x0 + (float) b.x() + pad, y0 + (float) b.y() + pad, foundColour, l.text());
     }
   }
+
+  /** Found parts whose label found no room on the image this frame: listed under it. */
+  private final List<String> unplaced = new java.util.ArrayList<>();
 
   @Override
   public void close() {

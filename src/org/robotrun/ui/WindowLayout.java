@@ -42,6 +42,17 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
   }
 
   /**
+   * The smallest window (display pixels, width then height) in which the pendant shows whole: its
+   * natural width beside the 3D view's {@link #MIN_VIEW_FRACTION}, and the height its keys need
+   * under the menu bar.
+   */
+  public static int[] minimumSize(float menuBarHeight, float pendantNaturalWidth, float pendantMinimumHeight) {
+    return new int[] {
+      (int) Math.ceil(pendantNaturalWidth / (1 - MIN_VIEW_FRACTION)),
+      (int) Math.ceil(menuBarHeight + pendantMinimumHeight)};
+  }
+
+  /**
    * @param width window width (display pixels)
    * @param height window height (display pixels)
    * @param menuBarHeight height of the main menu bar

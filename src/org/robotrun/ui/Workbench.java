@@ -78,6 +78,13 @@ public final class Workbench implements SimulatorWindow.Panels {
   private int framebufferH;
   private boolean framed;
   private Runnable onLayoutChange = () -> {};
+  private int[] minimumSize = new int[0];
+  private java.util.function.Consumer<int[]> onMinimumSize = m -> {};
+
+  /** Told the least window size (display pixels, width and height) at which the whole pendant shows, when it changes. */
+  public void setMinimumSizeHandler(java.util.function.Consumer<int[]> handler) {
+    onMinimumSize = java.util.Objects.requireNonNull(handler, "handler");
+  }
 
   /**
    * @param editorPanel the cell editor, or null when the cell cannot be edited
@@ -104,17 +111,39 @@ public final class Workbench implements SimulatorWindow.Panels {
     pendantNow = java.util.Objects.requireNonNull(source, "source");
   }
 
-  /** Adds menus drawn in the main menu bar before View and Help (the File menu goes first). */
-  /** A section of the left column drawn by another part of the window (the operator panel), open at first. */
+  /** A section of the left column drawn by another part of the window (vision), after the robot's; open at first. */
   public void addSection(String title, Runnable drawContents) {
-    sections.add(new Section(title, drawContents));
+    sections.add(new Section(title, null, false, drawContents));
   }
 
-  private record Section(String title, Runnable drawContents) {}
+  /** A section drawn before the robot's (the robot selector: which robot the rest is about). */
+  public void addLeadSection(String title, Runnable drawContents) {
+    sections.add(new Section(title, null, true, drawContents));
+  }
+
+  /** A controller panel, shown after the robot's section when {@link PanelRules} (or the View menu) says so. */
+  public void addPanel(PanelRules.Panel panel, Runnable drawContents) {
+    sections.add(new Section(panel.title(), panel, false, drawContents));
+  }
+
+  /** What the cell uses now, for {@link PanelRules} (asked once a frame). */
+  public void setCellUse(Supplier<PanelRules.CellUse> use) {
+    cellUse = java.util.Objects.requireNonNull(use, "use");
+  }
+
+  private record Section(String title, PanelRules.Panel panel, boolean lead, Runnable drawContents) {}
 
   private final List<Section> sections = new ArrayList<>();
   private final java.util.Map<String, Boolean> sectionOpen = new java.util.HashMap<>();
+  private Supplier<PanelRules.CellUse> cellUse = () -> PanelRules.CellUse.FREE_PLAY;
+  private PanelRules.CellUse use = PanelRules.CellUse.FREE_PLAY;
 
+  /** Whether the left column shows {@code s} this frame. */
+  private boolean shown(Section s) {
+    return s.panel() == null || PanelRules.shown(s.panel(), use, state.panels);
+  }
+
+  /** Adds menus drawn in the main menu bar before View and Help (the File menu goes first). */
   public void addMenus(MenuContributor contributor) {
     menus.add(contributor);
   }
@@ -256,8 +285,15 @@ public final class Workbench implements SimulatorWindow.Panels {
     framebufferW = framebufferWidth;
     framebufferH = framebufferHeight;
     float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    use = cellUse.get();
     float menuH = drawMenuBar();
     layout = WindowLayout.compute(dw, dh, menuH, scale, PendantPanel.naturalWidth(), state);
+    int[] min = WindowLayout.minimumSize(menuH, PendantPanel.naturalWidth(), PendantPanel.minimumHeight());
+    if (!Arrays.equals(min, minimumSize)) {
+      // the window may not shrink below what the pendant's keys need (the style is known from the first frame)
+      minimumSize = min;
+      onMinimumSize.accept(min);
+    }
     // the first-start card is docked along the bottom of the 3D view: the scene is framed above it
     WindowLayout.Rect fullView = layout.view();
     float card = help.welcomeDock(fullView);
@@ -267,6 +303,7 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
     frameScene(dw, dh);
     drawSidebar(layout.sidebar());
+    drawDrivenRobotLabel();
     pendantPanel.draw(layout.pendant());
     float w = pendantPanel.takeUserWidth();
     if (w > 0) {
@@ -305,6 +342,94 @@ public final class Workbench implements SimulatorWindow.Panels {
       out.add(pendantPanel.lcdFill());
     }
     return out;
+  }
+
+  private SceneSnapshot lastScene;
+
+  /**
+   * The frame's scene as the 3D view draws it: in a cell of several robots, the robot the pendant
+   * drives tinted ({@link DrivenRobotMark}); its name label is drawn with the panels.
+   */
+  public SceneSnapshot marked(SceneSnapshot frameScene) {
+    String driven = pendantNow.get().robotLabel();  // set only in a cell of several robots
+    lastScene = frameScene;
+    return DrivenRobotMark.tinted(frameScene, driven, driven.isEmpty() ? 1 : 2);
+  }
+
+  /** The driven robot's name beside its base in the 3D view, off the work (a cell of several robots only). */
+  private void drawDrivenRobotLabel() {
+    String driven = pendantNow.get().robotLabel();
+    WindowLayout.Rect v = layout.view();
+    if (driven.isEmpty() || lastScene == null || !v.visible() || framebufferW <= 0 || framebufferH <= 0) {
+      return;
+    }
+    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    Matrix4f vp = camera.viewProjection(framebufferW, framebufferH);
+    String prefix = driven + "/";
+    float[] base = null;
+    List<LabelLayout.Box> work = new ArrayList<>();
+    List<Vector3f> pts = new ArrayList<>();
+    for (DrawItem it : lastScene.items()) {
+      if (it.name().startsWith(prefix)) {
+        if (base == null) {
+          // the first item of a robot is its base link
+          base = project(vp, (float) it.X_WS().x(), (float) it.X_WS().y(), (float) it.X_WS().z(), dw, dh);
+        }
+        continue;
+      }
+      if (it.name().equals(DrivenRobotMark.RING_NAME)) {
+        continue;  // the mark's own disc
+      }
+      pts.clear();
+      SceneBounds.addCorners(it, pts);
+      float x0 = Float.MAX_VALUE, y0 = Float.MAX_VALUE, x1 = -Float.MAX_VALUE, y1 = -Float.MAX_VALUE;
+      boolean behind = false;
+      for (Vector3f p : pts) {
+        float[] sp = project(vp, p.x, p.y, p.z, dw, dh);
+        if (sp == null) {
+          behind = true;
+          break;
+        }
+        x0 = Math.min(x0, sp[0]);
+        y0 = Math.min(y0, sp[1]);
+        x1 = Math.max(x1, sp[0]);
+        y1 = Math.max(y1, sp[1]);
+      }
+      if (!behind && !pts.isEmpty()) {
+        work.add(new LabelLayout.Box(x0 - v.x(), y0 - v.y(), x1 - x0, y1 - y0));
+      }
+    }
+    if (base == null) {
+      return;
+    }
+    float pad = 3;
+    float tw = ImGui.calcTextSize(driven).x + 2 * pad, th = ImGui.getTextLineHeight() + 2 * pad;
+    var place = DrivenRobotMark.labelPlace(base[0] - v.x(), base[1] - v.y(), tw, th, v.w(), v.h(), work);
+    if (place.isEmpty()) {
+      return;
+    }
+    LabelLayout.Box b = place.get().box();
+    float bx = v.x() + (float) b.x(), by = v.y() + (float) b.y();
+    int amber = ImGui.colorConvertFloat4ToU32(DrivenRobotMark.R, DrivenRobotMark.G, DrivenRobotMark.B, 1f);
+    imgui.ImDrawList dl = ImGui.getBackgroundDrawList();
+    dl.pushClipRect(v.x(), v.y(), v.right(), v.bottom());
+    if (place.get().leader()) {
+      double[] end = b.nearestPoint(base[0] - v.x(), base[1] - v.y());
+      dl.addLine(base[0], base[1], v.x() + (float) end[0], v.y() + (float) end[1], amber, 2f);
+    }
+    dl.addCircleFilled(base[0], base[1], 3, amber);
+    dl.addRectFilled(bx, by, bx + tw, by + th, amber, 3f);
+    dl.addText(bx + pad, by + pad, ImGui.colorConvertFloat4ToU32(0.05f, 0.05f, 0.05f, 1f), driven);
+    dl.popClipRect();
+  }
+
+  /** A cell point on the display (pixels), or null behind the camera. */
+  private static float[] project(Matrix4f vp, float x, float y, float z, float dw, float dh) {
+    Vector4f c = new Vector4f(x, y, z, 1).mul(vp);
+    if (c.w <= 0) {
+      return null;
+    }
+    return new float[] {(c.x / c.w * 0.5f + 0.5f) * dw, (0.5f - c.y / c.w * 0.5f) * dh};
   }
 
   /** Frames the scene in the free middle part; at the first frame, backs off until it all fits. */
@@ -364,6 +489,26 @@ public final class Workbench implements SimulatorWindow.Panels {
           state.editorOpen = !state.editorOpen;
           showSidebar();
         }
+        // the controller's panels: shown when the cell uses them, or as the student chose here
+        boolean first = true;
+        for (Section sec : sections) {
+          if (sec.panel() == null) {
+            continue;
+          }
+          if (first) {
+            ImGui.separator();
+            first = false;
+          }
+          boolean on = shown(sec);
+          if (ImGui.menuItem(sec.title(), "", on)) {
+            state.panels.put(sec.panel().key(), !on);
+            if (!on) {
+              sectionOpen.put(sec.title(), true);
+              showSidebar();
+            }
+            onLayoutChange.run();
+          }
+        }
         ImGui.separator();
         if (ImGui.menuItem("Reset view", "Home")) {
           camera.reset();
@@ -403,17 +548,13 @@ public final class Workbench implements SimulatorWindow.Panels {
       if (state.taskOpen) {
         Txt.wrapped(task.isBlank() ? "No task: this cell is free play. Help > First steps shows how to start." : task);
       }
-      for (Section extra : sections) {
-        boolean open = section(extra.title(), sectionOpen.getOrDefault(extra.title(), true));
-        sectionOpen.put(extra.title(), open);
-        if (open) {
-          extra.drawContents().run();
-        }
-      }
+      drawSections(true);
+      // the robot's position comes before the controller's panels
       state.robotOpen = section("Robot", state.robotOpen);
       if (state.robotOpen) {
         RobotStatusPanel.drawContents(robot.modelName(), robot.jointNames(), robot.pendantDeg(), robot.flangeInWorld());
       }
+      drawSections(false);
       state.cellOpen = section("Cell", state.cellOpen);
       if (state.cellOpen) {
         cellPanel.drawContents();
@@ -430,6 +571,19 @@ public final class Workbench implements SimulatorWindow.Panels {
     ImGui.end();
   }
 
+  private void drawSections(boolean lead) {
+    for (Section extra : sections) {
+      if (extra.lead() != lead || !shown(extra)) {
+        continue;
+      }
+      boolean open = section(extra.title(), sectionOpen.getOrDefault(extra.title(), true));
+      sectionOpen.put(extra.title(), open);
+      if (open) {
+        extra.drawContents().run();
+      }
+    }
+  }
+
   private static boolean section(String title, boolean open) {
     ImGui.setNextItemOpen(open, ImGuiCond.Always);
     return ImGui.collapsingHeader(title, ImGuiTreeNodeFlags.None);
@@ -442,7 +596,8 @@ public final class Workbench implements SimulatorWindow.Panels {
       return;
     }
     WindowLayout.Rect v = layout.view();
-    ImGui.setNextWindowPos(v.x() + 8, v.bottom() - 8, ImGuiCond.Always, 0f, 1f);
+    // centred along the bottom: the axis triad keeps the lower left corner
+    ImGui.setNextWindowPos(v.x() + v.w() / 2, v.bottom() - 8, ImGuiCond.Always, 0.5f, 1f);
     ImGui.setNextWindowBgAlpha(0.85f);
     ImGui.setNextWindowSizeConstraints(0, 0, Math.max(100, v.w() - 16), ImGui.getFontSize() * 15);
     if (ImGui.begin("##editmsg", ImGuiWindowFlags.NoDecoration | ImGuiWindowFlags.AlwaysAutoResize

@@ -109,6 +109,9 @@ public final class CellEditor {
   private State state;
   private final Deque<State> undo = new ArrayDeque<>();
   private final Deque<State> redo = new ArrayDeque<>();
+  /** What each undo and redo step did (the edit's own confirmation), so undoing can say what it took back. */
+  private final Deque<String> undoWhat = new ArrayDeque<>();
+  private final Deque<String> redoWhat = new ArrayDeque<>();
   private final MeshLoader meshes;
   private long revision;
 
@@ -501,8 +504,10 @@ public final class CellEditor {
     }
     redo.push(state);
     state = undo.pop();
+    String what = undoWhat.pop();
+    redoWhat.push(what);
     revision++;
-    return new Result.Done("undone");
+    return new Result.Done("undone: " + what);
   }
 
   public Result redo() {
@@ -511,8 +516,10 @@ public final class CellEditor {
     }
     undo.push(state);
     state = redo.pop();
+    String what = redoWhat.pop();
+    undoWhat.push(what);
     revision++;
-    return new Result.Done("redone");
+    return new Result.Done("redone: " + what);
   }
 
   // ---- internals ---------------------------------------------------------------------------
@@ -549,10 +556,13 @@ public final class CellEditor {
 
   private Result apply(State next, String message) {
     undo.push(state);
+    undoWhat.push(message);
     while (undo.size() > UNDO_DEPTH) {
       undo.removeLast();
+      undoWhat.removeLast();
     }
     redo.clear();
+    redoWhat.clear();
     state = next;
     revision++;
     return new Result.Done(message);

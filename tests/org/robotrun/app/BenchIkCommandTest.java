@@ -66,6 +66,25 @@ class BenchIkCommandTest {
   }
 
   @Test
+  void urdfArmsGetTheirClosedFormsThroughTheBench() throws Exception {
+    // A UR-layout package and a FANUC chain in the ROS-I layout with only a flange link (a flange correction).
+    Path ur = org.robotrun.io.TestArms.offsetPackage(dir);
+    Run r = run("bench", "ik", "--robot", ur.toString(), "--generate", "300", "--seed", "24", "--warmup", "1", "--warmup-ms", "0");
+    assertThat(r.code()).as(r.err()).isZero();
+    assertThat(r.out()).matches("solved=300/300 in_limits=300/300 same_config=300/300 median_us=[0-9.]+ p99_us=[0-9.]+ robot=ur_like solver=ur-type\\R");
+    Run forced = run("bench", "ik", "--robot", ur.toString(), "--generate", "5", "--solver", "ur-type", "--warmup", "0", "--warmup-ms", "0");
+    assertThat(forced.code()).isZero();
+    Run wrong = run("bench", "ik", "--robot", "lrmate200id", "--generate", "5", "--solver", "ur-type");
+    assertThat(wrong.err().strip()).isEqualTo(
+        "robotrun: lrmate200id does not have three parallel axes with an offset wrist: use --solver auto or numeric");
+    Path fanuc = dir.resolve("m10ia_flange.urdf");
+    org.robotrun.io.RosIndustrialLayoutTest.writeLayout(fanuc, "m10ia", "FLANGE_ONLY");
+    Run f = run("bench", "ik", "--robot", fanuc.toString(), "--generate", "300", "--seed", "24", "--warmup", "1", "--warmup-ms", "0");
+    assertThat(f.out()).as(f.err()).matches(
+        "solved=300/300 in_limits=300/300 same_config=300/300 median_us=[0-9.]+ p99_us=[0-9.]+ robot=m10ia_flange_only solver=closed-form\\R");
+  }
+
+  @Test
   void aClosedFormAskedOfAnOffsetWristArmIsOneLine() {
     Run r = run("bench", "ik", "--robot", "crx10ia", "--generate", "5", "--solver", "closed-form");
     assertThat(r.code()).isEqualTo(1);
@@ -123,7 +142,7 @@ class BenchIkCommandTest {
   void unknownSolverIsABadArgument() throws Exception {
     Run r = run("bench", "ik", "--targets", smallTargets(1).toString(), "--solver", "magic");
     assertThat(r.code()).isEqualTo(2);
-    assertThat(r.err()).contains("--solver: expected auto, closed-form, offset-wrist, numeric or resolved-rate");
+    assertThat(r.err()).contains("--solver: expected auto, closed-form, offset-wrist, ur-type, numeric or resolved-rate");
   }
 
   @Test

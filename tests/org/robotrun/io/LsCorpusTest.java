@@ -155,13 +155,16 @@ class LsCorpusTest {
   @Test
   void unsupportedFormsAreKeptAndReportedOncePerKind() throws IOException {
     LsReadResult r = LsReader.read(CORPUS.resolve("VIS_PICK.LS"));
-    assertThat(r.program().lines()).filteredOn(in -> in instanceof Instruction.Unsupported).hasSize(9);
-    // The iRVision lines (1-5) run since issue 16: kept as written, not reported; palletizing still is.
+    assertThat(r.program().lines()).filteredOn(in -> in instanceof Instruction.Unsupported).hasSize(5);
+    // The iRVision lines (1-5) run since issue 16 and are statements of the grammar since issue 23: not
+    // reported; palletizing still is.
     assertThat(r.diagnostics()).noneMatch(d -> d.message().contains("iRVision") || d.message().contains("VR[]")
         || d.message().contains("VOFFSET"));
     assertThat(r.diagnostics()).filteredOn(d -> d.message().startsWith("not supported: palletizing")).hasSize(1);
     Instruction.Move vmove = (Instruction.Move) r.program().line(5);
-    assertThat(vmove.options()).containsExactly(new Motion.RawOption("VOFFSET,VR[1]", "vision offset VOFFSET"));
+    assertThat(vmove.options()).containsExactly(new Motion.VisionOffset(org.robotrun.program.Item.of(1)));
+    assertThat(r.program().line(3)).isEqualTo(new Instruction.VisionGetOffset(
+        new Instruction.VisionProcessName("FIND_PARTS"), org.robotrun.program.Item.of(1), org.robotrun.program.LabelRef.of(90)));
   }
 
   @Test

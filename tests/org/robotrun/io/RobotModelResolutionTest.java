@@ -80,6 +80,20 @@ class RobotModelResolutionTest {
   }
 
   @Test
+  void theMaximumTcpSpeedComesFromTheRobotFileAndIsRangeChecked() throws Exception {
+    // the CRX's file gives 1000 mm/s; a file that does not say gets the controller's 2000
+    assertThat(RobotDefinitions.load("crx10ia").maxLinearSpeedMmPerSec()).isEqualTo(1000);
+    assertThat(RobotDefinitions.load("lrmate200id").maxLinearSpeedMmPerSec()).isEqualTo(2000);
+    Path f = ownRobotFile();
+    Files.writeString(f, Files.readString(f).replace("\"maxLinearSpeed\": 1000", "\"maxLinearSpeed\": 1500"));
+    assertThat(RobotDefinitions.resolve(f.toString(), null).maxLinearSpeedMmPerSec()).isEqualTo(1500);
+    Files.writeString(f, Files.readString(f).replace("\"maxLinearSpeed\": 1500", "\"maxLinearSpeed\": 0"));
+    assertThatThrownBy(() -> RobotDefinitions.resolve("robots/my-crx.json", dir))
+        .isInstanceOf(FileFormatException.class)
+        .hasMessageContaining("my-crx.json").hasMessageContaining("maxLinearSpeed: expected 1 to 10000 mm/s, got 0");
+  }
+
+  @Test
   void aChainThatIsNeitherOpwNorTheCrxLayoutGetsTheNumericSolver() throws Exception {
     Path f = ownRobotFile();
     // Move J5 off the J4 axis: no spherical wrist, no CRX layout.

@@ -37,4 +37,29 @@ class StateJsonTest {
     // A plain scenario read checks the section too (and ignores it when it is good).
     assertThat(ScenarioReader.read(f)).isInstanceOf(ScenarioLoad.Failed.class);
   }
+
+  @Test
+  void theStateSpeaksTheScenarioReadersMessagesWithFileLineAndPath(@TempDir Path tmp) throws Exception {
+    // one set of JSON field helpers (JsonFieldReader): the same texts as the rest of the file
+    String base = Files.readString(Path.of("scenarios/empty-cell.json")).strip();
+    String withState = base.substring(0, base.lastIndexOf('}')) + """
+        ,
+          "state": {
+            "utool": 2.5,
+            "created": 7,
+            "registers": {"x": 1},
+            "robots": {"B": {"userFrames": {"11": {"x": 1, "y": 2, "z": 3}}, "colour": 1}}
+          }
+        }
+        """;
+    Path f = tmp.resolve("cell.json");
+    Files.writeString(f, withState);
+    String message = ((CellLoad.Failed) ScenarioReader.readCell(f)).message();
+    assertThat(message)
+        .contains("cell.json:").contains("state.utool: expected a whole number 0..10, got the number 2.5")
+        .contains("state.created: expected a string, got the number 7")
+        .contains("state.registers.x: expected a register number 1..200 as the key, got \"x\"")
+        .contains("state.robots.B.userFrames.11: expected a user frame number 1..10 as the key, got \"11\"")
+        .contains("state.robots.B.colour: unknown field (expected one of: ");
+  }
 }

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import org.robotrun.program.TpText;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Index;
 import org.robotrun.program.IoKind;
@@ -17,7 +18,7 @@ class ExprTextTest {
   @ValueSource(strings = {"R[2]+1", "(R[1]>2 AND DI[1]=ON)", "R[R[2:PTR]]*2.5", "(PR[10,3:STACK]-R[1] DIV 3)",
       "!F[3] OR (TIMER[1]>=1.5)", "-R[4] MOD 7", "AR[1]<>'PART_A'", "(GI[2]<=RO[1])", "-3", "R[1:COUNT]"})
   void formatOfParseGivesTheTextBack(String text) throws Exception {
-    assertThat(ExprText.format(ExprText.parse(text))).isEqualTo(text);
+    assertThat(TpText.expr(ExprText.parse(text))).isEqualTo(text);
   }
 
   @Test

@@ -9,13 +9,14 @@ import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Motion;
 import org.robotrun.program.Program;
 
 /** Every statement of the program model (one record per TP statement) can be entered with keys. */
 class InstructionReachabilityTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private static Set<Class<?>> statementTypes() {
@@ -76,7 +77,8 @@ class InstructionReachabilityTest {
     Set<Class<?>> seen = new HashSet<>();
     program().lines().forEach(i -> seen.add(i.getClass()));
     assertThat(seen).containsExactlyInAnyOrderElementsOf(statementTypes());
-    assertThat(statementTypes()).hasSize(42); // lang3's 40, RUN (Instruction.Run) and IF with an action (issue 25)
+    // lang3's 40, RUN (Instruction.Run), IF with an action (issue 25), the four iRVision statements (issue 23)
+    assertThat(statementTypes()).hasSize(46);
   }
 
   @Test
@@ -121,7 +123,7 @@ class InstructionReachabilityTest {
     }
     m = (Instruction.Move) program().line(1);
     assertThat(TpLine.text(m, program(), List.of()))
-        .isEqualTo("J PR[R[3]] R[4]sec CNT R[2] Offset Offset,PR[1] Tool_Offset,PR[1] ACC100 Skip,LBL[1] Wjnt INC");
+        .isEqualTo("J PR[R[3]] R[4]sec CNT R[2] Offset Offset,PR[1] Tool_Offset,PR[1] ACC100 Skip,LBL[1] Wjnt INC VOFFSET,VR[1]");
   }
 
   @Test

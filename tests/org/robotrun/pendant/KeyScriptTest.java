@@ -107,7 +107,7 @@ class KeyScriptTest {
         new KeyScript.Step.Input(2, org.robotrun.program.IoKind.DI, 3, true),
         new KeyScript.Step.Input(3, org.robotrun.program.IoKind.UI, 6, false),
         new KeyScript.Step.Input(4, org.robotrun.program.IoKind.UI, 8, true));
-    Pendant p = new Pendant(StandIn.control());
+    Pendant p = new Pendant(RealController.control());
     s.run(p, PendantKeys.clock(p), x -> {});
     assertThat(p.control().registers().bit(org.robotrun.program.IoKind.UI, 6)).isFalse();
     assertThat(p.control().registers().bit(org.robotrun.program.IoKind.UI, 8)).isTrue();
@@ -122,7 +122,7 @@ class KeyScriptTest {
   void showPrintsTheLcdWithTime() {
     KeyScript s = ((KeyScript.Parsed.Ok) parse("WAIT 0.5\nSHOW\n")).script();
     StringBuilder out = new StringBuilder();
-    Pendant p = new Pendant(StandIn.control());
+    Pendant p = new Pendant(RealController.control());
     s.run(p, PendantKeys.clock(p), out::append);
     assertThat(out.toString()).startsWith("-- SHOW (line 2, t=0.500 s) --").contains("SELECT");
     assertThat(out.toString().lines().filter(l -> l.startsWith("|"))).hasSize(Lcd.HEIGHT);

@@ -1,6 +1,8 @@
 package org.robotrun.pendant;
 
 import static org.assertj.core.api.Assertions.assertThat;
+
+import org.robotrun.control.RobotControl;
 import static org.robotrun.pendant.PendantKeys.run;
 
 import java.util.List;
@@ -8,7 +10,7 @@ import org.junit.jupiter.api.Test;
 
 /** Issue 29: a choice list opens on the field's current value, as a controller's does. */
 class PendantChoiceTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private String cursorRow() {

@@ -20,7 +20,7 @@ final class PendantKeys {
 
   /** The simulated time of {@code p}'s stand-in controller (the cell's stepper, in the real one). */
   static java.util.function.DoubleConsumer clock(Pendant p) {
-    return ((StandInRobotControl) p.control())::advance;
+    return p.control() instanceof StandInRobotControl s ? s::advance : RealController.clock(p.control());
   }
 
   /** Advances {@code p}'s stand-in controller by {@code dtSec}, the pendant following as in a key script's WAIT. */

@@ -8,6 +8,8 @@ import static org.robotrun.pendant.PendantKeys.run;
 import java.util.List;
 import java.util.OptionalDouble;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
+import org.robotrun.io.RobotDefinitions;
 import org.robotrun.program.Expr;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Instruction.FrameKind;
@@ -23,7 +25,7 @@ import org.robotrun.program.Program;
  * old value kept.
  */
 class PendantNumberEntryTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private String prompt() {
@@ -247,9 +249,43 @@ class PendantNumberEntryTest {
   }
 
   @Test
+  void theMmPerSecRangeEndsAtTheRobotsOwnMaximumFromTheControlPort() {
+    // a CRX's controller limits a TCP speed to 1000 mm/s (its model's $SPEEDLIM), not 2000
+    RobotControl control = RealController.control(RobotDefinitions.load("crx10ia"));
+    assertThat(control.maxLinearSpeedMmPerSec()).isEqualTo(1000);
+    Pendant p = new Pendant(control);
+    run(p, """
+        SELECT
+        F1
+        TYPE N
+        ENTER
+        F1
+        DOWN *2
+        ENTER
+        """);
+    Program before = control.program("N").orElseThrow();
+    run(p, "RIGHT *3\nTYPE 1500\nENTER\n");
+    assertThat(p.lcd().promptLine().strip()).isEqualTo("Speed 1500mm/sec: Value out of range, enter 1 to 1000 mm/sec");
+    assertThat(control.program("N").orElseThrow()).isEqualTo(before);
+    run(p, "TYPE 1000\nENTER\n");
+    assertThat(control.program("N").orElseThrow().line(1)).isInstanceOfSatisfying(Instruction.Move.class,
+        m -> assertThat(m.speed().value()).isEqualTo(new Motion.SpeedConst(1000)));
+    // the other linear units end at the same speed; ED_DEF checks the same way
+    assertThatThrownBy(() -> TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(6001), Motion.SpeedUnit.CM_PER_MIN), 1000))
+        .hasMessageEndingWith("1 to 6000 cm/min");
+    assertThatThrownBy(() -> TpLine.checkedSpeed(new Motion.Speed(new Motion.SpeedConst(2362.3), Motion.SpeedUnit.INCH_PER_MIN), 1000))
+        .hasMessageEndingWith("0.1 to 2362.2 inch/min");
+    assertThatThrownBy(() -> DefaultMotion.parse("L 1001mm/sec FINE", 1000)).hasMessageContaining("Value out of range");
+    assertThatCode(() -> DefaultMotion.parse("L 2000mm/sec FINE", 2000)).doesNotThrowAnyException();
+    // mm/sec chosen from the list brings the speed into this robot's range
+    assertThat(TpLine.speedInRange(new Motion.Speed(new Motion.SpeedConst(1800), Motion.SpeedUnit.MM_PER_SEC), 1000))
+        .isEqualTo(new Motion.Speed(new Motion.SpeedConst(1000), Motion.SpeedUnit.MM_PER_SEC));
+  }
+
+  @Test
   void choosingAUnitOrTypeBringsTheSpeedIntoItsRange() {
     Instruction.Move l = move(Motion.Type.L, 2000, Motion.SpeedUnit.MM_PER_SEC);
-    assertThat(TpLine.withType(l, Motion.Type.J).speed())
+    assertThat(TpLine.withType(l, Motion.Type.J, 2000).speed())
         .isEqualTo(new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.PERCENT));
     Program prog = Program.of("X", List.of(l), List.of());
     Field unit = TpLine.fields(l, prog, List.of()).get(SPEED_FIELD + 1);

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatCode;
 import java.util.List;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.LocalPosition;
 import org.robotrun.program.Motion;
@@ -22,7 +23,7 @@ class PendantRobustnessTest {
     Key[] keys = Key.values();
     for (long seed = 1; seed <= 4; seed++) {
       Random rnd = new Random(seed);
-      StandInRobotControl control = StandIn.control();
+      RobotControl control = RealController.control();
       control.saveProgram(sample());
       Pendant p = new Pendant(control);
       p.tap(Key.SELECT);
@@ -59,7 +60,7 @@ class PendantRobustnessTest {
         Key.PREV, Key.ITEM, Key.D1, Key.D2, Key.D3, Key.D5, Key.D9, Key.MINUS, Key.DOT, Key.BACKSPACE, Key.EDIT};
     for (long seed = 100; seed < 104; seed++) {
       Random rnd = new Random(seed);
-      StandInRobotControl control = StandIn.control();
+      RobotControl control = RealController.control();
       control.saveProgram(sample());
       Pendant p = new Pendant(control);
       p.tap(Key.SELECT);

@@ -5,13 +5,14 @@ import static org.robotrun.pendant.PendantKeys.body;
 import static org.robotrun.pendant.PendantKeys.run;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Config;
 import org.robotrun.program.Position;
 import org.robotrun.program.VisionResult;
 
 /** DATA → [TYPE] → Vision Reg: the list of VR[1..10] and the DETAIL page of one. */
 class PendantVisionRegistersTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   @Test

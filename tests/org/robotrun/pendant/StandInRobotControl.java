@@ -342,6 +342,18 @@ public final class StandInRobotControl implements RobotControl {
     return Optional.empty();
   }
 
+  private double maxLinearSpeedMmPerSec = 2000;
+
+  @Override
+  public double maxLinearSpeedMmPerSec() {
+    return maxLinearSpeedMmPerSec;
+  }
+
+  /** The model's maximum TCP speed (mm/s) this stand-in reports (a CRX's 1000, say). */
+  public void setMaxLinearSpeedMmPerSec(double mmPerSec) {
+    maxLinearSpeedMmPerSec = mmPerSec;
+  }
+
   @Override
   public boolean tpEnabled() {
     return tpEnabled;

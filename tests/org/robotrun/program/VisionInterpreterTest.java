@@ -115,6 +115,54 @@ class VisionInterpreterTest {
   }
 
   @Test
+  void aProcessNamedByAStringRegisterRuns() {
+    FakeVision v = new FakeVision();
+    v.results.add(result(4, 10, 20, 0, 0));
+    Rig rig = rig(v, program(0,
+        "  SR[1]='FIND'",
+        "  SR[2]=SR[1]",
+        "  VISION RUN_FIND SR[1]",
+        "  VISION GET_NFOUND SR[2:PROC] R[3]",
+        "  VISION GET_OFFSET SR[2] VR[1] JUMP,LBL[9]",
+        "  R[4]=VR[1].MODELID",
+        "  VISION GET_OFFSET SR[R[5]] VR[1] JMP LBL[9]",
+        "  R[6]=1",
+        "  LBL[9]"));
+    rig.regs.setInteger(5, 1);
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    assertThat(v.runs).isEqualTo(1);
+    assertThat(rig.regs.number(3)).isEqualTo(1);
+    assertThat(rig.regs.number(4)).isEqualTo(4);
+    // the second GET_OFFSET found nothing more: the jump skipped R[6]=1
+    assertThat(rig.regs.number(6)).isEqualTo(0);
+  }
+
+  @Test
+  void aStringRegisterNamingNoProcessIsCvis015NamingTheRegister() {
+    Alarm a = alarm(new FakeVision(), program(0, "  SR[3]='NOPE'", "  VISION RUN_FIND SR[3]"));
+    assertThat(a.code()).isEqualTo("CVIS-015");
+    assertThat(a.message()).contains("'NOPE'").contains("SR[3]");
+    assertThat(a.line()).isEqualTo(2);
+  }
+
+  @Test
+  void theVisionFormsAreStatementsOfTheGrammar() {
+    Program p = program(0,
+        "  VISION RUN_FIND SR[1]",
+        "  VISION GET_OFFSET 'FIND' VR[R[2]:N] JMP,LBL[9:NONE]",
+        "  PR[3:OFS]=VR[1].FOUND_POS[1]",
+        "L P[1] 100mm/sec FINE VOFFSET,VR[1] Wjnt",
+        "  LBL[9:NONE]");
+    assertThat(p.line(1)).isEqualTo(new Instruction.VisionRunFind(new Instruction.VisionProcessInRegister(Item.of(1))));
+    assertThat(p.line(2)).isEqualTo(new Instruction.VisionGetOffset(new Instruction.VisionProcessName("FIND"),
+        new Item(new Index.Indirect(2, ""), "N"), new LabelRef(Index.of(9), "NONE")));
+    assertThat(p.line(3)).isEqualTo(new Instruction.AssignPosReg(Item.of(3, "OFS"),
+        new Instruction.FromVisionRegister(Item.of(1), true)));
+    assertThat(((Instruction.Move) p.line(4)).options()).containsExactly(new Motion.VisionOffset(Item.of(1)),
+        new Motion.Wjnt());
+  }
+
+  @Test
   void anUnknownProcessIsCvis015() {
     Alarm a = alarm(new FakeVision(), program(0, "  VISION RUN_FIND 'NOPE'"));
     assertThat(a.code()).isEqualTo("CVIS-015");

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Vec3;
@@ -22,6 +23,9 @@ class VisionPickTest {
     return CellRig.cell(LAB.withVision(LAB.vision().withSeed(seed)));
   }
 
+  // Left out of the mutation run (-Pmutation, docs/testing.md): fifty whole lab runs for each
+  // mutant it covers; the other two tests here run the same program.
+  @Tag("mutation-slow")
   @Test
   void exampleProgramPlacesEveryBlockOnTheTrayForFiftySeeds() {
     assertThat(failures(1, 50)).isEmpty();

@@ -48,6 +48,39 @@ class WindowLayoutTest {
     assertThat(dragged.view().w()).isGreaterThanOrEqualTo(1366 * WindowLayout.MIN_VIEW_FRACTION - 0.01f);
   }
 
+  /** ImGui's default font and style at scale 1 (13 px font), and at a HiDPI scale of 2. */
+  private static final PendantPanel.Metrics SCALE1 = new PendantPanel.Metrics(17, 19, 23, 4, 8);
+  private static final PendantPanel.Metrics SCALE2 = new PendantPanel.Metrics(34, 38, 46, 8, 16);
+
+  /** Every key row fits the pendant's height: the last row (jog -/+6, the override keys, SHIFT) is inside. */
+  private static void assertEveryKeyShows(WindowLayout l, PendantPanel.Metrics m, float natural) {
+    float keyH = PendantPanel.keyHeight(l.pendant().h(), m);
+    assertThat(keyH).isGreaterThanOrEqualTo(m.minKeyH());
+    assertThat(PendantPanel.contentHeight(keyH, m)).isLessThanOrEqualTo(l.pendant().h());
+    assertThat(l.pendant().w()).as("the LCD's 64 columns").isGreaterThanOrEqualTo(natural);
+  }
+
+  @Test
+  void theJogAndFunctionKeysShowAt1024x640AndAtTheWindowsMinimumSize() {
+    assertEveryKeyShows(at(1024, 640, new LayoutState()), SCALE1, PENDANT);
+    int[] min = WindowLayout.minimumSize(MENU, PENDANT, PendantPanel.minimumHeight(SCALE1));
+    assertEveryKeyShows(at(min[0], min[1], new LayoutState()), SCALE1, PENDANT);
+    // the left column forced open on the smallest window still leaves the pendant whole
+    LayoutState side = new LayoutState();
+    side.sidebarVisible = true;
+    assertEveryKeyShows(at(min[0], min[1], side), SCALE1, PENDANT);
+    // the minimum is no larger than it must be: a pixel less and the last row would be cut
+    float keyH = PendantPanel.keyHeight(min[1] - 1 - MENU, SCALE1);
+    assertThat(PendantPanel.contentHeight(keyH, SCALE1)).isGreaterThan(min[1] - 1 - MENU);
+    assertThat(min[0]).isLessThanOrEqualTo(1024);
+    assertThat(min[1]).isLessThanOrEqualTo(640);
+
+    // at scale 2 the minimum doubles with the style, and the keys still show there
+    int[] min2 = WindowLayout.minimumSize(2 * MENU, 2 * PENDANT, PendantPanel.minimumHeight(SCALE2));
+    WindowLayout hi = WindowLayout.compute(min2[0], min2[1], 2 * MENU, 2f, 2 * PENDANT, new LayoutState());
+    assertEveryKeyShows(hi, SCALE2, 2 * PENDANT);
+  }
+
   @Test
   void shrinkingThenGrowingGivesBackTheSameLayout() {
     LayoutState s = new LayoutState();

@@ -147,6 +147,17 @@ class CellEditorTest {
   }
 
   @Test
+  void undoAndRedoSayWhatTheyTookBackOrDidAgain() {
+    Result set = ed.addBox();
+    Result z = ed.setNumber("box1", NumberField.Z, 30);
+    String zDone = ((Result.Done) z).message();
+    assertThat(((Result.Done) ed.undo()).message()).isEqualTo("undone: " + zDone);
+    assertThat(((Result.Done) ed.undo()).message()).isEqualTo("undone: " + ((Result.Done) set).message());
+    assertThat(((Result.Done) ed.redo()).message()).isEqualTo("redone: " + ((Result.Done) set).message());
+    assertThat(((Result.Done) ed.redo()).message()).isEqualTo("redone: " + zDone);
+  }
+
+  @Test
   void aRefusedEditLeavesNothingToUndo() {
     ed.setNumber("table", NumberField.X, "oops");
     assertThat(ed.canUndo()).isFalse();
