@@ -21,6 +21,7 @@ import picocli.CommandLine.Command;
       BenchWorkspaceCommand.class,
       BenchVisionCommand.class,
       BenchImportCommand.class,
+      BenchWindowCommand.class,
     })
 public final class BenchCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

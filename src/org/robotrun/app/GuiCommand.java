@@ -102,6 +102,14 @@ public final class GuiCommand implements Callable<Integer> {
   @Option(names = "--quit-after-frames", hidden = true, defaultValue = "0")
   int quitAfterFrames;
 
+  /** {@code robotrun bench window} runs the window with these: seconds per phase ({@link WindowBench}). */
+  @Option(names = "--bench-seconds", hidden = true, defaultValue = "0")
+  double benchSeconds;
+
+  /** The program the bench's run phase runs. */
+  @Option(names = "--bench-program", hidden = true, defaultValue = "")
+  String benchProgram;
+
   /**
    * Everything one window session holds; tests drive it through {@link #open}. {@code workspace}
    * is null when the window shows a scenario without a workspace (tests).
@@ -230,17 +238,33 @@ public final class GuiCommand implements Callable<Integer> {
             }
           });
         }
-        run(s);
+        WindowBench benchmark = null;
+        if (benchSeconds > 0) {
+          benchmark = new WindowBench(s, benchSeconds, benchProgram, System.out);
+          benchmark.install();
+          benchSeconds = 0;  // the first session only
+        }
+        run(s, benchmark == null ? null : benchmark.simCpuNanos());
+        if (log) {
+          stage("window loop ended");
+        }
         if (System.getenv("ROBOTRUN_PRINT_LCD_ON_EXIT") != null) {
           // for the window test: what the pendant showed when the window closed
           System.out.println(s.pendant().render());
         }
-        problem = s.workspace().closeAndReport();
+        String saved = s.workspace().closeAndReport();
+        if (log) {
+          stage("workspace saved and closed");
+        }
+        problem = !saved.isEmpty() || benchmark == null ? saved : benchmark.problem();
         next = switchTo[0];
       }
     } finally {
       if (window != null) {
         window.close();
+        if (log) {
+          stage("window closed");
+        }
       }
     }
     if (!problem.isEmpty()) {
@@ -525,7 +549,7 @@ public final class GuiCommand implements Callable<Integer> {
         throw new UserError("--course: " + e.getMessage());
       }
     }
-    for (Path p : shippedCourses()) {
+    for (Path p : shipped("scenarios/labs/course.json")) {
       if (java.nio.file.Files.isRegularFile(p)) {
         try {
           return Course.read(p);
@@ -538,19 +562,22 @@ public final class GuiCommand implements Callable<Integer> {
     return null;
   }
 
-  /** Where the shipped course may be: beside the application (scenarios/labs), or in the current folder. */
-  private static List<Path> shippedCourses() {
+  /**
+   * Where a shipped file ({@code relative} to the project folder, e.g. scenarios/labs/course.json) may
+   * be: beside the application, or in the current folder.
+   */
+  static List<Path> shipped(String relative) {
     List<Path> out = new java.util.ArrayList<>();
     try {
       Path jar = Path.of(GuiCommand.class.getProtectionDomain().getCodeSource().getLocation().toURI());
       Path dir = jar.getParent();
       for (int up = 0; dir != null && up < 3; up++, dir = dir.getParent()) {
-        out.add(dir.resolve("scenarios/labs/course.json"));
+        out.add(dir.resolve(relative));
       }
     } catch (java.net.URISyntaxException | RuntimeException e) {
       // no code source: the current folder only
     }
-    out.add(Path.of("scenarios/labs/course.json"));
+    out.add(Path.of(relative));
     return out;
   }
 
@@ -621,6 +648,15 @@ public final class GuiCommand implements Callable<Integer> {
 
   /** Runs the window until it is closed, then saves its layout. */
   public static void run(Session s) {
+    run(s, null);
+  }
+
+  /**
+   * Runs the window until it is closed, then saves its layout; with {@code simCpuNanos}, adds to it
+   * the CPU time the window's thread spends stepping the simulation ({@code bench window}).
+   */
+  static void run(Session s, java.util.concurrent.atomic.AtomicLong simCpuNanos) {
+    var cpuClock = simCpuNanos == null ? null : ManagementFactory.getThreadMXBean();
     double[] last = {0};
     long[] appliedRevision = {s.editor() == null ? 0 : s.editor().revision()};
     double[][] prevQ = {allJoints(s.sim())};
@@ -631,8 +667,12 @@ public final class GuiCommand implements Callable<Integer> {
     s.window().run(t -> {
           // Real time drives the simulation (a stalled frame never makes it jump more than 0.1 s);
           // then the pendant in hand catches up with its controller.
+          long cpu0 = cpuClock == null ? 0 : cpuClock.getCurrentThreadCpuTime();
           s.stepper().advanceRealTime(t - last[0]);
           s.robots().get().follow();
+          if (cpuClock != null) {
+            simCpuNanos.addAndGet(cpuClock.getCurrentThreadCpuTime() - cpu0);
+          }
           last[0] = t;
           if (s.workspace() != null) {
             s.workspace().session.autosave.poll(System.nanoTime());

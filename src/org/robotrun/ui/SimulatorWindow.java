@@ -70,7 +70,8 @@ public final class SimulatorWindow implements AutoCloseable {
   private double pressX;
   private double pressY;
   private boolean dragged;
-  private long frames;
+  /** Read by other threads too (a benchmark's timer). */
+  private volatile long frames;
   private float contentScale = 1f;
   /** The least window size (window coordinates), once the first frame knows it; null before. */
   private int[] minimumSize;
@@ -78,6 +79,9 @@ public final class SimulatorWindow implements AutoCloseable {
   private static final long IDLE_AFTER_NANOS = 500_000_000L;
   /** While idle, draw once every this many seconds anyway. */
   private static final double IDLE_REDRAW_SEC = 5.0;
+  /** The shortest time between the starts of two frames: the screen's refresh period. */
+  private final long framePeriodNanos;
+  private long lastFrameStart;
 
   /** Receives keyboard events that no panel text field wants. */
   @FunctionalInterface
@@ -126,6 +130,7 @@ public final class SimulatorWindow implements AutoCloseable {
           + ": update the graphics driver or Mesa", true);
     }
     open[0] = true;
+    framePeriodNanos = Math.round(1e9 / refreshHz(glfwGetPrimaryMonitor()));
     glfwMakeContextCurrent(window);
     glfwSwapInterval(1);
     Configuration.OPENGL_EXPLICIT_INIT.set(true);
@@ -197,6 +202,13 @@ public final class SimulatorWindow implements AutoCloseable {
     float pixelRatio = ww[0] > 0 ? Math.max(1f, fbw[0] / (float) ww[0]) : 1f;
     float s = Math.max(sx[0], sy[0]) / pixelRatio;
     return Math.max(1f, Math.min(4f, s));
+  }
+
+  /** The monitor's refresh rate (Hz), 60 when it does not say or says something odd. */
+  static int refreshHz(long monitor) {
+    org.lwjgl.glfw.GLFWVidMode mode = monitor == 0 ? null : glfwGetVideoMode(monitor);
+    int hz = mode == null ? 0 : mode.refreshRate();
+    return hz >= 24 && hz <= 500 ? hz : 60;
   }
 
   /** The window size to open with: what was asked for, or what fits the primary monitor. */
@@ -367,6 +379,13 @@ public final class SimulatorWindow implements AutoCloseable {
       // are drawn however slowly the start went, so nothing waits for the 5 s idle redraw.
       boolean starting = frames - firstFrameOfRun < 4;
       if (moreEdges || recentInput || starting || busy.getAsBoolean()) {
+        // No faster than the screen shows frames: where the swap does not wait for the
+        // display (a virtual X server, a driver with vsync off), sleep out the rest of the
+        // refresh period instead of drawing frames nobody sees.
+        long wait = lastFrameStart + framePeriodNanos - System.nanoTime();
+        if (wait > 0) {
+          java.util.concurrent.locks.LockSupport.parkNanos(wait);
+        }
         glfwPollEvents();
       } else {
         glfwWaitEventsTimeout(IDLE_REDRAW_SEC);
@@ -374,6 +393,7 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
         long t0 = System.nanoTime();
+        lastFrameStart = t0;
         SceneSnapshot snap = scene.snapshot((System.nanoTime() - start) / 1e9);
         long t1 = System.nanoTime();
         imguiGlfw.newFrame();
@@ -574,7 +594,17 @@ public final class SimulatorWindow implements AutoCloseable {
     mayClose = handler;
   }
 
-  /** Ends {@link #run} after the current frame, as the window's close button does. */
+  /**
+   * What the window's close button does: asks the close handler ({@link #setCloseHandler}: unsaved
+   * work), then ends {@link #run} after the current frame unless it refused.
+   */
+  public void closeButton() {
+    if (mayClose.getAsBoolean()) {
+      glfwSetWindowShouldClose(window, true);
+    }
+  }
+
+  /** Ends {@link #run} after the current frame, without asking the close handler. */
   public void requestClose() {
     glfwSetWindowShouldClose(window, true);
   }
