@@ -1,5 +1,6 @@
 package org.robotrun.app;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.robotrun.io.BoundedFiles;
@@ -20,7 +21,8 @@ final class InputFiles {
       return text.lines().toList();
     } catch (UnreadableFileException e) {
       if (e.getMessage().equals(BoundedFiles.NO_SUCH_FILE)) {
-        throw new UserError(option + ": no such file " + file);
+        throw new UserError(Files.isSymbolicLink(file) ? option + ": " + file + " is " + BoundedFiles.missing(file)
+            : option + ": no such file " + file);
       }
       throw new UserError(option + ": cannot read " + file + ": " + e.getMessage());
     } catch (FileFormatException e) {

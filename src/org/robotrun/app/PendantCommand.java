@@ -258,6 +258,16 @@ public final class PendantCommand implements Callable<Integer> {
         throw new UserError("--workspace: " + progs + " is not a folder (a workspace keeps its programs in "
             + "programs/); the script was not run, since nothing it did could be saved", Main.EXIT_FAILED);
       }
+      if (!s.workspace.readOnly() && s.workspace.cellBlocked()) {
+        // cell.json unreadable: the script would run on the default cell, not the workspace's
+        // (issue 26); the window may show the default cell, a script must not act on it.
+        Path cellFile = s.workspace.folder().resolve(org.robotrun.io.Workspace.CELL);
+        String problem = s.workspace.problems().isEmpty() ? "" : s.workspace.problems().get(0).lines().findFirst().orElse("") + "\n";
+        s.close();
+        throw new UserError(problem + "--workspace: " + cellFile + " cannot be read; the script was not run, "
+            + "since it would act on the default cell instead of the workspace's. Fix the file (or move it away) "
+            + "and run again", Main.EXIT_FAILED);
+      }
       if (!s.workspace.readOnly()) {
         return s;
       }

@@ -26,7 +26,9 @@ final class ScenarioFiles {
   /** Reads the scenario or throws one error listing every problem found (file:line: path: what). */
   static Scenario load(Path file) {
     if (!Files.exists(file)) {
-      throw new UserError("--scenario: no such file " + file);
+      throw new UserError(Files.isSymbolicLink(file)
+          ? "--scenario: " + file + " is " + org.robotrun.io.BoundedFiles.missing(file)
+          : "--scenario: no such file " + file);
     }
     return switch (ScenarioReader.read(file)) {
       case ScenarioLoad.Loaded l -> l.scenario();

@@ -29,6 +29,17 @@ public final class BoundedFiles {
   public static final String NO_SUCH_FILE = "no such file";
 
   /**
+   * Why {@code file} cannot be found, in words: {@link #NO_SUCH_FILE}, or, for a symbolic link
+   * whose target is missing or that loops back on itself, that it is such a link.
+   */
+  public static String missing(Path file) {
+    if (Files.isSymbolicLink(file)) {
+      return "a symbolic link that leads nowhere (its target is missing, or the links form a loop)";
+    }
+    return NO_SUCH_FILE;
+  }
+
+  /**
    * Reads all of {@code file}, refusing it when it holds more than {@code maxBytes}.
    *
    * @param what what the file should be, for the limit message ("scenario files", "STL meshes")

@@ -231,4 +231,36 @@ class WorkspaceCommandsTest {
     assertThat(r.err()).contains("programs is not a folder").contains("the script was not run");
     assertThat(Files.readString(programs)).isEqualTo("x");
   }
+
+  /** Issue 26: a cell.json that cannot be read let the script run on the default cell, exit 0. */
+  @Test
+  void aScriptOnAWorkspaceWhoseCellCannotBeReadIsRefusedAndTheFileKept(@TempDir Path tmp) throws Exception {
+    Path ws = tmp.resolve("ws");
+    Path keys = script(tmp);
+    assertThat(run("pendant", "--workspace", ws.toString(), "--keys", keys.toString()).exitCode()).isZero();
+    Path cell = ws.resolve("cell.json");
+    Files.writeString(cell, "{broken");
+    Run r = run("pendant", "--workspace", ws.toString(), "--keys", keys.toString());
+    assertThat(r.exitCode()).as(r.err()).isEqualTo(1);
+    assertThat(r.err()).contains("cell.json:1: not valid JSON").contains("the script was not run")
+        .doesNotContain("Exception");
+    assertThat(Files.readString(cell)).isEqualTo("{broken");
+  }
+
+  /** Issue 26: a scenario that is a loop of links was reported as "no such file". */
+  @Test
+  void aScenarioThatIsALoopOfLinksIsNamedSo(@TempDir Path tmp) throws Exception {
+    Path a = tmp.resolve("a.json");
+    Path b = tmp.resolve("b.json");
+    Files.createSymbolicLink(a, b);
+    Files.createSymbolicLink(b, a);
+    Path keys = script(tmp);
+    for (String[] args : new String[][] {{"run", "--scenario", a.toString()},
+        {"pendant", "--scenario", a.toString(), "--keys", keys.toString()}}) {
+      Run r = run(args);
+      assertThat(r.exitCode()).as(r.err()).isEqualTo(2);
+      assertThat(r.err()).as(args[0]).contains(a.toString()).contains("symbolic link").doesNotContain("no such file")
+          .doesNotContain("Exception");
+    }
+  }
 }
