@@ -574,18 +574,6 @@ public final class TaskReader {
 
     // ---- typed fields ----------------------------------------------------------------------
 
-    private Optional<Boolean> bool(JObject o, String key, String at) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        return Optional.empty();
-      }
-      if (!(v instanceof JBool b)) {
-        error(v.line(), join(at, key), "expected true or false, got " + v.describe());
-        return Optional.empty();
-      }
-      return Optional.of(b.value());
-    }
-
     private Optional<Double> number(JObject o, String key, String at, double min, double max) {
       LocatedJson v = o.members().get(key);
       if (v == null) {
@@ -623,10 +611,6 @@ public final class TaskReader {
         case JString s -> "\"" + s.value() + "\"";
         default -> v.describe();
       };
-    }
-
-    private static String plain(double d) {
-      return org.robotrun.math.DecimalText.plain(d);
     }
   }
 }

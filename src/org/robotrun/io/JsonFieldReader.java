@@ -142,4 +142,42 @@ public abstract class JsonFieldReader {
     }
     return Optional.of(s.value());
   }
+
+  /** The true/false field {@code key} of {@code o}, or empty when it is absent or (with an error) anything else. */
+  protected final Optional<Boolean> bool(JObject o, String key, String at) {
+    LocatedJson v = o.members().get(key);
+    if (v == null) {
+      return Optional.empty();
+    }
+    if (!(v instanceof LocatedJson.JBool b)) {
+      error(v.line(), join(at, key), "expected true or false, got " + v.describe());
+      return Optional.empty();
+    }
+    return Optional.of(b.value());
+  }
+
+  /**
+   * The number field {@code key} of {@code o} within {@code lo..hi}, or {@code fallback} when it
+   * is absent (an error when required) or (with an error) anything else.
+   */
+  protected final double number(JObject o, String key, String at, boolean required, double lo, double hi,
+      double fallback) {
+    LocatedJson v = o.members().get(key);
+    if (v == null) {
+      if (required) {
+        error(o.line(), join(at, key), "missing: expected a number " + plain(lo) + ".." + plain(hi));
+      }
+      return fallback;
+    }
+    if (!(v instanceof LocatedJson.JNumber n) || !Double.isFinite(n.value()) || n.value() < lo || n.value() > hi) {
+      error(v.line(), join(at, key), "expected a number " + plain(lo) + ".." + plain(hi) + ", got " + v.describe());
+      return fallback;
+    }
+    return n.value();
+  }
+
+  /** {@code v} in plain decimal digits (no exponent), as error messages write limits. */
+  protected static String plain(double v) {
+    return org.robotrun.math.DecimalText.plain(v);
+  }
 }

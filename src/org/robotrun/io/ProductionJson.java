@@ -95,8 +95,8 @@ public final class ProductionJson extends JsonFieldReader {
   private ProductionSetup.Robot robot(JObject o, String at) {
     int before = errors.size();
     ProductionSetup.Robot d = ProductionSetup.Robot.defaults();
-    boolean uop = bool(o, "uop", at, d.uopEnabled());
-    boolean remote = bool(o, "remote", at, d.remote());
+    boolean uop = bool(o, "uop", at).orElse(d.uopEnabled());
+    boolean remote = bool(o, "remote", at).orElse(d.remote());
     Selection selection = string(o, "selection", at, false).map(s -> selection(s, o, at)).orElse(Selection.OTHER);
     int pnsBase = integer(o, "pnsBase", at, 0, MAX_PROGRAM_NUMBER - 255, 0);
     int rsrBase = integer(o, "rsrBase", at, 0, MAX_PROGRAM_NUMBER, 0);
@@ -143,8 +143,8 @@ public final class ProductionJson extends JsonFieldReader {
       }
     }
     double ackSec = integer(o, "ackPulseMs", at, 1, 10_000, (int) Math.round(d.ackPulseSec() * 1000)) / 1000.0;
-    boolean contOnly = bool(o, "startForContinueOnly", at, false);
-    boolean cstopi = bool(o, "cstopiAborts", at, false);
+    boolean contOnly = bool(o, "startForContinueOnly", at).orElse(false);
+    boolean cstopi = bool(o, "cstopiAborts", at).orElse(false);
     Optional<String> home = string(o, "homeProgram", at, false).map(s -> s.toUpperCase(Locale.ROOT));
     if (home.isPresent() && !Program.isValidName(home.get())) {
       error(o.keyLines().get("homeProgram"), join(at, "homeProgram"), "'" + home.get() + "' is not a program name");
@@ -167,7 +167,7 @@ public final class ProductionJson extends JsonFieldReader {
     }
     double scanSec = integer(o, "bgScanMs", at, 4, 1000, 8) / 1000.0;
     List<PlcStep> plc = plc(o, at);
-    boolean fromPlc = bool(o, "runStartsFromPlc", at, false);
+    boolean fromPlc = bool(o, "runStartsFromPlc", at).orElse(false);
     // the selection needs its table
     if (selection == Selection.RSR && rsr.stream().allMatch(n -> n == 0)) {
       error(o.line(), join(at, "rsr"), "selection RSR needs at least one RSR program number (\"rsr\": [1, 2])");
@@ -255,7 +255,7 @@ public final class ProductionJson extends JsonFieldReader {
       if (w.isPresent()) {
         Signal sg = signal(w.get(), s.keyLines().get("waitFor"), join(p, "waitFor"), null);
         if (sg != null) {
-          waitFor = Optional.of(new AbstractMap.SimpleImmutableEntry<>(sg, bool(s, "state", p, true)));
+          waitFor = Optional.of(new AbstractMap.SimpleImmutableEntry<>(sg, bool(s, "state", p).orElse(true)));
         }
       } else if (s.members().containsKey("state")) {
         error(s.keyLines().get("state"), join(p, "state"), "\"state\" belongs to a \"waitFor\"");
@@ -312,18 +312,6 @@ public final class ProductionJson extends JsonFieldReader {
       return null;
     }
     return new Signal(kind.name(), i);
-  }
-
-  private boolean bool(JObject o, String key, String at, boolean dflt) {
-    LocatedJson v = o.members().get(key);
-    if (v == null) {
-      return dflt;
-    }
-    if (!(v instanceof JBool b)) {
-      error(v.line(), join(at, key), "expected true or false, got " + v.describe());
-      return dflt;
-    }
-    return b.value();
   }
 
   /** An array of {@code count} numbers (or of one, when {@code exact} is false); null after an error. */

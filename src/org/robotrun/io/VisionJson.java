@@ -232,7 +232,7 @@ public final class VisionJson extends JsonFieldReader {
       List<VisionSetup.Model> out) {
     int before = errors.size();
     String name = uniqueName(m, at, out.stream().map(VisionSetup.Model::name).toList(), "model");
-    int id = (int) number(m, "id", at, true, 1, 9999, 1);
+    int id = whole(m, "id", at, true, 1, 9999, 1);
     if (out.stream().anyMatch(x -> x.id() == id) && errors.size() == before) {
       error(m.members().get("id").line(), join(at, "id"), "model ID " + id + " is used by another model");
     }
@@ -307,7 +307,7 @@ public final class VisionJson extends JsonFieldReader {
         }
       }
     }
-    int uf = (int) number(p, "userFrame", at, false, 0, 10, 0);
+    int uf = whole(p, "userFrame", at, false, 0, 10, 0);
     Transform reference = pose(p, "reference", at);
     VisionSetup.ProcessType type = VisionSetup.ProcessType.TWO_D;
     Optional<String> t = string(p, "type", at, false);
@@ -319,7 +319,7 @@ public final class VisionJson extends JsonFieldReader {
             + t.get() + "\"");
       }
     }
-    int n = (int) number(p, "numberToFind", at, false, 1, 100, 1);
+    int n = whole(p, "numberToFind", at, false, 1, 100, 1);
     if (errors.size() > before || name == null || reference == null || camera.isEmpty()) {
       return;
     }
@@ -433,28 +433,16 @@ public final class VisionJson extends JsonFieldReader {
     return name.get();
   }
 
-  /** A number field within [lo, hi]; {@code fallback} when absent (an error when required) or bad. */
-  private double number(JObject o, String key, String at, boolean required, double lo, double hi, double fallback) {
+  /** A whole-number field within [lo, hi] (ID, user frame, count): {@link #number}, then whole. */
+  private int whole(JObject o, String key, String at, boolean required, int lo, int hi, int fallback) {
+    int before = errors.size();
+    double d = number(o, key, at, required, lo, hi, fallback);
     LocatedJson v = o.members().get(key);
-    if (v == null) {
-      if (required) {
-        error(o.line(), join(at, key), "missing: expected a number " + text(lo) + ".." + text(hi));
-      }
-      return fallback;
-    }
-    if (!(v instanceof JNumber n) || !Double.isFinite(n.value()) || n.value() < lo || n.value() > hi) {
-      error(v.line(), join(at, key), "expected a number " + text(lo) + ".." + text(hi) + ", got " + v.describe());
-      return fallback;
-    }
-    if (Set.of("id", "userFrame", "numberToFind").contains(key) && !n.integral()) {
+    if (errors.size() == before && v instanceof JNumber n && !n.integral()) {
       error(v.line(), join(at, key), "expected a whole number, got " + v.describe());
       return fallback;
     }
-    return n.value();
-  }
-
-  private static String text(double v) {
-    return org.robotrun.math.DecimalText.plain(v);
+    return (int) d;
   }
 
   /** {@code [min, max]} with |values| ≤ limit; null with an error when bad. */
@@ -472,13 +460,13 @@ public final class VisionJson extends JsonFieldReader {
     for (int k = 0; k < 2; k++) {
       LocatedJson v = a.items().get(k);
       if (!(v instanceof JNumber n) || !Double.isFinite(n.value()) || Math.abs(n.value()) > limit) {
-        error(v.line(), path + "[" + k + "]", "expected a number within +-" + text(limit) + ", got " + v.describe());
+        error(v.line(), path + "[" + k + "]", "expected a number within +-" + plain(limit) + ", got " + v.describe());
         return null;
       }
       out[k] = n.value();
     }
     if (out[0] > out[1]) {
-      error(a.line(), path, "expected [min, max] with min <= max, got [" + text(out[0]) + ", " + text(out[1]) + "]");
+      error(a.line(), path, "expected [min, max] with min <= max, got [" + plain(out[0]) + ", " + plain(out[1]) + "]");
       return null;
     }
     return out;

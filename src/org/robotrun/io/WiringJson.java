@@ -59,14 +59,14 @@ final class WiringJson {
         continue;
       }
       if (from.get().kind.group() != to.get().kind.group()) {
-        r.error(line, join(at, "to"), f + " is a " + (from.get().kind.group() ? "group (an integer)" : "bit (ON/OFF)")
+        r.error(line, JsonFieldReader.join(at, "to"), f + " is a " + (from.get().kind.group() ? "group (an integer)" : "bit (ON/OFF)")
             + " and " + t + " is a " + (to.get().kind.group() ? "group" : "bit") + ": wire bits to bits (DO to DI) and "
             + "groups to groups (GO to GI)");
         continue;
       }
       String earlier = driverOf.putIfAbsent(t.toString(), f + " (" + at + ")");
       if (earlier != null) {
-        r.error(line, join(at, "to"), t + " is already driven by " + earlier + ": an input takes one output");
+        r.error(line, JsonFieldReader.join(at, "to"), t + " is already driven by " + earlier + ": an input takes one output");
         continue;
       }
       out.add(new Wire(f, t));
@@ -150,10 +150,6 @@ final class WiringJson {
       case AI -> "an analog input";
       case AO -> "an analog output";
     };
-  }
-
-  private static String join(String at, String key) {
-    return JsonFieldReader.join(at, key);
   }
 
   /** Writes the section (nothing when there are no wires). */
