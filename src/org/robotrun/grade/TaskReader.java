@@ -257,8 +257,8 @@ public final class TaskReader {
       if (o == null) {
         return Task.Limits.DEFAULT;
       }
-      double sim = number(o, "simSeconds", "limits", 0.1, 3600).orElse(Task.Limits.DEFAULT.simSeconds());
-      double wall = number(o, "wallSeconds", "limits", 0.1, 3600).orElse(Task.Limits.DEFAULT.wallSeconds());
+      double sim = number(o, "simSeconds", "limits", false, 0.1, 3600).orElse(Task.Limits.DEFAULT.simSeconds());
+      double wall = number(o, "wallSeconds", "limits", false, 0.1, 3600).orElse(Task.Limits.DEFAULT.wallSeconds());
       return new Task.Limits(sim, wall);
     }
 
@@ -296,9 +296,9 @@ public final class TaskReader {
             error(j.members().get("part").line(), at + ".part", "part '" + p + "' is jittered twice");
           }
         });
-        double x = number(j, "xMm", at, 0, 1000).orElse(0.0);
-        double y = number(j, "yMm", at, 0, 1000).orElse(0.0);
-        double r = number(j, "rDeg", at, 0, 180).orElse(0.0);
+        double x = number(j, "xMm", at, false, 0, 1000).orElse(0.0);
+        double y = number(j, "yMm", at, false, 0, 1000).orElse(0.0);
+        double r = number(j, "rDeg", at, false, 0, 180).orElse(0.0);
         Optional<Integer> reg = integer(j, "offsetRegister", at, 1, org.robotrun.program.Registers.PR_COUNT, false)
             .map(Long::intValue);
         reg.ifPresent(n -> {
@@ -368,7 +368,7 @@ public final class TaskReader {
             error(o.members().get("name").line(), at + ".name", "check name \"" + n + "\" is used twice");
           }
         });
-        double points = number(o, "points", at, 0, 10000).orElse(0.0);
+        double points = number(o, "points", at, false, 0, 10000).orElse(0.0);
         if (!o.members().containsKey("points")) {
           error(o.line(), at + ".points", "missing: expected a number of points (0 or more)");
         }
@@ -421,16 +421,16 @@ public final class TaskReader {
           fixture.ifPresent(f -> checkObject(scenario, f, ObjectKind.FIXTURE, o.members().get("fixture").line(),
               at + ".fixture"));
           Vec3 p = position(o, at);
-          double tol = number(o, "toleranceMm", at, 0, 1000).orElse(2.0);
-          Optional<Double> r = number(o, "rDeg", at, -180, 180);
-          double tolDeg = number(o, "toleranceDeg", at, 0, 180).orElse(5.0);
+          double tol = number(o, "toleranceMm", at, false, 0, 1000).orElse(2.0);
+          Optional<Double> r = number(o, "rDeg", at, false, -180, 180);
+          double tolDeg = number(o, "toleranceDeg", at, false, 0, 180).orElse(5.0);
           yield new Check.PartAt(m, part.orElse(""), fixture.orElse(""), p, tol, r, tolDeg);
         }
         case "nothingHeld" -> new Check.NothingHeld(m);
         case "noneDropped" -> new Check.NoneDropped(m);
         case "noCollision" -> new Check.NoCollision(m, integer(o, "maxWarnings", at, 0, 1000, false).orElse(0L).intValue());
         case "noMotionStop" -> new Check.NoMotionStop(m);
-        case "cycleTime" -> new Check.CycleTime(m, number(o, "maxSec", at, 0.001, 3600).orElseGet(() -> {
+        case "cycleTime" -> new Check.CycleTime(m, number(o, "maxSec", at, false, 0.001, 3600).orElseGet(() -> {
           if (!o.members().containsKey("maxSec")) {
             error(o.line(), at + ".maxSec", "missing: expected the longest cycle time allowed, in seconds");
           }
@@ -443,13 +443,14 @@ public final class TaskReader {
               .map(l -> OptionalInt.of(l.intValue())).orElse(OptionalInt.empty());
           yield new Check.ProgramUse(m, requires, forbids, max);
         }
-        case "endState" -> new Check.EndState(m, values(o, at), number(o, "tolerance", at, 0, 1e6).orElse(1e-6));
+        case "endState" -> new Check.EndState(m, values(o, at), number(o, "tolerance", at, false, 0, 1e6).orElse(1e-6));
         case "frame" -> frame(m, o, at);
-        case "tcpVisits" -> new Check.TcpVisits(m, points(o, at), number(o, "toleranceMm", at, 0, 1000).orElse(2.0));
+        case "tcpVisits" ->
+            new Check.TcpVisits(m, points(o, at), number(o, "toleranceMm", at, false, 0, 1000).orElse(2.0));
         case "positionRegister" -> {
           long n = integer(o, "register", at, 1, 100, true).orElse(1L);
           Vec3 p = position(o, at);
-          yield new Check.PositionRegister(m, (int) n, p, number(o, "toleranceMm", at, 0, 1000).orElse(1.0));
+          yield new Check.PositionRegister(m, (int) n, p, number(o, "toleranceMm", at, false, 0, 1000).orElse(1.0));
         }
         default -> throw new IllegalStateException(type);
       };
@@ -477,11 +478,11 @@ public final class TaskReader {
         String[] keys = {"x", "y", "z", "w", "p", "r"};
         for (int k = 0; k < 6; k++) {
           double lim = k < 3 ? PoseLimits.MAX_COORDINATE_MM : 180;
-          v[k] = number(p, keys[k], at + ".pose", -lim, lim).orElse(0.0);
+          v[k] = number(p, keys[k], at + ".pose", false, -lim, lim).orElse(0.0);
         }
       }
-      double tolMm = number(o, "toleranceMm", at, 0, 1000).orElse(1.0);
-      double tolDeg = number(o, "toleranceDeg", at, 0, 180).orElse(1.0);
+      double tolMm = number(o, "toleranceMm", at, false, 0, 1000).orElse(1.0);
+      double tolDeg = number(o, "toleranceDeg", at, false, 0, 180).orElse(1.0);
       return new Check.Frame(m, tool, number, Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform(),
           tolMm, tolDeg);
     }
@@ -500,8 +501,8 @@ public final class TaskReader {
         if (q == null) {
           continue;
         }
-        out.add(new Vec3(number(q, "x", pat, -lim, lim).orElse(0.0), number(q, "y", pat, -lim, lim).orElse(0.0),
-            number(q, "z", pat, -lim, lim).orElse(0.0)));
+        out.add(new Vec3(number(q, "x", pat, false, -lim, lim).orElse(0.0),
+            number(q, "y", pat, false, -lim, lim).orElse(0.0), number(q, "z", pat, false, -lim, lim).orElse(0.0)));
       }
       return out;
     }
@@ -513,9 +514,9 @@ public final class TaskReader {
         return Vec3.ZERO;
       }
       double lim = PoseLimits.MAX_COORDINATE_MM;
-      return new Vec3(number(p, "x", at + ".position", -lim, lim).orElse(0.0),
-          number(p, "y", at + ".position", -lim, lim).orElse(0.0),
-          number(p, "z", at + ".position", -lim, lim).orElse(0.0));
+      return new Vec3(number(p, "x", at + ".position", false, -lim, lim).orElse(0.0),
+          number(p, "y", at + ".position", false, -lim, lim).orElse(0.0),
+          number(p, "z", at + ".position", false, -lim, lim).orElse(0.0));
     }
 
     private Set<Check.Feature> features(JObject o, String key, String at) {
@@ -573,37 +574,6 @@ public final class TaskReader {
     }
 
     // ---- typed fields ----------------------------------------------------------------------
-
-    private Optional<Double> number(JObject o, String key, String at, double min, double max) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        return Optional.empty();
-      }
-      if (!(v instanceof JNumber n) || !Double.isFinite(n.value())) {
-        error(v.line(), join(at, key), "expected a number, got " + text(v));
-        return Optional.empty();
-      }
-      if (n.value() < min || n.value() > max) {
-        error(v.line(), join(at, key), "expected " + plain(min) + " to " + plain(max) + ", got " + n.text());
-        return Optional.empty();
-      }
-      return Optional.of(n.value());
-    }
-
-    private Optional<Long> integer(JObject o, String key, String at, long min, long max, boolean required) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        if (required) {
-          error(o.line(), join(at, key), "missing: expected a whole number " + min + ".." + max);
-        }
-        return Optional.empty();
-      }
-      if (!(v instanceof JNumber n) || !n.integral() || n.value() < min || n.value() > max) {
-        error(v.line(), join(at, key), "expected a whole number " + min + ".." + max + ", got " + text(v));
-        return Optional.empty();
-      }
-      return Optional.of(Long.parseLong(n.text()));
-    }
 
     private static String text(LocatedJson v) {
       return switch (v) {

@@ -99,15 +99,26 @@ public abstract class JsonFieldReader {
    * when it is absent or (with an error) anything else.
    */
   protected final int integer(JObject o, String key, String at, int min, int max, int fallback) {
+    return integer(o, key, at, (long) min, (long) max, false).map(Long::intValue).orElse(fallback);
+  }
+
+  /**
+   * The whole-number field {@code key} of {@code o} within {@code min..max} (at most 2^53 in
+   * size), or empty when it is absent (an error when required) or (with an error) anything else.
+   */
+  protected final Optional<Long> integer(JObject o, String key, String at, long min, long max, boolean required) {
     LocatedJson v = o.members().get(key);
     if (v == null) {
-      return fallback;
+      if (required) {
+        error(o.line(), join(at, key), "missing: expected a whole number " + min + ".." + max);
+      }
+      return Optional.empty();
     }
     if (!(v instanceof LocatedJson.JNumber n) || !n.integral() || n.value() < min || n.value() > max) {
       error(v.line(), join(at, key), "expected a whole number " + min + ".." + max + ", got " + v.describe());
-      return fallback;
+      return Optional.empty();
     }
-    return (int) n.value();
+    return Optional.of((long) n.value());
   }
 
   /**
@@ -162,18 +173,26 @@ public abstract class JsonFieldReader {
    */
   protected final double number(JObject o, String key, String at, boolean required, double lo, double hi,
       double fallback) {
+    return number(o, key, at, required, lo, hi).orElse(fallback);
+  }
+
+  /**
+   * The number field {@code key} of {@code o} within {@code lo..hi}, or empty when it is absent
+   * (an error when required) or (with an error) anything else.
+   */
+  protected final Optional<Double> number(JObject o, String key, String at, boolean required, double lo, double hi) {
     LocatedJson v = o.members().get(key);
     if (v == null) {
       if (required) {
         error(o.line(), join(at, key), "missing: expected a number " + plain(lo) + ".." + plain(hi));
       }
-      return fallback;
+      return Optional.empty();
     }
     if (!(v instanceof LocatedJson.JNumber n) || !Double.isFinite(n.value()) || n.value() < lo || n.value() > hi) {
       error(v.line(), join(at, key), "expected a number " + plain(lo) + ".." + plain(hi) + ", got " + v.describe());
-      return fallback;
+      return Optional.empty();
     }
-    return n.value();
+    return Optional.of(n.value());
   }
 
   /** {@code v} in plain decimal digits (no exponent), as error messages write limits. */

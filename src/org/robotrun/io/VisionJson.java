@@ -232,7 +232,7 @@ public final class VisionJson extends JsonFieldReader {
       List<VisionSetup.Model> out) {
     int before = errors.size();
     String name = uniqueName(m, at, out.stream().map(VisionSetup.Model::name).toList(), "model");
-    int id = whole(m, "id", at, true, 1, 9999, 1);
+    int id = integer(m, "id", at, 1, 9999, true).map(Long::intValue).orElse(1);
     if (out.stream().anyMatch(x -> x.id() == id) && errors.size() == before) {
       error(m.members().get("id").line(), join(at, "id"), "model ID " + id + " is used by another model");
     }
@@ -307,7 +307,7 @@ public final class VisionJson extends JsonFieldReader {
         }
       }
     }
-    int uf = whole(p, "userFrame", at, false, 0, 10, 0);
+    int uf = integer(p, "userFrame", at, 0, 10, 0);
     Transform reference = pose(p, "reference", at);
     VisionSetup.ProcessType type = VisionSetup.ProcessType.TWO_D;
     Optional<String> t = string(p, "type", at, false);
@@ -319,7 +319,7 @@ public final class VisionJson extends JsonFieldReader {
             + t.get() + "\"");
       }
     }
-    int n = whole(p, "numberToFind", at, false, 1, 100, 1);
+    int n = integer(p, "numberToFind", at, 1, 100, 1);
     if (errors.size() > before || name == null || reference == null || camera.isEmpty()) {
       return;
     }
@@ -431,18 +431,6 @@ public final class VisionJson extends JsonFieldReader {
       return null;
     }
     return name.get();
-  }
-
-  /** A whole-number field within [lo, hi] (ID, user frame, count): {@link #number}, then whole. */
-  private int whole(JObject o, String key, String at, boolean required, int lo, int hi, int fallback) {
-    int before = errors.size();
-    double d = number(o, key, at, required, lo, hi, fallback);
-    LocatedJson v = o.members().get(key);
-    if (errors.size() == before && v instanceof JNumber n && !n.integral()) {
-      error(v.line(), join(at, key), "expected a whole number, got " + v.describe());
-      return fallback;
-    }
-    return (int) d;
   }
 
   /** {@code [min, max]} with |values| ≤ limit; null with an error when bad. */

@@ -72,12 +72,12 @@ class TaskReaderTest {
         """);
     assertThat(msg.lines().toList()).containsExactly(
         "t.task.json:1: colour: unknown field (expected one of: autograder, checks, format, limits, program, robots, scenario, title, variations)",
-        "t.task.json:2: variations.count: expected a whole number 0..100, got 3.5",
+        "t.task.json:2: variations.count: expected a whole number 0..100, got the number 3.5",
         "t.task.json:2: variations.parts[0].part: the scenario has no part named 'part9'",
-        "t.task.json:2: variations.parts[0].xMm: expected 0 to 1000, got -1",
-        "t.task.json:5: checks[0].position.z: expected a number, got \"ten\"",
+        "t.task.json:2: variations.parts[0].xMm: expected a number 0..1000, got the number -1",
+        "t.task.json:5: checks[0].position.z: expected a number -100000..100000, got a string",
         "t.task.json:6: checks[1].name: check name \"a\" is used twice",
-        "t.task.json:6: checks[1].points: expected a number, got \"ten\"",
+        "t.task.json:6: checks[1].points: expected a number 0..10000, got a string",
         "t.task.json:7: checks[2].type: unknown check type \"teleport\" (expected one of: handIn, programs, runsToEnd, "
             + "partAt, nothingHeld, noneDropped, noCollision, noMotionStop, cycleTime, programUse, endState, frame, positionRegister, tcpVisits)",
         "t.task.json:8: checks[3].extra: unknown field (expected one of: forbids, hidden, maxMotionLines, message, name, "

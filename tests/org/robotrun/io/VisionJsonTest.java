@@ -122,7 +122,7 @@ class VisionJsonTest {
         new Case("\"camera\": \"CAM1\"", "\"camera\": \"CAM2\"", "vision.processes[0].camera: no camera named 'CAM2'"),
         new Case("\"models\": [\"BLOCK\"]", "\"models\": [\"BOLT\"]", "vision.processes[0].models[0]: no model named 'BOLT'"),
         new Case("\"type\": \"3D\"", "\"type\": \"2.5D\"", "vision.processes[0].type: expected \"2D\" or \"3D\""),
-        new Case("\"userFrame\": 1", "\"userFrame\": 11", "vision.processes[0].userFrame: expected a number 0..10"),
+        new Case("\"userFrame\": 1", "\"userFrame\": 11", "vision.processes[0].userFrame: expected a whole number 0..10"),
         new Case("\"name\": \"FIND\"", "\"name\": \"FIND IT\"", "vision.processes[0].name: expected a vision process name"),
         new Case("\"reference\": {\"x\": 10, ", "\"reference\": {", "vision.processes[0].reference.x: missing"),
         new Case("\"parts\": [\"b1\"]", "\"parts\": [\"table\"]", "vision.placements[0].parts[0]: 'table' is a fixture"),
