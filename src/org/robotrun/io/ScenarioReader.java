@@ -708,7 +708,7 @@ public final class ScenarioReader {
           return rgb.orElse(Rgb.GREY);
         }).orElse(Rgb.GREY);
         Transform pose = pose(o, "pose", at);
-        boolean touchable = touchable(o, at);
+        boolean touchable = bool(o, "touchable", at).orElse(false);
         Optional<String> parent = string(o, "parent", at, false);
         // Checked here, not with the other parents: the world object itself refuses it.
         boolean ownParent = objName.isPresent() && parent.isPresent() && parent.get().equals(objName.get());
@@ -748,18 +748,6 @@ public final class ScenarioReader {
       checkParents(kinds, parented);
       checkParents(kinds, startParented);
       return out;
-    }
-
-    private boolean touchable(JObject o, String at) {
-      LocatedJson v = o.members().get("touchable");
-      if (v == null) {
-        return false;
-      }
-      if (!(v instanceof LocatedJson.JBool b)) {
-        error(v.line(), at + ".touchable", "expected true or false, got " + v.describe());
-        return false;
-      }
-      return b.value();
     }
 
     private void checkParents(Map<String, ObjectKind> kinds, List<Parented> parented) {
