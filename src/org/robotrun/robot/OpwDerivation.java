@@ -133,7 +133,10 @@ public final class OpwDerivation {
     // The canonical flange F' sits on the J6 axis (z along it) at the foot of the flange's
     // origin; where the file's flange is F' turned about z (every library arm), that turn is
     // J6's offset, else J6's offset is 0 and the rest is the constant correction X_F'F.
-    boolean zAlong = Math.abs(M.r22() - 1) <= ANGLE_TOL;
+    // Tilt of the flange's z from J6 by its sine, not 1 - cos: a tilt of 3e-8 rad (a file's
+    // rpy="3.14159265 -1.5707963 0") moves r22 by 5e-16 only, and read as "along" it was lost,
+    // leaving the exact form off by that tilt and the arm on the approximate path.
+    boolean zAlong = M.r22() > 0 && Math.hypot(M.r02(), M.r12()) <= ANGLE_TOL;
     double th6 = zAlong ? Math.atan2(M.r10(), M.r00()) : 0;
     Vec3 ez = Rw.axis(2);
     Vec3 cf = F0.translationVector().minus(c);

@@ -134,6 +134,33 @@ public class RosIndustrialLayoutTest {
   }
 
   @Test
+  void aToolFrameWrittenToEightDecimalsKeepsTheExactClosedForm() throws Exception {
+    // ROS-I's tool0 written as rpy="3.14159265 -1.57079633 0": the flange's z is 3e-9..3e-8 rad off
+    // J6's axis. The joint axes are exact, so the constant flange correction carries the tilt and
+    // the parameters stay exact (a tilt read from 1 - r22 was lost and sent the arm to the
+    // approximate path with Newton steps, twice as slow).
+    String text = urdf(FACTS.get("lrmate200id"), "lrmate200id", Layout.ROS_I);
+    java.util.regex.Matcher mm = java.util.regex.Pattern
+        .compile("(<child link=\"tool0\"/><origin xyz=\"[^\"]*\" rpy=\")([^\"]*)\"").matcher(text);
+    assertThat(mm.find()).as("the tool0 joint in %s", text).isTrue();
+    StringBuilder r = new StringBuilder();
+    for (String v : mm.group(2).split(" ")) {
+      r.append(r.isEmpty() ? "" : " ").append(String.format(java.util.Locale.ROOT, "%.8f", Double.parseDouble(v)));
+    }
+    String rounded = text.substring(0, mm.start(2)) + r + text.substring(mm.end(2));
+    assertThat(rounded).isNotEqualTo(text);
+    Path file = tmp.resolve("tool0_8.urdf");
+    TestArms.write(file, rounded);
+    RobotModel model = UrdfImporter.importRobot(file, Map.of()).model();
+    assertThat(model.opw()).isPresent();
+    assertThat(model.opw().get().approximate()).isFalse();
+    assertThat(model.opw().get().corrected()).isTrue();
+    IkSolver solver = IkSolver.forModel(model);
+    assertThat(solver.kind()).isEqualTo(ClosedFormIk.KIND);
+    roundTrip(model, solver, 500, 8);
+  }
+
+  @Test
   void aWristWhoseAxesMissOnePointIsNotTakenForOpwEvenWithCorrections() throws Exception {
     Path file = tmp.resolve("offset6.urdf");
     // J6 moved 20 mm sideways: no wrist centre, so no closed form (the derivation must not
