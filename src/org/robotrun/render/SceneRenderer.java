@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL33C.*;
 
 import java.nio.FloatBuffer;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -85,6 +86,260 @@ public final class SceneRenderer implements AutoCloseable {
     if (antiAliasing == AntiAliasing.FXAA) {
       fxaa.apply(edges, width, height);
     }
+  }
+
+  // ---- The window's retained drawing: a layer of what stands still, the moving items over it ----
+
+  /** Frames an item the layer left out must stand still before the layer is drawn again with it. */
+  static final int STILL_FRAMES_TO_SETTLE = 30;
+
+  private OffscreenTarget layer;
+  private final Matrix4f layerViewProj = new Matrix4f();
+  private final Vector3f layerEye = new Vector3f();
+  private int[] layerView;
+  private double layerFloorZ;
+  /** The items as the layer drew them (by index); those with {@code inLayer} false were left out. */
+  private List<DrawItem> layerItems = List.of();
+  private boolean[] inLayer = new boolean[0];
+  private List<DrawItem> lastItems;
+  private int[] stillFrames = new int[0];
+  /** Where the items left out of the layer were last drawn, {x0, y0, x1, y1}; null: nowhere. */
+  private int[] lastMovingRect;
+  private final ScreenRect movingEdges = new ScreenRect();
+  private SceneSnapshot frameScene;
+  private OrbitCamera frameCamera;
+  private int frameW;
+  private int frameH;
+  private int[] frameView;
+  private final Vector3f frameEye = new Vector3f();
+  private int layerBuilds;
+
+  /**
+   * The window's frame, first step: compares the scene and camera with the last frame's and adds
+   * to {@code damage} where the picture changed. The part of the scene that stands still is kept in
+   * a layer (colour and depth) drawn again only when the camera, the view's rectangle, the size or
+   * one of its items changes; an item that moves is left out of it and drawn over it each time, so
+   * while the arm moves only its own rectangle (this frame's and the last) is damaged. An item left
+   * out that has stood still for {@link #STILL_FRAMES_TO_SETTLE} frames is taken into the layer
+   * again. Translucent items are never in the layer (they blend over what is behind them). Then
+   * {@link #drawRegion} draws each damaged rectangle into the bound framebuffer, which must have
+   * a 24-bit depth buffer.
+   */
+  public void prepareRetained(SceneSnapshot scene, OrbitCamera camera, int width, int height, DamageRegion damage) {
+    List<DrawItem> items = scene.items();
+    Matrix4f vp = camera.viewProjection(width, height);
+    int[] view = camera.viewRect(width, height);
+    frameScene = scene;
+    frameCamera = camera;
+    frameW = width;
+    frameH = height;
+    frameView = view;
+    frameEye.set(camera.eye());
+    viewProj.set(vp);
+    boolean sameCount = lastItems != null && lastItems.size() == items.size();
+    if (stillFrames.length != items.size()) {
+      stillFrames = new int[items.size()];
+    }
+    boolean[] moved = new boolean[items.size()];
+    for (int i = 0; i < items.size(); i++) {
+      moved[i] = sameCount && !items.get(i).equals(lastItems.get(i));
+      stillFrames[i] = moved[i] || !sameCount ? 0 : Math.min(stillFrames[i] + 1, Integer.MAX_VALUE - 1);
+    }
+    boolean rebuild = layer == null || layer.width() != width || layer.height() != height
+        || !vp.equals(layerViewProj) || !java.util.Arrays.equals(view, layerView)
+        || scene.floorZ() != layerFloorZ || !layerEye.equals(frameEye)
+        || layerItems.size() != items.size();
+    boolean settled = false;
+    for (int i = 0; i < items.size() && !rebuild; i++) {
+      if (inLayer[i] && !items.get(i).equals(layerItems.get(i))) {
+        rebuild = true;
+      } else if (!inLayer[i] && opaque(items.get(i)) && stillFrames[i] >= STILL_FRAMES_TO_SETTLE) {
+        settled = true;
+      }
+    }
+    rebuild |= settled;
+    if (rebuild) {
+      if (layerView != null) {
+        damage.add(layerView[0], layerView[1], layerView[0] + layerView[2], layerView[1] + layerView[3]);
+      }
+      damage.add(view[0], view[1], view[0] + view[2], view[1] + view[3]);
+      boolean[] keep = new boolean[items.size()];
+      for (int i = 0; i < items.size(); i++) {
+        keep[i] = opaque(items.get(i)) && !moved[i];
+      }
+      buildLayer(items, keep, scene.floorZ(), width, height, view);
+      layerViewProj.set(vp);
+      layerEye.set(frameEye);
+      layerView = view;
+      layerFloorZ = scene.floorZ();
+      layerItems = items;
+      inLayer = keep;
+    }
+    // the items left out of the layer: where they are now, and whether any changed
+    movingEdges.reset(width, height);
+    boolean anyMoved = false;
+    for (int i = 0; i < items.size(); i++) {
+      if (!inLayer[i]) {
+        DrawItem item = items.get(i);
+        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+        item.X_WS().toColumnMajor(model);
+        movingEdges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+        anyMoved |= moved[i] || !sameCount;
+      }
+    }
+    int[] now = movingEdges.isEmpty() ? null
+        : new int[] {movingEdges.x0(), movingEdges.y0(), movingEdges.x1(), movingEdges.y1()};
+    if (anyMoved && !rebuild) {
+      int[] clipView = {view[0], view[1], view[0] + view[2], view[1] + view[3]};
+      for (int[] r : new int[][] {lastMovingRect, now}) {
+        int[] c = r == null ? null : DamageRegion.intersect(r, clipView);
+        if (c != null) {
+          damage.add(c[0], c[1], c[2], c[3]);
+        }
+      }
+    }
+    lastMovingRect = now;
+    lastItems = items;
+  }
+
+  /** How often the still layer has been drawn (tests, the frame log). */
+  public int layerBuilds() {
+    return layerBuilds;
+  }
+
+  private static boolean opaque(DrawItem item) {
+    return item.color().a() >= 1f;
+  }
+
+  private void buildLayer(List<DrawItem> items, boolean[] keep, double floorZ, int width, int height, int[] view) {
+    layerBuilds++;
+    int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+    if (layer == null || layer.width() != width || layer.height() != height) {
+      if (layer != null) {
+        layer.close();
+      }
+      layer = new OffscreenTarget(width, height, 0);
+    }
+    layer.bind();
+    glViewport(0, 0, width, height);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(view[0], view[1], view[2], view[3]);
+    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    float floorZ32 = (float) floorZ;
+    edges.reset(width, height);
+    try (MemoryStack stack = MemoryStack.stackPush()) {
+      var vp = viewProj.get(stack.mallocFloat(16));
+      int[] u = useSolid(vp, frameEye);
+      float half = AXIS_LENGTH / 2;
+      drawBar(u[0], u[1], half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK, 0.85f, 0.15f, 0.12f);
+      drawBar(u[0], u[1], 0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK, 0.15f, 0.65f, 0.2f);
+      for (int i = 0; i < items.size(); i++) {
+        if (keep[i]) {
+          drawItem(items.get(i), u[0], u[1], false);
+        }
+      }
+      drawFloor(vp, frameEye, floorZ32);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, previous);
+  }
+
+  /**
+   * Draws the rectangle {x0, y0, x1, y1} (pixels) of the frame {@link #prepareRetained} prepared
+   * into the bound framebuffer: the background, the still layer's colour and depth, the items
+   * left out of it, the translucent items, edge smoothing and the orientation triad, each only
+   * within the rectangle. A rectangle outside the scene's view gets the background.
+   */
+  public void drawRegion(int[] rect) {
+    int target = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+    glViewport(0, 0, frameW, frameH);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    int[] r = DamageRegion.intersect(rect,
+        new int[] {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]});
+    if (r == null) {
+      glDisable(GL_SCISSOR_TEST);
+      return;
+    }
+    glDisable(GL_SCISSOR_TEST);
+    layer.copyTo(target, r, true);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r[0], r[1], r[2] - r[0], r[3] - r[1]);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    List<DrawItem> items = frameScene.items();
+    edges.reset(frameW, frameH);
+    gizmoEdges.reset(frameW, frameH);
+    try (MemoryStack stack = MemoryStack.stackPush()) {
+      var vp = viewProj.get(stack.mallocFloat(16));
+      int[] u = useSolid(vp, frameEye);
+      for (int i = 0; i < items.size(); i++) {
+        if (!inLayer[i] && opaque(items.get(i))) {
+          drawItem(items.get(i), u[0], u[1], false);
+        }
+      }
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      glDepthMask(false);
+      glDisable(GL_CULL_FACE);
+      for (DrawItem item : items) {
+        if (!opaque(item)) {
+          drawItem(item, u[0], u[1], false);
+        }
+      }
+      glEnable(GL_CULL_FACE);
+      glDepthMask(true);
+      glDisable(GL_BLEND);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r);
+    if (antiAliasing == AntiAliasing.FXAA) {
+      // every solid's edges, the still ones too: the layer keeps them unsmoothed
+      float floorZ32 = (float) frameScene.floorZ();
+      float half = AXIS_LENGTH / 2;
+      addBarEdges(half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK);
+      addBarEdges(0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK);
+      for (DrawItem item : items) {
+        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+        item.X_WS().toColumnMajor(model);
+        edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+      }
+      fxaa.apply(edges, r, frameW, frameH);
+      fxaa.apply(gizmoEdges, r, frameW, frameH);
+    }
+  }
+
+  private int[] useSolid(FloatBuffer vp, Vector3f eye) {
+    solid.use();
+    glUniformMatrix4fv(solid.uniform("uViewProj"), false, vp);
+    glUniform3f(solid.uniform("uEye"), eye.x, eye.y, eye.z);
+    glUniform3f(solid.uniform("uKeyDir"), 0.45f, -0.35f, 0.82f);
+    glUniform3f(solid.uniform("uFillDir"), -0.6f, 0.7f, 0.3f);
+    return new int[] {solid.uniform("uModel"), solid.uniform("uColor")};
+  }
+
+  private void drawItem(DrawItem item, int uModel, int uColor, boolean smooth) {
+    DrawItem.Color c = item.color();
+    GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+    item.X_WS().toColumnMajor(model);
+    glUniformMatrix4fv(uModel, false, model);
+    if (smooth) {
+      edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+    }
+    glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
+    mesh.draw();
+  }
+
+  private void addBarEdges(float cx, float cy, float cz, float sx, float sy, float sz) {
+    modelMatrix.translation(cx, cy, cz).scale(sx, sy, sz);
+    edges.addBox(viewProj, modelMatrix, axisBar.bounds());
   }
 
   private void draw(SceneSnapshot scene, Matrix4f cameraViewProj, Vector3f eye, int[] view, int width, int height) {
@@ -210,6 +465,9 @@ public final class SceneRenderer implements AutoCloseable {
 
   @Override
   public void close() {
+    if (layer != null) {
+      layer.close();
+    }
     meshes.values().forEach(GpuMesh::close);
     meshes.clear();
     fxaa.close();

@@ -3,7 +3,6 @@ package org.robotrun.ui;
 import static org.lwjgl.glfw.GLFW.*;
 
 import imgui.ImGui;
-import imgui.gl3.ImGuiImplGl3;
 import imgui.glfw.ImGuiImplGlfw;
 import java.util.function.BooleanSupplier;
 import java.util.function.IntPredicate;
@@ -12,7 +11,9 @@ import org.lwjgl.opengl.GL;
 import org.lwjgl.system.Configuration;
 import org.lwjgl.system.Platform;
 import org.robotrun.render.AntiAliasing;
+import org.robotrun.render.DamageRegion;
 import org.robotrun.render.GlUnavailableException;
+import org.robotrun.render.OffscreenTarget;
 import org.robotrun.render.OrbitCamera;
 import org.robotrun.render.SceneRenderer;
 import org.robotrun.sim.SceneSnapshot;
@@ -34,7 +35,14 @@ public final class SimulatorWindow implements AutoCloseable {
   private final OrbitCamera camera = new OrbitCamera();
   private final SceneRenderer renderer;
   private final ImGuiImplGlfw imguiGlfw = new ImGuiImplGlfw();
-  private final ImGuiImplGl3 imguiGl3 = new ImGuiImplGl3();
+  /** Draws the panels, again only where they changed. */
+  private RetainedUi ui;
+  /** The frame as last drawn, kept between frames: each frame draws again only what changed, then shows it. */
+  private OffscreenTarget canvas;
+  private java.util.List<Fill> lastFills = java.util.List.of();
+  /** ROBOTRUN_REDRAW=all: draw every pixel every frame (to compare, or should a driver mishandle the kept frame). */
+  private final boolean redrawAll = "all".equals(System.getenv("ROBOTRUN_REDRAW"));
+  private long damagedPixels;
   private double lastX;
   private double lastY;
   private boolean orbiting;
@@ -163,7 +171,7 @@ public final class SimulatorWindow implements AutoCloseable {
       }
     }
     imguiGlfw.init(window, true);
-    imguiGl3.init("#version 330 core");
+    ui = new RetainedUi();
   }
 
   /** ROBOTRUN_UI_SCALE's value when it is a number from 0.5 to 4; empty otherwise (unset, blank, garbage). */
@@ -413,11 +421,47 @@ public final class SimulatorWindow implements AutoCloseable {
         panels.draw(fw[0], fh[0]);
         ImGui.render();
         long t2 = System.nanoTime();
-        renderer.render(snap, camera, fw[0], fh[0]);
-        fill(panels.fills(), fw[0], fh[0]);
-        long t3 = System.nanoTime();
-        imguiGl3.renderDrawData(ImGui.getDrawData());
+        ui.capture(ImGui.getDrawData(), fw[0], fh[0]);
+        DamageRegion damage = new DamageRegion(fw[0], fh[0]);
+        if (canvas == null || canvas.width() != fw[0] || canvas.height() != fh[0]) {
+          if (canvas != null) {
+            canvas.close();
+          }
+          canvas = new OffscreenTarget(fw[0], fh[0], 0);
+          damage.addAll();
+        }
+        if (redrawAll) {
+          damage.addAll();
+        }
+        renderer.prepareRetained(snap, camera, fw[0], fh[0], damage);
+        java.util.List<Fill> fills = panels.fills();
+        if (!fills.equals(lastFills)) {
+          for (Fill f : lastFills) {
+            if (!fills.contains(f)) {
+              addFill(damage, f, fw[0], fh[0]);
+            }
+          }
+          for (Fill f : fills) {
+            if (!lastFills.contains(f)) {
+              addFill(damage, f, fw[0], fh[0]);
+            }
+          }
+          lastFills = java.util.List.copyOf(fills);
+        }
+        ui.addDamage(damage);
+        damagedPixels += damage.area();
+        canvas.bind();
+        long uiNanos = 0;
+        for (int[] r : damage.rects()) {
+          renderer.drawRegion(r);
+          fill(fills, fw[0], fh[0], r);
+          long u0 = System.nanoTime();
+          ui.draw(r);
+          uiNanos += System.nanoTime() - u0;
+        }
         long t4 = System.nanoTime();
+        long t3 = t4 - uiNanos;
+        canvas.copyTo(0, new int[] {0, 0, fw[0], fh[0]}, false);
         glfwSwapBuffers(window);
         long t5 = System.nanoTime();
         phaseNanos[0] += t1 - t0;
@@ -459,21 +503,33 @@ public final class SimulatorWindow implements AutoCloseable {
     return phaseNanos.clone();
   }
 
-  /** Clears each fill's rectangle to its colour (a clear is nearly free where a blended quad is not). */
-  private static void fill(java.util.List<Fill> fills, int fbW, int fbH) {
+  /** Damages a fill's rectangle (display pixels) in GL pixels. */
+  private static void addFill(DamageRegion damage, Fill f, int fbW, int fbH) {
+    int[] p = fillPixels(f, fbW, fbH);
+    damage.add(p[0], p[1], p[2], p[3]);
+  }
+
+  /** A fill's rectangle in GL pixels {x0, y0, x1, y1} (y up). */
+  private static int[] fillPixels(Fill f, int fbW, int fbH) {
+    float sx = fbW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
+    float sy = fbH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
+    int x0 = Math.round(f.x() * sx), x1 = Math.round((f.x() + f.w()) * sx);
+    int y0 = Math.round(f.y() * sy), y1 = Math.round((f.y() + f.h()) * sy);
+    return new int[] {x0, fbH - y1, x1, fbH - y0};
+  }
+
+  /** Clears each fill's rectangle, within {@code clip}, to its colour (a clear is nearly free where a blended quad is not). */
+  private static void fill(java.util.List<Fill> fills, int fbW, int fbH, int[] clip) {
     if (fills.isEmpty()) {
       return;
     }
-    float sx = fbW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
-    float sy = fbH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
     org.lwjgl.opengl.GL11C.glEnable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
     for (Fill f : fills) {
-      int x0 = Math.round(f.x() * sx), x1 = Math.round((f.x() + f.w()) * sx);
-      int y0 = Math.round(f.y() * sy), y1 = Math.round((f.y() + f.h()) * sy);
-      if (x1 <= x0 || y1 <= y0) {
+      int[] r = DamageRegion.intersect(fillPixels(f, fbW, fbH), clip);
+      if (r == null) {
         continue;
       }
-      org.lwjgl.opengl.GL11C.glScissor(x0, fbH - y1, x1 - x0, y1 - y0);
+      org.lwjgl.opengl.GL11C.glScissor(r[0], r[1], r[2] - r[0], r[3] - r[1]);
       org.lwjgl.opengl.GL11C.glClearColor(f.r(), f.g(), f.b(), 1f);
       org.lwjgl.opengl.GL11C.glClear(org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT);
     }
@@ -615,7 +671,10 @@ public final class SimulatorWindow implements AutoCloseable {
 
   @Override
   public void close() {
-    imguiGl3.dispose();
+    ui.close();
+    if (canvas != null) {
+      canvas.close();
+    }
     imguiGlfw.dispose();
     ImGui.destroyContext();
     renderer.close();
