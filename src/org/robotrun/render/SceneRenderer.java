@@ -94,6 +94,8 @@ public final class SceneRenderer implements AutoCloseable {
   static final int STILL_FRAMES_TO_SETTLE = 30;
 
   private OffscreenTarget layer;
+  /** Where the moving items are drawn over a copy of the layer (the same formats as the layer). */
+  private OffscreenTarget work;
   private final Matrix4f layerViewProj = new Matrix4f();
   private final Vector3f layerEye = new Vector3f();
   private int[] layerView;
@@ -122,8 +124,8 @@ public final class SceneRenderer implements AutoCloseable {
    * while the arm moves only its own rectangle (this frame's and the last) is damaged. An item left
    * out that has stood still for {@link #STILL_FRAMES_TO_SETTLE} frames is taken into the layer
    * again. Translucent items are never in the layer (they blend over what is behind them). Then
-   * {@link #drawRegion} draws each damaged rectangle into the bound framebuffer, which must have
-   * a 24-bit depth buffer.
+   * {@link #drawRegion} draws each damaged rectangle into the bound framebuffer (the window's own
+   * or another with a depth buffer).
    */
   public void prepareRetained(SceneSnapshot scene, OrbitCamera camera, int width, int height, DamageRegion damage) {
     List<DrawItem> items = scene.items();
@@ -217,8 +219,10 @@ public final class SceneRenderer implements AutoCloseable {
     if (layer == null || layer.width() != width || layer.height() != height) {
       if (layer != null) {
         layer.close();
+        work.close();
       }
       layer = new OffscreenTarget(width, height, 0);
+      work = new OffscreenTarget(width, height, 0);
     }
     layer.bind();
     glViewport(0, 0, width, height);
@@ -268,7 +272,9 @@ public final class SceneRenderer implements AutoCloseable {
       return;
     }
     glDisable(GL_SCISSOR_TEST);
-    layer.copyTo(target, r, true);
+    // the moving items are drawn over a copy of the layer in a buffer of the layer's own
+    // formats (depth is copied only between like buffers), then only its colour goes on
+    layer.copyTo(work.framebuffer(), r, true);
     glEnable(GL_SCISSOR_TEST);
     glScissor(r[0], r[1], r[2] - r[0], r[3] - r[1]);
     glEnable(GL_DEPTH_TEST);
@@ -299,6 +305,8 @@ public final class SceneRenderer implements AutoCloseable {
       glDisable(GL_BLEND);
     }
     glDisable(GL_SCISSOR_TEST);
+    work.copyTo(target, r, false);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
     gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r);
     if (antiAliasing == AntiAliasing.FXAA) {
       // every solid's edges, the still ones too: the layer keeps them unsmoothed
@@ -467,6 +475,7 @@ public final class SceneRenderer implements AutoCloseable {
   public void close() {
     if (layer != null) {
       layer.close();
+      work.close();
     }
     meshes.values().forEach(GpuMesh::close);
     meshes.clear();

@@ -43,6 +43,12 @@ public final class SimulatorWindow implements AutoCloseable {
   /** ROBOTRUN_REDRAW=all: draw every pixel every frame (to compare, or should a driver mishandle the kept frame). */
   private final boolean redrawAll = "all".equals(System.getenv("ROBOTRUN_REDRAW"));
   private long damagedPixels;
+  /** Non-null: the back buffer keeps the frame and only changed rectangles are shown (Mesa's software renderers). */
+  private SubBufferPresenter presenter;
+  /** The back buffer's size when {@link #presenter} draws into it; the window was exposed: show all of it. */
+  private int backW;
+  private int backH;
+  private volatile boolean showAll = true;
   private double lastX;
   private double lastY;
   private boolean orbiting;
@@ -172,6 +178,7 @@ public final class SimulatorWindow implements AutoCloseable {
     }
     imguiGlfw.init(window, true);
     ui = new RetainedUi();
+    presenter = SubBufferPresenter.forWindow(window);
   }
 
   /** ROBOTRUN_UI_SCALE's value when it is a number from 0.5 to 4; empty otherwise (unset, blank, garbage). */
@@ -326,7 +333,11 @@ public final class SimulatorWindow implements AutoCloseable {
         glfwSetWindowSize(w, Math.max(ww, minimumSize[0]), Math.max(wh, minimumSize[1]));
       }
     });
-    glfwSetWindowRefreshCallback(window, w -> lastInputNanos = System.nanoTime());
+    glfwSetWindowRefreshCallback(window, w -> {
+      lastInputNanos = System.nanoTime();
+      // uncovered, restored or resized: the window's pixels must all be shown again
+      showAll = true;
+    });
     // The close button asks first (unsaved work); a refusal keeps the window open.
     glfwSetWindowCloseCallback(window, w -> {
       if (!mayClose.getAsBoolean()) {
@@ -423,7 +434,13 @@ public final class SimulatorWindow implements AutoCloseable {
         long t2 = System.nanoTime();
         ui.capture(ImGui.getDrawData(), fw[0], fh[0]);
         DamageRegion damage = new DamageRegion(fw[0], fh[0]);
-        if (canvas == null || canvas.width() != fw[0] || canvas.height() != fh[0]) {
+        if (presenter != null) {
+          if (backW != fw[0] || backH != fh[0]) {
+            backW = fw[0];
+            backH = fh[0];
+            damage.addAll();
+          }
+        } else if (canvas == null || canvas.width() != fw[0] || canvas.height() != fh[0]) {
           if (canvas != null) {
             canvas.close();
           }
@@ -450,9 +467,14 @@ public final class SimulatorWindow implements AutoCloseable {
         }
         ui.addDamage(damage);
         damagedPixels += damage.area();
-        canvas.bind();
+        if (presenter != null) {
+          org.lwjgl.opengl.GL30C.glBindFramebuffer(org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER, 0);
+        } else {
+          canvas.bind();
+        }
         long uiNanos = 0;
-        for (int[] r : damage.rects()) {
+        java.util.List<int[]> rects = damage.rects();
+        for (int[] r : rects) {
           renderer.drawRegion(r);
           fill(fills, fw[0], fh[0], r);
           long u0 = System.nanoTime();
@@ -461,8 +483,18 @@ public final class SimulatorWindow implements AutoCloseable {
         }
         long t4 = System.nanoTime();
         long t3 = t4 - uiNanos;
-        canvas.copyTo(0, new int[] {0, 0, fw[0], fh[0]}, false);
-        glfwSwapBuffers(window);
+        if (presenter != null) {
+          if (showAll) {
+            showAll = false;
+            rects = java.util.List.of(new int[] {0, 0, fw[0], fh[0]});
+          }
+          for (int[] r : rects) {
+            presenter.show(r);
+          }
+        } else {
+          canvas.copyTo(0, new int[] {0, 0, fw[0], fh[0]}, false);
+          glfwSwapBuffers(window);
+        }
         long t5 = System.nanoTime();
         phaseNanos[0] += t1 - t0;
         phaseNanos[1] += t2 - t1;
