@@ -90,21 +90,13 @@ public final class SceneRenderer implements AutoCloseable {
 
   // ---- The window's retained drawing: a layer of what stands still, the moving items over it ----
 
-  /** Frames an item the layer left out must stand still before the layer is drawn again with it. */
-  static final int STILL_FRAMES_TO_SETTLE = 30;
-
   private OffscreenTarget layer;
   /** Where the moving items are drawn over a copy of the layer (the same formats as the layer). */
   private OffscreenTarget work;
-  private final Matrix4f layerViewProj = new Matrix4f();
-  private final Vector3f layerEye = new Vector3f();
-  private int[] layerView;
-  private double layerFloorZ;
-  /** The items as the layer drew them (by index); those with {@code inLayer} false were left out. */
-  private List<DrawItem> layerItems = List.of();
+  private final StillLayer still = new StillLayer();
   private boolean[] inLayer = new boolean[0];
-  private List<DrawItem> lastItems;
-  private int[] stillFrames = new int[0];
+  /** The view's rectangle {x, y, w, h} when the layer was last drawn; null before. */
+  private int[] layerView;
   /** Where the items left out of the layer were last drawn, {x0, y0, x1, y1}; null: nowhere. */
   private int[] lastMovingRect;
   private final ScreenRect movingEdges = new ScreenRect();
@@ -119,11 +111,9 @@ public final class SceneRenderer implements AutoCloseable {
   /**
    * The window's frame, first step: compares the scene and camera with the last frame's and adds
    * to {@code damage} where the picture changed. The part of the scene that stands still is kept in
-   * a layer (colour and depth) drawn again only when the camera, the view's rectangle, the size or
-   * one of its items changes; an item that moves is left out of it and drawn over it each time, so
-   * while the arm moves only its own rectangle (this frame's and the last) is damaged. An item left
-   * out that has stood still for {@link #STILL_FRAMES_TO_SETTLE} frames is taken into the layer
-   * again. Translucent items are never in the layer (they blend over what is behind them). Then
+   * a layer (colour and depth) drawn again only when the view or one of its items changes; an item
+   * that moves is left out of it and drawn over it each time, so while the arm moves only its own
+   * rectangle (this frame's and the last) is damaged ({@link StillLayer} decides). Then
    * {@link #drawRegion} draws each damaged rectangle into the bound framebuffer (the window's own
    * or another with a depth buffer).
    */
@@ -138,60 +128,30 @@ public final class SceneRenderer implements AutoCloseable {
     frameView = view;
     frameEye.set(camera.eye());
     viewProj.set(vp);
-    boolean sameCount = lastItems != null && lastItems.size() == items.size();
-    if (stillFrames.length != items.size()) {
-      stillFrames = new int[items.size()];
-    }
-    boolean[] moved = new boolean[items.size()];
-    for (int i = 0; i < items.size(); i++) {
-      moved[i] = sameCount && !items.get(i).equals(lastItems.get(i));
-      stillFrames[i] = moved[i] || !sameCount ? 0 : Math.min(stillFrames[i] + 1, Integer.MAX_VALUE - 1);
-    }
-    boolean rebuild = layer == null || layer.width() != width || layer.height() != height
-        || !vp.equals(layerViewProj) || !java.util.Arrays.equals(view, layerView)
-        || scene.floorZ() != layerFloorZ || !layerEye.equals(frameEye)
-        || layerItems.size() != items.size();
-    boolean settled = false;
-    for (int i = 0; i < items.size() && !rebuild; i++) {
-      if (inLayer[i] && !items.get(i).equals(layerItems.get(i))) {
-        rebuild = true;
-      } else if (!inLayer[i] && opaque(items.get(i)) && stillFrames[i] >= STILL_FRAMES_TO_SETTLE) {
-        settled = true;
-      }
-    }
-    rebuild |= settled;
-    if (rebuild) {
+    StillLayer.Plan plan = still.next(items,
+        new StillLayer.View(width, height, view[0], view[1], view[2], view[3], scene.floorZ(), vp));
+    inLayer = plan.inLayer();
+    if (plan.rebuild()) {
       if (layerView != null) {
-        damage.add(layerView[0], layerView[1], layerView[0] + layerView[2], layerView[1] + layerView[3]);
+        damage.addXywh(layerView[0], layerView[1], layerView[2], layerView[3]);
       }
-      damage.add(view[0], view[1], view[0] + view[2], view[1] + view[3]);
-      boolean[] keep = new boolean[items.size()];
-      for (int i = 0; i < items.size(); i++) {
-        keep[i] = opaque(items.get(i)) && !moved[i];
-      }
-      buildLayer(items, keep, scene.floorZ(), width, height, view);
-      layerViewProj.set(vp);
-      layerEye.set(frameEye);
+      damage.addXywh(view[0], view[1], view[2], view[3]);
+      buildLayer(items, inLayer, scene.floorZ(), width, height, view);
       layerView = view;
-      layerFloorZ = scene.floorZ();
-      layerItems = items;
-      inLayer = keep;
     }
-    // the items left out of the layer: where they are now, and whether any changed
+    // the items left out of the layer: where they are now
     movingEdges.reset(width, height);
-    boolean anyMoved = false;
     for (int i = 0; i < items.size(); i++) {
       if (!inLayer[i]) {
         DrawItem item = items.get(i);
         GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
         item.X_WS().toColumnMajor(model);
         movingEdges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
-        anyMoved |= moved[i] || !sameCount;
       }
     }
     int[] now = movingEdges.isEmpty() ? null
         : new int[] {movingEdges.x0(), movingEdges.y0(), movingEdges.x1(), movingEdges.y1()};
-    if (anyMoved && !rebuild) {
+    if (plan.movedOutside() && !plan.rebuild()) {
       int[] clipView = {view[0], view[1], view[0] + view[2], view[1] + view[3]};
       for (int[] r : new int[][] {lastMovingRect, now}) {
         int[] c = r == null ? null : DamageRegion.intersect(r, clipView);
@@ -201,7 +161,6 @@ public final class SceneRenderer implements AutoCloseable {
       }
     }
     lastMovingRect = now;
-    lastItems = items;
   }
 
   /** How often the still layer has been drawn (tests, the frame log). */
@@ -210,7 +169,7 @@ public final class SceneRenderer implements AutoCloseable {
   }
 
   private static boolean opaque(DrawItem item) {
-    return item.color().a() >= 1f;
+    return StillLayer.opaque(item);
   }
 
   private void buildLayer(List<DrawItem> items, boolean[] keep, double floorZ, int width, int height, int[] view) {

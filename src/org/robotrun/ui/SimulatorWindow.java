@@ -42,7 +42,7 @@ public final class SimulatorWindow implements AutoCloseable {
   private java.util.List<Fill> lastFills = java.util.List.of();
   /** ROBOTRUN_REDRAW=all: draw every pixel every frame (to compare, or should a driver mishandle the kept frame). */
   private final boolean redrawAll = "all".equals(System.getenv("ROBOTRUN_REDRAW"));
-  private long damagedPixels;
+  private volatile long damagedPixels;
   /** Non-null: the back buffer keeps the frame and only changed rectangles are shown (Mesa's software renderers). */
   private SubBufferPresenter presenter;
   /** The back buffer's size when {@link #presenter} draws into it; the window was exposed: show all of it. */
@@ -594,6 +594,14 @@ public final class SimulatorWindow implements AutoCloseable {
 
   public void setTitle(String title) {
     glfwSetWindowTitle(window, title);
+  }
+
+  /**
+   * Pixels drawn again so far, all frames together (each frame draws only its damaged rectangles;
+   * read by a benchmark's timer thread).
+   */
+  public long damagedPixels() {
+    return damagedPixels;
   }
 
   /** Frames drawn so far. */
