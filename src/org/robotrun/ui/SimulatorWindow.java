@@ -49,6 +49,8 @@ public final class SimulatorWindow implements AutoCloseable {
   private int backW;
   private int backH;
   private volatile boolean showAll = true;
+  /** ROBOTRUN_REDRAW=check: compare each kept frame with a full redraw (tests). */
+  private final RedrawCheck check = "check".equals(System.getenv("ROBOTRUN_REDRAW")) ? new RedrawCheck() : null;
   private double lastX;
   private double lastY;
   private boolean orbiting;
@@ -481,6 +483,15 @@ public final class SimulatorWindow implements AutoCloseable {
           ui.draw(r);
           uiNanos += System.nanoTime() - u0;
         }
+        if (check != null) {
+          int kept = presenter != null ? 0 : canvas.framebuffer();
+          check.beginReference(kept, fw[0], fh[0]);
+          renderer.render(snap, camera, fw[0], fh[0]);
+          int[] all = {0, 0, fw[0], fh[0]};
+          fill(fills, fw[0], fh[0], all);
+          ui.draw(all);
+          check.endReference(kept, fw[0], fh[0]);
+        }
         long t4 = System.nanoTime();
         long t3 = t4 - uiNanos;
         if (presenter != null) {
@@ -712,6 +723,10 @@ public final class SimulatorWindow implements AutoCloseable {
   @Override
   public void close() {
     ui.close();
+    if (check != null) {
+      check.report();
+      check.close();
+    }
     if (canvas != null) {
       canvas.close();
     }
