@@ -44,7 +44,7 @@ import picocli.CommandLine.Spec;
           + "child JVM (extra JVM options for it in ROBOTRUN_BENCH_JAVA_OPTS, e.g. to profile it).",
       "CPU figures stay comparable on a loaded machine; fps does not (quote the load with them). "
           + "ROBOTRUN_BENCH_DETAIL=1 also prints, on stderr, each phase's CPU per frame of the window thread, Mesa's "
-          + "threads and the simulation, and the wall time per frame in each part of a frame."
+          + "threads and the simulation, the wall time per frame in each part of a frame, and the pixels drawn again per frame."
     })
 public final class BenchWindowCommand implements Callable<Integer> {
   @Spec CommandSpec spec;

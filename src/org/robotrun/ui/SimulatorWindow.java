@@ -41,7 +41,7 @@ public final class SimulatorWindow implements AutoCloseable {
   private OffscreenTarget canvas;
   private java.util.List<Fill> lastFills = java.util.List.of();
   /** ROBOTRUN_REDRAW=all: draw every pixel every frame (to compare, or should a driver mishandle the kept frame). */
-  private final boolean redrawAll = "all".equals(System.getenv("ROBOTRUN_REDRAW"));
+  private final boolean redrawAll = redrawMode("all");
   private volatile long damagedPixels;
   /** Non-null: the back buffer keeps the frame and only changed rectangles are shown (Mesa's software renderers). */
   private SubBufferPresenter presenter;
@@ -50,7 +50,13 @@ public final class SimulatorWindow implements AutoCloseable {
   private int backH;
   private volatile boolean showAll = true;
   /** ROBOTRUN_REDRAW=check: compare each kept frame with a full redraw (tests). */
-  private final RedrawCheck check = "check".equals(System.getenv("ROBOTRUN_REDRAW")) ? new RedrawCheck() : null;
+  private final RedrawCheck check = redrawMode("check") ? new RedrawCheck() : null;
+
+  /** Whether ROBOTRUN_REDRAW (words separated by commas: all, swap, check) names this word. */
+  static boolean redrawMode(String word) {
+    String v = System.getenv("ROBOTRUN_REDRAW");
+    return v != null && java.util.Arrays.asList(v.trim().split("\\s*,\\s*")).contains(word);
+  }
   private double lastX;
   private double lastY;
   private boolean orbiting;

@@ -35,7 +35,7 @@ final class SubBufferPresenter {
    */
   static SubBufferPresenter forWindow(long window) {
     if (Platform.get() != Platform.LINUX && Platform.get() != Platform.FREEBSD
-        || "swap".equals(System.getenv("ROBOTRUN_REDRAW"))) {
+        || SimulatorWindow.redrawMode("swap")) {
       return null;
     }
     try {
