@@ -185,10 +185,12 @@ public final class SceneRenderer implements AutoCloseable {
     }
     layer.bind();
     glViewport(0, 0, width, height);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(view[0], view[1], view[2], view[3]);
+    // all of it: outside the view the layer is the background a full frame has there
+    glDisable(GL_SCISSOR_TEST);
     glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(view[0], view[1], view[2], view[3]);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
@@ -231,11 +233,16 @@ public final class SceneRenderer implements AutoCloseable {
       return;
     }
     glDisable(GL_SCISSOR_TEST);
-    // the moving items are drawn over a copy of the layer in a buffer of the layer's own
-    // formats (depth is copied only between like buffers), then only its colour goes on
-    layer.copyTo(work.framebuffer(), r, true);
+    // The moving items are drawn over a copy of the layer in a buffer of the layer's own
+    // formats (depth is copied only between like buffers), then only its colour goes on. The
+    // copy reaches a pixel further than the rectangle: the edge smoothing of the rectangle's
+    // border pixels reads their neighbours, which must be unsmoothed as in a full frame.
+    int[] viewBox = {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]};
+    int[] grown = DamageRegion.intersect(new int[] {r[0] - 1, r[1] - 1, r[2] + 1, r[3] + 1}, new int[] {0, 0, frameW, frameH});
+    layer.copyTo(work.framebuffer(), grown, true);
+    int[] r1 = DamageRegion.intersect(grown, viewBox);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(r[0], r[1], r[2] - r[0], r[3] - r[1]);
+    glScissor(r1[0], r1[1], r1[2] - r1[0], r1[3] - r1[1]);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
@@ -264,9 +271,7 @@ public final class SceneRenderer implements AutoCloseable {
       glDisable(GL_BLEND);
     }
     glDisable(GL_SCISSOR_TEST);
-    work.copyTo(target, r, false);
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
-    gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r);
+    gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r1);
     if (antiAliasing == AntiAliasing.FXAA) {
       // every solid's edges, the still ones too: the layer keeps them unsmoothed
       float floorZ32 = (float) frameScene.floorZ();
@@ -281,6 +286,8 @@ public final class SceneRenderer implements AutoCloseable {
       fxaa.apply(edges, r, frameW, frameH);
       fxaa.apply(gizmoEdges, r, frameW, frameH);
     }
+    work.copyTo(target, r, false);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
   }
 
   private int[] useSolid(FloatBuffer vp, Vector3f eye) {

@@ -44,7 +44,9 @@ final class RedrawCheck implements AutoCloseable {
     frames++;
     worst = Math.max(worst, differing);
     if (differing > 0) {
-      System.err.println("robotrun: redraw check: frame " + frames + ": " + differing + " pixels differ from a full redraw");
+      int[] b = differingBounds(shown, expected, width, height);
+      System.err.println("robotrun: redraw check: frame " + frames + ": " + differing + " pixels differ from a full redraw, within x "
+          + b[0] + ".." + b[2] + ", y " + b[1] + ".." + b[3] + " (from the bottom left)");
     }
     return differing;
   }
@@ -69,6 +71,25 @@ final class RedrawCheck implements AutoCloseable {
       }
     }
     return n;
+  }
+
+  /** The bounds {x0, y0, x1, y1} (inclusive) of the differing pixels. */
+  private static int[] differingBounds(ByteBuffer a, ByteBuffer b, int width, int height) {
+    int[] r = {width, height, -1, -1};
+    for (int p = 0; p < width * height; p++) {
+      for (int c = 0; c < 3; c++) {
+        int d = (a.get(4 * p + c) & 0xff) - (b.get(4 * p + c) & 0xff);
+        if (d > TOLERANCE || d < -TOLERANCE) {
+          int x = p % width, y = p / width;
+          r[0] = Math.min(r[0], x);
+          r[1] = Math.min(r[1], y);
+          r[2] = Math.max(r[2], x);
+          r[3] = Math.max(r[3], y);
+          break;
+        }
+      }
+    }
+    return r;
   }
 
   /** Prints the summary line (frames checked, most pixels differing in one frame). */

@@ -49,6 +49,9 @@ public final class SimulatorWindow implements AutoCloseable {
   private int backW;
   private int backH;
   private volatile boolean showAll = true;
+  /** Frames still to be drawn whole and swapped after the window's size changed ({@link #presenter} only). */
+  private int swapFramesLeft;
+  private static final int SWAP_FRAMES_AFTER_RESIZE = 30;
   /** ROBOTRUN_REDRAW=check: compare each kept frame with a full redraw (tests). */
   private final RedrawCheck check = redrawMode("check") ? new RedrawCheck() : null;
 
@@ -442,10 +445,18 @@ public final class SimulatorWindow implements AutoCloseable {
         long t2 = System.nanoTime();
         ui.capture(ImGui.getDrawData(), fw[0], fh[0]);
         DamageRegion damage = new DamageRegion(fw[0], fh[0]);
+        boolean swapping = false;
         if (presenter != null) {
           if (backW != fw[0] || backH != fh[0]) {
             backW = fw[0];
             backH = fh[0];
+            swapFramesLeft = SWAP_FRAMES_AFTER_RESIZE;
+          }
+          // Mesa sizes the back buffer anew only after a swap: until the size has held for a
+          // while, whole frames are drawn and swapped, and no rectangle is shown that the back
+          // buffer might not have
+          swapping = swapFramesLeft > 0;
+          if (swapping) {
             damage.addAll();
           }
         } else if (canvas == null || canvas.width() != fw[0] || canvas.height() != fh[0]) {
@@ -489,7 +500,7 @@ public final class SimulatorWindow implements AutoCloseable {
           ui.draw(r);
           uiNanos += System.nanoTime() - u0;
         }
-        if (check != null) {
+        if (check != null && !swapping) {
           int kept = presenter != null ? 0 : canvas.framebuffer();
           check.beginReference(kept, fw[0], fh[0]);
           renderer.render(snap, camera, fw[0], fh[0]);
@@ -500,7 +511,14 @@ public final class SimulatorWindow implements AutoCloseable {
         }
         long t4 = System.nanoTime();
         long t3 = t4 - uiNanos;
-        if (presenter != null) {
+        if (swapping) {
+          glfwSwapBuffers(window);
+          swapFramesLeft--;
+          glfwGetFramebufferSize(window, fw, fh);
+          if (fw[0] != backW || fh[0] != backH) {
+            swapFramesLeft = SWAP_FRAMES_AFTER_RESIZE;
+          }
+        } else if (presenter != null) {
           if (showAll) {
             showAll = false;
             rects = java.util.List.of(new int[] {0, 0, fw[0], fh[0]});
