@@ -51,7 +51,7 @@ public final class SimulatorWindow implements AutoCloseable {
   private volatile boolean showAll = true;
   /** Frames still to be drawn whole and swapped after the window's size changed ({@link #presenter} only). */
   private int swapFramesLeft;
-  private static final int SWAP_FRAMES_AFTER_RESIZE = 30;
+  private static final int SWAP_FRAMES_AFTER_RESIZE = 3;
   /** ROBOTRUN_REDRAW=check: compare each kept frame with a full redraw (tests). */
   private final RedrawCheck check = redrawMode("check") ? new RedrawCheck() : null;
 
