@@ -205,6 +205,15 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
   }
 
+  @Override
+  public long nextRedrawNanos() {
+    if (status.isEmpty()) {
+      return Long.MAX_VALUE;
+    }
+    double left = statusUntil - ImGui.getTime();
+    return left <= 0 ? Long.MAX_VALUE : System.nanoTime() + (long) (left * 1e9) + 1_000_000L;
+  }
+
   private void openWorkspace(boolean mustBeNew) {
     choose(mustBeNew ? "New workspace: a new or empty folder" : "Open workspace: the workspace folder (it holds cell.json)",
         () -> dialogs.pickFolder(actions.workspaceFolder().getParent()), p -> tell(actions.openWorkspace(p, mustBeNew)));
