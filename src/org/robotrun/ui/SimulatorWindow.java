@@ -130,6 +130,10 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     }
     glfwWindowHint(GLFW_SAMPLES, AntiAliasing.DEFAULT.samples());
+    if (System.getenv("ROBOTRUN_HIDDEN_WINDOW") != null) {
+      // the launcher's class-data training run after a build: the window draws but is never shown
+      glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    }
     int[] size = defaultSize(width, height);
     window = glfwCreateWindow(size[0], size[1], title, 0, 0);
     if (window == 0) {
