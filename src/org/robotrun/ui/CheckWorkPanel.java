@@ -99,7 +99,7 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
         running = null;
       }
       if (!error.isEmpty()) {
-        ImGui.textUnformatted(error);
+        ImGui.textUnformatted(Txt.plain(error));
       }
       if (last != null) {
         ImGui.textUnformatted(String.format(Locale.ROOT, "%s of %s points", fmt(last.score()), fmt(last.maxScore())));

@@ -295,7 +295,7 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
     if (ImGui.beginPopupModal("RobotRun##message", ImGuiWindowFlags.AlwaysAutoResize)) {
       ImGui.pushTextWrapPos(ImGui.getFontSize() * 54);
-      ImGui.textUnformatted(messages.isEmpty() ? "" : messages.peek());
+      ImGui.textUnformatted(messages.isEmpty() ? "" : Txt.plain(messages.peek()));
       ImGui.popTextWrapPos();
       if (ImGui.button("OK") || ImGui.isKeyPressed(GLFW_KEY_ENTER)) {
         messages.poll();

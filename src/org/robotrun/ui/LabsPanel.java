@@ -78,9 +78,9 @@ public final class LabsPanel implements Workbench.MenuContributor {
           if (step != null) {
             out.add(step.toString());
           }
-          step = new StringBuilder(line.strip().replace("**", "").replace("`", ""));
+          step = new StringBuilder(unmark(line.strip()));
         } else if (step != null && line.startsWith("   ") && !line.isBlank()) {
-          step.append(' ').append(line.strip().replace("**", "").replace("`", ""));
+          step.append(' ').append(unmark(line.strip()));
         } else if (step != null && line.isBlank()) {
           out.add(step.toString());
           step = null;
@@ -93,6 +93,16 @@ public final class LabsPanel implements Workbench.MenuContributor {
       out.clear();
     }
     return out;
+  }
+
+  /** A markdown emphasis like {@code *Tool Frame*} (a menu item): the asterisks around words go. */
+  private static final java.util.regex.Pattern EMPHASIS =
+      java.util.regex.Pattern.compile("(?<![\\w*])\\*([A-Za-z\\[][^*]*?[^\\s*])\\*(?![\\w*])");
+
+  /** A guide's line as the steps window shows it: no markdown bold, emphasis or code marks. */
+  static String unmark(String line) {
+    String s = line.replace("**", "").replace("`", "");
+    return EMPHASIS.matcher(s).replaceAll("$1");
   }
 
   /** The state of a lab for this student, in words. */
@@ -164,8 +174,12 @@ public final class LabsPanel implements Workbench.MenuContributor {
     float h = ImGui.getIO().getDisplaySizeY();
     ImGui.setNextWindowSize(em * 21, h * 0.5f, ImGuiCond.FirstUseEver);
     ImGui.setNextWindowPos(0, h * 0.47f, ImGuiCond.FirstUseEver);
-    if (ImGui.begin("Lab steps: " + lab.title() + "###labsteps", showSteps)) {
+    // opaque: the left column's text showed through the steps
+    ImGui.setNextWindowBgAlpha(1f);
+    // the lab's title inside the window, wrapped (in the title bar it was cut at the window's edge)
+    if (ImGui.begin("Lab steps###labsteps", showSteps)) {
       ImGui.pushTextWrapPos(0);
+      Txt.wrapped(lab.title());
       if (ImGui.button("< Previous") && at > 0) {
         setStep(lab, at - 1);
       }
@@ -189,7 +203,7 @@ public final class LabsPanel implements Workbench.MenuContributor {
       ImGui.separator();
       Txt.disabled("The whole guide: " + lab.guide());
       if (!message.isEmpty()) {
-        ImGui.textUnformatted(message);
+        ImGui.textUnformatted(Txt.plain(message));
       }
       ImGui.popTextWrapPos();
     }
