@@ -18,7 +18,8 @@ final class SelectScreen implements Screen {
   @Override
   public String title(Pendant p) {
     long running = p.control().programStates().values().stream().filter(v -> !v.equals("BG")).count();
-    return "SELECT" + "   " + p.control().programNames().size() + " programs" + (running > 1 ? "   " + running + " tasks" : "");
+    int n = p.control().programNames().size();
+    return "SELECT" + "   " + n + (n == 1 ? " program" : " programs") + (running > 1 ? "   " + running + " tasks" : "");
   }
 
   private String selected(Pendant p) {
@@ -56,8 +57,8 @@ final class SelectScreen implements Screen {
       String comment = state == null ? prog.comment() : "[" + state + "] " + prog.comment();
       List<String> parts = comment.isBlank() ? List.of("") : Lcd.wrap(comment.strip(), Lcd.WIDTH - COMMENT_COLUMN);
       starts.add(rows.size());
-      rows.add(String.format(Locale.ROOT, "%s%3d %-16s %4d lines  %s", i == cursor ? ">" : " ", i + 1, prog.name(),
-          prog.lineCount(), parts.get(0)));
+      rows.add(String.format(Locale.ROOT, "%s%3d %-16s %4d %-5s  %s", i == cursor ? ">" : " ", i + 1, prog.name(),
+          prog.lineCount(), prog.lineCount() == 1 ? "line" : "lines", parts.get(0)));
       for (String more : parts.subList(1, parts.size())) {
         rows.add(" ".repeat(COMMENT_COLUMN) + more);
       }

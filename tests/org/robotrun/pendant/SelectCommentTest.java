@@ -44,6 +44,8 @@ class SelectCommentTest {
     List<String> body = p.lcd().body();
     assertThat(body.get(0)).startsWith(">  1 PNS0001").contains("PLC job 1:");
     assertThat(body.get(1).substring(0, SelectScreen.COMMENT_COLUMN)).isBlank();
+    assertThat(p.lcd().row(2)).contains("SELECT   2 programs");
+    assertThat(body.get(0)).contains("   0 lines  PLC job 1:");
     // the next program starts its own row after the wrapped comment
     assertThat(body).filteredOn(r -> r.contains("SHORT")).singleElement().asString().startsWith("   2 SHORT");
   }
