@@ -269,9 +269,13 @@ public final class Controller implements MotionPort {
     }
   }
 
+  /** How close to the T1 speed a jog tick is shortened to (just under, so no tick is above it). */
+  private static final double JOG_CAP_MARGIN = 0.999;
+
   /**
    * T1: a jog tick that would move the flange or the TCP faster than 250 mm/s is shortened to
-   * that speed (a joint jog of J1 far from the axis would otherwise outrun it).
+   * that speed (a joint jog of J1 far from the axis would otherwise outrun it; a Cartesian jog
+   * keeps to it already, {@link Jogger#setCartesianSpeedCap}).
    */
   private void capJogStep(double[] q0, double[] q, double dtSec) {
     if (mode != RobotControl.Mode.T1) {
@@ -280,7 +284,7 @@ public final class Controller implements MotionPort {
     double limit = RobotControl.Mode.T1_SPEED_MM_PER_SEC * dtSec;
     double moved = MotionRunner.cartesianStepMm(model, q0, q, frames.activeTool());
     if (moved > limit) {
-      double s = 0.999 * limit / moved;
+      double s = JOG_CAP_MARGIN * limit / moved;
       for (int i = 0; i < q.length; i++) {
         q[i] = q0[i] + (q[i] - q0[i]) * s;
       }
@@ -596,6 +600,9 @@ public final class Controller implements MotionPort {
   private void applySpeedCap() {
     runner.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? RobotControl.Mode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY,
         frames.activeTool());
+    // a Cartesian jog keeps to the cap itself (with capJogStep's margin), so it stays on its line
+    jogger.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? JOG_CAP_MARGIN * RobotControl.Mode.T1_SPEED_MM_PER_SEC
+        : Double.POSITIVE_INFINITY);
   }
 
   /**
