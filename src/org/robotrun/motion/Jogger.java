@@ -221,7 +221,7 @@ public final class Jogger {
       Transform X_TF = X_FT.inverse();
       double step = Math.max(full.translationVector().distanceTo(X_WTdesired.translationVector()),
           full.compose(X_TF).translationVector().distanceTo(X_WTdesired.compose(X_TF).translationVector()));
-      if (step > cartesianCapMmPerSec * dtSec) {
+      if (step > cartesianCapMmPerSec * dtSec * (1 + 1e-9)) {
         capScale = cartesianCapMmPerSec * dtSec / step;
       }
     }

@@ -269,9 +269,6 @@ public final class Controller implements MotionPort {
     }
   }
 
-  /** How close to the T1 speed a jog tick is shortened to (just under, so no tick is above it). */
-  private static final double JOG_CAP_MARGIN = 0.999;
-
   /**
    * T1: a jog tick that would move the flange or the TCP faster than 250 mm/s is shortened to
    * that speed (a joint jog of J1 far from the axis would otherwise outrun it; a Cartesian jog
@@ -284,7 +281,7 @@ public final class Controller implements MotionPort {
     double limit = RobotControl.Mode.T1_SPEED_MM_PER_SEC * dtSec;
     double moved = MotionRunner.cartesianStepMm(model, q0, q, frames.activeTool());
     if (moved > limit) {
-      double s = JOG_CAP_MARGIN * limit / moved;
+      double s = 0.999 * limit / moved;
       for (int i = 0; i < q.length; i++) {
         q[i] = q0[i] + (q[i] - q0[i]) * s;
       }
@@ -600,9 +597,9 @@ public final class Controller implements MotionPort {
   private void applySpeedCap() {
     runner.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? RobotControl.Mode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY,
         frames.activeTool());
-    // a Cartesian jog keeps to the cap itself (with capJogStep's margin), so it stays on its line
-    jogger.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? JOG_CAP_MARGIN * RobotControl.Mode.T1_SPEED_MM_PER_SEC
-        : Double.POSITIVE_INFINITY);
+    // a Cartesian jog keeps to the cap itself, so it stays on its line (capJogStep's margin below
+    // it only holds the arm a hair behind the jog's pose, which the ramp down makes up)
+    jogger.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? RobotControl.Mode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY);
   }
 
   /**
