@@ -14,7 +14,7 @@ import org.robotrun.program.Program;
  * program whole in view.
  */
 class SelectCommentTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final org.robotrun.control.RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
   private void program(String name, String comment) {
