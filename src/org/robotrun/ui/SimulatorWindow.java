@@ -306,7 +306,7 @@ public final class SimulatorWindow implements AutoCloseable {
       // function keys still reach the pendant then. A key held while a text field took focus
       // still stops when let go; a key typed into the field stays the field's (TypingKeyFilter).
       boolean typing = ImGui.getIO().getWantTextInput();
-      if (action == GLFW_PRESS && !typing && shortcuts.onShortcut(key, mods)) {
+      if (action == GLFW_PRESS && (!typing || shortcutWhileTyping(key)) && shortcuts.onShortcut(key, mods)) {
         return;
       }
       if (!typingFilter.pass(key, action, typing)) {
@@ -388,6 +388,15 @@ public final class SimulatorWindow implements AutoCloseable {
     } catch (RuntimeException | LinkageError e) {
       // no window (a test, a headless run): nothing sleeps that could be woken
     }
+  }
+
+  /**
+   * Whether the window's Ctrl shortcut on {@code glfwKey} works while a text field has the
+   * keyboard: Ctrl+Q, Ctrl+S and Ctrl+O do (with the pendant's Type field focused, Ctrl+Q did
+   * nothing); the keys a text field edits with (Ctrl+Z, Y, A, C, V, X, H) stay the field's.
+   */
+  static boolean shortcutWhileTyping(int glfwKey) {
+    return glfwKey == GLFW_KEY_Q || glfwKey == GLFW_KEY_S || glfwKey == GLFW_KEY_O;
   }
 
   /**

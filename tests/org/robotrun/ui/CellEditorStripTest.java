@@ -75,4 +75,13 @@ class CellEditorStripTest {
     assertThat(SimulatorWindow.idleSleepSec(now0, now0 - 1)).isEqualTo(0.001);
     assertThat(SimulatorWindow.idleSleepSec(now0, now0 + 3_600_000_000_000L)).isEqualTo(SimulatorWindow.IDLE_REDRAW_SEC);
   }
+
+  @Test
+  void quitSaveAndOpenWorkWhileATextFieldHasTheKeyboardAndItsEditingKeysStayTheFields() {
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_Q)).isTrue();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_S)).isTrue();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_O)).isTrue();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_Z)).isFalse();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_H)).isFalse();
+  }
 }
