@@ -3,6 +3,7 @@ package org.robotrun.robot;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.io.RobotDefinitions;
 
 /** The joint-limit helper the three closed-form solvers share. */
 class JointRangeTest {
