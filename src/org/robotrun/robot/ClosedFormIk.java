@@ -59,8 +59,6 @@ public final class ClosedFormIk implements IkSolver {
   private final double a1, a2, b, c1, c2, c3, c4, kappa, psi;
   private final double[] offset = new double[6];
   private final double[] sign = new double[6];
-  private final double[] lower;
-  private final double[] upper;
   private final JointRange range;
 
   private final double[] target = new double[12];
@@ -102,8 +100,6 @@ public final class ClosedFormIk implements IkSolver {
       sign[i] = p.sign(i);
     }
     // Round-off can put a solution at a limit 1e-15 outside it: accept that and clamp.
-    lower = model.lowerLimits();
-    upper = model.upperLimits();
     range = new JointRange(model);
   }
 
@@ -180,9 +176,7 @@ public final class ClosedFormIk implements IkSolver {
     cand[4] = range.intoLimits(cand[4], 4);
     for (int i = 0; i < 6; i++) {
       if (!range.ok(cand[i], i)) {
-        return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, String.format(
-            "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg", config, i + 1,
-            Math.toDegrees(cand[i]), Math.toDegrees(lower[i]), Math.toDegrees(upper[i])));
+        return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, range.outside(config, i, cand[i]));
       }
       cand[i] = range.clamp(cand[i], i);
     }
@@ -212,7 +206,7 @@ public final class ClosedFormIk implements IkSolver {
       return outOfReach();
     }
     if (!nearest(valid, qCurrent)) {
-      return limitsOnly();
+      return JointRange.everySolutionOutside();
     }
     return solved(best);
   }
@@ -243,7 +237,7 @@ public final class ClosedFormIk implements IkSolver {
         return Optional.empty();
       }
     }
-    return Optional.of(limitsOnly());
+    return Optional.of(JointRange.everySolutionOutside());
   }
 
   /** Base solution k has a turn of every joint within {@link #VERDICT_SLACK} of the limits. */
@@ -253,7 +247,7 @@ public final class ClosedFormIk implements IkSolver {
       boolean any = false;
       for (int t = -2; t <= 2 && !any; t++) {
         double v = q + TWO_PI * t;
-        any = v >= lower[i] - VERDICT_SLACK && v <= upper[i] + VERDICT_SLACK;
+        any = v >= range.lower(i) - VERDICT_SLACK && v <= range.upper(i) + VERDICT_SLACK;
       }
       if (!any) {
         return false;
@@ -290,11 +284,6 @@ public final class ClosedFormIk implements IkSolver {
       }
     }
     return bestD != Double.POSITIVE_INFINITY;
-  }
-
-  private static IkResult.Unreachable limitsOnly() {
-    return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-        "the pose is within reach but every solution has a joint outside its limits");
   }
 
   /**

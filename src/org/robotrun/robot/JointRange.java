@@ -87,6 +87,24 @@ final class JointRange {
     return ok(alt, i) ? clamp(alt, i) : q;
   }
 
+  /** Why {@code config} cannot be taken: joint i would need {@code q} (rad), outside its limits. */
+  String outside(Config config, int i, double q) {
+    return String.format(java.util.Locale.ROOT, "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg", config,
+        i + 1, Math.toDegrees(q), Math.toDegrees(lower[i]), Math.toDegrees(upper[i]));
+  }
+
+  /** The answer when the pose is reached, but by no solution with every joint inside its limits. */
+  static IkResult.Unreachable everySolutionOutside() {
+    return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
+        "the pose is within reach but every solution has a joint outside its limits");
+  }
+
+  /** The answer when the pose is reached only in other configurations than {@code config}. */
+  static IkResult.Unreachable otherConfigsOnly(Config config) {
+    return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH,
+        "the pose is out of reach in CONFIG '" + config + "' (only other configurations reach it)");
+  }
+
   /** The squared distance between two joint vectors, rad². */
   static double distance(double[] a, double[] b) {
     double d = 0;

@@ -97,8 +97,6 @@ public final class OffsetWristIk implements IkSolver {
   private final KinematicChain chain;
   private final ChainConfig configs;
   private final Layout lay;
-  private final double[] lower;
-  private final double[] upper;
   private final JointRange range;
   // Per joint: X_PJ rotation (row-major), translation, axis in the joint frame.
   private final double[] rpj = new double[54];
@@ -148,8 +146,6 @@ public final class OffsetWristIk implements IkSolver {
     this.chain = new KinematicChain(model);
     this.polish = new NewtonPolish(chain, 4, 1, 1e-2);
     this.configs = new ChainConfig(chain);
-    lower = model.lowerLimits();
-    upper = model.upperLimits();
     range = new JointRange(model);
     for (int i = 0; i < 6; i++) {
       JointSpec j = model.joint(i);
@@ -248,8 +244,7 @@ public final class OffsetWristIk implements IkSolver {
       cand[4] = range.intoLimits(cand[4], 4);
       int bad = range.firstOutside(cand);
       if (bad >= 0) {
-        limitWhy = String.format(java.util.Locale.ROOT, "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg",
-            config, bad + 1, Math.toDegrees(cand[bad]), Math.toDegrees(lower[bad]), Math.toDegrees(upper[bad]));
+        limitWhy = range.outside(config, bad, cand[bad]);
         continue;
       }
       double d = JointRange.distance(cand, qNear);
@@ -263,8 +258,7 @@ public final class OffsetWristIk implements IkSolver {
       return solved(best);
     }
     if (!branch) {
-      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH,
-          "the pose is out of reach in CONFIG '" + config + "' (only other configurations reach it)");
+      return JointRange.otherConfigsOnly(config);
     }
     return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, limitWhy);
   }
@@ -292,8 +286,7 @@ public final class OffsetWristIk implements IkSolver {
       }
     }
     if (bestD == Double.POSITIVE_INFINITY) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose is within reach but every solution has a joint outside its limits");
+      return JointRange.everySolutionOutside();
     }
     return solved(best);
   }

@@ -69,8 +69,6 @@ public final class UrTypeIk implements IkSolver {
   private final KinematicChain chain;
   /** Newton steps that finish each answer when the geometry fits only to within rounding; else null. */
   private final NewtonPolish polish;
-  private final double[] lower;
-  private final double[] upper;
   private final JointRange range;
   // Joint frames: rotation (row-major), translation, axis (joint frame), for J1, J5, J6.
   private final double[] r1 = new double[9];
@@ -143,8 +141,6 @@ public final class UrTypeIk implements IkSolver {
   public UrTypeIk(RobotModel model) {
     this.model = model;
     this.chain = new KinematicChain(model);
-    lower = model.lowerLimits();
-    upper = model.upperLimits();
     range = new JointRange(model);
     Transform[] L = ForwardKinematics.linkPosesInBase(model, new double[6]);
     Vec3[] p = new Vec3[6];
@@ -286,7 +282,7 @@ public final class UrTypeIk implements IkSolver {
     double[] x = new double[12];
     for (int k = 0; k < VERIFY_SAMPLES; k++) {
       for (int i = 0; i < 6; i++) {
-        q[i] = k == 0 ? 0.3 : lower[i] + rnd.nextDouble() * (upper[i] - lower[i]);
+        q[i] = k == 0 ? 0.3 : range.lower(i) + rnd.nextDouble() * (range.upper(i) - range.lower(i));
       }
       chain.flangePose(q, x, null);
       System.arraycopy(x, 0, target, 0, 12);
@@ -379,8 +375,7 @@ public final class UrTypeIk implements IkSolver {
       int bad = range.firstOutside(cand);
       if (bad >= 0) {
         double shown = Double.isNaN(cand[bad]) ? base[o + bad] : cand[bad];
-        limitWhy = String.format(Locale.ROOT, "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg",
-            config, bad + 1, Math.toDegrees(shown), Math.toDegrees(lower[bad]), Math.toDegrees(upper[bad]));
+        limitWhy = range.outside(config, bad, shown);
         continue;
       }
       double d = JointRange.distance(cand, qNear);
@@ -394,8 +389,7 @@ public final class UrTypeIk implements IkSolver {
       return solved(best);
     }
     if (!branch) {
-      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH,
-          "the pose is out of reach in CONFIG '" + config + "' (only other configurations reach it)");
+      return JointRange.otherConfigsOnly(config);
     }
     return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, limitWhy);
   }
@@ -422,8 +416,7 @@ public final class UrTypeIk implements IkSolver {
       }
     }
     if (bestD == Double.POSITIVE_INFINITY) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose is within reach but every solution has a joint outside its limits");
+      return JointRange.everySolutionOutside();
     }
     range.clampAll(best);
     return solved(best);
