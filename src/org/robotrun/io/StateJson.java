@@ -207,12 +207,11 @@ final class StateJson extends JsonFieldReader {
       srObj.members().forEach((key, v) -> {
         String at = join(root, "stringRegisters." + key);
         Integer i = keyIndex(key, Registers.SR_COUNT, srObj.keyLines().get(key), at, "string register");
-        if (!(v instanceof JString t)) {
-          error(v.line(), at, "expected text, got " + v.describe());
-        } else if (t.value().length() > Registers.SR_LENGTH) {
-          error(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.value().length());
-        } else if (i != null) {
-          strings.put(i, t.value());
+        Optional<String> t = string(srObj, key, join(root, "stringRegisters"), true);
+        if (t.isPresent() && t.get().length() > Registers.SR_LENGTH) {
+          error(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.get().length());
+        } else if (t.isPresent() && i != null) {
+          strings.put(i, t.get());
         }
       });
     }
@@ -259,10 +258,9 @@ final class StateJson extends JsonFieldReader {
         };
         if (item == null || item.index() < 1 || item.index() > max) {
           error(comObj.keyLines().get(key), at, "expected R[i], PR[i], UT[i] or UF[i], got \"" + key + "\"");
-        } else if (!(v instanceof JString s)) {
-          error(v.line(), at, "expected text, got " + v.describe());
         } else {
-          comments.put(item.table() + "[" + item.index() + "]", s.value());
+          string(comObj, key, join(root, "comments"), true)
+              .ifPresent(text -> comments.put(item.table() + "[" + item.index() + "]", text));
         }
       });
     }
