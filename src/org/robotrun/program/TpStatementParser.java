@@ -144,6 +144,8 @@ public final class TpStatementParser extends TpTokenCursor {
   private int operators;
   private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
+  /** Complete a motion missing its speed or termination, as a hand-edited file is read. */
+  private boolean mendHandEdits;
   /** The I/O sizes a direct index is checked against (a warning beyond them). */
   private final IoRanges ioRanges = IoRanges.DEFAULT;
 
@@ -168,8 +170,24 @@ public final class TpStatementParser extends TpTokenCursor {
    * are kept exactly as written. It may answer null; then they are rebuilt from the tokens.
    */
   public static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
+    return parse(tokens, lineText, false);
+  }
+
+  /**
+   * Parses one statement of a file as {@link #parse(List, java.util.function.IntFunction)}
+   * does, and mends what hand-edited files lack the way RobotRun reads FANUC's offline converter
+   * (docs/tp-language.md, "Program lines"): a motion without speed and/or termination is
+   * completed from the first row of its type in the pendant's default-motion table ({@link
+   * DefaultMotions}), with a {@code mended: ...} warning.
+   */
+  public static Parsed parseMendingHandEdits(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
+    return parse(tokens, lineText, true);
+  }
+
+  private static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText, boolean mend) {
     TpStatementParser p = new TpStatementParser(tokens);
     p.lineText = lineText;
+    p.mendHandEdits = mend;
     Instruction in = p.statement();
     if (p.peek().is(Kind.SEMICOLON)) {
       throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
@@ -1057,8 +1075,20 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       end = Optional.of(motionTarget());
     }
-    Motion.Speed speed = speed(type);
-    Motion.Termination term = termination();
+    boolean noSpeed = mendHandEdits && (peek().is(Kind.EOL) || isTermination(peek()));
+    Motion.Speed speed = noSpeed ? DefaultMotions.first(type).speed() : speed(type);
+    boolean noTermination = mendHandEdits && peek().is(Kind.EOL);
+    Motion.Termination term = noTermination ? DefaultMotions.first(type).termination() : termination();
+    if (noSpeed || noTermination) {
+      DefaultMotions.Row row = DefaultMotions.first(type);
+      String missing = noSpeed && noTermination ? "speed and termination" : noSpeed ? "speed" : "termination";
+      String added = noSpeed && noTermination ? TpText.speed(speed) + " " + TpText.termination(term)
+          : noSpeed ? TpText.speed(speed) : TpText.termination(term);
+      warnings.add("mended: a " + type + " motion without " + missing + ": completed with " + added
+          + " from the pendant's first default " + row.type() + " motion (" + row.type() + " P[] "
+          + TpText.speed(row.speed()) + " " + TpText.termination(row.termination())
+          + (row.type() == type ? ")" : "; its table has no " + type + " row)"));
+    }
     List<Motion.Option> options = new ArrayList<>();
     while (!peek().is(Kind.EOL)) {
       options.add(motionOption());
@@ -1148,6 +1178,12 @@ public final class TpStatementParser extends TpTokenCursor {
       case "deg/sec" -> Motion.SpeedUnit.DEG_PER_SEC;
       default -> throw error(t, "unknown speed unit '" + full + "': expected mm/sec, cm/min, inch/min or deg/sec");
     };
+  }
+
+  /** FINE, CNT or CNTn: a termination starts here. */
+  private static boolean isTermination(TpToken t) {
+    return t.isWord("FINE") || t.isWord("CNT")
+        || t.is(Kind.WORD) && t.text().regionMatches(true, 0, "CNT", 0, 3) && allDigits(t.text(), 3);
   }
 
   private Motion.Termination termination() {
