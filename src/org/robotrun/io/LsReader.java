@@ -220,6 +220,16 @@ public final class LsReader {
         }
         diags.add(Diagnostic.error(file, i + 1, "expected '/PROG  NAME' (an ASCII .LS program), found '" + clip(lines[i]) + "'"));
       }
+      if ("/PROG".equals(sectionHeader(lines[i]))) {
+        // a lone CR ends a line too (splitLines): worth a word, once, in a file that is a program
+        for (int c = text.indexOf('\r'); c >= 0; c = text.indexOf('\r', c + 1)) {
+          if (c + 1 == text.length() || text.charAt(c + 1) != '\n') {
+            mend(rawLines(text.substring(0, c + 1)).size(),
+                "a line ending in a lone CR (an old Mac editor's line end): read as a line break");
+            break;
+          }
+        }
+      }
       boolean sawProg = false;
       boolean sawAttr = false;
       boolean sawMn = false;
@@ -364,7 +374,7 @@ public final class LsReader {
         }
       }
       List<String> appl = raw.subList(applStart, mn);
-      String lineEnd = text.contains("\r\n") ? "\r\n" : "\n";
+      String lineEnd = text.contains("\r\n") ? "\r\n" : text.indexOf('\n') < 0 && text.indexOf('\r') >= 0 ? "\r" : "\n";
       List<List<String>> statements = new ArrayList<>();
       for (int j = 0; j < statementStart.size(); j++) {
         int from = statementStart.get(j);
@@ -417,7 +427,8 @@ public final class LsReader {
       List<String> out = new ArrayList<>();
       int s = 0;
       for (int i = 0; i < text.length(); i++) {
-        if (text.charAt(i) == '\n') {
+        char c = text.charAt(i);
+        if (c == '\n' || c == '\r' && (i + 1 == text.length() || text.charAt(i + 1) != '\n')) {
           out.add(text.substring(s, i + 1));
           s = i + 1;
         }
@@ -497,6 +508,12 @@ public final class LsReader {
     }
 
     private void attrEntry(String text, int line) {
+      if (!text.endsWith(";") && !text.contains("\n") && text.indexOf('=') > 0
+          && isKey(text.substring(0, text.indexOf('=')).strip())) {
+        // "VERSION = 0" typed without its ';'
+        mend(line, "no ';' at the end of the /ATTR entry: read as if it were there");
+        text = text + ";";
+      }
       if (!text.endsWith(";")) {
         diags.add(Diagnostic.error(file, line, "/ATTR entry does not end with ';': expected 'KEY = value;'"));
         return;
@@ -578,13 +595,20 @@ public final class LsReader {
         while (p < text.length() && Character.isDigit(text.charAt(p)) && text.charAt(p) < 128) {
           p++;
         }
+        int digitsEnd = p;
+        if (p > digitsStart && skipSpaces(text, p) > p && skipSpaces(text, p) < text.length()
+            && text.charAt(skipSpaces(text, p)) == ':') {
+          // " 3 :  R[2]=1 ;": spaces between the number and its ':'
+          mend(line, "spaces between the line number and ':': read as '" + text.substring(digitsStart, p) + ":'");
+          p = skipSpaces(text, p);
+        }
         boolean numbered = p > digitsStart && p < text.length() && text.charAt(p) == ':';
         boolean colonOnly = !numbered && p == digitsStart && p < text.length() && text.charAt(p) == ':';
         int expected = instructions.size() + 1;
-        boolean unnumbered = !numbered && !colonOnly && p < text.length()
+        boolean unnumbered = !numbered && !colonOnly && p == digitsStart && p < text.length()
             && (Character.isLetter(text.charAt(p)) || text.charAt(p) == '!' || text.startsWith("//", p));
         if (!numbered && !colonOnly && !unnumbered) {
-          diags.add(Diagnostic.of(file, line, p + 1, Diagnostic.Severity.ERROR, Diagnostic.Kind.SYNTAX,
+          diags.add(Diagnostic.of(file, line, digitsStart + 1, Diagnostic.Severity.ERROR, Diagnostic.Kind.SYNTAX,
               "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
           continue;
         }
@@ -600,13 +624,13 @@ public final class LsReader {
         } else {
           int number;
           try {
-            number = Integer.parseInt(text.substring(digitsStart, p));
+            number = Integer.parseInt(text.substring(digitsStart, digitsEnd));
           } catch (NumberFormatException e) {
             number = -1;
           }
           if (number != expected) {
             // Hand-edited files repeat or reorder numbers; the offline converter numbers lines in file order.
-            mend(line, "line number " + clip(text.substring(digitsStart, p)) + " out of order or repeated: read as line "
+            mend(line, "line number " + clip(text.substring(digitsStart, digitsEnd)) + " out of order or repeated: read as line "
                 + expected);
           }
         }
@@ -757,8 +781,15 @@ public final class LsReader {
       return out == null ? tokens : out;
     }
 
+    /** Words a value follows: {@code IF [R3]>1}, {@code WAIT [R1]>2}, {@code [R1] AND [R2]}. */
+    private static final Set<String> VALUE_AFTER = Set.of(
+        "IF", "WAIT", "SELECT", "AND", "OR", "NOT", "MOD", "DIV", "TO", "DOWNTO", "WHEN");
+
     /** A token after which '[' opens an index or argument list ({@code R[}, {@code ][}, {@code $X[}), not a value. */
     private static boolean endsOperand(TpToken t) {
+      if (t.is(TpToken.Kind.WORD) && VALUE_AFTER.contains(t.text().toUpperCase(Locale.ROOT))) {
+        return false; // IF [R3]>1: a value follows the word
+      }
       return switch (t.kind()) {
         case WORD, NUMBER, STRING, RBRACKET, RPAREN, ITEM_COMMENT, RAW -> true;
         default -> false;
@@ -891,19 +922,18 @@ public final class LsReader {
       return bad > 0;
     }
 
+    /** Lines split at LF, CRLF and a lone CR (old Mac editors), without their line ends. */
     private static String[] splitLines(String text) {
       List<String> out = new ArrayList<>();
-      int s = 0;
-      int len = text.length();
-      for (int i = 0; i < len; i++) {
-        if (text.charAt(i) == '\n') {
-          int e = i > s && text.charAt(i - 1) == '\r' ? i - 1 : i;
-          out.add(text.substring(s, e));
-          s = i + 1;
+      for (String raw : rawLines(text)) {
+        int e = raw.length();
+        if (e > 0 && raw.charAt(e - 1) == '\n') {
+          e--;
         }
-      }
-      if (s < len) {
-        out.add(text.substring(s).replace("\r", ""));
+        if (e > 0 && raw.charAt(e - 1) == '\r') {
+          e--;
+        }
+        out.add(raw.substring(0, e));
       }
       return out.toArray(String[]::new);
     }

@@ -1075,9 +1075,9 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       end = Optional.of(motionTarget());
     }
-    boolean noSpeed = mendHandEdits && (peek().is(Kind.EOL) || isTermination(peek()));
+    boolean noSpeed = mendHandEdits && (peek().is(Kind.EOL) || isTermination(peek()) || isMotionOption(peek()));
     Motion.Speed speed = noSpeed ? DefaultMotions.first(type).speed() : speed(type);
-    boolean noTermination = mendHandEdits && peek().is(Kind.EOL);
+    boolean noTermination = mendHandEdits && (peek().is(Kind.EOL) || isMotionOption(peek()));
     Motion.Termination term = noTermination ? DefaultMotions.first(type).termination() : termination();
     if (noSpeed || noTermination) {
       DefaultMotions.Row row = DefaultMotions.first(type);
@@ -1178,6 +1178,15 @@ public final class TpStatementParser extends TpTokenCursor {
       case "deg/sec" -> Motion.SpeedUnit.DEG_PER_SEC;
       default -> throw error(t, "unknown speed unit '" + full + "': expected mm/sec, cm/min, inch/min or deg/sec");
     };
+  }
+
+  /** Words that start a motion option (after the termination), for the hand-edit mend only. */
+  private static final java.util.Set<String> OPTION_WORDS = java.util.Set.of(
+      "OFFSET", "TOOL_OFFSET", "SKIP", "WJNT", "INC", "ACC", "TB", "TA", "DB", "PTH", "RTCP", "COORD", "MROT",
+      "BREAK", "CR", "PSPD", "VOFFSET", "EV", "IND.EV", "RT_LD", "AP_LD", "CORNER");
+
+  private static boolean isMotionOption(TpToken t) {
+    return t.is(Kind.WORD) && OPTION_WORDS.contains(t.text().toUpperCase(Locale.ROOT));
   }
 
   /** FINE, CNT or CNTn: a termination starts here. */
