@@ -720,7 +720,12 @@ public final class TpStatementParser extends TpTokenCursor {
       while (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
         boolean add = next().is(Kind.PLUS);
         countOperator();
+        TpToken at = peek();
         Instruction.PosSource term = posSource(false);
+        if (term instanceof Instruction.FromVisionRegister) {
+          // PR[1]=PR[1]+VR[1].OFFSET: a vision option's form, kept and not run
+          throw unsupported(at, "PR[i]=vision registers VR[] in position arithmetic", false);
+        }
         if (!Instruction.PosSum.isTerm(term)) {
           throw error("expected PR[], P[], LPOS or JPOS after '" + (add ? "+" : "-") + "' in position arithmetic");
         }
@@ -1189,6 +1194,20 @@ public final class TpStatementParser extends TpTokenCursor {
     return t.is(Kind.WORD) && OPTION_WORDS.contains(t.text().toUpperCase(Locale.ROOT));
   }
 
+  /** Letters, digits and '_', starting with a letter: a register or port kind's name ({@code M}, {@code WO}). */
+  private static boolean isKindName(String w) {
+    if (w.isEmpty() || !Character.isLetter(w.charAt(0)) || w.length() > 24) {
+      return false;
+    }
+    for (int i = 0; i < w.length(); i++) {
+      char c = w.charAt(i);
+      if (!(c < 128 && (Character.isLetterOrDigit(c) || c == '_'))) {
+        return false;
+      }
+    }
+    return true;
+  }
+
   /** FINE, CNT or CNTn: a termination starts here. */
   private static boolean isTermination(TpToken t) {
     return t.isWord("FINE") || t.isWord("CNT")
@@ -1573,6 +1592,10 @@ public final class TpStatementParser extends TpTokenCursor {
               }
               // An application's or another option's variable: the line alarms naming it.
               throw unsupported(t, "system variable " + TpToken.clip(t.text()) + " in an expression", false);
+            }
+            if (peek().is(Kind.LBRACKET) && isKindName(w)) {
+              // M[1] (a marker), WO[2], an application's register or port kind: kept, the line alarms
+              throw unsupported(t, TpToken.clip(w) + "[] in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
           }
