@@ -144,8 +144,12 @@ public final class TpStatementParser extends TpTokenCursor {
   private int operators;
   private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
-  /** Complete a motion missing its speed or termination, as a hand-edited file is read. */
-  private boolean mendHandEdits;
+  /**
+   * Reading a file (not the pendant's entry): complete a motion missing its speed or
+   * termination, as a hand-edited file is read, and keep a register kind RobotRun does not know
+   * in an expression as unsupported (a controller with that option wrote it).
+   */
+  private boolean fromFile;
   /** The I/O sizes a direct index is checked against (a warning beyond them). */
   private final IoRanges ioRanges = IoRanges.DEFAULT;
 
@@ -178,7 +182,8 @@ public final class TpStatementParser extends TpTokenCursor {
    * does, and mends what hand-edited files lack the way RobotRun reads FANUC's offline converter
    * (docs/tp-language.md, "Program lines"): a motion without speed and/or termination is
    * completed from the first row of its type in the pendant's default-motion table ({@link
-   * DefaultMotions}), with a {@code mended: ...} warning.
+   * DefaultMotions}), with a {@code mended: ...} warning; and a register or port kind it does not
+   * know in an expression ({@code M[1]}) is unsupported rather than a syntax error.
    */
   public static Parsed parseMendingHandEdits(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
     return parse(tokens, lineText, true);
@@ -187,7 +192,7 @@ public final class TpStatementParser extends TpTokenCursor {
   private static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText, boolean mend) {
     TpStatementParser p = new TpStatementParser(tokens);
     p.lineText = lineText;
-    p.mendHandEdits = mend;
+    p.fromFile = mend;
     Instruction in = p.statement();
     if (p.peek().is(Kind.SEMICOLON)) {
       throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
@@ -1080,9 +1085,9 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       end = Optional.of(motionTarget());
     }
-    boolean noSpeed = mendHandEdits && (peek().is(Kind.EOL) || isTermination(peek()) || isMotionOption(peek()));
+    boolean noSpeed = fromFile && (peek().is(Kind.EOL) || isTermination(peek()) || isMotionOption(peek()));
     Motion.Speed speed = noSpeed ? DefaultMotions.first(type).speed() : speed(type);
-    boolean noTermination = mendHandEdits && (peek().is(Kind.EOL) || isMotionOption(peek()));
+    boolean noTermination = fromFile && (peek().is(Kind.EOL) || isMotionOption(peek()));
     Motion.Termination term = noTermination ? DefaultMotions.first(type).termination() : termination();
     if (noSpeed || noTermination) {
       DefaultMotions.Row row = DefaultMotions.first(type);
@@ -1593,7 +1598,7 @@ public final class TpStatementParser extends TpTokenCursor {
               // An application's or another option's variable: the line alarms naming it.
               throw unsupported(t, "system variable " + TpToken.clip(t.text()) + " in an expression", false);
             }
-            if (peek().is(Kind.LBRACKET) && isKindName(w)) {
+            if (fromFile && peek().is(Kind.LBRACKET) && isKindName(w)) {
               // M[1] (a marker), WO[2], an application's register or port kind: kept, the line alarms
               throw unsupported(t, TpToken.clip(w) + "[] in an expression", false);
             }
