@@ -271,4 +271,144 @@ class ControllerPortSwitchTableTest {
     assertThat(c.pauseTask("NOPE", false)).isEqualTo(Result.refused("NOPE is not a running task"));
     assertThat(c.abortTask("NOPE")).isEqualTo(Result.refused("NOPE is not a running task"));
   }
+
+  @Test
+  void theSwitchesReadBackAsSetAndStepModeToo() {
+    ControllerPort c = Rig.fresh().port();
+    assertThat(c.deadmanHeld()).isFalse();
+    assertThat(c.shiftHeld()).isFalse();
+    assertThat(c.stepMode()).isFalse();
+    c.setDeadman(true);
+    c.setShift(true);
+    c.setStepMode(true);
+    assertThat(c.deadmanHeld()).isTrue();
+    assertThat(c.shiftHeld()).isTrue();
+    assertThat(c.stepMode()).isTrue();
+    c.setStepMode(false);
+    assertThat(c.stepMode()).isFalse();
+  }
+
+  @Test
+  void holdPausesARunningProgramAndTheTaskCanBePausedByName() {
+    Rig rig = new Switches(Mode.T1, true, false, true, true).apply();
+    ControllerPort c = rig.port();
+    assertThat(c.run(StartFrom.TEACH_PENDANT, "WAITS", 1, true)).isInstanceOf(Result.Ok.class);
+    rig.clock().advance(0.1);
+    c.hold();
+    assertThat(c.status().state()).isEqualTo(ExecState.PAUSED);
+    assertThat(c.status().program()).isEqualTo("WAITS");
+    c.abort();
+    assertThat(c.status().state()).isNotEqualTo(ExecState.PAUSED).isNotEqualTo(ExecState.RUNNING);
+  }
+
+  @Test
+  void anAbortAlarmEndsTheProgramAndAPauseAlarmKeepsIt() {
+    // UALM[1] with the default user alarm severity pauses; a division by zero is an INTP alarm that aborts
+    String text = "/PROG  DIV0\n/ATTR\n/MN\n   1:  R[1]=0 ;\n   2:  R[2]=1/R[1] ;\n/POS\n/END\n";
+    Rig rig = new Switches(Mode.T1, true, false, true, true).apply();
+    ControllerPort c = rig.port();
+    c.saveProgram(LsReader.parse("DIV0.LS", text).program());
+    assertThat(c.run(StartFrom.TEACH_PENDANT, "DIV0", 1, true)).isInstanceOf(Result.Ok.class);
+    rig.clock().advance(0.1);
+    assertThat(c.activeAlarm()).isPresent();
+    assertThat(c.activeAlarm().get().program()).isEqualTo("DIV0");
+    assertThat(c.activeAlarm().get().line()).isEqualTo(2);
+    assertThat(c.activeAlarm().get().display()).startsWith(c.activeAlarm().get().code() + " (DIV0, 2) ");
+    assertThat(c.status().state()).isIn(ExecState.ABORTED, ExecState.PAUSED);
+  }
+
+  @Test
+  void bgLogicSlotsAreAddedStartedStoppedAndRemovedByName() {
+    String text = "/PROG  BGP\n/ATTR\nDEFAULT_GROUP\t= *,*,*,*,*;\n/MN\n   1:  F[1]=(ON) ;\n/POS\n/END\n";
+    Rig rig = Rig.fresh();
+    ControllerPort c = rig.port();
+    c.saveProgram(LsReader.parse("BGP.LS", text).program());
+    assertThat(c.bgSlots()).isEmpty();
+    assertThat(c.addBg("BGP")).isInstanceOf(Result.Ok.class);
+    assertThat(c.bgSlots()).extracting(org.robotrun.control.RobotControl.BgSlot::program).containsExactly("BGP");
+    assertThat(c.runBg("BGP", false)).isInstanceOf(Result.Ok.class);
+    assertThat(c.bgSlots()).containsExactly(new org.robotrun.control.RobotControl.BgSlot("BGP", false));
+    assertThat(c.programStates()).doesNotContainKey("BGP");
+    assertThat(c.runBg("BGP", true)).isInstanceOf(Result.Ok.class);
+    rig.clock().advance(0.05);
+    assertThat(c.bgSlots()).containsExactly(new org.robotrun.control.RobotControl.BgSlot("BGP", true));
+    assertThat(c.programStates()).containsEntry("BGP", "BG");
+    assertThat(c.registers().bit(org.robotrun.program.IoKind.F, 1)).isTrue();
+    assertThat(c.runBg("BGP", false)).isInstanceOf(Result.Ok.class);
+    assertThat(c.programStates()).doesNotContainKey("BGP");
+    assertThat(c.removeBg("BGP")).isInstanceOf(Result.Ok.class);
+    assertThat(c.bgSlots()).isEmpty();
+    assertThat(c.removeBg("BGP")).isInstanceOf(Result.Refused.class);
+  }
+
+  @Test
+  void jogFramesAreKeptAndSelected() {
+    ControllerPort c = Rig.fresh().port();
+    Position.Cartesian f = new Position.Cartesian(100, -50, 20, 0, 0, 30, Position.Cartesian.ZERO.config());
+    c.setJogFrame(2, f);
+    c.selectJogFrame(2);
+    Position.Cartesian back = c.jogFrame(2);
+    assertThat(new double[] {back.xMm(), back.yMm(), back.zMm(), back.wDeg(), back.pDeg(), back.rDeg()})
+        .containsExactly(new double[] {100, -50, 20, 0, 0, 30}, org.assertj.core.data.Offset.offset(1e-9));
+    assertThat(c.activeJogFrame()).isEqualTo(2);
+  }
+
+  @Test
+  void theArmIsDescribedByItsModel() {
+    ControllerPort c = Rig.fresh().port();
+    var model = c.controller().model();
+    assertThat(c.jointNames()).hasSize(6).isEqualTo(model.joints().stream().map(org.robotrun.robot.JointSpec::name).toList());
+    assertThat(c.coupledJ3()).isEqualTo(model.coupledJ3());
+    assertThat(c.program("WAITS")).isPresent();
+    assertThat(c.program("NOPE")).isEmpty();
+    assertThat(c.userMessages()).isEmpty();
+    assertThat(c.jogStopReason()).isEmpty();
+  }
+
+  @Test
+  void aPoseConvertsToJointsAndBackAndTheArmMovesThere() {
+    Rig rig = Rig.fresh();
+    ControllerPort c = rig.port();
+    Position.Joint home = c.currentJoints();
+    Position.Cartesian pose = c.currentPose(0, 0);
+    assertThat(c.toCartesian(home, 0, 0)).isEqualTo(pose);
+    Position.Cartesian moved = new Position.Cartesian(pose.xMm() + 30, pose.yMm() - 20, pose.zMm() - 10, pose.wDeg(), pose.pDeg(),
+        pose.rDeg(), pose.config());
+    var joints = c.toJoints(moved, 0, 0);
+    assertThat(joints).isInstanceOf(org.robotrun.control.RobotControl.Conversion.Ok.class);
+    Position.Joint q = ((org.robotrun.control.RobotControl.Conversion.Ok<Position.Joint>) joints).value();
+    Position.Cartesian back = c.toCartesian(q, 0, 0);
+    assertThat(back.xMm()).isCloseTo(moved.xMm(), org.assertj.core.data.Offset.offset(1e-6));
+    assertThat(back.yMm()).isCloseTo(moved.yMm(), org.assertj.core.data.Offset.offset(1e-6));
+    assertThat(back.zMm()).isCloseTo(moved.zMm(), org.assertj.core.data.Offset.offset(1e-6));
+    Position.Cartesian far = new Position.Cartesian(5000, 0, 0, 0, 0, 0, pose.config());
+    assertThat(c.toJoints(far, 0, 0)).isInstanceOf(org.robotrun.control.RobotControl.Conversion.Failed.class);
+    c.setDeadman(true);
+    c.setShift(true);
+    assertThat(c.moveTo(q, 0, 0)).isInstanceOf(Result.Ok.class);
+    rig.clock().advance(3.0);
+    assertThat(c.currentPose(0, 0).xMm()).isCloseTo(moved.xMm(), org.assertj.core.data.Offset.offset(1e-3));
+  }
+
+  @Test
+  void aThreePointUserFrameHasItsOriginAtTheFirstPointAndItsXAxisThroughTheSecond() {
+    ControllerPort c = Rig.fresh().port();
+    Position.Joint q0 = c.currentJoints();
+    Position.Joint q1 = new Position.Joint(q0.j1Deg() + 10, q0.j2Deg(), q0.j3Deg(), q0.j4Deg(), q0.j5Deg(), q0.j6Deg());
+    Position.Joint q2 = new Position.Joint(q0.j1Deg(), q0.j2Deg() + 10, q0.j3Deg(), q0.j4Deg(), q0.j5Deg(), q0.j6Deg());
+    var p = java.util.stream.Stream.of(q0, q1, q2).map(q -> c.toCartesian(q, 0, c.activeFrame(FrameKind.TOOL)).toXyzwpr().position()).toList();
+    TeachResult r = c.teachFrame(FrameKind.USER, 4, TeachMethod.USER_THREE_POINT, List.of(q0, q1, q2));
+    assertThat(r).isInstanceOf(TeachResult.Taught.class);
+    Position.Cartesian f = c.frame(FrameKind.USER, 4);
+    assertThat(f).isEqualTo(((TeachResult.Taught) r).frame());
+    var inFrame = f.toXyzwpr().toTransform().inverse();
+    var o = inFrame.apply(p.get(0));
+    var x = inFrame.apply(p.get(1));
+    var y = inFrame.apply(p.get(2));
+    assertThat(o.norm()).isCloseTo(0, org.assertj.core.data.Offset.offset(1e-6));
+    assertThat(x.x()).isPositive();
+    assertThat(Math.hypot(x.y(), x.z())).isCloseTo(0, org.assertj.core.data.Offset.offset(1e-6));
+    assertThat(y.y()).isPositive();
+    assertThat(y.z()).isCloseTo(0, org.assertj.core.data.Offset.offset(1e-6));
+  }
 }
