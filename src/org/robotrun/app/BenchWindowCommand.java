@@ -39,7 +39,7 @@ import picocli.CommandLine.Spec;
       "cpu_pct: the process's CPU time over the phase (every thread) in %% of one core. frame_cpu_ms: CPU time per "
           + "drawn frame of the window's thread and of Mesa's software rasteriser threads (llvmpipe, Linux), "
           + "less the time spent stepping the simulation; '-' when the phase drew no frame (an idle window draws "
-          + "every 5 s). load: the machine's 1-minute load average at the phase's end. close_ms: from the close "
+          + "only when something needs a frame). load: the machine's 1-minute load average at the phase's end. close_ms: from the close "
           + "request to the end of the window's process, timed from this process, which starts the window in a "
           + "child JVM (extra JVM options for it in ROBOTRUN_BENCH_JAVA_OPTS, e.g. to profile it).",
       "CPU figures stay comparable on a loaded machine; fps does not (quote the load with them). "

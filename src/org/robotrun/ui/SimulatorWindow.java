@@ -77,8 +77,17 @@ public final class SimulatorWindow implements AutoCloseable {
   private int[] minimumSize;
   /** After the last input, keep drawing this long (hover highlights, tooltips settle). */
   private static final long IDLE_AFTER_NANOS = 500_000_000L;
-  /** While idle, draw once every this many seconds anyway. */
-  private static final double IDLE_REDRAW_SEC = 5.0;
+  /**
+   * While idle, the longest sleep between two frames. Nothing on screen changes by itself while
+   * idle (the simulation advances only with frames, and every timed message, save and background
+   * result asks for its own wake-up: {@link #setWakeSource}, {@link #wakeFromAnyThread}); this is
+   * only a safety net.
+   */
+  static final double IDLE_REDRAW_SEC = 60.0;
+  /** When something asked to be drawn at a time ({@link System#nanoTime}); {@link Long#MAX_VALUE} for nothing. */
+  private java.util.function.LongSupplier wakeSource = () -> Long.MAX_VALUE;
+  /** When the last frame drawn for input, motion or a start began ({@link System#nanoTime}). */
+  private volatile long lastActiveFrameNanos = System.nanoTime();
   /** The shortest time between the starts of two frames: the screen's refresh period. */
   private final long framePeriodNanos;
   private long lastFrameStart;
@@ -121,6 +130,10 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     }
     glfwWindowHint(GLFW_SAMPLES, AntiAliasing.DEFAULT.samples());
+    if (System.getenv("ROBOTRUN_HIDDEN_WINDOW") != null) {
+      // the launcher's class-data training run after a build: the window draws but is never shown
+      glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    }
     int[] size = defaultSize(width, height);
     window = glfwCreateWindow(size[0], size[1], title, 0, 0);
     if (window == 0) {
@@ -293,7 +306,7 @@ public final class SimulatorWindow implements AutoCloseable {
       // function keys still reach the pendant then. A key held while a text field took focus
       // still stops when let go; a key typed into the field stays the field's (TypingKeyFilter).
       boolean typing = ImGui.getIO().getWantTextInput();
-      if (action == GLFW_PRESS && !typing && shortcuts.onShortcut(key, mods)) {
+      if (action == GLFW_PRESS && (!typing || shortcutWhileTyping(key)) && shortcuts.onShortcut(key, mods)) {
         return;
       }
       if (!typingFilter.pass(key, action, typing)) {
@@ -355,6 +368,49 @@ public final class SimulatorWindow implements AutoCloseable {
   /** A rectangle in display pixels filled with an opaque colour (see {@link Panels#fills}). */
   public record Fill(float x, float y, float w, float h, float r, float g, float b) {}
 
+  /**
+   * What the idle loop asks before it sleeps: the time ({@link System#nanoTime}) of the next frame
+   * something needs (a message that expires, a save that is due), or {@link Long#MAX_VALUE}.
+   */
+  public void setWakeSource(java.util.function.LongSupplier nextWakeNanos) {
+    wakeSource = nextWakeNanos;
+  }
+
+  /** When the last frame drawn for input, motion or the start began ({@link System#nanoTime}). */
+  public long lastActiveFrameNanos() {
+    return lastActiveFrameNanos;
+  }
+
+  /** Wakes the loop from any thread (a background save or check finished): one frame is drawn. */
+  public static void wakeFromAnyThread() {
+    try {
+      glfwPostEmptyEvent();
+    } catch (RuntimeException | LinkageError e) {
+      // no window (a test, a headless run): nothing sleeps that could be woken
+    }
+  }
+
+  /**
+   * Whether the window's Ctrl shortcut on {@code glfwKey} works while a text field has the
+   * keyboard: Ctrl+Q, Ctrl+S and Ctrl+O do (with the pendant's Type field focused, Ctrl+Q did
+   * nothing); the keys a text field edits with (Ctrl+Z, Y, A, C, V, X, H) stay the field's.
+   */
+  static boolean shortcutWhileTyping(int glfwKey) {
+    return glfwKey == GLFW_KEY_Q || glfwKey == GLFW_KEY_S || glfwKey == GLFW_KEY_O;
+  }
+
+  /**
+   * How long the idle loop sleeps (seconds): until the next wake the window was asked for, at
+   * least 1 ms, at most {@link #IDLE_REDRAW_SEC}.
+   */
+  static double idleSleepSec(long nowNanos, long nextWakeNanos) {
+    if (nextWakeNanos == Long.MAX_VALUE) {
+      return IDLE_REDRAW_SEC;
+    }
+    double sec = (nextWakeNanos - nowNanos) / 1e9;
+    return Math.max(0.001, Math.min(IDLE_REDRAW_SEC, sec));
+  }
+
   /** Runs the event and render loop until the window is closed. */
   public void run(SceneSource scene) {
     run(scene, (w, h) -> {}, () -> true);
@@ -363,8 +419,8 @@ public final class SimulatorWindow implements AutoCloseable {
   /**
    * Runs the event and render loop, with panels over the scene, until the window is closed.
    * Quiet when idle: while {@code busy} says nothing moves and no input came for half a second,
-   * the loop sleeps in {@code glfwWaitEventsTimeout} and draws every 5 s; any input
-   * wakes it at once.
+   * the loop sleeps in {@code glfwWaitEventsTimeout} until the wake source's time (at most
+   * {@link #IDLE_REDRAW_SEC}); any input, or {@link #wakeFromAnyThread}, wakes it at once.
    *
    * @param busy whether something on screen changes by itself (the arm moves, a program runs)
    */
@@ -378,7 +434,9 @@ public final class SimulatorWindow implements AutoCloseable {
       // Dear ImGui sizes a new auto-sized window in a hidden first frame: the first few frames
       // are drawn however slowly the start went, so nothing waits for the 5 s idle redraw.
       boolean starting = frames - firstFrameOfRun < 4;
-      if (moreEdges || recentInput || starting || busy.getAsBoolean()) {
+      boolean active = moreEdges || recentInput || starting || busy.getAsBoolean();
+      if (active) {
+        lastActiveFrameNanos = System.nanoTime();
         // No faster than the screen shows frames: where the swap does not wait for the
         // display (a virtual X server, a driver with vsync off), sleep out the rest of the
         // refresh period instead of drawing frames nobody sees.
@@ -388,7 +446,7 @@ public final class SimulatorWindow implements AutoCloseable {
         }
         glfwPollEvents();
       } else {
-        glfwWaitEventsTimeout(IDLE_REDRAW_SEC);
+        glfwWaitEventsTimeout(idleSleepSec(System.nanoTime(), wakeSource.getAsLong()));
       }
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
