@@ -10,6 +10,7 @@ import net.jqwik.api.Arbitrary;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
 import net.jqwik.api.Provide;
+import net.jqwik.api.lifecycle.AddLifecycleHook;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -17,8 +18,10 @@ import org.junit.jupiter.api.Test;
  * hold, printed by {@link TpText} and read back by the parser's fragment entry points
  * ({@link TpStatementParser#statementText}, {@link TpStatementParser#expressionText}), is the
  * same model. Every kind of instruction, motion option and expression has a generator
- * ({@link TpModels}); the first tests fail when a kind is added without one. jqwik, fixed seeds.
+ * ({@link TpModels}); the first tests fail when a kind is added without one. jqwik, fixed seeds;
+ * fewer tries inside the mutation profile ({@link PitTries}).
  */
+@AddLifecycleHook(PitTries.class)
 class TpTextRoundTripPropertyTest {
 
   @Test

@@ -228,4 +228,21 @@ class PickAndPlaceTest {
     assertThat(io.bit(IoKind.RI, 1)).isFalse();
     assertThat(io.bit(IoKind.RI, 2)).isFalse();
   }
+
+  @Test
+  void theFingersCloseOnThePartsWidthAcrossThemPlusTheirClearance() {
+    // part1 is a 40 mm cube, square to the fingers: they stop 40 + 2 × 0.5 mm apart (the clearance of
+    // EndEffectorState.FINGER_CLEARANCE_MM on each side), not at the closed gap of 0.
+    Simulation sim = CellRig.cell(CellRig.scenario("pick-and-place.json"));
+    var r = CellRig.run(sim, CellRig.program(new String[] {
+        "  UFRAME_NUM=1", "  UTOOL_NUM=1",
+        "L P[1] 500mm/sec FINE", "L P[2] 300mm/sec FINE",
+        "  RO[1]=ON", "  WAIT RI[1]=ON", "  WAIT 0.20(sec)"},
+        "120,170,80", "120,170,20"));
+    assertThat(r.alarm()).isEmpty();
+    EndEffectorState s = sim.cellState().tool(0).orElseThrow();
+    assertThat(s.held().map(EndEffectorState.Held::part)).contains("part1");
+    assertThat(s.held().orElseThrow().widthMm()).isCloseTo(40, offset(1e-6));
+    assertThat(s.fingerGapMm()).isCloseTo(41, offset(1e-6));
+  }
 }
