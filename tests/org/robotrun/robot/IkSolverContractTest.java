@@ -90,9 +90,13 @@ class IkSolverContractTest {
   }
 
   static void reaches(RobotModel m, double[] q, Transform X, String what) {
+    reachesWithin(m, q, X, MM, RAD, what);
+  }
+
+  static void reachesWithin(RobotModel m, double[] q, Transform X, double mm, double rad, String what) {
     Transform Y = ForwardKinematics.flangePoseInBase(m, q);
-    assertThat(Y.distanceTo(X)).as("%s: position", what).isLessThan(MM);
-    assertThat(Y.rotationAngleTo(X)).as("%s: orientation", what).isLessThan(RAD);
+    assertThat(Y.distanceTo(X)).as("%s: position", what).isLessThan(mm);
+    assertThat(Y.rotationAngleTo(X)).as("%s: orientation", what).isLessThan(rad);
     assertThat(m.firstJointOutsideLimits(q)).as("%s: in limits", what).isEqualTo(-1);
   }
 
@@ -233,6 +237,28 @@ class IkSolverContractTest {
       assertThat(near).as("%s J%d at its upper limit", id, j + 1).isInstanceOf(IkResult.Solved.class);
       reaches(m, ((IkResult.Solved) near).q(), X, id + " at the limit");
       assertThat(maxDiff(((IkResult.Solved) near).q(), at)).isLessThan(1e-6);
+    }
+  }
+
+  @ParameterizedTest
+  @MethodSource("arms")
+  void aStraightWristIsSolvedKeepingTheCurrentJoints(String id) {
+    // J5 = 0: J4 and J6 (or, on the UR, J6 and J2..J4) turn about one line, so only their sum is
+    // fixed by the pose; the joints the arm stands at are one answer, and the nearest.
+    RobotModel m = arm(id);
+    IkSolver ik = IkSolver.forModel(m);
+    for (double[] q : samples(m, 350 + id.length(), 3)) {
+      q[4] = 0;
+      Transform X = ForwardKinematics.flangePoseInBase(m, q);
+      IkResult near = ik.solveNearest(X, q);
+      assertThat(near).as("%s straight wrist", id).isInstanceOf(IkResult.Solved.class);
+      // At the singularity the UR form's acos(cos J5) near 1 keeps only half the digits (2.9e-6 mm,
+      // 1.5e-8 rad seen): 1e-5 mm and 1e-7 rad here.
+      reachesWithin(m, ((IkResult.Solved) near).q(), X, 1e-5, 1e-7, id + " straight wrist");
+      assertThat(maxDiff(((IkResult.Solved) near).q(), q)).as("%s straight wrist nearest", id).isLessThan(1e-6);
+      IkResult byConfig = ik.solve(X, ik.configOf(q), q);
+      assertThat(byConfig).isInstanceOf(IkResult.Solved.class);
+      reachesWithin(m, ((IkResult.Solved) byConfig).q(), X, 1e-5, 1e-7, id + " straight wrist by CONFIG");
     }
   }
 }
