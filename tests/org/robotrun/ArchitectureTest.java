@@ -114,6 +114,15 @@ class ArchitectureTest {
   }
 
   @Test
+  void onlyTheControllerImplementsTheControlPortSoNothingInAppStandsBetween() {
+    // a jog key goes pendant -> control.RobotControl -> sim (issue 23): no adapter in app or elsewhere
+    com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes()
+        .that().implement(org.robotrun.control.RobotControl.class)
+        .should().resideInAPackage("org.robotrun.sim..")
+        .check(classes);
+  }
+
+  @Test
   void programReachesTheRobotOnlyThroughItsOwnPort() {
     noClasses().that().resideInAPackage("org.robotrun.program..")
         .should().dependOnClassesThat().resideInAnyPackage("org.robotrun.motion..", "org.robotrun.robot..")

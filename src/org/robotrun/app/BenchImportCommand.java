@@ -23,10 +23,8 @@ import picocli.CommandLine.Spec;
     name = "import",
     mixinStandardHelpOptions = true,
     description = {
-      "Time 'robot import' on a URDF: the first import in this JVM (cold: classes and Assimp's",
-      "native library load), then the median of --rounds imports and of as many robot folder",
-      "writes (to a temporary folder, removed). Prints wall and CPU milliseconds (CPU time of",
-      "this thread, which other processes do not inflate), triangles and fitted boxes."
+      "Time 'robot import' on a URDF.",
+      "The first import in this JVM (cold: classes and Assimp's native library load), then the median of --rounds imports and of as many robot folder writes (to a temporary folder, removed). Prints wall and CPU milliseconds (CPU time of this thread, which other processes do not inflate), triangles and fitted boxes."
     })
 final class BenchImportCommand implements Callable<Integer> {
   @Spec picocli.CommandLine.Model.CommandSpec spec;

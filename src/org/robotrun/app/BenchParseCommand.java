@@ -22,10 +22,8 @@ import picocli.CommandLine.Spec;
     mixinStandardHelpOptions = true,
     description = {
       "Measure .LS parse throughput on a generated program, after a warm-up.",
-      "Prints lines_per_sec (best wall-clock round) and lines_per_cpu_sec (best round",
-      "in this thread's CPU time, which other processes do not inflate), then times.",
-      "With --corpus DIR it reads every *.LS file of DIR instead and also prints how many files read with no",
-      "syntax error and how many come back byte for byte when written without an edit."
+      "Prints lines_per_sec (best wall-clock round) and lines_per_cpu_sec (best round in this thread's CPU time, which other processes do not inflate), then times.",
+      "With --corpus DIR it reads every *.LS file of DIR instead and also prints how many files read with no syntax error and how many come back byte for byte when written without an edit."
     })
 public final class BenchParseCommand implements Callable<Integer> {
 

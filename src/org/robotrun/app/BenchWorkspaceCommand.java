@@ -21,7 +21,8 @@ import picocli.CommandLine.Option;
     name = "workspace",
     mixinStandardHelpOptions = true,
     description = {
-      "Measure workspace persistence in a temporary folder (wall clock):",
+      "Measure workspace persistence in a temporary folder, in wall-clock time.",
+      "Two figures:",
       "change-to-disk: a register is set or a program made while frames (16 ms apart) poll the autosave, until the file on disk holds it;",
       "open: opening a workspace with --programs copies of scenarios/programs/PICKPLACE.LS and building its cell (run from the project folder)."
     })

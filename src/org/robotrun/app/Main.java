@@ -12,11 +12,8 @@ import picocli.CommandLine.Command;
     versionProvider = Main.Version.class,
     description = {
       "RobotRun: a desktop simulator of a 6-axis industrial robot arm for learning to operate and program robots.",
-      "With no subcommand it opens the simulator window on the last workspace (or a new default one);",
-      "'robotrun --workspace DIR' opens a workspace anywhere, and 'robotrun --scenario FILE.json' (or just",
-      "'robotrun FILE.json' or 'robotrun FILE.rrcell') starts a new workspace copied from a scenario, as",
-      "'robotrun gui' does; 'robotrun PROG.LS' opens with that program added, and 'robotrun HANDIN.zip'",
-      "opens a hand-in read-only (what a file manager does with these files).",
+      "With no subcommand it opens the simulator window on the last workspace (or a new default one).",
+      "'robotrun --workspace DIR' opens a workspace anywhere. 'robotrun --scenario FILE.json' (or just 'robotrun FILE.json' or 'robotrun FILE.rrcell') starts a new workspace copied from a scenario, as 'robotrun gui' does. 'robotrun PROG.LS' opens with that program added, and 'robotrun HANDIN.zip' opens a hand-in read-only (what a file manager does with these files).",
       ""
     },
     subcommands = {

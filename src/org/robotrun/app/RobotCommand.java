@@ -6,8 +6,8 @@ import picocli.CommandLine.Command;
 @Command(
     name = "robot",
     mixinStandardHelpOptions = true,
-    description = {"Robot definitions: 'robotrun robot import FILE.urdf --out DIR' turns a URDF",
-      "into a RobotRun robot a scenario can name (docs/robot-import.md)."},
+    description = {"Robot definitions: import a URDF as a robot a scenario can name.",
+      "'robotrun robot import FILE.urdf --out DIR' turns a URDF into a RobotRun robot a scenario can name (docs/robot-import.md)."},
     subcommands = {RobotImportCommand.class})
 public final class RobotCommand implements Runnable {
   @picocli.CommandLine.Spec picocli.CommandLine.Model.CommandSpec spec;

@@ -25,17 +25,10 @@ import picocli.CommandLine.Spec;
     name = "import",
     mixinStandardHelpOptions = true,
     description = {
-      "Imports a serial 6-axis arm from a URDF into the new folder DIR: DIR/ID.json",
-      "(a RobotRun robot) and DIR/meshes/*.stl (its display meshes). A scenario names",
-      "it as \"model\": \"DIR/ID.json\" (or names the .urdf itself).",
-      "Meshes: STL, OBJ, COLLADA (its unit and up axis honoured); package://NAME/...",
-      "is found with --package NAME=DIR or by walking up to the package.xml naming it.",
-      "Collision bodies: the URDF's boxes and cylinders (spheres as cubes); meshes get",
-      "tight fitted boxes. xacro files are refused: expand them first",
-      "(xacro robot.urdf.xacro > robot.urdf). Anything but a serial 6-axis arm is",
-      "refused in one line, and nothing is written. Prints the joints, the flange,",
-      "what was merged or assumed, and each fitted box's volume against its mesh's",
-      "convex hull. See docs/robot-import.md.",
+      "Import a serial 6-axis arm from a URDF as a RobotRun robot.",
+      "It writes the new folder DIR: DIR/ID.json (a RobotRun robot) and DIR/meshes/*.stl (its display meshes). A scenario names it as \"model\": \"DIR/ID.json\" (or names the .urdf itself).",
+      "Meshes: STL, OBJ, COLLADA (its unit and up axis honoured); package://NAME/... is found with --package NAME=DIR or by walking up to the package.xml naming it.",
+      "Collision bodies: the URDF's boxes and cylinders (spheres as cubes); meshes get tight fitted boxes. xacro files are refused: expand them first (xacro robot.urdf.xacro > robot.urdf). Anything but a serial 6-axis arm is refused in one line, and nothing is written. Prints the joints, the flange, what was merged or assumed, and each fitted box's volume against its mesh's convex hull. See docs/robot-import.md.",
       ""
     })
 final class RobotImportCommand implements Callable<Integer> {

@@ -15,12 +15,8 @@ import picocli.CommandLine.Spec;
     name = "robots",
     mixinStandardHelpOptions = true,
     description = {
-      "List the robot library: the ids a scenario's robot \"model\" may name (or give a path to a",
-      "robot .json file instead). Columns: id, reach (mm, as the source states it), payload (kg),",
-      "wrist (spherical: OPW closed form; offset: CRX layout; parallel: three parallel axes, UR",
-      "layout; other), the IK solver chosen from the chain at load (closed-form, offset-wrist,",
-      "ur-type, numeric), whether the pendant couples J3 to J2, and",
-      "the model name. See docs/robots.md.",
+      "List the robot library: the ids a scenario's robot \"model\" may name.",
+      "A scenario may give a path to a robot .json file instead. Columns: id, reach (mm, as the source states it), payload (kg), wrist (spherical: OPW closed form; offset: CRX layout; parallel: three parallel axes, UR layout; other), the IK solver chosen from the chain at load (closed-form, offset-wrist, ur-type, numeric), whether the pendant couples J3 to J2, and the model name. See docs/robots.md.",
       ""
     })
 public final class RobotsCommand implements Callable<Integer> {

@@ -45,6 +45,7 @@ public final class Jogger {
   private Transform X_WTdesired;
   private JogFrame lastFrame;
   private Transform lastTool;
+  private double cartesianCapMmPerSec = Double.POSITIVE_INFINITY;
 
   public Jogger(RobotModel model, MotionLimits limits) {
     this.model = model;
@@ -59,6 +60,19 @@ public final class Jogger {
       case JOINT -> JOINT_JOG_FRACTION * limits.jointSpeed(axis);
       case WORLD, TOOL, USER, JGFRM -> axis < 3 ? LINEAR_JOG_MM_PER_SEC : ROTATION_JOG_RAD_PER_SEC;
     };
+  }
+
+  /**
+   * Caps the speed of the flange and of the TCP in a WORLD, TOOL, USER or JGFRM jog (mm/s; T1):
+   * the desired pose advances only as far as the cap allows, along the jogged axes, so a jog of
+   * several axes keeps its line and never runs ahead of the arm. {@link Double#POSITIVE_INFINITY}
+   * turns it off. (A JOINT jog has no desired pose; the controller shortens its ticks.)
+   */
+  public void setCartesianSpeedCap(double mmPerSec) {
+    if (!(mmPerSec > 0)) {
+      throw new IllegalArgumentException("speed cap must be > 0 mm/s, got " + mmPerSec);
+    }
+    cartesianCapMmPerSec = mmPerSec;
   }
 
   /** Stops at once (HOLD, deadman, alarm): speeds to zero, keys off. */
@@ -200,6 +214,17 @@ public final class Jogger {
       case USER, JGFRM -> X_WU;
       case TOOL -> X_WTdesired;
     };
+    // The speed cap (T1): the whole step is shortened, so every axis keeps its share.
+    double capScale = 1;
+    if (cartesianCapMmPerSec < Double.POSITIVE_INFINITY) {
+      Transform full = advanced(axes, dtSec);
+      Transform X_TF = X_FT.inverse();
+      double step = Math.max(full.translationVector().distanceTo(X_WTdesired.translationVector()),
+          full.compose(X_TF).translationVector().distanceTo(X_WTdesired.compose(X_TF).translationVector()));
+      if (step > cartesianCapMmPerSec * dtSec * (1 + 1e-9)) {
+        capScale = cartesianCapMmPerSec * dtSec / step;
+      }
+    }
     // Near a singularity the joints would have to outrun their limits: jog slower (down to 5% of
     // the asked speed) rather than whip the wrist; below that, stop with a message.
     double scale = 1;
@@ -207,11 +232,7 @@ public final class Jogger {
     double ratio = Double.POSITIVE_INFINITY;
     Transform want = X_WTdesired;
     for (int attempt = 0; attempt < 4; attempt++) {
-      double h = dtSec * scale;
-      Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
-      Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
-      Vec3 p = X_WTdesired.translationVector().plus(v_W.times(h));
-      want = Rotations.exp(w_W, h).compose(X_WTdesired.withTranslation(0, 0, 0)).withTranslation(p.x(), p.y(), p.z());
+      want = advanced(axes, dtSec * capScale * scale);
       System.arraycopy(q, 0, qTry, 0, RobotModel.DOF);
       ok = tracker.track(qTry, want, X_FT, 1e-3, 1e-6);
       ratio = 0;
@@ -230,9 +251,9 @@ public final class Jogger {
           ? String.format(java.util.Locale.ROOT, "stopped near the wrist singularity (J5 = %.1f deg): jog J5 in JOINT first", Math.toDegrees(q[4]))
           : "stopped: singularity or edge of reach");
     }
-    if (scale < 1) {
+    if (scale * capScale < 1) {
       for (int i = 0; i < 6; i++) {
-        speed[i] *= scale;
+        speed[i] *= scale * capScale;
       }
     }
     for (int i = 0; i < 6; i++) {
@@ -245,5 +266,13 @@ public final class Jogger {
     System.arraycopy(qTry, 0, q, 0, RobotModel.DOF);
     X_WTdesired = want;
     return MOVING;
+  }
+
+  /** The desired pose moved on by the current speeds for {@code h} seconds, along / about {@code axes}' axes. */
+  private Transform advanced(Transform axes, double h) {
+    Vec3 v_W = axes.rotate(new Vec3(speed[0], speed[1], speed[2]));
+    Vec3 w_W = axes.rotate(new Vec3(speed[3], speed[4], speed[5]));
+    Vec3 p = X_WTdesired.translationVector().plus(v_W.times(h));
+    return Rotations.exp(w_W, h).compose(X_WTdesired.withTranslation(0, 0, 0)).withTranslation(p.x(), p.y(), p.z());
   }
 }

@@ -271,7 +271,8 @@ public final class Controller implements MotionPort {
 
   /**
    * T1: a jog tick that would move the flange or the TCP faster than 250 mm/s is shortened to
-   * that speed (a joint jog of J1 far from the axis would otherwise outrun it).
+   * that speed (a joint jog of J1 far from the axis would otherwise outrun it; a Cartesian jog
+   * keeps to it already, {@link Jogger#setCartesianSpeedCap}).
    */
   private void capJogStep(double[] q0, double[] q, double dtSec) {
     if (mode != RobotControl.Mode.T1) {
@@ -596,6 +597,9 @@ public final class Controller implements MotionPort {
   private void applySpeedCap() {
     runner.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? RobotControl.Mode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY,
         frames.activeTool());
+    // a Cartesian jog keeps to the cap itself, so it stays on its line (capJogStep's margin below
+    // it only holds the arm a hair behind the jog's pose, which the ramp down makes up)
+    jogger.setCartesianSpeedCap(mode == RobotControl.Mode.T1 ? RobotControl.Mode.T1_SPEED_MM_PER_SEC : Double.POSITIVE_INFINITY);
   }
 
   /**

@@ -18,12 +18,12 @@ final class PendantKeys {
     return shows;
   }
 
-  /** The simulated time of {@code p}'s stand-in controller (the cell's stepper, in the real one). */
+  /** The simulated time of {@code p}'s controller: its cell's stepper ({@link RealController#clock}). */
   static java.util.function.DoubleConsumer clock(Pendant p) {
-    return p.control() instanceof StandInRobotControl s ? s::advance : RealController.clock(p.control());
+    return RealController.clock(p.control());
   }
 
-  /** Advances {@code p}'s stand-in controller by {@code dtSec}, the pendant following as in a key script's WAIT. */
+  /** Advances {@code p}'s controller by {@code dtSec}, the pendant following as in a key script's WAIT. */
   static void advance(Pendant p, double dtSec) {
     KeyScript.advance(p, clock(p), dtSec);
   }

@@ -5,17 +5,38 @@ import static org.assertj.core.api.Assertions.within;
 import static org.robotrun.pendant.PendantKeys.body;
 import static org.robotrun.pendant.PendantKeys.run;
 
+import java.util.Locale;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Instruction.FrameKind;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.Position;
 
-/** Jogging, POSN, frames, position registers, I/O and alarms through keys (stand-in controller). */
+/**
+ * Jogging, POSN, frames, position registers, I/O and alarms through keys, on the real controller
+ * (the default cell's LR Mate 200iD). Expected positions and jog travel are worked out by hand in
+ * {@link ArmByHand} from the robot file's chain and the documented jog rules, never read from a run.
+ */
 class PendantMotionAndDataTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
+
+  /** HOME's pointer tip and flange in WORLD, X Y Z W P R (by hand: (385, 0, 185) and (385, 0, 285), facing down). */
+  private static final double[] HOME_TCP = ArmByHand.xyzwpr(ArmByHand.tcp(ArmByHand.HOME));
+  private static final double[] HOME_FLANGE = ArmByHand.xyzwpr(ArmByHand.flange(ArmByHand.HOME));
+
+  /** One decimal as the pendant shows it, without a minus on zero. */
+  private static String oneDecimal(double v) {
+    return String.format(Locale.ROOT, "%.1f", Math.abs(v) < 0.05 ? 0.0 : v);
+  }
+
+  /** Asserts T1 and 100 % override, which the hand-worked jog figures assume. */
+  private void assertT1At100Percent() {
+    assertThat(control.mode()).isEqualTo(RobotControl.Mode.T1);
+    assertThat(control.overridePct()).isEqualTo(100);
+  }
 
   /** The number after {@code label} on the POSN screen's WORLD rows. */
   private static double posnValue(String body, String section, String axis) {
@@ -27,6 +48,7 @@ class PendantMotionAndDataTest {
 
   @Test
   void jogInWorldMovesTheTcpAndPosnShowsIt() {
+    assertT1At100Percent();
     run(p, """
         POSN
         COORD *2
@@ -34,16 +56,25 @@ class PendantMotionAndDataTest {
     assertThat(p.lcd().statusLine()).contains("WORLD");
     double x0 = posnValue(body(p), "WORLD", "X");
     double z0 = posnValue(body(p), "WORLD", "Z");
-    // 0.2 s at 250 mm/s (100 % override) along world +X
+    // POSN shows the pointer's tip at HOME (three decimals)
+    assertThat(x0).isCloseTo(HOME_TCP[0], within(0.001));
+    assertThat(z0).isCloseTo(HOME_TCP[2], within(0.001));
+    // 0.2 s held at 250 mm/s (100 % override) along world +X, then released and left to ramp
+    // down: the linear ramp loses as much on the way up as it gives back on the way down, so the
+    // TCP covers 250 mm/s × 0.2 s = 50 mm (docs/motion.md), a little less as T1 keeps it at
+    // 249..250 mm/s (ArmByHand.worldJogRange)
+    double[] moved = ArmByHand.worldJogRange(0.2, true);
+    assertThat(moved[1]).isCloseTo(50, within(1e-9));
     run(p, """
         HOLD DEADMAN
         HOLD SHIFT
         HOLD +X
         WAIT 0.2
         RELEASE +X
+        WAIT 0.2
         RELEASE SHIFT
         """);
-    assertThat(posnValue(body(p), "WORLD", "X")).isCloseTo(x0 + 50, within(0.01));
+    assertThat(posnValue(body(p), "WORLD", "X")).isBetween(x0 + moved[0] - 0.001, x0 + moved[1] + 0.001);
     assertThat(posnValue(body(p), "WORLD", "Z")).isCloseTo(z0, within(0.01));
     // the orientation is kept in a linear world jog
     assertThat(posnValue(body(p), "WORLD", "W")).isCloseTo(180, within(0.01));
@@ -51,6 +82,13 @@ class PendantMotionAndDataTest {
 
   @Test
   void jogNeedsTpEnableDeadmanAndShiftAndAShiftTapLatchesNothing() {
+    assertT1At100Percent();
+    // J1 jogs at a quarter of its data-sheet speed, but at HOME the TCP and the flange swing at
+    // 385 mm from its axis, so T1's 250 mm/s cap sets the pace once the ramp passes it
+    double radius = ArmByHand.radiusFromJ1(ArmByHand.tcp(ArmByHand.HOME));
+    assertThat(ArmByHand.radiusFromJ1(ArmByHand.flange(ArmByHand.HOME))).isCloseTo(radius, within(1e-9));
+    double[] in02 = ArmByHand.jointJogRange(1, radius, 0.2);
+    double[] in01 = ArmByHand.jointJogRange(1, radius, 0.1);
     Position.Joint before = control.currentJoints();
     // SHIFT alone: the DEADMAN is missing
     run(p, """
@@ -103,7 +141,9 @@ class PendantMotionAndDataTest {
         WAIT 0.5
         RELEASE +X/J1
         """);
-    assertThat(control.currentJoints().j1Deg()).isCloseTo(0.2 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
+    // 0.2 s of J1, stopped at once by SHIFT (no ramp down)
+    double afterShift = control.currentJoints().j1Deg();
+    assertThat(afterShift).isBetween(in02[0], in02[1]);
     assertThat(p.lcd().promptLine()).contains("SHIFT released");
     // a SHIFT tap latches nothing: jogging without holding it does not move the arm
     run(p, """
@@ -112,7 +152,7 @@ class PendantMotionAndDataTest {
         WAIT 0.2
         RELEASE -X/J1
         """);
-    assertThat(control.currentJoints().j1Deg()).isCloseTo(0.2 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
+    assertThat(control.currentJoints().j1Deg()).isEqualTo(afterShift);
     assertThat(p.shift()).isFalse();
     // letting the DEADMAN go mid-jog with the TP on: SRVO-003, the arm stops
     run(p, """
@@ -124,7 +164,9 @@ class PendantMotionAndDataTest {
         RELEASE -X/J1
         RELEASE SHIFT
         """);
-    assertThat(control.currentJoints().j1Deg()).isCloseTo(0.1 * StandInRobotControl.JOG_JOINT_DEG_PER_SEC, within(1e-9));
+    // 0.1 s back, stopped at once by the DEADMAN
+    double afterDeadman = control.currentJoints().j1Deg();
+    assertThat(afterDeadman).isBetween(afterShift - in01[1], afterShift - in01[0]);
     assertThat(p.lcd().alarmLine()).contains("SRVO-003");
     // RESET with the DEADMAN held clears it, and jogging works again
     run(p, """
@@ -136,11 +178,20 @@ class PendantMotionAndDataTest {
         RELEASE -X/J1
         """);
     assertThat(p.lcd().alarmLine()).isBlank();
-    assertThat(control.currentJoints().j1Deg()).isCloseTo(0, within(1e-9));
+    // another 0.1 s back (the key's ramp down has had no time yet)
+    assertThat(control.currentJoints().j1Deg()).isBetween(afterDeadman - in01[1], afterDeadman - in01[0]);
   }
 
   @Test
   void latchedJogRunsUntilClickedAgainAndKeysCombine() {
+    assertT1At100Percent();
+    // WORLD jog travel, stopped at once or ramped down (ArmByHand): 250 mm/s ramped, T1 keeping it at 249..250 mm/s
+    double[] x02 = ArmByHand.worldJogRange(0.2, false);
+    double[] x02ramped = ArmByHand.worldJogRange(0.2, true);
+    // X and Y together: each ramps to 250 mm/s, so the TCP asks for √2 × 250 and T1 caps the diagonal
+    double[] diag02 = {ArmByHand.heldThenStopped(Math.sqrt(2) * 250, ArmByHand.T1_LEAST_MM_S, 0.2) / Math.sqrt(2),
+        ArmByHand.heldThenStopped(Math.sqrt(2) * 250, ArmByHand.T1_MM_S, 0.2) / Math.sqrt(2)};
+    double x0 = HOME_FLANGE[0];
     run(p, """
         HOLD DEADMAN
         COORD *2
@@ -148,14 +199,17 @@ class PendantMotionAndDataTest {
         CLICK +X
         WAIT 0.2
         """);
+    // still latched and moving after 0.2 s
     Position.Cartesian a = control.currentPose(0, 0);
-    assertThat(a.xMm()).isCloseTo(650, within(1e-6));
+    assertThat(a.xMm()).isBetween(x0 + x02[0], x0 + x02[1]);
     run(p, """
         HOLD DEADMAN
         CLICK +X
         WAIT 0.2
         """);
-    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(650, within(1e-6));
+    // clicked off: it ramps down and stands about 250 mm/s × 0.2 s = 50 mm from the start (the ramp's loss given back)
+    double xOff = control.currentPose(0, 0).xMm();
+    assertThat(xOff).isBetween(x0 + x02ramped[0], x0 + x02ramped[1]);
     // two held keys of different axes move diagonally
     run(p, """
         HOLD +X
@@ -166,8 +220,9 @@ class PendantMotionAndDataTest {
         RELEASE SHIFT
         """);
     Position.Cartesian b = control.currentPose(0, 0);
-    assertThat(b.xMm()).isCloseTo(700, within(1e-6));
-    assertThat(b.yMm()).isCloseTo(50, within(1e-6));
+    assertThat(b.xMm()).isBetween(xOff + diag02[0], xOff + diag02[1]);
+    assertThat(b.yMm()).isBetween(diag02[0], diag02[1]);
+    assertThat(b.xMm() - xOff).isCloseTo(b.yMm(), within(1e-6));
     // a latched axis stops when the deadman goes off
     run(p, """
         HOLD DEADMAN
@@ -177,7 +232,7 @@ class PendantMotionAndDataTest {
         RELEASE SHIFT
         WAIT 0.2
         """);
-    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(650, within(1e-6));
+    assertThat(control.currentPose(0, 0).xMm()).isBetween(b.xMm() - x02[1], b.xMm() - x02[0]);
     assertThat(p.lcd().promptLine()).contains("SHIFT released");
   }
 
@@ -241,18 +296,23 @@ class PendantMotionAndDataTest {
         RELEASE SHIFT
         SHIFT+F5
         """);
-    // origin at the first point, X toward the second, Y toward the third: world-aligned at (600, 0, 400)
-    assertThat(body(p)).contains("Taught: X 600.0 Y 0.0 Z 400.0 W 0.0 P 0.0 R 0.0");
+    // origin at the first point (HOME's pointer tip), X toward the second, Y toward the third:
+    // world-aligned at the tip
+    assertThat(body(p)).contains("Taught: X " + oneDecimal(HOME_TCP[0]) + " Y " + oneDecimal(HOME_TCP[1]) + " Z "
+        + oneDecimal(HOME_TCP[2]) + " W 0.0 P 0.0 R 0.0");
     assertThat(p.lcd().promptLine()).contains("User Frame 1 taught");
     Position.Cartesian uf1 = control.frame(FrameKind.USER, 1);
-    assertThat(uf1.xMm()).isCloseTo(600, within(1e-6));
+    assertThat(uf1.xMm()).isCloseTo(HOME_TCP[0], within(1e-6));
+    assertThat(uf1.yMm()).isCloseTo(HOME_TCP[1], within(1e-6));
+    assertThat(uf1.zMm()).isCloseTo(HOME_TCP[2], within(1e-6));
     // MOVE_TO back to the origin point
     run(p, """
         UP *2
         SHIFT+F4
         WAIT 5
         """);
-    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(600, within(1e-6));
+    assertThat(control.currentPose(0, 0).xMm()).isCloseTo(HOME_FLANGE[0], within(1e-6));
+    assertThat(control.currentPose(0, 0).zMm()).isCloseTo(HOME_FLANGE[2], within(1e-6));
     // SETIND makes it active; POSN then shows the USER position relative to it
     run(p, """
         PREV
@@ -350,7 +410,9 @@ class PendantMotionAndDataTest {
         F5
         2
         """);
-    assertThat(body(p)).contains("JOINT").contains("J1 {     0.000} deg").contains("J5      0.000 deg");
+    // recorded at HOME
+    assertThat(body(p)).contains("JOINT").contains("J1 {     0.000} deg")
+        .contains(String.format(Locale.ROOT, "J5 %10.3f deg", ArmByHand.HOME[4]));
     run(p, """
         DOWN
         TYPE 30
@@ -362,7 +424,10 @@ class PendantMotionAndDataTest {
         """);
     assertThat(body(p)).contains("J2     30.000 deg").contains("J4 {   -12.500} deg");
     Position pr1 = control.registers().position(1);
-    Position.Joint expected = new Position.Joint(0, 30, 0, -12.5, 0, 0);
+    double[] typed = ArmByHand.HOME.clone();
+    typed[1] = 30;
+    typed[3] = -12.5;
+    Position.Joint expected = new Position.Joint(typed[0], typed[1], typed[2], typed[3], typed[4], typed[5]);
     for (int j = 1; j <= 6; j++) {
       assertThat(pr1.element(j)).as("J" + j).isCloseTo(expected.element(j), within(1e-9));
     }
@@ -378,8 +443,18 @@ class PendantMotionAndDataTest {
         F5
         1
         """);
+    // the pointer's tip (UT 1) in UF 1 (= WORLD) for those joints, composed by hand
     assertThat(control.registers().position(1)).isInstanceOf(Position.Cartesian.class);
-    assertThat(((Position.Cartesian) control.registers().position(1)).yMm()).isCloseTo(300, within(1e-6));
+    Position.Cartesian c = (Position.Cartesian) control.registers().position(1);
+    double[] want = ArmByHand.xyzwpr(ArmByHand.tcp(typed));
+    double[] got = {c.xMm(), c.yMm(), c.zMm(), c.wDeg(), c.pDeg(), c.rDeg()};
+    for (int i = 0; i < 6; i++) {
+      double d = got[i] - want[i];
+      if (i >= 3) {
+        d = Math.IEEEremainder(d, 360);
+      }
+      assertThat(d).as("XYZWPR".charAt(i) + " of " + c).isCloseTo(0, within(1e-6));
+    }
   }
 
   @Test

@@ -6,17 +6,36 @@ import static org.robotrun.pendant.PendantKeys.body;
 import static org.robotrun.pendant.PendantKeys.run;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Position;
 import org.robotrun.program.Program;
 
-/** Key sequences that build, edit and run a program, read back from the LCD text (stand-in controller). */
+/**
+ * Key sequences that build, edit and run a program, read back from the LCD text, on the real
+ * controller (the default cell's LR Mate 200iD). Jog figures are worked out by hand in
+ * {@link ArmByHand} from the robot file and the documented jog rules, never read from a run.
+ */
 class PendantProgramTest {
-  private final StandInRobotControl control = StandIn.control();
+  private final RobotControl control = RealController.control();
   private final Pendant p = new Pendant(control);
 
-  /** Creates PICK1 and records three points, jogging J1 then J2 between them. */
+  /**
+   * J1 at P[2]: 0.5 s of J1 (T1, 100 %) stopped at once by SHIFT. At HOME the pointer's tip and
+   * the flange swing at 385 mm from J1's axis, so T1's 250 mm/s cap sets the pace once the ramp passes it.
+   */
+  private static final double[] J1_AT_P2 =
+      ArmByHand.jointJogRange(1, ArmByHand.radiusFromJ1(ArmByHand.tcp(ArmByHand.HOME)), 0.5);
+  /**
+   * J2 at P[3]: 0.5 s of J2 likewise. With FANUC's coupled J3 the forearm keeps its attitude, so
+   * the tip and the flange circle J2's axis at the upper arm's length (330 mm).
+   */
+  private static final double[] J2_AT_P3 = ArmByHand.jointJogRange(2, ArmByHand.upperArmMm(), 0.5);
+
+  /** Creates PICK1 and records three points, jogging J1 then J2 between them (see {@link #J1_AT_P2}). */
   private void createWithThreePoints() {
+    assertThat(control.mode()).isEqualTo(RobotControl.Mode.T1);
+    assertThat(control.overridePct()).isEqualTo(100);
     run(p, """
         HOLD DEADMAN
         SELECT
@@ -93,9 +112,10 @@ class PendantProgramTest {
     assertThat(p.lcd().statusLine()).doesNotContain("RUNNING").doesNotContain("PAUSED");
     assertThat(p.lcd().alarmLine()).isBlank();
     assertThat(control.registers().number(1)).isEqualTo(1.0);
-    // the robot stands at P[3]
-    Position.Cartesian p3 = (Position.Cartesian) control.program("PICK1").orElseThrow().position(3).orElseThrow().position();
-    Position.Cartesian here = control.currentPose(0, 0);
+    // the robot stands at P[3] (compared in the frames P[3] was taught in)
+    org.robotrun.program.LocalPosition taught = control.program("PICK1").orElseThrow().position(3).orElseThrow();
+    Position.Cartesian p3 = (Position.Cartesian) taught.position();
+    Position.Cartesian here = control.currentPose(taught.userFrame(), taught.toolFrame());
     assertThat(here.xMm()).isCloseTo(p3.xMm(), within(1e-6));
     assertThat(here.yMm()).isCloseTo(p3.yMm(), within(1e-6));
     assertThat(here.zMm()).isCloseTo(p3.zMm(), within(1e-6));
@@ -113,13 +133,12 @@ class PendantProgramTest {
         """);
     // cursor follows execution; the program runs all three moves
     run(p, "WAIT 5");
-    double j2AtP3 = control.currentJoints().j2Deg();
-    assertThat(j2AtP3).isGreaterThan(10);
+    assertThat(control.currentJoints().j2Deg()).isBetween(J2_AT_P3[0], J2_AT_P3[1]);
+    assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
+    // the cursor stays on the last line after a run, as on a controller (docs/pendant.md), and
+    // SHIFT+BWD from there backs out of that line (docs/tp-execution.md)
     run(p, """
         HOLD DEADMAN
-        ITEM
-        TYPE 4
-        ENTER
         HOLD SHIFT
         BWD
         WAIT 5
@@ -127,7 +146,7 @@ class PendantProgramTest {
         """);
     // backed out of line 3: the robot is at P[2] (J2 = 0) and the cursor is on line 3
     assertThat(control.currentJoints().j2Deg()).isCloseTo(0, within(1e-6));
-    assertThat(control.currentJoints().j1Deg()).isGreaterThan(10);
+    assertThat(control.currentJoints().j1Deg()).isBetween(J1_AT_P2[0], J1_AT_P2[1]);
     assertThat(p.lcd().cursorRow().orElseThrow()).contains("3:");
   }
 
@@ -208,9 +227,9 @@ class PendantProgramTest {
         WAIT 5
         RELEASE SHIFT
         """);
-    // line 3 ran from the moved cursor: the robot is at P[3] (J1 and J2 jogged 15 deg each)
-    assertThat(control.currentJoints().j1Deg()).isCloseTo(15, within(1e-6));
-    assertThat(control.currentJoints().j2Deg()).isCloseTo(15, within(1e-6));
+    // line 3 ran from the moved cursor: the robot is at P[3] (J1 and J2 as jogged)
+    assertThat(control.currentJoints().j1Deg()).isBetween(J1_AT_P2[0], J1_AT_P2[1]);
+    assertThat(control.currentJoints().j2Deg()).isBetween(J2_AT_P3[0], J2_AT_P3[1]);
   }
 
   @Test
@@ -251,7 +270,10 @@ class PendantProgramTest {
         HOLD
         """);
     assertThat(p.lcd().statusLine()).contains("PAUSED");
+    // HOLD decelerates along the path within 0.25 s (docs/motion.md); then the arm stands, short of P[1]
+    run(p, "WAIT 0.3");
     Position.Joint held = control.currentJoints();
+    assertThat(held.j1Deg()).isGreaterThan(1);
     run(p, "WAIT 1");
     assertThat(control.currentJoints()).isEqualTo(held);
     run(p, """
@@ -328,7 +350,8 @@ class PendantProgramTest {
         F2
         F4
         """);
-    assertThat(p.lcd().promptLine()).contains("Cannot delete MAIN");
+    // refused while it runs or is paused: ABORT first (docs/pendant.md, docs/tp-execution.md)
+    assertThat(p.lcd().promptLine()).contains("MAIN").contains("running or paused").contains("ABORT");
     assertThat(control.program("MAIN")).isPresent();
   }
 

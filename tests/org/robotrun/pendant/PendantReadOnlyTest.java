@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.robotrun.pendant.PendantKeys.run;
 
 import org.junit.jupiter.api.Test;
+import org.robotrun.control.RobotControl;
 import org.robotrun.program.Program;
 
 /**
@@ -15,7 +16,7 @@ class PendantReadOnlyTest {
   private static final String WHY = "READ-ONLY (a hand-in opens read-only): edits are refused";
 
   private static Pendant pendantWithOneProgram() {
-    StandInRobotControl control = StandIn.control();
+    RobotControl control = RealController.control();
     Pendant p = new Pendant(control);
     run(p, """
         HOLD DEADMAN

@@ -9,9 +9,8 @@ import org.robotrun.sim.Simulation;
 
 /**
  * Test helper: the pendant's port on the real controller ({@code sim.ControllerPort} on the
- * default cell's robot), as the window and {@code robotrun pendant} drive it. Tests whose
- * numbers are checked by hand on toy kinematics keep {@link StandIn}; ControlPortContractTest
- * keeps the two in step.
+ * default cell's robot), as the window and {@code robotrun pendant} drive it. Every pendant test
+ * runs on it; {@link ArmByHand} works out the default arm's figures by hand for their assertions.
  */
 final class RealController {
   private RealController() {}
