@@ -39,12 +39,12 @@ import picocli.CommandLine.Spec;
       "cpu_pct: the process's CPU time over the phase (every thread) in %% of one core. frame_cpu_ms: CPU time per "
           + "drawn frame of the window's thread and of Mesa's software rasteriser threads (llvmpipe, Linux), "
           + "less the time spent stepping the simulation; '-' when the phase drew no frame (an idle window draws "
-          + "every 5 s). load: the machine's 1-minute load average at the phase's end. close_ms: from the close "
+          + "only when something needs a frame). load: the machine's 1-minute load average at the phase's end. close_ms: from the close "
           + "request to the end of the window's process, timed from this process, which starts the window in a "
           + "child JVM (extra JVM options for it in ROBOTRUN_BENCH_JAVA_OPTS, e.g. to profile it).",
       "CPU figures stay comparable on a loaded machine; fps does not (quote the load with them). "
           + "ROBOTRUN_BENCH_DETAIL=1 also prints, on stderr, each phase's CPU per frame of the window thread, Mesa's "
-          + "threads and the simulation, and the wall time per frame in each part of a frame."
+          + "threads and the simulation, the wall time per frame in each part of a frame, and the pixels drawn again per frame."
     })
 public final class BenchWindowCommand implements Callable<Integer> {
   @Spec CommandSpec spec;

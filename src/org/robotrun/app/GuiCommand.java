@@ -664,6 +664,21 @@ public final class GuiCommand implements Callable<Integer> {
     boolean[] dirty = {false};
     long[] lastSave = {System.nanoTime()};
     s.bench().setLayoutChangeHandler(() -> dirty[0] = true);
+    // Idle, the window sleeps until something needs a frame: a message expiring, the autosave's
+    // next look after a change, the layout's save; a finished background save wakes it too.
+    if (s.workspace() != null) {
+      s.workspace().session.autosave.setAfterWrite(org.robotrun.ui.SimulatorWindow::wakeFromAnyThread);
+    }
+    s.window().setWakeSource(() -> {
+      long next = s.bench().nextRedrawNanos();
+      if (s.workspace() != null) {
+        next = Math.min(next, s.workspace().session.autosave.nextPollNanos(s.window().lastActiveFrameNanos()));
+      }
+      if (dirty[0]) {
+        next = Math.min(next, lastSave[0] + 1_000_000_001L);
+      }
+      return next;
+    });
     s.window().run(t -> {
           // Real time drives the simulation (a stalled frame never makes it jump more than 0.1 s);
           // then the pendant in hand catches up with its controller.

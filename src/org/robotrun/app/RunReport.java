@@ -105,6 +105,8 @@ final class RunReport {
       o.put("timeSec", round(e.simTimeSec(), 6));
       o.put("a", e.bodyA());
       o.put("b", e.bodyB());
+      o.put("aName", e.nameA());
+      o.put("bName", e.nameB());
     }
     // WARN alarms (a refused RUN or PLC start): raised, shown, and every program went on
     ArrayNode warnings = root.putArray("warnings");

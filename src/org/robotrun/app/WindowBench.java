@@ -233,12 +233,13 @@ final class WindowBench {
   }
 
   /** The figures at one instant. */
-  private record Sample(long nanos, long frames, long processCpu, long windowCpu, long glCpu, long simCpu, long[] parts) {}
+  private record Sample(long nanos, long frames, long processCpu, long windowCpu, long glCpu, long simCpu, long[] parts,
+      long damaged) {}
 
   private Sample sample() {
     return new Sample(System.nanoTime(), session.window().frames(), ProcessCpu.processNanos(),
         threads.getThreadCpuTime(windowThread.threadId()), ProcessCpu.nativeThreadsNanos(ProcessCpu.GL_THREADS),
-        simCpuNanos.get(), session.window().phaseNanos());
+        simCpuNanos.get(), session.window().phaseNanos(), session.window().damagedPixels());
   }
 
   private void report(String name, Sample s, Sample e) {
@@ -260,6 +261,8 @@ final class WindowBench {
             (e.parts()[i] - s.parts()[i]) / 1e6 / frames));
       }
       System.err.println("robotrun: " + name + " wall ms per frame:" + parts);
+      System.err.printf(Locale.ROOT, "robotrun: %s pixels drawn again per frame: %.0f%n", name,
+          (e.damaged() - s.damaged()) / (double) frames);
     }
     out.flush();
   }

@@ -15,7 +15,6 @@ import java.util.regex.Pattern;
 import org.robotrun.io.JsonFieldReader;
 import org.robotrun.io.LocatedJson;
 import org.robotrun.io.LocatedJson.JArray;
-import org.robotrun.io.LocatedJson.JNumber;
 import org.robotrun.io.LocatedJson.JObject;
 import org.robotrun.io.ScenarioError;
 
@@ -95,23 +94,11 @@ public record Course(Path file, String title, List<Lab> labs) {
     }
 
     Course read(String text) throws CourseException {
-      List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
-      LocatedJson root;
-      try {
-        root = LocatedJson.parse(text.startsWith("\uFEFF") ? text.substring(1) : text, duplicates);
-      } catch (LocatedJson.SyntaxError e) {
-        throw new CourseException(List.of(new ScenarioError(file, e.line(), "", e.getMessage())));
-      }
-      for (LocatedJson.DuplicateKey d : duplicates) {
-        error(d.line(), d.key(), "field given twice");
-      }
-      JObject top = object(root, "", TOP);
+      JObject top = topObject(text, TOP);
       if (top == null) {
         throw new CourseException(errors);
       }
-      if (!(top.members().get("format") instanceof JNumber n) || n.value() != FORMAT) {
-        error(top.line(), "format", "expected " + FORMAT);
-      }
+      format(top, FORMAT);
       String title = string(top, "title", "", false).orElse("");
       List<Lab> labs = new ArrayList<>();
       JArray arr = array(top, "labs", "", true);
@@ -128,7 +115,7 @@ public record Course(Path file, String title, List<Lab> labs) {
         } else if (!id.isEmpty() && !ids.add(id)) {
           error(o.line(), at + ".id", "\"" + id + "\" is used twice");
         }
-        double hours = o.members().get("hours") instanceof JNumber h ? h.value() : 0;
+        double hours = number(o, "hours", at, false, 0, 1000, 0);
         List<String> pre = new ArrayList<>();
         if (o.members().get("prerequisites") instanceof JArray p) {
           for (LocatedJson v : p.items()) {

@@ -172,7 +172,7 @@ final class RunChecks {
     Optional<ControllerAlarm> a = run.alarm().filter(x -> x.code().equals(Simulation.COLLISION_ALARM));
     List<CollisionEvent> ev = run.collisions();
     String first = ev.isEmpty() ? "" : String.format(Locale.ROOT, " (first: %s touched %s at %.2f s)",
-        ev.get(0).bodyA(), ev.get(0).bodyB(), ev.get(0).simTimeSec());
+        ev.get(0).nameA(), ev.get(0).nameB(), ev.get(0).simTimeSec());
     if (a.isPresent()) {
       return Eval.of(false, "the robot collided: " + alarm(a.get()) + first);
     }

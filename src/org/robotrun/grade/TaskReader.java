@@ -21,8 +21,6 @@ import java.util.regex.Pattern;
 import org.robotrun.io.JsonFieldReader;
 import org.robotrun.io.LocatedJson;
 import org.robotrun.io.LocatedJson.JArray;
-import org.robotrun.io.LocatedJson.JBool;
-import org.robotrun.io.LocatedJson.JNumber;
 import org.robotrun.io.LocatedJson.JObject;
 import org.robotrun.io.LocatedJson.JString;
 import org.robotrun.io.ScenarioError;
@@ -117,27 +115,11 @@ public final class TaskReader {
     }
 
     TaskLoad read(String text) {
-      List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
-      LocatedJson root;
-      try {
-        root = LocatedJson.parse(text, duplicates);
-      } catch (LocatedJson.SyntaxError e) {
-        return new TaskLoad.Failed(List.of(new ScenarioError(file, e.line(), "", e.getMessage())));
-      }
-      for (LocatedJson.DuplicateKey d : duplicates) {
-        error(d.line(), d.key(), "field given twice");
-      }
-      JObject top = object(root, "", TOP);
+      JObject top = topObject(text, TOP);
       if (top == null) {
         return new TaskLoad.Failed(errors);
       }
-      LocatedJson format = top.members().get("format");
-      if (format == null) {
-        error(top.line(), "format", "missing: expected " + FORMAT);
-      } else if (!(format instanceof JNumber n) || n.value() != FORMAT) {
-        error(format.line(), "format", "expected " + FORMAT + " (the task format this RobotRun reads), got "
-            + text(format));
-      }
+      format(top, FORMAT);
       String title = string(top, "title", "", false).orElse("");
       Scenario scenario = scenario(top);
       String program = string(top, "program", "", false).map(s -> s.toUpperCase(Locale.ROOT))
@@ -308,17 +290,11 @@ public final class TaskReader {
         });
         parts.add(new Task.PartJitter(part.orElse(""), x, y, r, reg));
       }
-      boolean varyVision = false;
-      LocatedJson vv = o.members().get("varyVisionSeed");
-      if (vv != null) {
-        if (!(vv instanceof LocatedJson.JBool b)) {
-          error(vv.line(), "variations.varyVisionSeed", "expected true or false, got " + vv.describe());
-        } else if (b.value() && scenario != null && scenario.vision().placements().isEmpty()) {
-          error(vv.line(), "variations.varyVisionSeed", "the scenario has no vision placements: another vision seed "
-              + "would move nothing (docs/vision.md, \"placements\")");
-        } else {
-          varyVision = b.value();
-        }
+      boolean varyVision = bool(o, "varyVisionSeed", "variations").orElse(false);
+      if (varyVision && scenario != null && scenario.vision().placements().isEmpty()) {
+        error(o.members().get("varyVisionSeed").line(), "variations.varyVisionSeed", "the scenario has no vision "
+            + "placements: another vision seed would move nothing (docs/vision.md, \"placements\")");
+        varyVision = false;
       }
       return new Task.Variations(count, seed, parts, min, max, varyVision);
     }
@@ -550,15 +526,10 @@ public final class TaskReader {
           error(line, path, "expected a name like R[1], F[2], DO[3], RO[1], GO[1]");
           continue;
         }
-        LocatedJson v = e.getValue();
         boolean bit = !mt.group(1).equals("R") && !mt.group(1).startsWith("G");
-        if (bit && v instanceof JBool b) {
-          out.put(e.getKey(), b.value() ? 1.0 : 0.0);
-        } else if (!bit && v instanceof JNumber n && Double.isFinite(n.value())) {
-          out.put(e.getKey(), n.value());
-        } else {
-          error(v.line(), path, "expected " + (bit ? "true or false" : "a number") + ", got " + v.describe());
-        }
+        Optional<Double> v = bit ? bool(vals, e.getKey(), at + ".values").map(b -> b ? 1.0 : 0.0)
+            : finite(vals, e.getKey(), at + ".values", true);
+        v.ifPresent(x -> out.put(e.getKey(), x));
       }
       return out;
     }
@@ -571,16 +542,6 @@ public final class TaskReader {
       if (o.isEmpty() || o.get().kind() != kind) {
         error(line, path, "the scenario has no " + kind.name().toLowerCase(Locale.ROOT) + " named '" + name + "'");
       }
-    }
-
-    // ---- typed fields ----------------------------------------------------------------------
-
-    private static String text(LocatedJson v) {
-      return switch (v) {
-        case JNumber n -> n.text();
-        case JString s -> "\"" + s.value() + "\"";
-        default -> v.describe();
-      };
     }
   }
 }

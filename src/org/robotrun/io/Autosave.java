@@ -38,6 +38,7 @@ public final class Autosave implements AutoCloseable {
   private long lastCheck = Long.MIN_VALUE;
   private volatile String problem = "";
   private volatile String status = "";
+  private volatile Runnable afterWrite = () -> {};
 
   /**
    * @param capture the content now; called on the polling thread only
@@ -64,6 +65,23 @@ public final class Autosave implements AutoCloseable {
     }
     lastCheck = nowNanos;
     submitIfChanged(capture.get(), false);
+  }
+
+  /**
+   * When a window that sleeps while idle must wake to poll again ({@link System#nanoTime}), or
+   * {@link Long#MAX_VALUE} when no poll is owed: one is owed once the content may have changed
+   * ({@code changedSinceNanos}: the last frame drawn for input or motion) after the last check.
+   */
+  public long nextPollNanos(long changedSinceNanos) {
+    if (workspace.readOnly() || lastCheck != Long.MIN_VALUE && lastCheck > changedSinceNanos) {
+      return Long.MAX_VALUE;
+    }
+    return lastCheck == Long.MIN_VALUE ? changedSinceNanos : lastCheck + CHECK_INTERVAL_NANOS;
+  }
+
+  /** Runs on the writer thread after each write and each problem (a sleeping window wakes to show the new state). */
+  public void setAfterWrite(Runnable r) {
+    afterWrite = Objects.requireNonNull(r);
   }
 
   /** Saves now (Ctrl+S, Quit) and waits up to {@code timeoutMs} for the files to be on disk; returns the problem or "". */
@@ -128,6 +146,14 @@ public final class Autosave implements AutoCloseable {
     if (snap == null) {
       return;
     }
+    try {
+      writeNow(snap);
+    } finally {
+      afterWrite.run();
+    }
+  }
+
+  private void writeNow(WorkspaceSnapshot snap) {
     try {
       List<java.nio.file.Path> touched = workspace.save(snap);
       if (!problem.isEmpty()) {

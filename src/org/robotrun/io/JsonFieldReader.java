@@ -44,6 +44,26 @@ public abstract class JsonFieldReader {
     }
   }
 
+  /**
+   * The whole of {@code text} as an object whose keys are all in {@code allowed}: null (with the
+   * error) when it is not JSON or not an object; a key given twice is an error too. A UTF-8 byte
+   * order mark in front is ignored.
+   */
+  protected final JObject topObject(String text, Set<String> allowed) {
+    List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
+    LocatedJson root;
+    try {
+      root = LocatedJson.parse(text.startsWith("\uFEFF") ? text.substring(1) : text, duplicates);
+    } catch (LocatedJson.SyntaxError e) {
+      error(e.line(), "", e.getMessage());
+      return null;
+    }
+    for (LocatedJson.DuplicateKey d : duplicates) {
+      error(d.line(), d.key(), "field given twice");
+    }
+    return object(root, "", allowed);
+  }
+
   /** {@code at.key}, or {@code key} at the top. */
   protected static String join(String at, String key) {
     return at.isEmpty() ? key : at + "." + key;
@@ -181,18 +201,111 @@ public abstract class JsonFieldReader {
    * (an error when required) or (with an error) anything else.
    */
   protected final Optional<Double> number(JObject o, String key, String at, boolean required, double lo, double hi) {
+    return ranged(o, key, at, required, "a number " + plain(lo) + ".." + plain(hi), x -> x >= lo && x <= hi);
+  }
+
+  /**
+   * The number field {@code key} of {@code o} above 0 and at most {@code hi} (a size, a distance,
+   * a scale), or empty when it is absent (an error when required) or (with an error) anything else.
+   */
+  protected final Optional<Double> positive(JObject o, String key, String at, boolean required, double hi) {
+    return ranged(o, key, at, required, "a number 0.." + plain(hi) + " (more than 0)", x -> x > 0 && x <= hi);
+  }
+
+  /**
+   * The number field {@code key} of {@code o}, any finite number (a register's value: a register
+   * holds any double), or empty when it is absent (an error when required) or (with an error)
+   * anything else.
+   */
+  protected final Optional<Double> finite(JObject o, String key, String at, boolean required) {
+    return ranged(o, key, at, required, "a finite number", x -> true);
+  }
+
+  private Optional<Double> ranged(JObject o, String key, String at, boolean required, String expected,
+      java.util.function.DoublePredicate inRange) {
     LocatedJson v = o.members().get(key);
     if (v == null) {
       if (required) {
-        error(o.line(), join(at, key), "missing: expected a number " + plain(lo) + ".." + plain(hi));
+        error(o.line(), join(at, key), "missing: expected " + expected);
       }
       return Optional.empty();
     }
-    if (!(v instanceof LocatedJson.JNumber n) || !Double.isFinite(n.value()) || n.value() < lo || n.value() > hi) {
-      error(v.line(), join(at, key), "expected a number " + plain(lo) + ".." + plain(hi) + ", got " + v.describe());
+    if (!(v instanceof LocatedJson.JNumber n) || !Double.isFinite(n.value()) || !inRange.test(n.value())) {
+      error(v.line(), join(at, key), "expected " + expected + ", got " + v.describe());
       return Optional.empty();
     }
     return Optional.of(n.value());
+  }
+
+  /**
+   * The array field {@code key} of {@code o} holding one of {@code counts} numbers, each within
+   * {@code lo..hi}; null when it is absent (an error when required) or, with an error for each
+   * bad item, anything else. {@code shape} says what the array holds ({@code "[min, max]"}) in the
+   * message about a missing field, another type or another count.
+   */
+  protected final double[] numbers(JObject o, String key, String at, boolean required, String shape, double lo,
+      double hi, int... counts) {
+    return items(o, key, at, required, shape, false, lo, hi, counts);
+  }
+
+  /** As {@link #numbers}, for whole numbers within {@code lo..hi}. */
+  protected final int[] integers(JObject o, String key, String at, boolean required, String shape, int lo, int hi,
+      int... counts) {
+    double[] d = items(o, key, at, required, shape, true, lo, hi, counts);
+    if (d == null) {
+      return null;
+    }
+    int[] out = new int[d.length];
+    for (int k = 0; k < d.length; k++) {
+      out[k] = (int) d[k];
+    }
+    return out;
+  }
+
+  private double[] items(JObject o, String key, String at, boolean required, String shape, boolean whole, double lo,
+      double hi, int... counts) {
+    LocatedJson v = o.members().get(key);
+    String path = join(at, key);
+    if (v == null) {
+      if (required) {
+        error(o.line(), path, "missing: expected " + shape);
+      }
+      return null;
+    }
+    if (!(v instanceof JArray a) || java.util.Arrays.stream(counts).noneMatch(c -> c == a.items().size())) {
+      error(v.line(), path, "expected " + shape + ", got "
+          + (v instanceof JArray a ? "an array of " + a.items().size() : v.describe()));
+      return null;
+    }
+    double[] out = new double[a.items().size()];
+    boolean ok = true;
+    for (int k = 0; k < out.length; k++) {
+      LocatedJson item = a.items().get(k);
+      if (item instanceof LocatedJson.JNumber n && Double.isFinite(n.value()) && n.value() >= lo && n.value() <= hi
+          && (!whole || n.integral())) {
+        out[k] = n.value();
+      } else {
+        error(item.line(), path + "[" + k + "]", "expected " + (whole ? "a whole number " : "a number ") + plain(lo)
+            + ".." + plain(hi) + ", got " + item.describe());
+        ok = false;
+      }
+    }
+    return ok ? out : null;
+  }
+
+  /**
+   * Checks the top-level {@code "format"} field: present and the whole number {@code expected}
+   * (the version of the file kind this RobotRun reads).
+   */
+  protected final void format(JObject top, int expected) {
+    LocatedJson f = top.members().get("format");
+    if (f == null) {
+      error(top.line(), "format", "missing: expected \"format\": " + expected);
+    } else if (!(f instanceof LocatedJson.JNumber n) || !n.integral()) {
+      error(f.line(), "format", "expected the integer " + expected + ", got " + f.describe());
+    } else if (n.value() != expected) {
+      error(f.line(), "format", "unsupported format " + n.text() + ": this RobotRun reads format " + expected);
+    }
   }
 
   /** {@code v} in plain decimal digits (no exponent), as error messages write limits. */

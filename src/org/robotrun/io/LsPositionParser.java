@@ -255,6 +255,19 @@ final class LsPositionParser extends TpTokenCursor {
             }
             continue;
           }
+          if (key.matches("J([7-9]|[1-9][0-9])")) {
+            // J7 = ... deg: a seven-axis arm (or a group listing more joints): kept, not moved
+            expect(Kind.EQ, "'=' after " + key);
+            if (peek().is(Kind.MINUS)) {
+              next();
+            }
+            expect(Kind.NUMBER, "a number after " + key + " =");
+            if (peek().isWord("mm") || peek().isWord("deg")) {
+              next();
+            }
+            kept = "a position of an arm with more than six joints (J7 ...)";
+            continue;
+          }
           if (indexOf(RAIL, key) >= 0) {
             // RX = ... mm, RW = ... deg: a robot with an integrated rail lists its pose this way
             expect(Kind.EQ, "'=' after " + key);

@@ -188,6 +188,8 @@ public final class LsReader {
     private final byte[] bytes;
     private final java.nio.charset.Charset charset;
     private final List<Integer> statementStart = new ArrayList<>();
+    /** Statements whose text was mended (not only renumbered): an edit writes them afresh. */
+    private final Set<Integer> mendedText = new java.util.HashSet<>();
     private final List<String> sectionOrder = new ArrayList<>();
     private final Map<String, Integer> sectionIndex = new java.util.HashMap<>();
 
@@ -217,6 +219,16 @@ public final class LsReader {
           return result();
         }
         diags.add(Diagnostic.error(file, i + 1, "expected '/PROG  NAME' (an ASCII .LS program), found '" + clip(lines[i]) + "'"));
+      }
+      if ("/PROG".equals(sectionHeader(lines[i]))) {
+        // a lone CR ends a line too (splitLines): worth a word, once, in a file that is a program
+        for (int c = text.indexOf('\r'); c >= 0; c = text.indexOf('\r', c + 1)) {
+          if (c + 1 == text.length() || text.charAt(c + 1) != '\n') {
+            mend(rawLines(text.substring(0, c + 1)).size(),
+                "a line ending in a lone CR (an old Mac editor's line end): read as a line break");
+            break;
+          }
+        }
       }
       boolean sawProg = false;
       boolean sawAttr = false;
@@ -362,7 +374,7 @@ public final class LsReader {
         }
       }
       List<String> appl = raw.subList(applStart, mn);
-      String lineEnd = text.contains("\r\n") ? "\r\n" : "\n";
+      String lineEnd = text.contains("\r\n") ? "\r\n" : text.indexOf('\n') < 0 && text.indexOf('\r') >= 0 ? "\r" : "\n";
       List<List<String>> statements = new ArrayList<>();
       for (int j = 0; j < statementStart.size(); j++) {
         int from = statementStart.get(j);
@@ -370,7 +382,8 @@ public final class LsReader {
         if (to < from) {
           return program;
         }
-        if (to == from || j > 0 && statementStart.get(j - 1) == from) {
+        if (to == from || j > 0 && statementStart.get(j - 1) == from || mendedText.contains(j)) {
+          // (a mended statement, as `R[1]=[R80]/2`, is written as it was read: R[1]=R[80]/2)
           // a statement and the remark after its ';' share a line: an edit lays both out afresh
           statements.add(List.of());
           continue;
@@ -414,7 +427,8 @@ public final class LsReader {
       List<String> out = new ArrayList<>();
       int s = 0;
       for (int i = 0; i < text.length(); i++) {
-        if (text.charAt(i) == '\n') {
+        char c = text.charAt(i);
+        if (c == '\n' || c == '\r' && (i + 1 == text.length() || text.charAt(i + 1) != '\n')) {
           out.add(text.substring(s, i + 1));
           s = i + 1;
         }
@@ -494,6 +508,12 @@ public final class LsReader {
     }
 
     private void attrEntry(String text, int line) {
+      if (!text.endsWith(";") && !text.contains("\n") && text.indexOf('=') > 0
+          && isKey(text.substring(0, text.indexOf('=')).strip())) {
+        // "VERSION = 0" typed without its ';'
+        mend(line, "no ';' at the end of the /ATTR entry: read as if it were there");
+        text = text + ";";
+      }
       if (!text.endsWith(";")) {
         diags.add(Diagnostic.error(file, line, "/ATTR entry does not end with ';': expected 'KEY = value;'"));
         return;
@@ -575,38 +595,53 @@ public final class LsReader {
         while (p < text.length() && Character.isDigit(text.charAt(p)) && text.charAt(p) < 128) {
           p++;
         }
+        int digitsEnd = p;
+        if (p > digitsStart && skipSpaces(text, p) > p && skipSpaces(text, p) < text.length()
+            && text.charAt(skipSpaces(text, p)) == ':') {
+          // " 3 :  R[2]=1 ;": spaces between the number and its ':'
+          mend(line, "spaces between the line number and ':': read as '" + text.substring(digitsStart, p) + ":'");
+          p = skipSpaces(text, p);
+        }
         boolean numbered = p > digitsStart && p < text.length() && text.charAt(p) == ':';
         boolean colonOnly = !numbered && p == digitsStart && p < text.length() && text.charAt(p) == ':';
         int expected = instructions.size() + 1;
-        if (!numbered && !colonOnly) {
-          diags.add(Diagnostic.error(file, line,
+        boolean unnumbered = !numbered && !colonOnly && p == digitsStart && p < text.length()
+            && (Character.isLetter(text.charAt(p)) || text.charAt(p) == '!' || text.startsWith("//", p));
+        if (!numbered && !colonOnly && !unnumbered) {
+          diags.add(Diagnostic.of(file, line, digitsStart + 1, Diagnostic.Severity.ERROR, Diagnostic.Kind.SYNTAX,
               "expected a numbered line 'N:  instruction ;', found '" + clip(text.strip()) + "'"));
           continue;
         }
-        if (colonOnly) {
+        // the statement starts after the ':' (or, on a line without its number, at its first word)
+        int from = unnumbered ? p : p + 1;
+        boolean textMended = false;
+        if (unnumbered) {
+          // "J P[1] 100% FINE ;" typed without "N:": the offline converter numbers lines in file order
+          mend(line, "a line without its number: read as line " + expected);
+        } else if (colonOnly) {
           // "    : ! remark ;" after a finished statement: the offline converter numbers it
           mend(line, "a line with ':' and no number after a finished statement: read as line " + expected);
         } else {
           int number;
           try {
-            number = Integer.parseInt(text.substring(digitsStart, p));
+            number = Integer.parseInt(text.substring(digitsStart, digitsEnd));
           } catch (NumberFormatException e) {
             number = -1;
           }
           if (number != expected) {
             // Hand-edited files repeat or reorder numbers; the offline converter numbers lines in file order.
-            mend(line, "line number " + clip(text.substring(digitsStart, p)) + " out of order or repeated: read as line "
+            mend(line, "line number " + clip(text.substring(digitsStart, digitsEnd)) + " out of order or repeated: read as line "
                 + expected);
           }
         }
-        Body body = body(text, p + 1, line);
+        Body body = body(text, from, line);
         String remarkAfter = null;
         if (!body.terminated) {
-          int semi = remarkSemicolon(text, p + 1);
+          int semi = remarkSemicolon(text, from);
           if (semi > 0) {
             // "R[1]=2 ; ! why": a remark after the ';' becomes a remark line of its own
             remarkAfter = text.substring(semi + 1).strip();
-            body = body(text.substring(0, semi + 1), p + 1, line);
+            body = body(text.substring(0, semi + 1), from, line);
           }
         }
         List<TpToken> tokens = body.tokens;
@@ -628,12 +663,16 @@ public final class LsReader {
         }
         Instruction in;
         final int lineBase = firstLine;
+        List<TpToken> asWritten = tokens;
+        tokens = bracketedRegisters(tokens);
+        textMended |= tokens != asWritten;
         try {
-          TpStatementParser.Parsed parsed = TpStatementParser.parse(tokens,
+          TpStatementParser.Parsed parsed = TpStatementParser.parseMendingHandEdits(tokens,
               l -> l - 1 >= lineBase && l - 1 < lines.length ? lines[l - 1] : null);
           in = parsed.instruction();
           for (String w : parsed.warnings()) {
             diags.add(Diagnostic.warning(file, line, w));
+            textMended |= w.startsWith("mended: ");
           }
           if (in instanceof Instruction.Move m) {
             for (var o : m.options()) {
@@ -644,6 +683,7 @@ public final class LsReader {
           }
           if (!terminated) {
             mend(line, "no ';' at the end of the line: read as if it were there");
+            textMended = true;
           }
         } catch (TpSyntaxError e) {
           String rawText = stripSemicolon(raw.toString().strip());
@@ -675,6 +715,9 @@ public final class LsReader {
           }
           in = withBlock(in, block.toString(), line);
         }
+        if (textMended && !(in instanceof Instruction.CommentedOut)) {
+          mendedText.add(instructions.size());
+        }
         instructions.add(in);
         sourceLines.add(line);
         statementStart.add(line - 1);
@@ -695,6 +738,62 @@ public final class LsReader {
      */
     private void mend(int line, String what) {
       diags.add(Diagnostic.warning(file, line, "mended: " + what));
+    }
+
+    /** {@code R}, {@code PR}, {@code AR} or {@code SR} and a number, as in a hand-written {@code [R80]}. */
+    private static final java.util.regex.Pattern BRACKETED_REGISTER =
+        java.util.regex.Pattern.compile("(?i)(R|PR|AR|SR)([0-9]{1,9})");
+
+    /**
+     * The tokens with every {@code [R80]} where a value stands (after '=', an operator, '(' or
+     * ',') read as {@code R[80]} (also {@code [PR3]}, {@code [AR1]}, {@code [SR2]}), each a
+     * warning naming the line; the same list when there is none. An index ({@code R[80]},
+     * {@code $X[R1]}), a remark and MESSAGE text are never touched.
+     */
+    private List<TpToken> bracketedRegisters(List<TpToken> tokens) {
+      if (tokens.isEmpty() || tokens.get(0).is(TpToken.Kind.BANG)) {
+        return tokens;
+      }
+      List<TpToken> out = null;
+      for (int i = 0; i < tokens.size(); i++) {
+        TpToken t = tokens.get(i);
+        java.util.regex.Matcher m = i + 2 < tokens.size() && t.is(TpToken.Kind.LBRACKET)
+            && tokens.get(i + 1).is(TpToken.Kind.WORD) && tokens.get(i + 2).is(TpToken.Kind.RBRACKET)
+            && (i == 0 || !endsOperand(tokens.get(i - 1)))
+            ? BRACKETED_REGISTER.matcher(tokens.get(i + 1).text()) : null;
+        if (m != null && m.matches()) {
+          if (out == null) {
+            out = new ArrayList<>(tokens.subList(0, i));
+          }
+          String kind = m.group(1).toUpperCase(Locale.ROOT);
+          int col = t.column();
+          out.add(new TpToken(TpToken.Kind.WORD, kind, t.line(), col));
+          out.add(new TpToken(TpToken.Kind.LBRACKET, "[", t.line(), col + kind.length()));
+          out.add(new TpToken(TpToken.Kind.NUMBER, m.group(2), t.line(), col + kind.length() + 1));
+          out.add(new TpToken(TpToken.Kind.RBRACKET, "]", t.line(), tokens.get(i + 2).column()));
+          mend(t.line(), "read [" + tokens.get(i + 1).text() + "] as " + kind + "[" + m.group(2)
+              + "] (a register written inside the brackets)");
+          i += 2;
+        } else if (out != null) {
+          out.add(t);
+        }
+      }
+      return out == null ? tokens : out;
+    }
+
+    /** Words a value follows: {@code IF [R3]>1}, {@code WAIT [R1]>2}, {@code [R1] AND [R2]}. */
+    private static final Set<String> VALUE_AFTER = Set.of(
+        "IF", "WAIT", "SELECT", "AND", "OR", "NOT", "MOD", "DIV", "TO", "DOWNTO", "WHEN");
+
+    /** A token after which '[' opens an index or argument list ({@code R[}, {@code ][}, {@code $X[}), not a value. */
+    private static boolean endsOperand(TpToken t) {
+      if (t.is(TpToken.Kind.WORD) && VALUE_AFTER.contains(t.text().toUpperCase(Locale.ROOT))) {
+        return false; // IF [R3]>1: a value follows the word
+      }
+      return switch (t.kind()) {
+        case WORD, NUMBER, STRING, RBRACKET, RPAREN, ITEM_COMMENT, RAW -> true;
+        default -> false;
+      };
     }
 
     /** The index of a ';' followed only by a remark ({@code ! ...} or {@code // ...}), or -1. */
@@ -823,19 +922,18 @@ public final class LsReader {
       return bad > 0;
     }
 
+    /** Lines split at LF, CRLF and a lone CR (old Mac editors), without their line ends. */
     private static String[] splitLines(String text) {
       List<String> out = new ArrayList<>();
-      int s = 0;
-      int len = text.length();
-      for (int i = 0; i < len; i++) {
-        if (text.charAt(i) == '\n') {
-          int e = i > s && text.charAt(i - 1) == '\r' ? i - 1 : i;
-          out.add(text.substring(s, e));
-          s = i + 1;
+      for (String raw : rawLines(text)) {
+        int e = raw.length();
+        if (e > 0 && raw.charAt(e - 1) == '\n') {
+          e--;
         }
-      }
-      if (s < len) {
-        out.add(text.substring(s).replace("\r", ""));
+        if (e > 0 && raw.charAt(e - 1) == '\r') {
+          e--;
+        }
+        out.add(raw.substring(0, e));
       }
       return out.toArray(String[]::new);
     }

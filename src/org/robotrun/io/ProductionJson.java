@@ -14,7 +14,6 @@ import java.util.TreeMap;
 import java.util.function.Consumer;
 import org.robotrun.io.LocatedJson.JArray;
 import org.robotrun.io.LocatedJson.JBool;
-import org.robotrun.io.LocatedJson.JNumber;
 import org.robotrun.io.LocatedJson.JObject;
 import org.robotrun.program.IoKind;
 import org.robotrun.program.IoRanges;
@@ -101,22 +100,13 @@ public final class ProductionJson extends JsonFieldReader {
     int pnsBase = integer(o, "pnsBase", at, 0, MAX_PROGRAM_NUMBER - 255, 0);
     int rsrBase = integer(o, "rsrBase", at, 0, MAX_PROGRAM_NUMBER, 0);
     List<Integer> rsr = new ArrayList<>(d.rsrNumbers());
-    JArray ra = array(o, "rsr", at, false);
-    if (ra != null) {
-      if (ra.items().size() > 8) {
-        error(ra.line(), join(at, "rsr"), "expected at most 8 RSR numbers (RSR1..8), got " + ra.items().size());
-      }
-      for (int i = 0; i < Math.min(8, ra.items().size()); i++) {
-        LocatedJson v = ra.items().get(i);
-        if (!(v instanceof JNumber n) || !n.integral() || n.value() < 0 || n.value() > MAX_PROGRAM_NUMBER) {
-          error(v.line(), join(at, "rsr[" + i + "]"), "expected a program number 0..9999 (0: RSR" + (i + 1)
-              + " disabled), got " + v.describe());
-        } else {
-          rsr.set(i, (int) n.value());
-          if (rsrBase + n.value() > MAX_PROGRAM_NUMBER) {
-            error(v.line(), join(at, "rsr[" + i + "]"), "rsrBase + number must be at most 9999 (RSRnnnn has four digits)");
-          }
-        }
+    int[] ra = integers(o, "rsr", at, false, "an array of at most 8 program numbers (RSR1..8, 0: not used)", 0,
+        MAX_PROGRAM_NUMBER, 0, 1, 2, 3, 4, 5, 6, 7, 8);
+    for (int i = 0; ra != null && i < ra.length; i++) {
+      rsr.set(i, ra[i]);
+      if (rsrBase + ra[i] > MAX_PROGRAM_NUMBER) {
+        error(((JArray) o.members().get("rsr")).items().get(i).line(), join(at, "rsr[" + i + "]"),
+            "rsrBase + number must be at most 9999 (RSRnnnn has four digits)");
       }
     }
     TreeMap<Integer, String> styles = new TreeMap<>();
@@ -125,14 +115,8 @@ public final class ProductionJson extends JsonFieldReader {
       for (Map.Entry<String, LocatedJson> e : so.members().entrySet()) {
         String path = join(at, "styles." + e.getKey());
         int line = so.keyLines().get(e.getKey());
-        int n;
-        try {
-          n = Integer.parseInt(e.getKey());
-        } catch (NumberFormatException x) {
-          n = -1;
-        }
-        if (n < 1 || n > 255) {
-          error(line, path, "expected a style number 1..255 as the key");
+        Integer n = keyIndex(e.getKey(), 255, line, path, "style");
+        if (n == null) {
           continue;
         }
         if (!(e.getValue() instanceof LocatedJson.JString s) || !Program.isValidName(s.value().toUpperCase(Locale.ROOT))) {
@@ -218,12 +202,15 @@ public final class ProductionJson extends JsonFieldReader {
         error(r.line(), join(p, "number"), "reference position " + number + " is given twice");
       }
       String comment = string(r, "comment", p, false).orElse("");
-      List<Double> joints = numbers(r, "jointsDeg", p, 6, true, -720, 720);
-      List<Double> tol = r.members().containsKey("toleranceDeg") ? numbers(r, "toleranceDeg", p, 6, false, 0, 180) : List.of(1.0);
+      double[] joints = numbers(r, "jointsDeg", p, true, "an array of 6 joint angles (degrees)", -720, 720, 6);
+      double[] tol = r.members().containsKey("toleranceDeg")
+          ? numbers(r, "toleranceDeg", p, true, "an array of 6 tolerances (degrees), or of one for every joint", 0, 180, 6, 1)
+          : new double[] {1.0};
       if (joints == null || tol == null) {
         continue;
       }
-      List<Double> tol6 = tol.size() == 1 ? java.util.Collections.nCopies(6, tol.get(0)) : tol;
+      List<Double> tol6 = tol.length == 1 ? java.util.Collections.nCopies(6, tol[0])
+          : java.util.Arrays.stream(tol).boxed().toList();
       Optional<Signal> output = Optional.empty();
       Optional<String> os = string(r, "output", p, false);
       if (os.isPresent()) {
@@ -233,7 +220,7 @@ public final class ProductionJson extends JsonFieldReader {
         }
         output = Optional.of(sg);
       }
-      out.add(new ReferencePosition(number, comment, joints, tol6, output));
+      out.add(new ReferencePosition(number, comment, java.util.Arrays.stream(joints).boxed().toList(), tol6, output));
     }
     return out;
   }
@@ -312,29 +299,6 @@ public final class ProductionJson extends JsonFieldReader {
       return null;
     }
     return new Signal(kind.name(), i);
-  }
-
-  /** An array of {@code count} numbers (or of one, when {@code exact} is false); null after an error. */
-  private List<Double> numbers(JObject o, String key, String at, int count, boolean exact, double min, double max) {
-    JArray a = array(o, key, at, exact);
-    if (a == null) {
-      return null;
-    }
-    if (a.items().size() != count && (exact || a.items().size() != 1)) {
-      error(a.line(), join(at, key), "expected " + count + " numbers" + (exact ? "" : " (or one for every joint)")
-          + ", got " + a.items().size());
-      return null;
-    }
-    List<Double> out = new ArrayList<>();
-    for (int i = 0; i < a.items().size(); i++) {
-      LocatedJson v = a.items().get(i);
-      if (!(v instanceof JNumber n) || !Double.isFinite(n.value()) || n.value() < min || n.value() > max) {
-        error(v.line(), join(at, key + "[" + i + "]"), "expected a number " + min + ".." + max + ", got " + v.describe());
-        return null;
-      }
-      out.add(n.value());
-    }
-    return out;
   }
 
   // ---- writing ------------------------------------------------------------------------------

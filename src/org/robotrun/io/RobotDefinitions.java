@@ -296,8 +296,9 @@ public final class RobotDefinitions {
       }
       double[] out = new double[count];
       for (int i = 0; i < count; i++) {
-        if (!a.get(i).isNumber()) {
-          throw new FileFormatException(source, 0, join(at, field) + "[" + i + "]: expected a number");
+        if (!a.get(i).isNumber() || !Double.isFinite(a.get(i).asDouble())) {
+          throw new FileFormatException(source, 0, join(at, field) + "[" + i + "]: expected a finite number, got "
+              + describe(a.get(i)));
         }
         out[i] = a.get(i).asDouble();
       }
@@ -314,6 +315,12 @@ public final class RobotDefinitions {
       double[] rpy = n.has("rpy") ? vec(n, "rpy", at) : new double[3];
       return Transform.fromRpy(xyz[0], xyz[1], xyz[2],
           Math.toRadians(rpy[0]), Math.toRadians(rpy[1]), Math.toRadians(rpy[2]));
+    }
+
+    /** What a value is, as the scenario reader's messages say it ("the number 1e3", "a string"). */
+    private static String describe(JsonNode v) {
+      return v.isNumber() ? "the number " + v.asText() : v.isTextual() ? "a string" : v.isArray() ? "an array"
+          : v.isObject() ? "an object" : v.isBoolean() ? "a boolean" : "null";
     }
 
     private static String join(String at, String field) {

@@ -179,21 +179,11 @@ public final class ScenarioReader {
     }
 
     CellLoad read(String text) {
-      List<LocatedJson.DuplicateKey> duplicates = new ArrayList<>();
-      LocatedJson root;
-      try {
-        root = LocatedJson.parse(text, duplicates);
-      } catch (LocatedJson.SyntaxError e) {
-        return new CellLoad.Failed(List.of(new ScenarioError(file, e.line, "", e.getMessage())));
-      }
-      for (LocatedJson.DuplicateKey d : duplicates) {
-        errors.add(new ScenarioError(file, d.line(), d.key(), "field given twice"));
-      }
-      JObject top = object(root, "", TOP);
+      JObject top = topObject(text, TOP);
       if (top == null) {
         return new CellLoad.Failed(errors);
       }
-      checkFormat(top);
+      format(top, FORMAT);
       String title = string(top, "name", "", false).orElse("");
       if (title.length() > MAX_SCENARIO_NAME) {
         error(top.keyLines().getOrDefault("name", top.line()), "name", "a scenario name is at most " + MAX_SCENARIO_NAME
@@ -248,17 +238,6 @@ public final class ScenarioReader {
       } catch (IllegalArgumentException e) {
         // The checks above should catch everything; this keeps a missed case a clean error.
         return new CellLoad.Failed(List.of(new ScenarioError(file, 0, "", e.getMessage())));
-      }
-    }
-
-    private void checkFormat(JObject top) {
-      LocatedJson f = top.members().get("format");
-      if (f == null) {
-        error(top.line(), "format", "missing: expected \"format\": " + FORMAT);
-      } else if (!(f instanceof JNumber n) || !n.integral()) {
-        error(f.line(), "format", "expected the integer " + FORMAT + ", got " + f.describe());
-      } else if (n.value() != FORMAT) {
-        error(f.line(), "format", "unsupported format " + n.text() + ": this RobotRun reads format " + FORMAT);
       }
     }
 
@@ -340,13 +319,9 @@ public final class ScenarioReader {
           ok = false;
           continue;
         }
-        LocatedJson v = e.getValue();
-        if (!(v instanceof JNumber n) || !n.integral() || n.value() < 1 || n.value() > IoRanges.MAX_SIZE) {
-          error(v.line(), path, "expected a number of ports 1.." + IoRanges.MAX_SIZE + ", got " + v.describe());
-          ok = false;
-          continue;
-        }
-        out.put(e.getKey(), (int) n.value());
+        Optional<Long> n = integer(o, e.getKey(), join(at, "io"), 1, IoRanges.MAX_SIZE, true);
+        n.ifPresent(size -> out.put(e.getKey(), size.intValue()));
+        ok &= n.isPresent();
       }
       return ok ? out : null;
     }
@@ -471,15 +446,10 @@ public final class ScenarioReader {
     }
 
     private Integer port(JObject o, String key, String at, int fallback) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
+      if (!o.members().containsKey(key)) {
         return fallback;
       }
-      if (!(v instanceof JNumber n) || !n.integral() || n.value() < 1 || n.value() > ToolIo.MAX_PORT) {
-        error(v.line(), join(at, key), "expected a port number 1.." + ToolIo.MAX_PORT + ", got " + v.describe());
-        return null;
-      }
-      return (int) n.value();
+      return integer(o, key, at, 1, ToolIo.MAX_PORT, true).map(Long::intValue).orElse(null);
     }
 
     /** What a robot setup keeps of its model: the library id, or a robot file's absolute path. */
@@ -628,25 +598,22 @@ public final class ScenarioReader {
     }
 
     private double[] joints(JObject r, String at, Optional<RobotModel> model) {
-      LocatedJson v = r.members().get("jointsDeg");
-      if (v == null) {
+      if (!r.members().containsKey("jointsDeg")) {
         return new double[6];
       }
       String path = at + ".jointsDeg";
-      if (!(v instanceof JArray a) || a.items().size() != 6) {
-        error(v.line(), path, "expected an array of 6 joint angles (degrees), got " + describeArray(v));
+      double[] q = numbers(r, "jointsDeg", at, true, "an array of 6 joint angles (degrees)",
+          -PoseLimits.MAX_ANGLE_DEG, PoseLimits.MAX_ANGLE_DEG, 6);
+      if (q == null) {
         return null;
       }
-      double[] q = new double[6];
-      boolean ok = true;
       for (int k = 0; k < 6; k++) {
-        Double d = finite(a.items().get(k), path + "[" + k + "]");
-        ok &= d != null;
-        q[k] = d == null ? 0 : Math.toRadians(d);
+        q[k] = Math.toRadians(q[k]);
       }
-      if (!ok || model.isEmpty()) {
-        return ok ? q : null;
+      if (model.isEmpty()) {
+        return q;
       }
+      JArray a = (JArray) r.members().get("jointsDeg");
       RobotModel m = model.get();
       int bad = m.firstJointOutsideLimits(JointConvention.pendantToKinematic(m, q));
       if (bad >= 0) {
@@ -818,14 +785,14 @@ public final class ScenarioReader {
           if (size == null) {
             yield null;
           }
-          Double x = positive(size, "x", at + ".size");
-          Double y = positive(size, "y", at + ".size");
-          Double z = positive(size, "z", at + ".size");
+          Double x = positive(size, "x", at + ".size", true, MAX_LENGTH_MM).orElse(null);
+          Double y = positive(size, "y", at + ".size", true, MAX_LENGTH_MM).orElse(null);
+          Double z = positive(size, "z", at + ".size", true, MAX_LENGTH_MM).orElse(null);
           yield x == null || y == null || z == null ? null : new Shape.Box(x, y, z);
         }
         case "cylinder" -> {
-          Double r = positive(o, "radius", at);
-          Double h = positive(o, "height", at);
+          Double r = positive(o, "radius", at, true, MAX_LENGTH_MM).orElse(null);
+          Double h = positive(o, "height", at, true, MAX_LENGTH_MM).orElse(null);
           yield r == null || h == null ? null : new Shape.Cylinder(r, h);
         }
         default -> mesh(o, at);
@@ -833,7 +800,7 @@ public final class ScenarioReader {
     }
 
     private Shape mesh(JObject o, String at) {
-      Double scale = o.members().containsKey("scale") ? positive(o, "scale", at) : Double.valueOf(1);
+      Double scale = o.members().containsKey("scale") ? positive(o, "scale", at, true, MAX_LENGTH_MM).orElse(null) : Double.valueOf(1);
       Optional<String> rel = string(o, "file", at, true);
       if (rel.isEmpty() || scale == null) {
         return null;
@@ -959,7 +926,7 @@ public final class ScenarioReader {
       for (Map.Entry<String, LocatedJson> e : regs.members().entrySet()) {
         String at = join(where, "registers." + e.getKey());
         Integer index = keyIndex(e.getKey(), MAX_REGISTER, regs.keyLines().get(e.getKey()), at, "register");
-        Double v = finite(e.getValue(), at);
+        Double v = finite(regs, e.getKey(), join(where, "registers"), true).orElse(null);
         if (index != null && v != null) {
           out.put(index, v);
         }
@@ -995,16 +962,14 @@ public final class ScenarioReader {
         return Optional.empty();
       }
       JObject target = member(c, "target", "camera", XYZ, true);
-      Double x = target == null ? null : finiteField(target, "x", "camera.target", true);
-      Double y = target == null ? null : finiteField(target, "y", "camera.target", true);
-      Double z = target == null ? null : finiteField(target, "z", "camera.target", true);
-      Double distance = positive(c, "distance", "camera");
-      Double yaw = c.members().containsKey("yawDeg") ? finiteField(c, "yawDeg", "camera", true) : Double.valueOf(0);
-      Double pitch = c.members().containsKey("pitchDeg") ? finiteField(c, "pitchDeg", "camera", true) : Double.valueOf(30);
-      if (pitch != null && Math.abs(pitch) > 89) {
-        error(c.members().get("pitchDeg").line(), "camera.pitchDeg", "expected -89 .. 89 degrees, got " + pitch);
-        pitch = null;
-      }
+      double lim = MAX_LENGTH_MM;
+      Double x = target == null ? null : number(target, "x", "camera.target", true, -lim, lim).orElse(null);
+      Double y = target == null ? null : number(target, "y", "camera.target", true, -lim, lim).orElse(null);
+      Double z = target == null ? null : number(target, "z", "camera.target", true, -lim, lim).orElse(null);
+      Double distance = positive(c, "distance", "camera", true, lim).orElse(null);
+      double maxDeg = PoseLimits.MAX_ANGLE_DEG;
+      Double yaw = c.members().containsKey("yawDeg") ? number(c, "yawDeg", "camera", true, -maxDeg, maxDeg).orElse(null) : Double.valueOf(0);
+      Double pitch = c.members().containsKey("pitchDeg") ? number(c, "pitchDeg", "camera", true, -89, 89).orElse(null) : Double.valueOf(30);
       if (x == null || y == null || z == null || distance == null || yaw == null || pitch == null) {
         return Optional.empty();
       }
@@ -1024,43 +989,6 @@ public final class ScenarioReader {
       }
     }
 
-    /** A finite number, or null with an error. */
-    private Double finite(LocatedJson v, String path) {
-      if (!(v instanceof JNumber n)) {
-        error(v.line(), path, "expected a number, got " + v.describe());
-        return null;
-      }
-      if (!Double.isFinite(n.value())) {
-        error(v.line(), path, "expected a finite number, got " + n.text());
-        return null;
-      }
-      return n.value();
-    }
-
-    private Double finiteField(JObject o, String key, String at, boolean required) {
-      LocatedJson v = o.members().get(key);
-      if (v == null) {
-        if (required) {
-          error(o.line(), join(at, key), "missing: expected a number");
-        }
-        return null;
-      }
-      return finite(v, join(at, key));
-    }
-
-    private Double positive(JObject o, String key, String at) {
-      Double d = finiteField(o, key, at, true);
-      if (d != null && !(d > 0)) {
-        error(o.members().get(key).line(), join(at, key), "expected a size > 0 (mm), got " + d);
-        return null;
-      }
-      if (d != null && d > MAX_LENGTH_MM) {
-        error(o.members().get(key).line(), join(at, key), "expected a size of at most " + (long) MAX_LENGTH_MM + " mm, got " + d);
-        return null;
-      }
-      return d;
-    }
-
     /** A pose object {x, y, z (mm), w, p, r (deg, default 0)}; null with errors when bad. */
     private Transform pose(JObject o, String key, String at) {
       JObject p = member(o, key, at, POSE, true);
@@ -1072,25 +1000,12 @@ public final class ScenarioReader {
       boolean ok = true;
       String[] names = {"x", "y", "z", "w", "p", "r"};
       for (int k = 0; k < 6; k++) {
-        Double d = k < 3 || p.members().containsKey(names[k]) ? finiteField(p, names[k], path, true) : Double.valueOf(0);
-        if (k < 3 && d != null && Math.abs(d) > MAX_LENGTH_MM) {
-          error(p.members().get(names[k]).line(), join(path, names[k]),
-              "expected a position within +-" + (long) MAX_LENGTH_MM + " mm, got " + d);
-          d = null;
-        }
-        if (k >= 3 && d != null && !PoseLimits.angleOk(d)) {
-          error(p.members().get(names[k]).line(), join(path, names[k]),
-              "expected an angle within +-" + (long) PoseLimits.MAX_ANGLE_DEG + " deg, got " + d);
-          d = null;
-        }
+        double lim = k < 3 ? MAX_LENGTH_MM : PoseLimits.MAX_ANGLE_DEG;
+        Double d = k < 3 || p.members().containsKey(names[k]) ? number(p, names[k], path, true, -lim, lim).orElse(null) : Double.valueOf(0);
         ok &= d != null;
         v[k] = d == null ? 0 : d;
       }
       return ok ? Xyzwpr.ofDegrees(v[0], v[1], v[2], v[3], v[4], v[5]).toTransform() : null;
-    }
-
-    private static String describeArray(LocatedJson v) {
-      return v instanceof JArray a ? "an array of " + a.items().size() : v.describe();
     }
   }
 }

@@ -3,11 +3,11 @@ package org.robotrun.io;
 import com.fasterxml.jackson.core.JsonGenerator;
 import java.io.IOException;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.robotrun.io.LocatedJson.JArray;
 import org.robotrun.io.LocatedJson.JNumber;
 import org.robotrun.io.LocatedJson.JObject;
 import org.robotrun.io.LocatedJson.JString;
@@ -193,11 +193,11 @@ final class StateJson extends JsonFieldReader {
       regs.members().forEach((key, v) -> {
         String at = join(root, "registers." + key);
         Integer i = keyIndex(key, Registers.R_COUNT, regs.keyLines().get(key), at, "register");
-        if (!(v instanceof JNumber n) || !Double.isFinite(n.value())) {
-          error(v.line(), at, "expected a number, got " + v.describe());
-        } else if (i != null) {
+        Optional<Double> n = finite(regs, key, join(root, "registers"), true);
+        if (n.isPresent() && i != null) {
           // an integer is written without a fraction; any whole number a double holds exactly comes back one
-          registers.put(i, new SavedState.Register(n.value(), n.integral() && Math.abs(n.value()) <= MAX_EXACT_INTEGER));
+          boolean integral = ((JNumber) v).integral() && Math.abs(n.get()) <= MAX_EXACT_INTEGER;
+          registers.put(i, new SavedState.Register(n.get(), integral));
         }
       });
     }
@@ -207,12 +207,11 @@ final class StateJson extends JsonFieldReader {
       srObj.members().forEach((key, v) -> {
         String at = join(root, "stringRegisters." + key);
         Integer i = keyIndex(key, Registers.SR_COUNT, srObj.keyLines().get(key), at, "string register");
-        if (!(v instanceof JString t)) {
-          error(v.line(), at, "expected text, got " + v.describe());
-        } else if (t.value().length() > Registers.SR_LENGTH) {
-          error(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.value().length());
-        } else if (i != null) {
-          strings.put(i, t.value());
+        Optional<String> t = string(srObj, key, join(root, "stringRegisters"), true);
+        if (t.isPresent() && t.get().length() > Registers.SR_LENGTH) {
+          error(v.line(), at, "expected at most " + Registers.SR_LENGTH + " characters, got " + t.get().length());
+        } else if (t.isPresent() && i != null) {
+          strings.put(i, t.get());
         }
       });
     }
@@ -238,11 +237,10 @@ final class StateJson extends JsonFieldReader {
         if (kind == null || !kind.writable() || item.index() < 1 || item.index() > org.robotrun.program.IoRanges.MAX_SIZE) {
           error(outObj.keyLines().get(key), at, "expected an output or flag such as DO[1], RO[1], GO[1], F[1], got \""
               + key + "\"");
-        } else if (!(v instanceof JNumber n) || !n.integral() || (!kind.group() && n.value() != 0 && n.value() != 1)
-            || Math.abs(n.value()) > Integer.MAX_VALUE) {
-          error(v.line(), at, kind.group() ? "expected an integer, got " + v.describe() : "expected 0 or 1, got " + v.describe());
         } else {
-          outputs.put(kind.name() + "[" + item.index() + "]", (int) n.value());
+          int max = kind.group() ? Integer.MAX_VALUE : 1;
+          integer(outObj, key, join(root, "outputs"), kind.group() ? -max : 0, max, true)
+              .ifPresent(n -> outputs.put(kind.name() + "[" + item.index() + "]", n.intValue()));
         }
       });
     }
@@ -260,10 +258,9 @@ final class StateJson extends JsonFieldReader {
         };
         if (item == null || item.index() < 1 || item.index() > max) {
           error(comObj.keyLines().get(key), at, "expected R[i], PR[i], UT[i] or UF[i], got \"" + key + "\"");
-        } else if (!(v instanceof JString s)) {
-          error(v.line(), at, "expected text, got " + v.describe());
         } else {
-          comments.put(item.table() + "[" + item.index() + "]", s.value());
+          string(comObj, key, join(root, "comments"), true)
+              .ifPresent(text -> comments.put(item.table() + "[" + item.index() + "]", text));
         }
       });
     }
@@ -337,38 +334,18 @@ final class StateJson extends JsonFieldReader {
       }
     }
     if (joint) {
-      if (!(p.members().get("joints") instanceof JArray a) || a.items().size() != 6) {
-        error(p.members().get("joints").line(), at + ".joints", "expected an array of 6 joint angles in degrees");
-        return null;
-      }
-      double[] q = new double[6];
-      for (int k = 0; k < 6; k++) {
-        if (a.items().get(k) instanceof JNumber n && PoseLimits.angleOk(n.value())) {
-          q[k] = n.value();
-        } else {
-          error(a.items().get(k).line(), at + ".joints[" + k + "]", "expected an angle within +-"
-              + (long) PoseLimits.MAX_ANGLE_DEG + " deg, got " + a.items().get(k).describe());
-          ok = false;
-        }
-      }
-      return ok ? new Position.Joint(q[0], q[1], q[2], q[3], q[4], q[5]) : null;
+      double[] q = numbers(p, "joints", at, true, "an array of 6 joint angles (degrees)", -PoseLimits.MAX_ANGLE_DEG,
+          PoseLimits.MAX_ANGLE_DEG, 6);
+      return ok && q != null ? new Position.Joint(q[0], q[1], q[2], q[3], q[4], q[5]) : null;
     }
     double[] v6 = new double[6];
     String[] names = {"x", "y", "z", "w", "p", "r"};
     for (int k = 0; k < 6; k++) {
-      LocatedJson f = p.members().get(names[k]);
-      if (f == null && k >= 3) {
-        continue;  // w, p, r default to 0, as in a scenario's poses
-      }
-      boolean good = f instanceof JNumber n && (k < 3 ? Math.abs(n.value()) <= PoseLimits.MAX_COORDINATE_MM : PoseLimits.angleOk(n.value()));
-      if (!good) {
-        error(f == null ? p.line() : f.line(), at + "." + names[k], f == null ? "missing" : (k < 3
-            ? "expected a position within +-" + (long) PoseLimits.MAX_COORDINATE_MM + " mm, got "
-            : "expected an angle within +-" + (long) PoseLimits.MAX_ANGLE_DEG + " deg, got ") + f.describe());
-        ok = false;
-      } else {
-        v6[k] = ((JNumber) f).value();
-      }
+      // w, p, r default to 0, as in a scenario's poses
+      double lim = k < 3 ? PoseLimits.MAX_COORDINATE_MM : PoseLimits.MAX_ANGLE_DEG;
+      Optional<Double> d = number(p, names[k], at, k < 3, -lim, lim);
+      ok &= d.isPresent() || (k >= 3 && !p.members().containsKey(names[k]));
+      v6[k] = d.orElse(0.0);
     }
     Config config = Config.DEFAULT;
     LocatedJson c = p.members().get("config");

@@ -205,25 +205,8 @@ public final class VisionJson extends JsonFieldReader {
   }
 
   private int[] imageSize(JObject c, String at) {
-    int[] size = {640, 480};
-    JArray a = array(c, "imageSize", at, false);
-    if (a == null) {
-      return size;
-    }
-    if (a.items().size() != 2) {
-      error(a.line(), join(at, "imageSize"), "expected [width, height] in pixels, got " + a.items().size() + " values");
-      return size;
-    }
-    for (int k = 0; k < 2; k++) {
-      LocatedJson v = a.items().get(k);
-      if (v instanceof JNumber n && n.integral() && n.value() >= 16 && n.value() <= MAX_PIXELS) {
-        size[k] = (int) n.value();
-      } else {
-        error(v.line(), join(at, "imageSize[" + k + "]"), "expected a whole number of pixels 16.." + MAX_PIXELS
-            + ", got " + v.describe());
-      }
-    }
-    return size;
+    int[] size = integers(c, "imageSize", at, false, "[width, height] in pixels", 16, MAX_PIXELS, 2);
+    return size == null ? new int[] {640, 480} : size;
   }
 
   // ---- models -----------------------------------------------------------------------------
@@ -435,26 +418,10 @@ public final class VisionJson extends JsonFieldReader {
 
   /** {@code [min, max]} with |values| ≤ limit; null with an error when bad. */
   private double[] range(JObject o, String key, String at, double limit) {
-    JArray a = array(o, key, at, true);
-    if (a == null) {
-      return null;
-    }
-    String path = join(at, key);
-    if (a.items().size() != 2) {
-      error(a.line(), path, "expected [min, max], got " + a.items().size() + " values");
-      return null;
-    }
-    double[] out = new double[2];
-    for (int k = 0; k < 2; k++) {
-      LocatedJson v = a.items().get(k);
-      if (!(v instanceof JNumber n) || !Double.isFinite(n.value()) || Math.abs(n.value()) > limit) {
-        error(v.line(), path + "[" + k + "]", "expected a number within +-" + plain(limit) + ", got " + v.describe());
-        return null;
-      }
-      out[k] = n.value();
-    }
-    if (out[0] > out[1]) {
-      error(a.line(), path, "expected [min, max] with min <= max, got [" + plain(out[0]) + ", " + plain(out[1]) + "]");
+    double[] out = numbers(o, key, at, true, "[min, max]", -limit, limit, 2);
+    if (out != null && out[0] > out[1]) {
+      error(o.members().get(key).line(), join(at, key), "expected [min, max] with min <= max, got [" + plain(out[0])
+          + ", " + plain(out[1]) + "]");
       return null;
     }
     return out;

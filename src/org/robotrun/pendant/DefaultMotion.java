@@ -6,6 +6,7 @@ import org.robotrun.pendant.ExprText.BadText;
 import org.robotrun.program.TpStatementParser;
 import org.robotrun.program.TpSyntaxError;
 import org.robotrun.program.TpText;
+import org.robotrun.program.DefaultMotions;
 import org.robotrun.program.Instruction;
 import org.robotrun.program.Motion;
 
@@ -20,12 +21,9 @@ record DefaultMotion(Motion.Type type, Motion.Speed speed, Motion.Termination te
     Objects.requireNonNull(termination, "termination");
   }
 
-  /** FANUC's four standard defaults. */
-  static final List<DefaultMotion> STANDARD = List.of(
-      new DefaultMotion(Motion.Type.J, new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.PERCENT), new Motion.Fine()),
-      new DefaultMotion(Motion.Type.J, new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.PERCENT), new Motion.Cnt(100)),
-      new DefaultMotion(Motion.Type.L, new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.MM_PER_SEC), new Motion.Fine()),
-      new DefaultMotion(Motion.Type.L, new Motion.Speed(new Motion.SpeedConst(100), Motion.SpeedUnit.MM_PER_SEC), new Motion.Cnt(100)));
+  /** FANUC's four standard defaults (the one table, {@link DefaultMotions#STANDARD}). */
+  static final List<DefaultMotion> STANDARD = DefaultMotions.STANDARD.stream()
+      .map(r -> new DefaultMotion(r.type(), r.speed(), r.termination())).toList();
 
   /** The motion line to P[n] (C motion records the via point; its end point is the next number). */
   Instruction.Move line(int positionNumber) {

@@ -18,7 +18,8 @@ final class SelectScreen implements Screen {
   @Override
   public String title(Pendant p) {
     long running = p.control().programStates().values().stream().filter(v -> !v.equals("BG")).count();
-    return "SELECT" + "   " + p.control().programNames().size() + " programs" + (running > 1 ? "   " + running + " tasks" : "");
+    int n = p.control().programNames().size();
+    return "SELECT" + "   " + n + (n == 1 ? " program" : " programs") + (running > 1 ? "   " + running + " tasks" : "");
   }
 
   private String selected(Pendant p) {
@@ -30,6 +31,14 @@ final class SelectScreen implements Screen {
     return names.get(cursor);
   }
 
+  /** Where the comment column starts on a SELECT row ("> 12 NAME             1234 lines  "). */
+  static final int COMMENT_COLUMN = 34;
+
+  /**
+   * One row per program, and its comment wrapped under the comment column onto as many rows as
+   * it needs: the whole comment shows, never cut at the LCD's edge (a controller's comment is 16
+   * characters; an .LS file's may be longer). The window keeps the cursor's program whole in view.
+   */
   @Override
   public List<String> body(Pendant p) {
     List<String> names = p.control().programNames();
@@ -39,17 +48,32 @@ final class SelectScreen implements Screen {
       return rows;
     }
     selected(p);
-    int top = Math.max(0, Math.min(cursor - Lcd.BODY_ROWS + 1, names.size() - Lcd.BODY_ROWS));
-    top = Math.max(0, Math.min(top, cursor));
     java.util.Map<String, String> states = p.control().programStates();
-    for (int i = top; i < names.size() && rows.size() < Lcd.BODY_ROWS; i++) {
+    List<Integer> starts = new ArrayList<>();
+    for (int i = 0; i < names.size(); i++) {
       Program prog = p.control().program(names.get(i)).orElseThrow();
       // a running task, a paused one or a BG logic program is marked as on the controller's list
       String state = states.get(prog.name());
-      rows.add(String.format(Locale.ROOT, "%s%3d %-16s %4d lines  %s", i == cursor ? ">" : " ", i + 1, prog.name(),
-          prog.lineCount(), state == null ? prog.comment() : "[" + state + "] " + prog.comment()));
+      String comment = state == null ? prog.comment() : "[" + state + "] " + prog.comment();
+      List<String> parts = comment.isBlank() ? List.of("") : Lcd.wrap(comment.strip(), Lcd.WIDTH - COMMENT_COLUMN);
+      starts.add(rows.size());
+      rows.add(String.format(Locale.ROOT, "%s%3d %-16s %4d %-5s  %s", i == cursor ? ">" : " ", i + 1, prog.name(),
+          prog.lineCount(), prog.lineCount() == 1 ? "line" : "lines", parts.get(0)));
+      for (String more : parts.subList(1, parts.size())) {
+        rows.add(" ".repeat(COMMENT_COLUMN) + more);
+      }
     }
-    return rows;
+    int start = starts.get(cursor);
+    int end = cursor + 1 < starts.size() ? starts.get(cursor + 1) : rows.size();
+    int top = Math.min(start, Math.max(0, end - Lcd.BODY_ROWS));
+    // begin the window on a program's first row (no comment's tail without its name)
+    for (int s : starts) {
+      if (s >= top) {
+        top = Math.min(s, start);
+        break;
+      }
+    }
+    return new ArrayList<>(rows.subList(top, Math.min(rows.size(), top + Lcd.BODY_ROWS)));
   }
 
   @Override

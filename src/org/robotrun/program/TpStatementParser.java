@@ -144,6 +144,12 @@ public final class TpStatementParser extends TpTokenCursor {
   private int operators;
   private java.util.function.IntFunction<String> lineText = l -> null;
   private final List<String> warnings = new ArrayList<>(0);
+  /**
+   * Reading a file (not the pendant's entry): complete a motion missing its speed or
+   * termination, as a hand-edited file is read, and keep a register kind RobotRun does not know
+   * in an expression as unsupported (a controller with that option wrote it).
+   */
+  private boolean fromFile;
   /** The I/O sizes a direct index is checked against (a warning beyond them). */
   private final IoRanges ioRanges = IoRanges.DEFAULT;
 
@@ -168,8 +174,25 @@ public final class TpStatementParser extends TpTokenCursor {
    * are kept exactly as written. It may answer null; then they are rebuilt from the tokens.
    */
   public static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
+    return parse(tokens, lineText, false);
+  }
+
+  /**
+   * Parses one statement of a file as {@link #parse(List, java.util.function.IntFunction)}
+   * does, and mends what hand-edited files lack the way RobotRun reads FANUC's offline converter
+   * (docs/tp-language.md, "Program lines"): a motion without speed and/or termination is
+   * completed from the first row of its type in the pendant's default-motion table ({@link
+   * DefaultMotions}), with a {@code mended: ...} warning; and a register or port kind it does not
+   * know in an expression ({@code M[1]}) is unsupported rather than a syntax error.
+   */
+  public static Parsed parseMendingHandEdits(List<TpToken> tokens, java.util.function.IntFunction<String> lineText) {
+    return parse(tokens, lineText, true);
+  }
+
+  private static Parsed parse(List<TpToken> tokens, java.util.function.IntFunction<String> lineText, boolean mend) {
     TpStatementParser p = new TpStatementParser(tokens);
     p.lineText = lineText;
+    p.fromFile = mend;
     Instruction in = p.statement();
     if (p.peek().is(Kind.SEMICOLON)) {
       throw p.error("text after ';': a line holds one statement (put a remark on its own '!' line)");
@@ -702,7 +725,12 @@ public final class TpStatementParser extends TpTokenCursor {
       while (peek().is(Kind.PLUS) || peek().is(Kind.MINUS)) {
         boolean add = next().is(Kind.PLUS);
         countOperator();
+        TpToken at = peek();
         Instruction.PosSource term = posSource(false);
+        if (term instanceof Instruction.FromVisionRegister) {
+          // PR[1]=PR[1]+VR[1].OFFSET: a vision option's form, kept and not run
+          throw unsupported(at, "PR[i]=vision registers VR[] in position arithmetic", false);
+        }
         if (!Instruction.PosSum.isTerm(term)) {
           throw error("expected PR[], P[], LPOS or JPOS after '" + (add ? "+" : "-") + "' in position arithmetic");
         }
@@ -1057,8 +1085,20 @@ public final class TpStatementParser extends TpTokenCursor {
       }
       end = Optional.of(motionTarget());
     }
-    Motion.Speed speed = speed(type);
-    Motion.Termination term = termination();
+    boolean noSpeed = fromFile && (peek().is(Kind.EOL) || isTermination(peek()) || isMotionOption(peek()));
+    Motion.Speed speed = noSpeed ? DefaultMotions.first(type).speed() : speed(type);
+    boolean noTermination = fromFile && (peek().is(Kind.EOL) || isMotionOption(peek()));
+    Motion.Termination term = noTermination ? DefaultMotions.first(type).termination() : termination();
+    if (noSpeed || noTermination) {
+      DefaultMotions.Row row = DefaultMotions.first(type);
+      String missing = noSpeed && noTermination ? "speed and termination" : noSpeed ? "speed" : "termination";
+      String added = noSpeed && noTermination ? TpText.speed(speed) + " " + TpText.termination(term)
+          : noSpeed ? TpText.speed(speed) : TpText.termination(term);
+      warnings.add("mended: a " + type + " motion without " + missing + ": completed with " + added
+          + " from the pendant's first default " + row.type() + " motion (" + row.type() + " P[] "
+          + TpText.speed(row.speed()) + " " + TpText.termination(row.termination())
+          + (row.type() == type ? ")" : "; its table has no " + type + " row)"));
+    }
     List<Motion.Option> options = new ArrayList<>();
     while (!peek().is(Kind.EOL)) {
       options.add(motionOption());
@@ -1148,6 +1188,35 @@ public final class TpStatementParser extends TpTokenCursor {
       case "deg/sec" -> Motion.SpeedUnit.DEG_PER_SEC;
       default -> throw error(t, "unknown speed unit '" + full + "': expected mm/sec, cm/min, inch/min or deg/sec");
     };
+  }
+
+  /** Words that start a motion option (after the termination), for the hand-edit mend only. */
+  private static final java.util.Set<String> OPTION_WORDS = java.util.Set.of(
+      "OFFSET", "TOOL_OFFSET", "SKIP", "WJNT", "INC", "ACC", "TB", "TA", "DB", "PTH", "RTCP", "COORD", "MROT",
+      "BREAK", "CR", "PSPD", "VOFFSET", "EV", "IND.EV", "RT_LD", "AP_LD", "CORNER");
+
+  private static boolean isMotionOption(TpToken t) {
+    return t.is(Kind.WORD) && OPTION_WORDS.contains(t.text().toUpperCase(Locale.ROOT));
+  }
+
+  /** Letters, digits and '_', starting with a letter: a register or port kind's name ({@code M}, {@code WO}). */
+  private static boolean isKindName(String w) {
+    if (w.isEmpty() || !Character.isLetter(w.charAt(0)) || w.length() > 24) {
+      return false;
+    }
+    for (int i = 0; i < w.length(); i++) {
+      char c = w.charAt(i);
+      if (!(c < 128 && (Character.isLetterOrDigit(c) || c == '_'))) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /** FINE, CNT or CNTn: a termination starts here. */
+  private static boolean isTermination(TpToken t) {
+    return t.isWord("FINE") || t.isWord("CNT")
+        || t.is(Kind.WORD) && t.text().regionMatches(true, 0, "CNT", 0, 3) && allDigits(t.text(), 3);
   }
 
   private Motion.Termination termination() {
@@ -1528,6 +1597,10 @@ public final class TpStatementParser extends TpTokenCursor {
               }
               // An application's or another option's variable: the line alarms naming it.
               throw unsupported(t, "system variable " + TpToken.clip(t.text()) + " in an expression", false);
+            }
+            if (fromFile && peek().is(Kind.LBRACKET) && isKindName(w)) {
+              // M[1] (a marker), WO[2], an application's register or port kind: kept, the line alarms
+              throw unsupported(t, TpToken.clip(w) + "[] in an expression", false);
             }
             throw error(t, VALUE_EXPECTED + t.describe());
           }

@@ -30,13 +30,29 @@ final class FxaaPass implements AutoCloseable {
     if (rect.isEmpty()) {
       return;
     }
+    apply(rect.x0(), rect.y0(), rect.x1(), rect.y1(), viewportWidth, viewportHeight);
+  }
+
+  /**
+   * Smooths the part of the rectangle that lies within {@code clip} ({x0, y0, x1, y1}, pixels):
+   * a frame drawn again only in part smooths only that part.
+   */
+  void apply(ScreenRect rect, int[] clip, int viewportWidth, int viewportHeight) {
+    if (rect.isEmpty()) {
+      return;
+    }
+    int[] r = DamageRegion.intersect(new int[] {rect.x0(), rect.y0(), rect.x1(), rect.y1()}, clip);
+    if (r != null) {
+      apply(r[0], r[1], r[2], r[3], viewportWidth, viewportHeight);
+    }
+  }
+
+  private void apply(int x0, int y0, int x1, int y1, int viewportWidth, int viewportHeight) {
     if (texture == 0 || viewportWidth != width || viewportHeight != height) {
       allocate(viewportWidth, viewportHeight);
     }
-    int x0 = rect.x0();
-    int y0 = rect.y0();
-    int w = rect.x1() - x0;
-    int h = rect.y1() - y0;
+    int w = x1 - x0;
+    int h = y1 - y0;
     // Copy one pixel more on each side than is drawn: the blend reads the four neighbours.
     int cx0 = Math.max(0, x0 - 1);
     int cy0 = Math.max(0, y0 - 1);

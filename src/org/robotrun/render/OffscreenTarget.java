@@ -107,6 +107,24 @@ public final class OffscreenTarget implements AutoCloseable {
     return topDown;
   }
 
+  /** The plain (single-sample) framebuffer's GL name. */
+  public int framebuffer() {
+    return fbo;
+  }
+
+  /**
+   * Copies the rectangle {x0, y0, x1, y1} (pixels) of the plain buffer's colour, and its depth
+   * when {@code depthToo}, into the same place of framebuffer {@code target} (0: the window), which
+   * must have the same depth format. Leaves {@code target} bound for drawing.
+   */
+  public void copyTo(int target, int[] r, boolean depthToo) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+    glBlitFramebuffer(r[0], r[1], r[2], r[3], r[0], r[1], r[2], r[3],
+        GL_COLOR_BUFFER_BIT | (depthToo ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, target);
+  }
+
   public int width() {
     return width;
   }

@@ -34,14 +34,35 @@ final class OrientationGizmo {
    * @param bar a unit cube centred on the origin
    */
   void draw(ShaderProgram solid, GpuMesh bar, OrbitCamera camera, int width, int height, ScreenRect drawn) {
+    draw(solid, bar, camera, width, height, drawn, null);
+  }
+
+  /** The triad's square {x0, y0, x1, y1} (pixels), or null when the view is too small for it. */
+  static int[] square(OrbitCamera camera, int width, int height) {
     // in the bottom-left corner of the part of the window the scene is framed in
     int[] viewR = camera.viewRect(width, height);
     int size = sizePx(viewR[2], viewR[3]);
     if (size + 2 * MARGIN_PX > Math.min(viewR[2], viewR[3])) {
-      return;
+      return null;
     }
     int x0 = viewR[0] + MARGIN_PX;
     int y0 = viewR[1] + MARGIN_PX;
+    return new int[] {x0, y0, x0 + size, y0 + size};
+  }
+
+  /** As {@link #draw(ShaderProgram, GpuMesh, OrbitCamera, int, int, ScreenRect)}, drawing only within {@code clip} (null: all). */
+  void draw(ShaderProgram solid, GpuMesh bar, OrbitCamera camera, int width, int height, ScreenRect drawn, int[] clip) {
+    int[] sq = square(camera, width, height);
+    if (sq == null) {
+      return;
+    }
+    int[] cut = clip == null ? sq : DamageRegion.intersect(sq, clip);
+    if (cut == null) {
+      return;
+    }
+    int x0 = sq[0];
+    int y0 = sq[1];
+    int size = sq[2] - sq[0];
     Vector3f eye = camera.eye();
     Vector3f target = camera.target();
     // The camera's rotation only: the triad sits at the centre of its own little view.
@@ -51,9 +72,11 @@ final class OrientationGizmo {
     Vector3f toEye = eye.sub(target).normalize(4f);
 
     glEnable(GL_SCISSOR_TEST);
-    glScissor(x0, y0, size, size);
+    glScissor(cut[0], cut[1], cut[2] - cut[0], cut[3] - cut[1]);
     glClear(GL_DEPTH_BUFFER_BIT);
-    glDisable(GL_SCISSOR_TEST);
+    if (clip == null) {
+      glDisable(GL_SCISSOR_TEST);
+    }
     glViewport(x0, y0, size, size);
     glEnable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
@@ -68,6 +91,7 @@ final class OrientationGizmo {
     drawBar(solid, bar, 0, 0, h, THICK, THICK, LENGTH, 0.15f, 0.35f, 0.85f);
     drawBar(solid, bar, 0, 0, 0, 1.8f * THICK, 1.8f * THICK, 1.8f * THICK, 0.55f, 0.55f, 0.55f);
     glViewport(0, 0, width, height);
+    glDisable(GL_SCISSOR_TEST);
     drawn.addPixels(x0, y0, x0 + size, y0 + size);
   }
 

@@ -4,6 +4,7 @@ import static org.lwjgl.opengl.GL33C.*;
 
 import java.nio.FloatBuffer;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import org.joml.Matrix4f;
 import org.joml.Vector3f;
@@ -85,6 +86,234 @@ public final class SceneRenderer implements AutoCloseable {
     if (antiAliasing == AntiAliasing.FXAA) {
       fxaa.apply(edges, width, height);
     }
+  }
+
+  // ---- The window's retained drawing: a layer of what stands still, the moving items over it ----
+
+  private OffscreenTarget layer;
+  /** Where the moving items are drawn over a copy of the layer (the same formats as the layer). */
+  private OffscreenTarget work;
+  private final StillLayer still = new StillLayer();
+  private boolean[] inLayer = new boolean[0];
+  /** The view's rectangle {x, y, w, h} when the layer was last drawn; null before. */
+  private int[] layerView;
+  /** Where the items left out of the layer were last drawn, {x0, y0, x1, y1}; null: nowhere. */
+  private int[] lastMovingRect;
+  private final ScreenRect movingEdges = new ScreenRect();
+  private SceneSnapshot frameScene;
+  private OrbitCamera frameCamera;
+  private int frameW;
+  private int frameH;
+  private int[] frameView;
+  private final Vector3f frameEye = new Vector3f();
+  private int layerBuilds;
+
+  /**
+   * The window's frame, first step: compares the scene and camera with the last frame's and adds
+   * to {@code damage} where the picture changed. The part of the scene that stands still is kept in
+   * a layer (colour and depth) drawn again only when the view or one of its items changes; an item
+   * that moves is left out of it and drawn over it each time, so while the arm moves only its own
+   * rectangle (this frame's and the last) is damaged ({@link StillLayer} decides). Then
+   * {@link #drawRegion} draws each damaged rectangle into the bound framebuffer (the window's own
+   * or another with a depth buffer).
+   */
+  public void prepareRetained(SceneSnapshot scene, OrbitCamera camera, int width, int height, DamageRegion damage) {
+    List<DrawItem> items = scene.items();
+    Matrix4f vp = camera.viewProjection(width, height);
+    int[] view = camera.viewRect(width, height);
+    frameScene = scene;
+    frameCamera = camera;
+    frameW = width;
+    frameH = height;
+    frameView = view;
+    frameEye.set(camera.eye());
+    viewProj.set(vp);
+    StillLayer.Plan plan = still.next(items,
+        new StillLayer.View(width, height, view[0], view[1], view[2], view[3], scene.floorZ(), vp));
+    inLayer = plan.inLayer();
+    if (plan.rebuild()) {
+      if (layerView != null) {
+        damage.addXywh(layerView[0], layerView[1], layerView[2], layerView[3]);
+      }
+      damage.addXywh(view[0], view[1], view[2], view[3]);
+      buildLayer(items, inLayer, scene.floorZ(), width, height, view);
+      layerView = view;
+    }
+    // the items left out of the layer: where they are now
+    movingEdges.reset(width, height);
+    for (int i = 0; i < items.size(); i++) {
+      if (!inLayer[i]) {
+        DrawItem item = items.get(i);
+        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+        item.X_WS().toColumnMajor(model);
+        movingEdges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+      }
+    }
+    int[] now = movingEdges.isEmpty() ? null
+        : new int[] {movingEdges.x0(), movingEdges.y0(), movingEdges.x1(), movingEdges.y1()};
+    if (plan.movedOutside() && !plan.rebuild()) {
+      int[] clipView = {view[0], view[1], view[0] + view[2], view[1] + view[3]};
+      for (int[] r : new int[][] {lastMovingRect, now}) {
+        int[] c = r == null ? null : DamageRegion.intersect(r, clipView);
+        if (c != null) {
+          damage.add(c[0], c[1], c[2], c[3]);
+        }
+      }
+    }
+    lastMovingRect = now;
+  }
+
+  /** How often the still layer has been drawn (tests, the frame log). */
+  public int layerBuilds() {
+    return layerBuilds;
+  }
+
+  private static boolean opaque(DrawItem item) {
+    return StillLayer.opaque(item);
+  }
+
+  private void buildLayer(List<DrawItem> items, boolean[] keep, double floorZ, int width, int height, int[] view) {
+    layerBuilds++;
+    int previous = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+    if (layer == null || layer.width() != width || layer.height() != height) {
+      if (layer != null) {
+        layer.close();
+        work.close();
+      }
+      layer = new OffscreenTarget(width, height, 0);
+      work = new OffscreenTarget(width, height, 0);
+    }
+    layer.bind();
+    glViewport(0, 0, width, height);
+    // all of it: outside the view the layer is the background a full frame has there
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(view[0], view[1], view[2], view[3]);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    float floorZ32 = (float) floorZ;
+    edges.reset(width, height);
+    try (MemoryStack stack = MemoryStack.stackPush()) {
+      var vp = viewProj.get(stack.mallocFloat(16));
+      int[] u = useSolid(vp, frameEye);
+      float half = AXIS_LENGTH / 2;
+      drawBar(u[0], u[1], half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK, 0.85f, 0.15f, 0.12f);
+      drawBar(u[0], u[1], 0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK, 0.15f, 0.65f, 0.2f);
+      for (int i = 0; i < items.size(); i++) {
+        if (keep[i]) {
+          drawItem(items.get(i), u[0], u[1], false);
+        }
+      }
+      drawFloor(vp, frameEye, floorZ32);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, previous);
+  }
+
+  /**
+   * Draws the rectangle {x0, y0, x1, y1} (pixels) of the frame {@link #prepareRetained} prepared
+   * into the bound framebuffer: the background, the still layer's colour and depth, the items
+   * left out of it, the translucent items, edge smoothing and the orientation triad, each only
+   * within the rectangle. A rectangle outside the scene's view gets the background.
+   */
+  public void drawRegion(int[] rect) {
+    int target = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
+    glViewport(0, 0, frameW, frameH);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    int[] r = DamageRegion.intersect(rect,
+        new int[] {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]});
+    if (r == null) {
+      glDisable(GL_SCISSOR_TEST);
+      return;
+    }
+    glDisable(GL_SCISSOR_TEST);
+    // The moving items are drawn over a copy of the layer in a buffer of the layer's own
+    // formats (depth is copied only between like buffers), then only its colour goes on. The
+    // copy reaches a pixel further than the rectangle: the edge smoothing of the rectangle's
+    // border pixels reads their neighbours, which must be unsmoothed as in a full frame.
+    int[] viewBox = {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]};
+    int[] grown = DamageRegion.intersect(new int[] {r[0] - 1, r[1] - 1, r[2] + 1, r[3] + 1}, new int[] {0, 0, frameW, frameH});
+    layer.copyTo(work.framebuffer(), grown, true);
+    int[] r1 = DamageRegion.intersect(grown, viewBox);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(r1[0], r1[1], r1[2] - r1[0], r1[3] - r1[1]);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+    List<DrawItem> items = frameScene.items();
+    edges.reset(frameW, frameH);
+    gizmoEdges.reset(frameW, frameH);
+    try (MemoryStack stack = MemoryStack.stackPush()) {
+      var vp = viewProj.get(stack.mallocFloat(16));
+      int[] u = useSolid(vp, frameEye);
+      for (int i = 0; i < items.size(); i++) {
+        if (!inLayer[i] && opaque(items.get(i))) {
+          drawItem(items.get(i), u[0], u[1], false);
+        }
+      }
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+      glDepthMask(false);
+      glDisable(GL_CULL_FACE);
+      for (DrawItem item : items) {
+        if (!opaque(item)) {
+          drawItem(item, u[0], u[1], false);
+        }
+      }
+      glEnable(GL_CULL_FACE);
+      glDepthMask(true);
+      glDisable(GL_BLEND);
+    }
+    glDisable(GL_SCISSOR_TEST);
+    gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r1);
+    if (antiAliasing == AntiAliasing.FXAA) {
+      // every solid's edges, the still ones too: the layer keeps them unsmoothed
+      float floorZ32 = (float) frameScene.floorZ();
+      float half = AXIS_LENGTH / 2;
+      addBarEdges(half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK);
+      addBarEdges(0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK);
+      for (DrawItem item : items) {
+        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+        item.X_WS().toColumnMajor(model);
+        edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+      }
+      fxaa.apply(edges, r, frameW, frameH);
+      fxaa.apply(gizmoEdges, r, frameW, frameH);
+    }
+    work.copyTo(target, r, false);
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+  }
+
+  private int[] useSolid(FloatBuffer vp, Vector3f eye) {
+    solid.use();
+    glUniformMatrix4fv(solid.uniform("uViewProj"), false, vp);
+    glUniform3f(solid.uniform("uEye"), eye.x, eye.y, eye.z);
+    glUniform3f(solid.uniform("uKeyDir"), 0.45f, -0.35f, 0.82f);
+    glUniform3f(solid.uniform("uFillDir"), -0.6f, 0.7f, 0.3f);
+    return new int[] {solid.uniform("uModel"), solid.uniform("uColor")};
+  }
+
+  private void drawItem(DrawItem item, int uModel, int uColor, boolean smooth) {
+    DrawItem.Color c = item.color();
+    GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+    item.X_WS().toColumnMajor(model);
+    glUniformMatrix4fv(uModel, false, model);
+    if (smooth) {
+      edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+    }
+    glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
+    mesh.draw();
+  }
+
+  private void addBarEdges(float cx, float cy, float cz, float sx, float sy, float sz) {
+    modelMatrix.translation(cx, cy, cz).scale(sx, sy, sz);
+    edges.addBox(viewProj, modelMatrix, axisBar.bounds());
   }
 
   private void draw(SceneSnapshot scene, Matrix4f cameraViewProj, Vector3f eye, int[] view, int width, int height) {
@@ -210,6 +439,10 @@ public final class SceneRenderer implements AutoCloseable {
 
   @Override
   public void close() {
+    if (layer != null) {
+      layer.close();
+      work.close();
+    }
     meshes.values().forEach(GpuMesh::close);
     meshes.clear();
     fxaa.close();

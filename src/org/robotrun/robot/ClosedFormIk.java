@@ -49,8 +49,6 @@ public final class ClosedFormIk implements IkSolver {
   private static final double WRIST_SINGULAR = 1e-9;
   /** Slack on the cosine-law arguments so exactly stretched poses still solve. */
   private static final double ACOS_SLACK = 1e-10;
-  /** Joint values this close outside a limit (rad) count as at the limit. */
-  private static final double LIMIT_SLACK = 1e-9;
   /** {@link #reachability}'s "maybe inside the limits" slack (rad): well above its rounding. */
   private static final double VERDICT_SLACK = 1e-6;
   /** A wrist centre this close to the J1 axis (mm) leaves J1 undetermined for {@link #reachability}. */
@@ -61,10 +59,7 @@ public final class ClosedFormIk implements IkSolver {
   private final double a1, a2, b, c1, c2, c3, c4, kappa, psi;
   private final double[] offset = new double[6];
   private final double[] sign = new double[6];
-  private final double[] lower;
-  private final double[] upper;
-  private final double[] lowerSlack = new double[6];
-  private final double[] upperSlack = new double[6];
+  private final JointRange range;
 
   private final double[] target = new double[12];
   private final double[] base = new double[BASE_SOLUTIONS * 6];
@@ -105,12 +100,7 @@ public final class ClosedFormIk implements IkSolver {
       sign[i] = p.sign(i);
     }
     // Round-off can put a solution at a limit 1e-15 outside it: accept that and clamp.
-    lower = model.lowerLimits();
-    upper = model.upperLimits();
-    for (int i = 0; i < 6; i++) {
-      lowerSlack[i] = lower[i] - LIMIT_SLACK;
-      upperSlack[i] = upper[i] + LIMIT_SLACK;
-    }
+    range = new JointRange(model);
   }
 
   @Override
@@ -181,16 +171,14 @@ public final class ClosedFormIk implements IkSolver {
     cand[3] += TWO_PI * config.turn4();
     cand[5] += TWO_PI * config.turn6();
     // J2, J3, J5 carry no turn number: take their variant inside the limits (J3 spans > 180°).
-    cand[1] = intoLimits(cand[1], 1);
-    cand[2] = intoLimits(cand[2], 2);
-    cand[4] = intoLimits(cand[4], 4);
+    cand[1] = range.intoLimits(cand[1], 1);
+    cand[2] = range.intoLimits(cand[2], 2);
+    cand[4] = range.intoLimits(cand[4], 4);
     for (int i = 0; i < 6; i++) {
-      if (!ok(cand[i], i)) {
-        return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, String.format(
-            "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg", config, i + 1,
-            Math.toDegrees(cand[i]), Math.toDegrees(lower[i]), Math.toDegrees(upper[i])));
+      if (!range.ok(cand[i], i)) {
+        return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, range.outside(config, i, cand[i]));
       }
-      cand[i] = clampToLimits(cand[i], i);
+      cand[i] = range.clamp(cand[i], i);
     }
     return solved(cand);
   }
@@ -218,7 +206,7 @@ public final class ClosedFormIk implements IkSolver {
       return outOfReach();
     }
     if (!nearest(valid, qCurrent)) {
-      return limitsOnly();
+      return JointRange.everySolutionOutside();
     }
     return solved(best);
   }
@@ -249,7 +237,7 @@ public final class ClosedFormIk implements IkSolver {
         return Optional.empty();
       }
     }
-    return Optional.of(limitsOnly());
+    return Optional.of(JointRange.everySolutionOutside());
   }
 
   /** Base solution k has a turn of every joint within {@link #VERDICT_SLACK} of the limits. */
@@ -259,7 +247,7 @@ public final class ClosedFormIk implements IkSolver {
       boolean any = false;
       for (int t = -2; t <= 2 && !any; t++) {
         double v = q + TWO_PI * t;
-        any = v >= lower[i] - VERDICT_SLACK && v <= upper[i] + VERDICT_SLACK;
+        any = v >= range.lower(i) - VERDICT_SLACK && v <= range.upper(i) + VERDICT_SLACK;
       }
       if (!any) {
         return false;
@@ -276,12 +264,12 @@ public final class ClosedFormIk implements IkSolver {
         continue;
       }
       int o = k * 6;
-      double q1 = nearestTurn(base[o], qCurrent[0], 0);
-      double q2 = nearestTurn(base[o + 1], qCurrent[1], 1);
-      double q3 = nearestTurn(base[o + 2], qCurrent[2], 2);
-      double q4 = nearestTurn(base[o + 3], qCurrent[3], 3);
-      double q5 = nearestTurn(base[o + 4], qCurrent[4], 4);
-      double q6 = nearestTurn(base[o + 5], qCurrent[5], 5);
+      double q1 = range.nearestTurn(base[o], qCurrent[0], 0);
+      double q2 = range.nearestTurn(base[o + 1], qCurrent[1], 1);
+      double q3 = range.nearestTurn(base[o + 2], qCurrent[2], 2);
+      double q4 = range.nearestTurn(base[o + 3], qCurrent[3], 3);
+      double q5 = range.nearestTurn(base[o + 4], qCurrent[4], 4);
+      double q6 = range.nearestTurn(base[o + 5], qCurrent[5], 5);
       // NaN (no variant inside the limits) makes d NaN, which never compares smaller.
       double d = sq(q1 - qCurrent[0]) + sq(q2 - qCurrent[1]) + sq(q3 - qCurrent[2])
           + sq(q4 - qCurrent[3]) + sq(q5 - qCurrent[4]) + sq(q6 - qCurrent[5]);
@@ -296,11 +284,6 @@ public final class ClosedFormIk implements IkSolver {
       }
     }
     return bestD != Double.POSITIVE_INFINITY;
-  }
-
-  private static IkResult.Unreachable limitsOnly() {
-    return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-        "the pose is within reach but every solution has a joint outside its limits");
   }
 
   /**
@@ -322,16 +305,16 @@ public final class ClosedFormIk implements IkSolver {
           for (int t6 = -2; t6 <= 2; t6++) {
             double[] q = new double[6];
             System.arraycopy(base, o, q, 0, 6);
-            q[1] = intoLimits(q[1], 1);
-            q[2] = intoLimits(q[2], 2);
-            q[4] = intoLimits(q[4], 4);
+            q[1] = range.intoLimits(q[1], 1);
+            q[2] = range.intoLimits(q[2], 2);
+            q[4] = range.intoLimits(q[4], 4);
             q[0] += TWO_PI * t1;
             q[3] += TWO_PI * t4;
             q[5] += TWO_PI * t6;
             boolean inside = true;
             for (int i = 0; i < 6; i++) {
-              inside &= ok(q[i], i);
-              q[i] = clampToLimits(q[i], i);
+              inside &= range.ok(q[i], i);
+              q[i] = range.clamp(q[i], i);
             }
             if (inside) {
               if (polish != null) {
@@ -500,39 +483,6 @@ public final class ClosedFormIk implements IkSolver {
     double th2 = sign[1] * q[1] - offset[1];
     double th23 = th2 + sign[2] * q[2] - offset[2];
     return a1 + c2 * Math.sin(th2) + c3 * Math.sin(th23) + a2 * Math.cos(th23);
-  }
-
-  /** The variant of {@code q} (± 2π multiples) within joint i's limits nearest to {@code ref}; NaN if none. */
-  private double nearestTurn(double q, double ref, int i) {
-    double v = q + TWO_PI * Math.rint((ref - q) / TWO_PI);
-    if (ok(v, i)) {
-      return clampToLimits(v, i);
-    }
-    double lo = v - TWO_PI, hi = v + TWO_PI;
-    boolean loOk = ok(lo, i);
-    boolean hiOk = ok(hi, i);
-    if (loOk && hiOk) {
-      return clampToLimits(ref - lo < hi - ref ? lo : hi, i);
-    }
-    return loOk ? clampToLimits(lo, i) : (hiOk ? clampToLimits(hi, i) : Double.NaN);
-  }
-
-  /** {@code q} (in (-π, π]) or its ±2π variant, whichever lies inside joint i's limits. */
-  private double intoLimits(double q, int i) {
-    if (ok(q, i)) {
-      return clampToLimits(q, i);
-    }
-    double alt = q > 0 ? q - TWO_PI : q + TWO_PI;
-    return ok(alt, i) ? clampToLimits(alt, i) : q;
-  }
-
-  /** Inside joint i's limits, or outside by no more than round-off. */
-  private boolean ok(double v, int i) {
-    return v >= lowerSlack[i] && v <= upperSlack[i];
-  }
-
-  private double clampToLimits(double v, int i) {
-    return v < lower[i] ? lower[i] : (v > upper[i] ? upper[i] : v);
   }
 
   private IkResult solved(double[] q) {

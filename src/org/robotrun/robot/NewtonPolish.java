@@ -8,7 +8,9 @@ package org.robotrun.robot;
  * Not thread-safe (scratch arrays).
  */
 final class NewtonPolish {
-  private static final int STEPS = 6;
+  private final int steps;
+  private final double giveUpMm;
+  private final double giveUpRad;
   private final KinematicChain chain;
   private final double[] fk = new double[12];
   private final double[] jac = new double[36];
@@ -17,8 +19,20 @@ final class NewtonPolish {
   private final double[] dq = new double[6];
   private final int[] perm = new int[6];
 
+  /** At most 6 steps from a start within 10 mm and 0.05 rad: a closed form on rounded numbers. */
   NewtonPolish(KinematicChain chain) {
+    this(chain, 6, 10, 0.05);
+  }
+
+  /**
+   * At most {@code steps} steps, and none from a start farther than {@code giveUpMm} or
+   * {@code giveUpRad} from the target (a start that far is another answer's, not this one's).
+   */
+  NewtonPolish(KinematicChain chain, int steps, double giveUpMm, double giveUpRad) {
     this.chain = chain;
+    this.steps = steps;
+    this.giveUpMm = giveUpMm;
+    this.giveUpRad = giveUpRad;
   }
 
   /**
@@ -31,10 +45,10 @@ final class NewtonPolish {
       double dx = target[9] - fk[9], dy = target[10] - fk[10], dz = target[11] - fk[11];
       double pos = Math.sqrt(dx * dx + dy * dy + dz * dz);
       double rot = ClosedFormIk.rotationAngle(fk, target);
-      if ((pos < 1e-9 && rot < 1e-12) || it == STEPS) {
+      if ((pos < 1e-9 && rot < 1e-12) || it == steps) {
         return pos < 1e-6 && rot < 1e-9;
       }
-      if (pos > 10 || rot > 0.05) {
+      if (pos > giveUpMm || rot > giveUpRad) {
         return false;
       }
       // Orientation error: ½·Σ (r_fk,i × r_target,i) over the columns (small-angle rotation vector).

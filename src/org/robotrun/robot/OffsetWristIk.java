@@ -64,7 +64,6 @@ public final class OffsetWristIk implements IkSolver {
   private static final double TWO_PI = 2 * Math.PI;
   private static final double ANGLE_TOL = 1e-9;
   private static final double LENGTH_TOL = 1e-6;
-  private static final double LIMIT_SLACK = 1e-9;
   /** A grid interval that may hold more roots than it shows is halved up to this many times. */
   private static final int SPLIT_LEVELS = 14;
   /** Below this |det| (units of L2³) the elbow is also solved in the plane perpendicular to the J5 axis. */
@@ -100,8 +99,7 @@ public final class OffsetWristIk implements IkSolver {
   private final KinematicChain chain;
   private final ChainConfig configs;
   private final Layout lay;
-  private final double[] lower;
-  private final double[] upper;
+  private final JointRange range;
   // Per joint: X_PJ rotation (row-major), translation, axis in the joint frame.
   private final double[] rpj = new double[54];
   private final double[] tpj = new double[18];
@@ -119,11 +117,12 @@ public final class OffsetWristIk implements IkSolver {
   private final double[] sb = new double[DEGREE + 1];
   /** Σ k²·|c_k| ≥ max |g''|. */
   private double curvatureBound;
-  private final double[] jac = new double[36];
-  private final double[] jacScratch = new double[Jacobian.SCRATCH];
-  private final double[] err = new double[6];
-  private final double[] dq = new double[6];
-  private final int[] perm = new int[6];
+  /**
+   * Newton steps on the flange pose (at most 4) until the chain's FK is within 1e-9 mm and
+   * 1e-12 rad of the target: a root of a cluster is only known to about 1e-8 rad. A candidate
+   * farther than 1 mm or 0.01 rad is not this root's and is dropped, not pulled onto another.
+   */
+  private final NewtonPolish polish;
   private final double[] roots = new double[MAX_ROOTS];
   private int rootCount;
   private final double[] sol = new double[MAX_SOLUTIONS * 6];
@@ -147,9 +146,9 @@ public final class OffsetWristIk implements IkSolver {
     this.lay = layout(model).orElseThrow(() -> new IllegalArgumentException(
         model.id() + ": not the CRX layout (see OffsetWristIk), the offset-wrist solver does not apply"));
     this.chain = new KinematicChain(model);
+    this.polish = new NewtonPolish(chain, 4, 1, 1e-2);
     this.configs = new ChainConfig(chain);
-    lower = model.lowerLimits();
-    upper = model.upperLimits();
+    range = new JointRange(model);
     for (int i = 0; i < 6; i++) {
       JointSpec j = model.joint(i);
       System.arraycopy(j.X_PJ().rotationRowMajor(), 0, rpj, 9 * i, 9);
@@ -246,28 +245,26 @@ public final class OffsetWristIk implements IkSolver {
       cand[0] += TWO_PI * config.turn1();
       cand[3] += TWO_PI * config.turn4();
       cand[5] += TWO_PI * config.turn6();
-      cand[1] = intoLimits(cand[1], 1);
-      cand[2] = intoLimits(cand[2], 2);
-      cand[4] = intoLimits(cand[4], 4);
-      int bad = firstOutside(cand);
+      cand[1] = range.intoLimits(cand[1], 1);
+      cand[2] = range.intoLimits(cand[2], 2);
+      cand[4] = range.intoLimits(cand[4], 4);
+      int bad = range.firstOutside(cand);
       if (bad >= 0) {
-        limitWhy = String.format(java.util.Locale.ROOT, "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg",
-            config, bad + 1, Math.toDegrees(cand[bad]), Math.toDegrees(lower[bad]), Math.toDegrees(upper[bad]));
+        limitWhy = range.outside(config, bad, cand[bad]);
         continue;
       }
-      double d = distance(cand, qNear);
+      double d = JointRange.distance(cand, qNear);
       if (d < bestD) {
         bestD = d;
         System.arraycopy(cand, 0, best, 0, 6);
       }
     }
     if (bestD < Double.POSITIVE_INFINITY) {
-      clampAll(best);
+      range.clampAll(best);
       return solved(best);
     }
     if (!branch) {
-      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH,
-          "the pose is out of reach in CONFIG '" + config + "' (only other configurations reach it)");
+      return JointRange.otherConfigsOnly(config);
     }
     return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, limitWhy);
   }
@@ -282,21 +279,20 @@ public final class OffsetWristIk implements IkSolver {
     for (int k = 0; k < n; k++) {
       boolean ok = true;
       for (int i = 0; i < 6 && ok; i++) {
-        cand[i] = nearestTurn(sol[6 * k + i], qCurrent[i], i);
+        cand[i] = range.nearestTurn(sol[6 * k + i], qCurrent[i], i);
         ok = !Double.isNaN(cand[i]);
       }
       if (!ok) {
         continue;
       }
-      double d = distance(cand, qCurrent);
+      double d = JointRange.distance(cand, qCurrent);
       if (d < bestD) {
         bestD = d;
         System.arraycopy(cand, 0, best, 0, 6);
       }
     }
     if (bestD == Double.POSITIVE_INFINITY) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose is within reach but every solution has a joint outside its limits");
+      return JointRange.everySolutionOutside();
     }
     return solved(best);
   }
@@ -314,11 +310,11 @@ public final class OffsetWristIk implements IkSolver {
             q[0] += TWO_PI * t1;
             q[3] += TWO_PI * t4;
             q[5] += TWO_PI * t6;
-            q[1] = intoLimits(q[1], 1);
-            q[2] = intoLimits(q[2], 2);
-            q[4] = intoLimits(q[4], 4);
-            if (firstOutside(q) < 0) {
-              clampAll(q);
+            q[1] = range.intoLimits(q[1], 1);
+            q[2] = range.intoLimits(q[2], 2);
+            q[4] = range.intoLimits(q[4], 4);
+            if (range.firstOutside(q) < 0) {
+              range.clampAll(q);
               out.add(new Solution(q, configOf(q)));
             }
           }
@@ -682,7 +678,7 @@ public final class OffsetWristIk implements IkSolver {
       sol[o + 4] = ClosedFormIk.wrap(q5);
       sol[o + 5] = ClosedFormIk.wrap(q6);
       System.arraycopy(sol, o, cand, 0, 6);
-      if (!polish(cand)) {
+      if (!polish.polish(cand, target)) {
         continue;
       }
       for (int i = 0; i < 6; i++) {
@@ -690,49 +686,6 @@ public final class OffsetWristIk implements IkSolver {
       }
       if (!duplicate(o)) {
         solCount++;
-      }
-    }
-  }
-
-  /**
-   * Newton steps on the flange pose in joint space (at most 4) until the chain's FK is within
-   * 1e-9 mm and 1e-12 rad of the target: a root of a cluster is only known to about 1e-8 rad.
-   * True when {@code q} ends within 1e-6 mm and 1e-9 rad.
-   */
-  private boolean polish(double[] q) {
-    for (int it = 0; ; it++) {
-      chain.flangePose(q, fk, null);
-      double dx = target[9] - fk[9], dy = target[10] - fk[10], dz = target[11] - fk[11];
-      double pos = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      double rot = ClosedFormIk.rotationAngle(fk, target);
-      if ((pos < 1e-9 && rot < 1e-12) || it == 4) {
-        return pos < 1e-6 && rot < 1e-9;
-      }
-      if (pos > 1 || rot > 1e-2) {
-        return false;
-      }
-      // Orientation error: ½·Σ (r_fk,i × r_target,i) over the columns (small-angle rotation vector).
-      double ex = 0, ey = 0, ez = 0;
-      for (int c = 0; c < 3; c++) {
-        double ax = fk[c], ay = fk[3 + c], az = fk[6 + c];
-        double bx = target[c], by = target[3 + c], bz = target[6 + c];
-        ex += ay * bz - az * by;
-        ey += az * bx - ax * bz;
-        ez += ax * by - ay * bx;
-      }
-      err[0] = dx;
-      err[1] = dy;
-      err[2] = dz;
-      err[3] = 0.5 * ex;
-      err[4] = 0.5 * ey;
-      err[5] = 0.5 * ez;
-      Jacobian.tcpJacobianInBase(chain, q, null, jac, fk, jacScratch);
-      if (Dense6.luDecompose(jac, perm) == 0) {
-        return pos < 1e-6 && rot < 1e-9;
-      }
-      Dense6.luSolve(jac, perm, err, dq);
-      for (int i = 0; i < 6; i++) {
-        q[i] += dq[i];
       }
     }
   }
@@ -814,56 +767,6 @@ public final class OffsetWristIk implements IkSolver {
   }
 
   // ---- helpers ---------------------------------------------------------------------------
-
-  private static double distance(double[] a, double[] b) {
-    double d = 0;
-    for (int i = 0; i < 6; i++) {
-      double e = a[i] - b[i];
-      d += e * e;
-    }
-    return d;
-  }
-
-  private boolean ok(double v, int i) {
-    return v >= lower[i] - LIMIT_SLACK && v <= upper[i] + LIMIT_SLACK;
-  }
-
-  private int firstOutside(double[] q) {
-    for (int i = 0; i < 6; i++) {
-      if (!ok(q[i], i)) {
-        return i;
-      }
-    }
-    return -1;
-  }
-
-  private void clampAll(double[] q) {
-    for (int i = 0; i < 6; i++) {
-      q[i] = Math.max(lower[i], Math.min(upper[i], q[i]));
-    }
-  }
-
-  private double intoLimits(double q, int i) {
-    if (ok(q, i)) {
-      return q;
-    }
-    double alt = q > 0 ? q - TWO_PI : q + TWO_PI;
-    return ok(alt, i) ? alt : q;
-  }
-
-  /** The variant of q (± 2π multiples) inside joint i's limits nearest to ref; NaN if none. */
-  private double nearestTurn(double q, double ref, int i) {
-    double v = q + TWO_PI * Math.rint((ref - q) / TWO_PI);
-    if (ok(v, i)) {
-      return Math.max(lower[i], Math.min(upper[i], v));
-    }
-    double lo = v - TWO_PI, hi = v + TWO_PI;
-    boolean loOk = ok(lo, i), hiOk = ok(hi, i);
-    if (loOk && hiOk) {
-      return ref - lo < hi - ref ? lo : hi;
-    }
-    return loOk ? lo : (hiOk ? hi : Double.NaN);
-  }
 
   private IkResult solved(double[] q) {
     chain.flangePose(q, fk, null);

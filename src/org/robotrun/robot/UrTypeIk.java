@@ -56,7 +56,6 @@ public final class UrTypeIk implements IkSolver {
   private static final double TWO_PI = 2 * Math.PI;
   private static final double ANGLE_TOL = 1e-9;
   private static final double LENGTH_TOL = 1e-6;
-  private static final double LIMIT_SLACK = 1e-9;
   /** Slack on the cosine arguments so that exactly stretched or singular poses still solve. */
   private static final double ACOS_SLACK = 1e-9;
   /**
@@ -74,8 +73,7 @@ public final class UrTypeIk implements IkSolver {
   private final KinematicChain chain;
   /** Newton steps that finish each answer when the geometry fits only to within rounding; else null. */
   private final NewtonPolish polish;
-  private final double[] lower;
-  private final double[] upper;
+  private final JointRange range;
   // Joint frames: rotation (row-major), translation, axis (joint frame), for J1, J5, J6.
   private final double[] r1 = new double[9];
   private final double[] t1 = new double[3];
@@ -147,8 +145,7 @@ public final class UrTypeIk implements IkSolver {
   public UrTypeIk(RobotModel model) {
     this.model = model;
     this.chain = new KinematicChain(model);
-    lower = model.lowerLimits();
-    upper = model.upperLimits();
+    range = new JointRange(model);
     Transform[] L = ForwardKinematics.linkPosesInBase(model, new double[6]);
     Vec3[] p = new Vec3[6];
     Vec3[] d = new Vec3[6];
@@ -289,7 +286,7 @@ public final class UrTypeIk implements IkSolver {
     double[] x = new double[12];
     for (int k = 0; k < VERIFY_SAMPLES; k++) {
       for (int i = 0; i < 6; i++) {
-        q[i] = k == 0 ? 0.3 : lower[i] + rnd.nextDouble() * (upper[i] - lower[i]);
+        q[i] = k == 0 ? 0.3 : range.lower(i) + rnd.nextDouble() * (range.upper(i) - range.lower(i));
       }
       chain.flangePose(q, x, null);
       System.arraycopy(x, 0, target, 0, 12);
@@ -374,31 +371,29 @@ public final class UrTypeIk implements IkSolver {
       branch = true;
       int o = 6 * s;
       cand[0] = base[o] + TWO_PI * config.turn1();
-      cand[1] = nearestTurn(base[o + 1], qNear[1], 1);
-      cand[2] = nearestTurn(base[o + 2], qNear[2], 2);
+      cand[1] = range.nearestTurn(base[o + 1], qNear[1], 1);
+      cand[2] = range.nearestTurn(base[o + 2], qNear[2], 2);
       cand[3] = base[o + 3] + TWO_PI * config.turn4();
-      cand[4] = nearestTurn(base[o + 4], qNear[4], 4);
+      cand[4] = range.nearestTurn(base[o + 4], qNear[4], 4);
       cand[5] = base[o + 5] + TWO_PI * config.turn6();
-      int bad = firstOutside(cand);
+      int bad = range.firstOutside(cand);
       if (bad >= 0) {
         double shown = Double.isNaN(cand[bad]) ? base[o + bad] : cand[bad];
-        limitWhy = String.format(Locale.ROOT, "CONFIG '%s' needs J%d = %.1f deg, outside %.1f..%.1f deg",
-            config, bad + 1, Math.toDegrees(shown), Math.toDegrees(lower[bad]), Math.toDegrees(upper[bad]));
+        limitWhy = range.outside(config, bad, shown);
         continue;
       }
-      double d = distance(cand, qNear);
+      double d = JointRange.distance(cand, qNear);
       if (d < bestD) {
         bestD = d;
         System.arraycopy(cand, 0, best, 0, 6);
       }
     }
     if (bestD < Double.POSITIVE_INFINITY) {
-      clampAll(best);
+      range.clampAll(best);
       return solved(best);
     }
     if (!branch) {
-      return new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH,
-          "the pose is out of reach in CONFIG '" + config + "' (only other configurations reach it)");
+      return JointRange.otherConfigsOnly(config);
     }
     return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT, limitWhy);
   }
@@ -416,19 +411,18 @@ public final class UrTypeIk implements IkSolver {
         continue;
       }
       for (int i = 0; i < 6; i++) {
-        cand[i] = nearestTurn(base[6 * s + i], qCurrent[i], i);
+        cand[i] = range.nearestTurn(base[6 * s + i], qCurrent[i], i);
       }
-      double d = distance(cand, qCurrent);
+      double d = JointRange.distance(cand, qCurrent);
       if (d < bestD) {
         bestD = d;
         System.arraycopy(cand, 0, best, 0, 6);
       }
     }
     if (bestD == Double.POSITIVE_INFINITY) {
-      return new IkResult.Unreachable(IkResult.Reason.JOINT_LIMIT,
-          "the pose is within reach but every solution has a joint outside its limits");
+      return JointRange.everySolutionOutside();
     }
-    clampAll(best);
+    range.clampAll(best);
     return solved(best);
   }
 
@@ -455,11 +449,11 @@ public final class UrTypeIk implements IkSolver {
                   q[3] += TWO_PI * t4;
                   q[4] += TWO_PI * t5;
                   q[5] += TWO_PI * t6;
-                  if (firstOutside(q) < 0) {
+                  if (range.firstOutside(q) < 0) {
                     if (polish != null) {
                       polish.polish(q, target);
                     }
-                    clampAll(q);
+                    range.clampAll(q);
                     out.add(new Solution(q, configOf(q)));
                   }
                 }
@@ -653,48 +647,6 @@ public final class UrTypeIk implements IkSolver {
   private static double poseError(double[] a, double[] b) {
     double dx = a[9] - b[9], dy = a[10] - b[10], dz = a[11] - b[11];
     return Math.max(Math.sqrt(dx * dx + dy * dy + dz * dz), 1e3 * ClosedFormIk.rotationAngle(a, b));
-  }
-
-  private static double distance(double[] a, double[] b) {
-    double d = 0;
-    for (int i = 0; i < 6; i++) {
-      double e = a[i] - b[i];
-      d += e * e;
-    }
-    return d;
-  }
-
-  private boolean ok(double v, int i) {
-    return v >= lower[i] - LIMIT_SLACK && v <= upper[i] + LIMIT_SLACK;
-  }
-
-  private int firstOutside(double[] q) {
-    for (int i = 0; i < 6; i++) {
-      if (!ok(q[i], i)) {
-        return i;
-      }
-    }
-    return -1;
-  }
-
-  private void clampAll(double[] q) {
-    for (int i = 0; i < 6; i++) {
-      q[i] = Math.max(lower[i], Math.min(upper[i], q[i]));
-    }
-  }
-
-  /** The variant of q (± 2π multiples) inside joint i's limits nearest to ref; NaN if none. */
-  private double nearestTurn(double q, double ref, int i) {
-    double v = q + TWO_PI * Math.rint((ref - q) / TWO_PI);
-    if (ok(v, i)) {
-      return v;
-    }
-    double lo = v - TWO_PI, hi = v + TWO_PI;
-    boolean loOk = ok(lo, i), hiOk = ok(hi, i);
-    if (loOk && hiOk) {
-      return ref - lo < hi - ref ? lo : hi;
-    }
-    return loOk ? lo : (hiOk ? hi : Double.NaN);
   }
 
   private IkResult solved(double[] q) {

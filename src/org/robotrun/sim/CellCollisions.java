@@ -64,6 +64,8 @@ final class CellCollisions {
   private long cellVersion = -1;
   private final Set<BodyPair> allowed = new LinkedHashSet<>();
   private Set<String> touching = new HashSet<>();
+  /** Per robot name: its end effector's type as a student reads it ("gripper"); absent without one. */
+  private final Map<String, String> toolTypes = new java.util.HashMap<>();
 
   /** Bodies touching at the last check, by draw-item name (a link's boxes "#k" merged). */
   Set<String> touchingBodies() {
@@ -91,8 +93,11 @@ final class CellCollisions {
     return java.util.Optional.of(new LocalBox(X_FB, TOOL_BAR_MM / 2, TOOL_BAR_MM / 2, length / 2));
   }
 
-  /** A contact that began: the two bodies' names ("robot1/link5", "table"). */
-  record NewContact(String a, String aOwner, String b, String bOwner) {}
+  /**
+   * A contact that began: the two bodies' ids ("robot1/link5#1", "table") and their names as a
+   * student knows them ("robot1 J5 wrist", {@link BodyNames}).
+   */
+  record NewContact(String a, String aOwner, String b, String bOwner, String aText, String bText) {}
 
   /** Name of the floor's body: a fixture whose top is the cell's floor. */
   static final String FLOOR = "floor";
@@ -131,6 +136,7 @@ final class CellCollisions {
       robots.add(new RobotBodies(c.name(), boxes, collision));
       List<LocalBox> toolBoxes = tool.map(t -> t.geometry.boxes(t.fingerGapMm())).orElse(List.of());
       List<String> toolNames = tool.map(t -> t.geometry.boxNames()).orElse(List.of());
+      tool.ifPresentOrElse(t -> toolTypes.put(c.name(), t.geometry.type().name()), () -> toolTypes.remove(c.name()));
       toolHandles[r] = new int[toolBoxes.size()];
       for (int k = 0; k < toolBoxes.size(); k++) {
         String name = c.name() + "/tool/" + toolNames.get(k);
@@ -233,7 +239,9 @@ final class CellCollisions {
       String key = contact.a().name() + "|" + contact.b().name();
       now.add(key);
       if (!touching.contains(key)) {
-        began.add(new NewContact(contact.a().name(), contact.a().owner(), contact.b().name(), contact.b().owner()));
+        began.add(new NewContact(contact.a().name(), contact.a().owner(), contact.b().name(), contact.b().owner(),
+            BodyNames.of(contact.a(), toolTypes.getOrDefault(contact.a().owner(), "")),
+            BodyNames.of(contact.b(), toolTypes.getOrDefault(contact.b().owner(), ""))));
       }
     }
     touching = now;

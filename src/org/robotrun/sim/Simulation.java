@@ -142,17 +142,21 @@ public final class Simulation {
     var held = cell.heldBy();
     for (CellCollisions.NewContact k : began) {
       if (collisionEvents.size() < MAX_EVENTS) {
-        collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b()));
+        collisionEvents.add(new CollisionEvent(timeSec(), k.a(), k.b(), k.aText(), k.bText()));
       }
       if (!collisionAlarms) {
         continue;
       }
       String robotA = held.getOrDefault(k.aOwner(), k.aOwner());
       String robotB = held.getOrDefault(k.bOwner(), k.bOwner());
+      // the arm (or what it holds) first: "robot1 gripper finger1 touches table"
+      boolean robotFirst = controllers.stream().anyMatch(c -> c.name().equals(robotA))
+          || controllers.stream().noneMatch(c -> c.name().equals(robotB));
+      String text = robotFirst ? k.aText() + " touches " + k.bText() : k.bText() + " touches " + k.aText();
       for (int r = 0; r < controllers.size(); r++) {
         Controller c = controllers.get(r);
         if (!alarmed[r] && (c.name().equals(robotA) || c.name().equals(robotB))) {
-          c.raiseAlarm(COLLISION_ALARM, "collision: " + k.a() + " touches " + k.b());
+          c.raiseAlarm(COLLISION_ALARM, "collision: " + text);
           alarmed[r] = true;
         }
       }

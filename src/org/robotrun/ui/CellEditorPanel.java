@@ -119,6 +119,14 @@ public final class CellEditorPanel {
     return age < (messageIsError ? STRIP_ERROR_SECONDS : STRIP_DONE_SECONDS) ? Optional.of(message) : Optional.empty();
   }
 
+  /** When the strip's message goes away ({@link #clock} nanoseconds), or {@link Long#MAX_VALUE} when none shows. */
+  public long stripExpiresNanos() {
+    if (stripMessage().isEmpty()) {
+      return Long.MAX_VALUE;
+    }
+    return messageNanos + (long) ((messageIsError ? STRIP_ERROR_SECONDS : STRIP_DONE_SECONDS) * 1e9) + 1;
+  }
+
   /** Applies an edit's result: remembers the message, forgets field texts so they show the model. */
   public void report(Result r) {
     messageNanos = clock.getAsLong();

@@ -99,7 +99,7 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
         running = null;
       }
       if (!error.isEmpty()) {
-        ImGui.textUnformatted(error);
+        ImGui.textUnformatted(Txt.plain(error));
       }
       if (last != null) {
         ImGui.textUnformatted(String.format(Locale.ROOT, "%s of %s points", fmt(last.score()), fmt(last.maxScore())));
@@ -144,6 +144,8 @@ public final class CheckWorkPanel implements Workbench.MenuContributor {
     }
     running = CompletableFuture.supplyAsync(() -> grader.checkMyWork(programs, tool, user, registers, positions,
         otherPrograms, otherRegisters));
+    // the idle window sleeps: wake it to show the result
+    running.whenComplete((r, e) -> SimulatorWindow.wakeFromAnyThread());
   }
 
   private static List<Program> programsOf(Controller c) {

@@ -205,6 +205,15 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
   }
 
+  @Override
+  public long nextRedrawNanos() {
+    if (status.isEmpty()) {
+      return Long.MAX_VALUE;
+    }
+    double left = statusUntil - ImGui.getTime();
+    return left <= 0 ? Long.MAX_VALUE : System.nanoTime() + (long) (left * 1e9) + 1_000_000L;
+  }
+
   private void openWorkspace(boolean mustBeNew) {
     choose(mustBeNew ? "New workspace: a new or empty folder" : "Open workspace: the workspace folder (it holds cell.json)",
         () -> dialogs.pickFolder(actions.workspaceFolder().getParent()), p -> tell(actions.openWorkspace(p, mustBeNew)));
@@ -286,7 +295,7 @@ public final class FileMenu implements Workbench.MenuContributor {
     }
     if (ImGui.beginPopupModal("RobotRun##message", ImGuiWindowFlags.AlwaysAutoResize)) {
       ImGui.pushTextWrapPos(ImGui.getFontSize() * 54);
-      ImGui.textUnformatted(messages.isEmpty() ? "" : messages.peek());
+      ImGui.textUnformatted(messages.isEmpty() ? "" : Txt.plain(messages.peek()));
       ImGui.popTextWrapPos();
       if (ImGui.button("OK") || ImGui.isKeyPressed(GLFW_KEY_ENTER)) {
         messages.poll();

@@ -78,9 +78,9 @@ public final class LabsPanel implements Workbench.MenuContributor {
           if (step != null) {
             out.add(step.toString());
           }
-          step = new StringBuilder(line.strip().replace("**", "").replace("`", ""));
+          step = new StringBuilder(unmark(line.strip()));
         } else if (step != null && line.startsWith("   ") && !line.isBlank()) {
-          step.append(' ').append(line.strip().replace("**", "").replace("`", ""));
+          step.append(' ').append(unmark(line.strip()));
         } else if (step != null && line.isBlank()) {
           out.add(step.toString());
           step = null;
@@ -93,6 +93,16 @@ public final class LabsPanel implements Workbench.MenuContributor {
       out.clear();
     }
     return out;
+  }
+
+  /** A markdown emphasis like {@code *Tool Frame*} (a menu item): the asterisks around words go. */
+  private static final java.util.regex.Pattern EMPHASIS =
+      java.util.regex.Pattern.compile("(?<![\\w*])\\*([A-Za-z\\[][^*]*?[^\\s*])\\*(?![\\w*])");
+
+  /** A guide's line as the steps window shows it: no markdown bold, emphasis or code marks. */
+  static String unmark(String line) {
+    String s = line.replace("**", "").replace("`", "");
+    return EMPHASIS.matcher(s).replaceAll("$1");
   }
 
   /** The state of a lab for this student, in words. */
@@ -162,10 +172,23 @@ public final class LabsPanel implements Workbench.MenuContributor {
     float em = ImGui.getFontSize();
     // Over the lower left column, so that neither the robot nor the pendant is hidden (fits 1366x768).
     float h = ImGui.getIO().getDisplaySizeY();
-    ImGui.setNextWindowSize(em * 21, h * 0.5f, ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowPos(0, h * 0.47f, ImGuiCond.FirstUseEver);
-    if (ImGui.begin("Lab steps: " + lab.title() + "###labsteps", showSteps)) {
+    // the left column shows from this width on (WindowLayout; the font is 13 px at scale 1)
+    boolean sidebar = ImGui.getIO().getDisplaySizeX() >= WindowLayout.SIDEBAR_MIN_WINDOW * em / 13f;
+    if (sidebar) {
+      ImGui.setNextWindowSize(em * 21, h * 0.5f, ImGuiCond.FirstUseEver);
+      ImGui.setNextWindowPos(0, h * 0.47f, ImGuiCond.FirstUseEver);
+    } else {
+      // no left column (a narrow window): over the top of the 3D view, clear of the first-steps
+      // card along its bottom (at 1024x640 the steps covered the card and its Got it button)
+      ImGui.setNextWindowSize(em * 21, h * 0.45f, ImGuiCond.FirstUseEver);
+      ImGui.setNextWindowPos(0, ImGui.getFrameHeight(), ImGuiCond.FirstUseEver);
+    }
+    // opaque: the left column's text showed through the steps
+    ImGui.setNextWindowBgAlpha(1f);
+    // the lab's title inside the window, wrapped (in the title bar it was cut at the window's edge)
+    if (ImGui.begin("Lab steps###labsteps", showSteps)) {
       ImGui.pushTextWrapPos(0);
+      Txt.wrapped(lab.title());
       if (ImGui.button("< Previous") && at > 0) {
         setStep(lab, at - 1);
       }
@@ -189,7 +212,7 @@ public final class LabsPanel implements Workbench.MenuContributor {
       ImGui.separator();
       Txt.disabled("The whole guide: " + lab.guide());
       if (!message.isEmpty()) {
-        ImGui.textUnformatted(message);
+        ImGui.textUnformatted(Txt.plain(message));
       }
       ImGui.popTextWrapPos();
     }

@@ -3,7 +3,6 @@ package org.robotrun.ui;
 import static org.lwjgl.glfw.GLFW.*;
 
 import imgui.ImGui;
-import imgui.gl3.ImGuiImplGl3;
 import imgui.glfw.ImGuiImplGlfw;
 import java.util.function.BooleanSupplier;
 import java.util.function.IntPredicate;
@@ -12,7 +11,9 @@ import org.lwjgl.opengl.GL;
 import org.lwjgl.system.Configuration;
 import org.lwjgl.system.Platform;
 import org.robotrun.render.AntiAliasing;
+import org.robotrun.render.DamageRegion;
 import org.robotrun.render.GlUnavailableException;
+import org.robotrun.render.OffscreenTarget;
 import org.robotrun.render.OrbitCamera;
 import org.robotrun.render.SceneRenderer;
 import org.robotrun.sim.SceneSnapshot;
@@ -34,7 +35,31 @@ public final class SimulatorWindow implements AutoCloseable {
   private final OrbitCamera camera = new OrbitCamera();
   private final SceneRenderer renderer;
   private final ImGuiImplGlfw imguiGlfw = new ImGuiImplGlfw();
-  private final ImGuiImplGl3 imguiGl3 = new ImGuiImplGl3();
+  /** Draws the panels, again only where they changed. */
+  private RetainedUi ui;
+  /** The frame as last drawn, kept between frames: each frame draws again only what changed, then shows it. */
+  private OffscreenTarget canvas;
+  private java.util.List<Fill> lastFills = java.util.List.of();
+  /** ROBOTRUN_REDRAW=all: draw every pixel every frame (to compare, or should a driver mishandle the kept frame). */
+  private final boolean redrawAll = redrawMode("all");
+  private volatile long damagedPixels;
+  /** Non-null: the back buffer keeps the frame and only changed rectangles are shown (Mesa's software renderers). */
+  private SubBufferPresenter presenter;
+  /** The back buffer's size when {@link #presenter} draws into it; the window was exposed: show all of it. */
+  private int backW;
+  private int backH;
+  private volatile boolean showAll = true;
+  /** Frames still to be drawn whole and swapped after the window's size changed ({@link #presenter} only). */
+  private int swapFramesLeft;
+  private static final int SWAP_FRAMES_AFTER_RESIZE = 3;
+  /** ROBOTRUN_REDRAW=check: compare each kept frame with a full redraw (tests). */
+  private final RedrawCheck check = redrawMode("check") ? new RedrawCheck() : null;
+
+  /** Whether ROBOTRUN_REDRAW (words separated by commas: all, swap, check) names this word. */
+  static boolean redrawMode(String word) {
+    String v = System.getenv("ROBOTRUN_REDRAW");
+    return v != null && java.util.Arrays.asList(v.trim().split("\\s*,\\s*")).contains(word);
+  }
   private double lastX;
   private double lastY;
   private boolean orbiting;
@@ -77,8 +102,17 @@ public final class SimulatorWindow implements AutoCloseable {
   private int[] minimumSize;
   /** After the last input, keep drawing this long (hover highlights, tooltips settle). */
   private static final long IDLE_AFTER_NANOS = 500_000_000L;
-  /** While idle, draw once every this many seconds anyway. */
-  private static final double IDLE_REDRAW_SEC = 5.0;
+  /**
+   * While idle, the longest sleep between two frames. Nothing on screen changes by itself while
+   * idle (the simulation advances only with frames, and every timed message, save and background
+   * result asks for its own wake-up: {@link #setWakeSource}, {@link #wakeFromAnyThread}); this is
+   * only a safety net.
+   */
+  static final double IDLE_REDRAW_SEC = 60.0;
+  /** When something asked to be drawn at a time ({@link System#nanoTime}); {@link Long#MAX_VALUE} for nothing. */
+  private java.util.function.LongSupplier wakeSource = () -> Long.MAX_VALUE;
+  /** When the last frame drawn for input, motion or a start began ({@link System#nanoTime}). */
+  private volatile long lastActiveFrameNanos = System.nanoTime();
   /** The shortest time between the starts of two frames: the screen's refresh period. */
   private final long framePeriodNanos;
   private long lastFrameStart;
@@ -121,6 +155,10 @@ public final class SimulatorWindow implements AutoCloseable {
       glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     }
     glfwWindowHint(GLFW_SAMPLES, AntiAliasing.DEFAULT.samples());
+    if (System.getenv("ROBOTRUN_HIDDEN_WINDOW") != null) {
+      // the launcher's class-data training run after a build: the window draws but is never shown
+      glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
+    }
     int[] size = defaultSize(width, height);
     window = glfwCreateWindow(size[0], size[1], title, 0, 0);
     if (window == 0) {
@@ -163,7 +201,8 @@ public final class SimulatorWindow implements AutoCloseable {
       }
     }
     imguiGlfw.init(window, true);
-    imguiGl3.init("#version 330 core");
+    ui = new RetainedUi();
+    presenter = SubBufferPresenter.forWindow(window);
   }
 
   /** ROBOTRUN_UI_SCALE's value when it is a number from 0.5 to 4; empty otherwise (unset, blank, garbage). */
@@ -293,7 +332,7 @@ public final class SimulatorWindow implements AutoCloseable {
       // function keys still reach the pendant then. A key held while a text field took focus
       // still stops when let go; a key typed into the field stays the field's (TypingKeyFilter).
       boolean typing = ImGui.getIO().getWantTextInput();
-      if (action == GLFW_PRESS && !typing && shortcuts.onShortcut(key, mods)) {
+      if (action == GLFW_PRESS && (!typing || shortcutWhileTyping(key)) && shortcuts.onShortcut(key, mods)) {
         return;
       }
       if (!typingFilter.pass(key, action, typing)) {
@@ -318,7 +357,11 @@ public final class SimulatorWindow implements AutoCloseable {
         glfwSetWindowSize(w, Math.max(ww, minimumSize[0]), Math.max(wh, minimumSize[1]));
       }
     });
-    glfwSetWindowRefreshCallback(window, w -> lastInputNanos = System.nanoTime());
+    glfwSetWindowRefreshCallback(window, w -> {
+      lastInputNanos = System.nanoTime();
+      // uncovered, restored or resized: the window's pixels must all be shown again
+      showAll = true;
+    });
     // The close button asks first (unsaved work); a refusal keeps the window open.
     glfwSetWindowCloseCallback(window, w -> {
       if (!mayClose.getAsBoolean()) {
@@ -355,6 +398,49 @@ public final class SimulatorWindow implements AutoCloseable {
   /** A rectangle in display pixels filled with an opaque colour (see {@link Panels#fills}). */
   public record Fill(float x, float y, float w, float h, float r, float g, float b) {}
 
+  /**
+   * What the idle loop asks before it sleeps: the time ({@link System#nanoTime}) of the next frame
+   * something needs (a message that expires, a save that is due), or {@link Long#MAX_VALUE}.
+   */
+  public void setWakeSource(java.util.function.LongSupplier nextWakeNanos) {
+    wakeSource = nextWakeNanos;
+  }
+
+  /** When the last frame drawn for input, motion or the start began ({@link System#nanoTime}). */
+  public long lastActiveFrameNanos() {
+    return lastActiveFrameNanos;
+  }
+
+  /** Wakes the loop from any thread (a background save or check finished): one frame is drawn. */
+  public static void wakeFromAnyThread() {
+    try {
+      glfwPostEmptyEvent();
+    } catch (RuntimeException | LinkageError e) {
+      // no window (a test, a headless run): nothing sleeps that could be woken
+    }
+  }
+
+  /**
+   * Whether the window's Ctrl shortcut on {@code glfwKey} works while a text field has the
+   * keyboard: Ctrl+Q, Ctrl+S and Ctrl+O do (with the pendant's Type field focused, Ctrl+Q did
+   * nothing); the keys a text field edits with (Ctrl+Z, Y, A, C, V, X, H) stay the field's.
+   */
+  static boolean shortcutWhileTyping(int glfwKey) {
+    return glfwKey == GLFW_KEY_Q || glfwKey == GLFW_KEY_S || glfwKey == GLFW_KEY_O;
+  }
+
+  /**
+   * How long the idle loop sleeps (seconds): until the next wake the window was asked for, at
+   * least 1 ms, at most {@link #IDLE_REDRAW_SEC}.
+   */
+  static double idleSleepSec(long nowNanos, long nextWakeNanos) {
+    if (nextWakeNanos == Long.MAX_VALUE) {
+      return IDLE_REDRAW_SEC;
+    }
+    double sec = (nextWakeNanos - nowNanos) / 1e9;
+    return Math.max(0.001, Math.min(IDLE_REDRAW_SEC, sec));
+  }
+
   /** Runs the event and render loop until the window is closed. */
   public void run(SceneSource scene) {
     run(scene, (w, h) -> {}, () -> true);
@@ -363,8 +449,8 @@ public final class SimulatorWindow implements AutoCloseable {
   /**
    * Runs the event and render loop, with panels over the scene, until the window is closed.
    * Quiet when idle: while {@code busy} says nothing moves and no input came for half a second,
-   * the loop sleeps in {@code glfwWaitEventsTimeout} and draws every 5 s; any input
-   * wakes it at once.
+   * the loop sleeps in {@code glfwWaitEventsTimeout} until the wake source's time (at most
+   * {@link #IDLE_REDRAW_SEC}); any input, or {@link #wakeFromAnyThread}, wakes it at once.
    *
    * @param busy whether something on screen changes by itself (the arm moves, a program runs)
    */
@@ -378,7 +464,9 @@ public final class SimulatorWindow implements AutoCloseable {
       // Dear ImGui sizes a new auto-sized window in a hidden first frame: the first few frames
       // are drawn however slowly the start went, so nothing waits for the 5 s idle redraw.
       boolean starting = frames - firstFrameOfRun < 4;
-      if (moreEdges || recentInput || starting || busy.getAsBoolean()) {
+      boolean active = moreEdges || recentInput || starting || busy.getAsBoolean();
+      if (active) {
+        lastActiveFrameNanos = System.nanoTime();
         // No faster than the screen shows frames: where the swap does not wait for the
         // display (a virtual X server, a driver with vsync off), sleep out the rest of the
         // refresh period instead of drawing frames nobody sees.
@@ -388,7 +476,7 @@ public final class SimulatorWindow implements AutoCloseable {
         }
         glfwPollEvents();
       } else {
-        glfwWaitEventsTimeout(IDLE_REDRAW_SEC);
+        glfwWaitEventsTimeout(idleSleepSec(System.nanoTime(), wakeSource.getAsLong()));
       }
       glfwGetFramebufferSize(window, fw, fh);
       if (fw[0] > 0 && fh[0] > 0) {
@@ -413,12 +501,93 @@ public final class SimulatorWindow implements AutoCloseable {
         panels.draw(fw[0], fh[0]);
         ImGui.render();
         long t2 = System.nanoTime();
-        renderer.render(snap, camera, fw[0], fh[0]);
-        fill(panels.fills(), fw[0], fh[0]);
-        long t3 = System.nanoTime();
-        imguiGl3.renderDrawData(ImGui.getDrawData());
+        ui.capture(ImGui.getDrawData(), fw[0], fh[0]);
+        DamageRegion damage = new DamageRegion(fw[0], fh[0]);
+        boolean swapping = false;
+        if (presenter != null) {
+          if (backW != fw[0] || backH != fh[0]) {
+            backW = fw[0];
+            backH = fh[0];
+            swapFramesLeft = SWAP_FRAMES_AFTER_RESIZE;
+          }
+          // Mesa sizes the back buffer anew only after a swap: until the size has held for a
+          // while, whole frames are drawn and swapped, and no rectangle is shown that the back
+          // buffer might not have
+          swapping = swapFramesLeft > 0;
+          if (swapping) {
+            damage.addAll();
+          }
+        } else if (canvas == null || canvas.width() != fw[0] || canvas.height() != fh[0]) {
+          if (canvas != null) {
+            canvas.close();
+          }
+          canvas = new OffscreenTarget(fw[0], fh[0], 0);
+          damage.addAll();
+        }
+        if (redrawAll) {
+          damage.addAll();
+        }
+        renderer.prepareRetained(snap, camera, fw[0], fh[0], damage);
+        java.util.List<Fill> fills = panels.fills();
+        if (!fills.equals(lastFills)) {
+          for (Fill f : lastFills) {
+            if (!fills.contains(f)) {
+              addFill(damage, f, fw[0], fh[0]);
+            }
+          }
+          for (Fill f : fills) {
+            if (!lastFills.contains(f)) {
+              addFill(damage, f, fw[0], fh[0]);
+            }
+          }
+          lastFills = java.util.List.copyOf(fills);
+        }
+        ui.addDamage(damage);
+        damagedPixels += damage.area();
+        if (presenter != null) {
+          org.lwjgl.opengl.GL30C.glBindFramebuffer(org.lwjgl.opengl.GL30C.GL_FRAMEBUFFER, 0);
+        } else {
+          canvas.bind();
+        }
+        long uiNanos = 0;
+        java.util.List<int[]> rects = damage.rects();
+        for (int[] r : rects) {
+          renderer.drawRegion(r);
+          fill(fills, fw[0], fh[0], r);
+          long u0 = System.nanoTime();
+          ui.draw(r);
+          uiNanos += System.nanoTime() - u0;
+        }
+        if (check != null && !swapping) {
+          int kept = presenter != null ? 0 : canvas.framebuffer();
+          check.beginReference(kept, fw[0], fh[0]);
+          renderer.render(snap, camera, fw[0], fh[0]);
+          int[] all = {0, 0, fw[0], fh[0]};
+          fill(fills, fw[0], fh[0], all);
+          ui.draw(all);
+          check.endReference(kept, fw[0], fh[0]);
+        }
         long t4 = System.nanoTime();
-        glfwSwapBuffers(window);
+        long t3 = t4 - uiNanos;
+        if (swapping) {
+          glfwSwapBuffers(window);
+          swapFramesLeft--;
+          glfwGetFramebufferSize(window, fw, fh);
+          if (fw[0] != backW || fh[0] != backH) {
+            swapFramesLeft = SWAP_FRAMES_AFTER_RESIZE;
+          }
+        } else if (presenter != null) {
+          if (showAll) {
+            showAll = false;
+            rects = java.util.List.of(new int[] {0, 0, fw[0], fh[0]});
+          }
+          for (int[] r : rects) {
+            presenter.show(r);
+          }
+        } else {
+          canvas.copyTo(0, new int[] {0, 0, fw[0], fh[0]}, false);
+          glfwSwapBuffers(window);
+        }
         long t5 = System.nanoTime();
         phaseNanos[0] += t1 - t0;
         phaseNanos[1] += t2 - t1;
@@ -459,21 +628,33 @@ public final class SimulatorWindow implements AutoCloseable {
     return phaseNanos.clone();
   }
 
-  /** Clears each fill's rectangle to its colour (a clear is nearly free where a blended quad is not). */
-  private static void fill(java.util.List<Fill> fills, int fbW, int fbH) {
+  /** Damages a fill's rectangle (display pixels) in GL pixels. */
+  private static void addFill(DamageRegion damage, Fill f, int fbW, int fbH) {
+    int[] p = fillPixels(f, fbW, fbH);
+    damage.add(p[0], p[1], p[2], p[3]);
+  }
+
+  /** A fill's rectangle in GL pixels {x0, y0, x1, y1} (y up). */
+  private static int[] fillPixels(Fill f, int fbW, int fbH) {
+    float sx = fbW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
+    float sy = fbH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
+    int x0 = Math.round(f.x() * sx), x1 = Math.round((f.x() + f.w()) * sx);
+    int y0 = Math.round(f.y() * sy), y1 = Math.round((f.y() + f.h()) * sy);
+    return new int[] {x0, fbH - y1, x1, fbH - y0};
+  }
+
+  /** Clears each fill's rectangle, within {@code clip}, to its colour (a clear is nearly free where a blended quad is not). */
+  private static void fill(java.util.List<Fill> fills, int fbW, int fbH, int[] clip) {
     if (fills.isEmpty()) {
       return;
     }
-    float sx = fbW / Math.max(1f, ImGui.getIO().getDisplaySizeX());
-    float sy = fbH / Math.max(1f, ImGui.getIO().getDisplaySizeY());
     org.lwjgl.opengl.GL11C.glEnable(org.lwjgl.opengl.GL11C.GL_SCISSOR_TEST);
     for (Fill f : fills) {
-      int x0 = Math.round(f.x() * sx), x1 = Math.round((f.x() + f.w()) * sx);
-      int y0 = Math.round(f.y() * sy), y1 = Math.round((f.y() + f.h()) * sy);
-      if (x1 <= x0 || y1 <= y0) {
+      int[] r = DamageRegion.intersect(fillPixels(f, fbW, fbH), clip);
+      if (r == null) {
         continue;
       }
-      org.lwjgl.opengl.GL11C.glScissor(x0, fbH - y1, x1 - x0, y1 - y0);
+      org.lwjgl.opengl.GL11C.glScissor(r[0], r[1], r[2] - r[0], r[3] - r[1]);
       org.lwjgl.opengl.GL11C.glClearColor(f.r(), f.g(), f.b(), 1f);
       org.lwjgl.opengl.GL11C.glClear(org.lwjgl.opengl.GL11C.GL_COLOR_BUFFER_BIT);
     }
@@ -506,6 +687,14 @@ public final class SimulatorWindow implements AutoCloseable {
 
   public void setTitle(String title) {
     glfwSetWindowTitle(window, title);
+  }
+
+  /**
+   * Pixels drawn again so far, all frames together (each frame draws only its damaged rectangles;
+   * read by a benchmark's timer thread).
+   */
+  public long damagedPixels() {
+    return damagedPixels;
   }
 
   /** Frames drawn so far. */
@@ -615,7 +804,14 @@ public final class SimulatorWindow implements AutoCloseable {
 
   @Override
   public void close() {
-    imguiGl3.dispose();
+    ui.close();
+    if (check != null) {
+      check.report();
+      check.close();
+    }
+    if (canvas != null) {
+      canvas.close();
+    }
     imguiGlfw.dispose();
     ImGui.destroyContext();
     renderer.close();

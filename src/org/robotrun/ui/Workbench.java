@@ -40,6 +40,14 @@ public final class Workbench implements SimulatorWindow.Panels {
      * frame before) and ends the application.
      */
     default void drawPopups() {}
+
+    /**
+     * When the contributor's drawing changes by itself next (a note that expires), as
+     * {@link System#nanoTime}; {@link Long#MAX_VALUE} for never. The idle window wakes then.
+     */
+    default long nextRedrawNanos() {
+      return Long.MAX_VALUE;
+    }
   }
 
   /** Robot status for the left column. */
@@ -323,6 +331,19 @@ public final class Workbench implements SimulatorWindow.Panels {
     for (MenuContributor m : menus) {
       m.drawPopups();
     }
+  }
+
+  /**
+   * When something the panels draw changes by itself next ({@link System#nanoTime}): the 3D
+   * view's message strip or a menu's note expiring; {@link Long#MAX_VALUE} for nothing. The idle
+   * window sleeps until then.
+   */
+  public long nextRedrawNanos() {
+    long next = editorPanel == null ? Long.MAX_VALUE : editorPanel.stripExpiresNanos();
+    for (MenuContributor m : menus) {
+      next = Math.min(next, m.nextRedrawNanos());
+    }
+    return next;
   }
 
   @Override

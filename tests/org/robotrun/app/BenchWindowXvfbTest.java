@@ -17,7 +17,9 @@ import org.junit.jupiter.api.io.TempDir;
  * finds it; skipped outside CI when it is missing, never in CI), one second per phase: it prints the
  * three phase lines in order and then the close line, in the documented format; the jog and the run
  * (the arm moving) drew frames, and the idle window drew fewer than the jogging one (it sleeps). A
- * behaviour test: no figure is held to a speed.
+ * behaviour test: no figure is held to a speed. It runs with {@code ROBOTRUN_REDRAW=check}: every
+ * frame the window kept and drew again only where it changed (the still layer, the moving arm, the
+ * panels' changed glyphs) is compared with a full redraw, and no frame may differ.
  */
 class BenchWindowXvfbTest {
   private static final Pattern PHASE = Pattern.compile(
@@ -33,7 +35,9 @@ class BenchWindowXvfbTest {
         "bench", "window", "--seconds", "1", "--scenario", Path.of("scenarios/pick-and-place.json").toAbsolutePath().toString()));
     Path out = tmp.resolve("out.txt");
     Path err = tmp.resolve("err.txt");
-    Process p = new ProcessBuilder(cmd).redirectOutput(out.toFile()).redirectError(err.toFile()).start();
+    ProcessBuilder pb = new ProcessBuilder(cmd).redirectOutput(out.toFile()).redirectError(err.toFile());
+    pb.environment().put("ROBOTRUN_REDRAW", "check");
+    Process p = pb.start();
     if (!p.waitFor(180, TimeUnit.SECONDS)) {
       p.destroyForcibly();
       throw new AssertionError("bench window did not finish in 180 s: " + Files.readString(err));
@@ -58,5 +62,9 @@ class BenchWindowXvfbTest {
     assertThat(frames[2]).as("frames while running a program").isPositive();
     assertThat(frames[0]).as("an idle window sleeps: fewer frames than while jogging").isLessThan(frames[1]);
     assertThat(lines.get(3)).matches("close_ms=\\d+");
+    Matcher check = Pattern.compile("redraw check: (\\d+) frames, at most (\\d+) pixels differed").matcher(Files.readString(err));
+    assertThat(check.find()).as(log).isTrue();
+    assertThat(Long.parseLong(check.group(1))).as("frames checked").isGreaterThanOrEqualTo(frames[0] + frames[1] + frames[2]);
+    assertThat(Long.parseLong(check.group(2))).as("pixels of a kept frame that differ from a full redraw: " + log).isZero();
   }
 }

@@ -124,7 +124,8 @@ class CellRunTest {
     for (JsonNode robot : r.get("robots")) {
       assertThat(robot.get("status").asText()).isEqualTo("alarm");
       assertThat(robot.get("alarm").get("code").asText()).isEqualTo("SRVO-050");
-      assertThat(robot.get("alarm").get("message").asText()).contains("robot1/").contains("robot2/");
+      assertThat(robot.get("alarm").get("message").asText()).containsPattern("robot1 J\\d ").containsPattern("robot2 J\\d ")
+          .doesNotContain("/");
     }
   }
 

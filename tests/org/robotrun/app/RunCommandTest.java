@@ -106,6 +106,10 @@ class RunCommandTest {
     // The gripper's finger tips are the TCP: a finger meets the table first.
     assertThat(java.util.List.of(hit.get("a").asText(), hit.get("b").asText()))
         .containsExactlyInAnyOrder("robot1/tool/finger1", "table");
+    // the student's names beside the ids, and in the alarm text
+    assertThat(java.util.List.of(hit.get("aName").asText(), hit.get("bName").asText()))
+        .containsExactlyInAnyOrder("robot1 gripper finger1", "table");
+    assertThat(r.get("alarm").get("message").asText()).contains("robot1 gripper finger1").doesNotContain("/");
     // The tip stopped at the table top (z = -100 in the cell), not inside it: at most one tick deeper.
     assertThat(r.get("robots").get(0).get("tcp_world").get("z").asDouble()).isBetween(-100.5, -99.0);
   }

@@ -84,7 +84,7 @@ class TaskReaderTest {
             + "points, requires, robot, runs, type)",
         "t.task.json:8: checks[3].requires[0]: unknown feature \"goto\" (expected one of: offsetPR, toolOffsetPR, "
             + "prTarget, for, call, jmpBackward, wait, if, select, joint, linear, circular, cnt, fine, run, voffset)",
-        "t.task.json:9: checks[4].values.R[1]: expected a number, got a boolean",
+        "t.task.json:9: checks[4].values.R[1]: expected a finite number, got a boolean",
         "t.task.json:9: checks[4].values.Q[2]: expected a name like R[1], F[2], DO[3], RO[1], GO[1]",
         "t.task.json:10: checks[5].frame: expected UT[n] or UF[n] with n 1..10, got \"UT[11]\"");
   }
@@ -98,7 +98,7 @@ class TaskReaderTest {
   @Test
   void aWrongFormatAndABrokenScenarioAreTheTasksErrors() throws Exception {
     assertThat(read("{\"format\":2,\"scenario\":\"nope.json\",\"checks\":[]}").lines().toList()).containsExactly(
-        "t.task.json:1: format: expected 1 (the task format this RobotRun reads), got 2",
+        "t.task.json:1: format: unsupported format 2: this RobotRun reads format 1",
         "t.task.json:1: scenario: scenario file not found: " + dir.resolve("nope.json") + " (paths are relative to the task file)",
         "t.task.json:1: checks: expected at least one check");
   }

@@ -56,6 +56,23 @@ class LsCorpusTest {
     }
   }
 
+  /**
+   * The generalisation probes (NAME ending in PRB: FANUC's statement set written as a controller
+   * lists it, application instructions included) hold no false error: nothing a controller could
+   * have written is a syntax or range error, and what RobotRun does not run is {@code unsupported}.
+   */
+  @Test
+  void generalisationProbesHoldNoSyntaxOrRangeError() throws IOException {
+    List<Path> probes = files().stream().filter(f -> f.getFileName().toString().endsWith("PRB.LS")).toList();
+    assertThat(probes).hasSizeGreaterThanOrEqualTo(13);
+    for (Path f : probes) {
+      LsReadResult r = LsReader.read(f);
+      assertThat(r.diagnostics()).as("%s", f)
+          .noneMatch(d -> d.kind() == Diagnostic.Kind.SYNTAX || d.kind() == Diagnostic.Kind.RANGE)
+          .noneMatch(d -> d.message().startsWith("mended"));
+    }
+  }
+
   @Test
   void everyCorpusFileMatchesItsGoldenModel() throws IOException {
     for (Path f : files()) {

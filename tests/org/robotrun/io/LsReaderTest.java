@@ -465,7 +465,7 @@ class LsReaderTest {
     LsReadResult r = LsReader.parse("a.ls", "/PROG  A\n/ATTR\nOWNER\t= MNEDITOR\nCOMMENT\t= \"kept\";\nJUNK;\n"
         + "TCD:  STACK_SIZE\t= 0,\n      TASK_PRIORITY\t= 40;\n/MN\n   1:  END ;\n/POS\n/END\n");
     assertThat(messages(r)).containsExactly(
-        "a.ls:3: /ATTR entry does not end with ';': expected 'KEY = value;'",
+        "a.ls:3: warning: mended: no ';' at the end of the /ATTR entry: read as if it were there",
         "a.ls:5: expected 'KEY = value;' in /ATTR, found 'JUNK;'");
     assertThat(r.program().comment()).isEqualTo("kept");
     assertThat(r.program().attributes()).containsEntry("TCD", "STACK_SIZE = 0, TASK_PRIORITY = 40")

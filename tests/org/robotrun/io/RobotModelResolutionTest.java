@@ -80,6 +80,16 @@ class RobotModelResolutionTest {
   }
 
   @Test
+  void anInfiniteNumberInARobotFilesArrayIsRefused() throws Exception {
+    // it used to load: the flange 1e999 mm away (infinity in every pose)
+    Path f = ownRobotFile();
+    Files.writeString(f, Files.readString(f).replace("\"flange\": {\"xyz\": [160, 0, 0]", "\"flange\": {\"xyz\": [1e999, 0, 0]"));
+    assertThatThrownBy(() -> RobotDefinitions.resolve("robots/my-crx.json", dir))
+        .isInstanceOf(FileFormatException.class)
+        .hasMessage(f + ": flange.xyz[0]: expected a finite number, got the number Infinity");
+  }
+
+  @Test
   void theMaximumTcpSpeedComesFromTheRobotFileAndIsRangeChecked() throws Exception {
     // the CRX's file gives 1000 mm/s; a file that does not say gets the controller's 2000
     assertThat(RobotDefinitions.load("crx10ia").maxLinearSpeedMmPerSec()).isEqualTo(1000);

@@ -62,4 +62,35 @@ class StateJsonTest {
         .contains("state.robots.B.userFrames.11: expected a user frame number 1..10 as the key, got \"11\"")
         .contains("state.robots.B.colour: unknown field (expected one of: ");
   }
+
+  @Test
+  void hostileValuesGiveTheRangeAndWhatWasFound(@TempDir Path tmp) throws Exception {
+    String base = Files.readString(Path.of("scenarios/empty-cell.json")).strip();
+    String withState = base.substring(0, base.lastIndexOf('}')) + """
+        ,
+          "state": {
+            "registers": {"1": 1e999, "2": [3]},
+            "stringRegisters": {"1": 5, "2": "%s"},
+            "comments": {"R[1]": ["x"]},
+            "outputs": {"DO[1]": 2, "GO[1]": 1e999},
+            "positionRegisters": {"1": {"joints": [0, 0, [0], 0, 0, 1e999]}, "2": {"y": 0, "z": 0, "w": 36001}}
+          }
+        }
+        """.formatted("s".repeat(255));
+    Path f = tmp.resolve("cell.json");
+    Files.writeString(f, withState);
+    String message = ((CellLoad.Failed) ScenarioReader.readCell(f)).message();
+    assertThat(message.lines().map(l -> l.replaceFirst("^.*?cell\\.json:\\d+: ", ""))).contains(
+        "state.registers.1: expected a finite number, got the number 1e999",
+        "state.registers.2: expected a finite number, got an array",
+        "state.stringRegisters.1: expected a string, got the number 5",
+        "state.stringRegisters.2: expected at most 254 characters, got 255",
+        "state.comments.R[1]: expected a string, got an array",
+        "state.outputs.DO[1]: expected a whole number 0..1, got the number 2",
+        "state.outputs.GO[1]: expected a whole number -2147483647..2147483647, got the number 1e999",
+        "state.positionRegisters.1.joints[2]: expected a number -36000..36000, got an array",
+        "state.positionRegisters.1.joints[5]: expected a number -36000..36000, got the number 1e999",
+        "state.positionRegisters.2.x: missing: expected a number -100000..100000",
+        "state.positionRegisters.2.w: expected a number -36000..36000, got the number 36001");
+  }
 }

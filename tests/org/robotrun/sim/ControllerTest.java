@@ -372,7 +372,7 @@ class ControllerTest {
     ControllerAlarm a = r.alarm().orElseThrow();
     assertThat(a.code()).isEqualTo(Simulation.COLLISION_ALARM);
     assertThat(a.line()).isEqualTo(6);
-    assertThat(a.message()).contains("robot1/tool").contains("floor");
+    assertThat(a.message()).isEqualTo("collision: robot1 tool touches floor");
     // The floor is 330 mm below WORLD: the tip stopped there (to one tick of travel).
     assertThat(c.tcpInWorld().z()).isBetween(-331.0, -329.0);
     assertThat(sim.collisionEvents()).hasSize(1);

@@ -123,7 +123,7 @@ class TwoRobotCellTest {
     for (HeadlessRun.RobotResult rr : r.robots()) {
       ControllerAlarm al = rr.alarm().orElseThrow();
       assertThat(al.code()).isEqualTo(Simulation.COLLISION_ALARM).isEqualTo("SRVO-050");
-      assertThat(al.message()).contains("robot1/").contains("robot2/");
+      assertThat(al.message()).containsPattern("robot1 J\\d ").containsPattern("robot2 J\\d ").doesNotContain("/");
     }
     assertThat(sim.collisionEvents()).isNotEmpty();
     // Both arms stopped: a few more ticks move neither.

@@ -53,4 +53,35 @@ class CellEditorStripTest {
     panel.select("table");
     assertThat(panel.stripMessage()).isEmpty();
   }
+
+  @Test
+  void theIdleWindowIsWokenWhenTheStripsMessageGoesAway() {
+    assertThat(panel.stripExpiresNanos()).isEqualTo(Long.MAX_VALUE);
+    panel.report(new Result.Done("table X = 583 mm"));
+    long at = panel.stripExpiresNanos();
+    assertThat(at).isGreaterThan(now.get());
+    now.set(at - 1_000_000L);
+    assertThat(panel.stripMessage()).isPresent();
+    now.set(at);
+    assertThat(panel.stripMessage()).isEmpty();
+    assertThat(panel.stripExpiresNanos()).isEqualTo(Long.MAX_VALUE);
+  }
+
+  @Test
+  void theIdleLoopSleepsUntilTheWakeItWasAskedForWithinItsBounds() {
+    long now0 = 5_000_000_000L;
+    assertThat(SimulatorWindow.idleSleepSec(now0, Long.MAX_VALUE)).isEqualTo(SimulatorWindow.IDLE_REDRAW_SEC);
+    assertThat(SimulatorWindow.idleSleepSec(now0, now0 + 2_500_000_000L)).isEqualTo(2.5);
+    assertThat(SimulatorWindow.idleSleepSec(now0, now0 - 1)).isEqualTo(0.001);
+    assertThat(SimulatorWindow.idleSleepSec(now0, now0 + 3_600_000_000_000L)).isEqualTo(SimulatorWindow.IDLE_REDRAW_SEC);
+  }
+
+  @Test
+  void quitSaveAndOpenWorkWhileATextFieldHasTheKeyboardAndItsEditingKeysStayTheFields() {
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_Q)).isTrue();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_S)).isTrue();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_O)).isTrue();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_Z)).isFalse();
+    assertThat(SimulatorWindow.shortcutWhileTyping(org.lwjgl.glfw.GLFW.GLFW_KEY_H)).isFalse();
+  }
 }
