@@ -74,6 +74,8 @@ public final class OffsetWristIk implements IkSolver {
   private static final double TOUCH = 1e-5;
   /** Touching-root candidates closer than this (rad) to a root or candidate are left out. */
   private static final double CANDIDATE_SPACING = 1e-4;
+  /** |J5| below this (rad) counts as the straight wrist, where F and N meet (solve by CONFIG). */
+  private static final double STRAIGHT_WRIST_RAD = 1e-6;
   /** cos(k·t), sin(k·t) for k = 0..DEGREE on the fit and scan grids. */
   private static final double[][] FIT_COS = new double[DEGREE + 1][FIT];
   private static final double[][] FIT_SIN = new double[DEGREE + 1][FIT];
@@ -232,7 +234,11 @@ public final class OffsetWristIk implements IkSolver {
     String limitWhy = null;
     for (int k = 0; k < n; k++) {
       System.arraycopy(sol, 6 * k, cand, 0, 6);
-      if (!configOf(cand).sameBranch(config)) {
+      Config c = configOf(cand);
+      // J5 at 0 (the wrist straight) is F and N at once: a position taught there may carry either
+      // flag, and the search's root may land a hair on the other side of 0.
+      boolean straight = Math.abs(ClosedFormIk.wrap(cand[4])) < STRAIGHT_WRIST_RAD;
+      if (!(c.sameBranch(config) || straight && c.up() == config.up() && c.top() == config.top())) {
         continue;
       }
       branch = true;

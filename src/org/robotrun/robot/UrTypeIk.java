@@ -58,8 +58,12 @@ public final class UrTypeIk implements IkSolver {
   private static final double LENGTH_TOL = 1e-6;
   /** Slack on the cosine arguments so that exactly stretched or singular poses still solve. */
   private static final double ACOS_SLACK = 1e-9;
-  /** |n × J6| below this leaves J6 free (the wrist singularity). */
-  private static final double WRIST_SINGULAR = 1e-9;
+  /**
+   * |n × J6| below this leaves J6 free (the wrist singularity). It is a square root of rounding
+   * (√(1 − ma²) with ma one ulp from 1 is 1.5e-8), so it must lie above √ε: at 1e-9 a pose with
+   * J5 = 0 took J6 from rounding noise and solveNearest jumped 0.78 rad away from the arm's joints.
+   */
+  private static final double WRIST_SINGULAR = 1e-7;
   private static final int VERIFY_SAMPLES = 32;
   /** Looser tolerances for a chain of the family only to within its file's rounding (rad, mm). */
   private static final double LOOSE_ANGLE_TOL = 1e-4;

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Set;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.lifecycle.AddLifecycleHook;
 import net.jqwik.api.constraints.DoubleRange;
 import org.junit.jupiter.api.Test;
 import org.robotrun.io.IkTargetsCsv;
@@ -15,6 +16,8 @@ import org.robotrun.math.Angles;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Xyzwpr;
 
+// Under mutation testing each property runs at most PitScale.PIT_TRIES tries (verify: all).
+@AddLifecycleHook(org.robotrun.PitScale.Tries.class)
 class ClosedFormIkTest {
   private final RobotModel robot = RobotDefinitions.defaultRobot();
   private final ClosedFormIk ik = new ClosedFormIk(robot);

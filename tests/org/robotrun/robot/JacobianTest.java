@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.lifecycle.AddLifecycleHook;
 import net.jqwik.api.constraints.DoubleRange;
 import org.junit.jupiter.api.Test;
 import org.robotrun.io.IkTargetsCsv;
@@ -12,6 +13,8 @@ import org.robotrun.math.Angles;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Xyzwpr;
 
+// Under mutation testing each property runs at most PitScale.PIT_TRIES tries (verify: all).
+@AddLifecycleHook(org.robotrun.PitScale.Tries.class)
 class JacobianTest {
   private final RobotModel robot = RobotDefinitions.defaultRobot();
   private final Transform tool = Xyzwpr.ofDegrees(12, -30, 150, 10, 20, 30).toTransform();

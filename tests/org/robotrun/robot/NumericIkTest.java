@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Optional;
 import net.jqwik.api.ForAll;
 import net.jqwik.api.Property;
+import net.jqwik.api.lifecycle.AddLifecycleHook;
 import net.jqwik.api.constraints.DoubleRange;
 import org.junit.jupiter.api.Test;
 import org.robotrun.io.IkTargetsCsv;
@@ -14,6 +15,8 @@ import org.robotrun.math.Angles;
 import org.robotrun.math.Transform;
 import org.robotrun.math.Xyzwpr;
 
+// Under mutation testing each property runs at most PitScale.PIT_TRIES tries (verify: all).
+@AddLifecycleHook(org.robotrun.PitScale.Tries.class)
 class NumericIkTest {
   private final RobotModel robot = RobotDefinitions.defaultRobot();
   private final NumericIk ik = new NumericIk(robot);

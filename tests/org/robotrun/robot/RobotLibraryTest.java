@@ -192,7 +192,7 @@ class RobotLibraryTest {
     }
     ClosedFormIk closed = new ClosedFormIk(model);
     ChainConfig chain = new ChainConfig(new KinematicChain(model));
-    for (double[] q : randomJoints(model, FACTS.get(id), 2000, 7 + id.hashCode())) {
+    for (double[] q : randomJoints(model, FACTS.get(id), org.robotrun.PitScale.samples(2000, 200), 7 + id.hashCode())) {
       assertThat(chain.configOf(q)).as(id).isEqualTo(closed.configOf(q));
     }
   }
@@ -202,7 +202,7 @@ class RobotLibraryTest {
   void ikRoundTripsTwoThousandTargetsInTheirConfig(String id) {
     RobotModel model = RobotDefinitions.load(id);
     IkSolver solver = IkSolver.forModel(model);
-    List<double[]> qs = randomJoints(model, FACTS.get(id), 2000, 1000 + id.hashCode());
+    List<double[]> qs = randomJoints(model, FACTS.get(id), org.robotrun.PitScale.samples(2000, 200), 1000 + id.hashCode());
     double[] home = new double[6];
     int missedNearest = 0;
     for (int k = 0; k < qs.size(); k++) {
