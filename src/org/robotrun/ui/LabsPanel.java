@@ -162,6 +162,9 @@ public final class LabsPanel implements Workbench.MenuContributor {
     }
   }
 
+  /** The window size the Lab steps window was last placed for (display pixels); 0 before. */
+  private final float[] stepsPlacedFor = new float[2];
+
   @Override
   public void drawPopups(WindowLayout layout) {
     if (!showSteps.get() || current.isEmpty()) {
@@ -174,8 +177,14 @@ public final class LabsPanel implements Workbench.MenuContributor {
     // steps point to its PLC and Vision sections, which the steps covered at 1366x768), and neither
     // the pendant nor the first-start card along the view's bottom is hidden.
     WindowLayout.Rect r = layout.labSteps(em, ImGui.getIO().getDisplaySizeY());
-    ImGui.setNextWindowSize(r.w(), r.h(), ImGuiCond.FirstUseEver);
-    ImGui.setNextWindowPos(r.x(), r.y(), ImGuiCond.FirstUseEver);
+    // placed again when the window is resized: where the student left it may now be over the pendant
+    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    boolean resized = stepsPlacedFor[0] != 0 && (stepsPlacedFor[0] != dw || stepsPlacedFor[1] != dh);
+    stepsPlacedFor[0] = dw;
+    stepsPlacedFor[1] = dh;
+    int cond = resized ? ImGuiCond.Always : ImGuiCond.FirstUseEver;
+    ImGui.setNextWindowSize(r.w(), r.h(), cond);
+    ImGui.setNextWindowPos(r.x(), r.y(), cond);
     // opaque: the left column's text showed through the steps
     ImGui.setNextWindowBgAlpha(1f);
     // the lab's title inside the window, wrapped (in the title bar it was cut at the window's edge)
