@@ -245,39 +245,18 @@ final class LsPositionParser extends TpTokenCursor {
           if (key.matches("E\\d+")) {
             // An extended axis (a rail, a turntable): read and kept in the file, not moved.
             warnOnce(t, "not supported: extended axes (E1...) (kept, not moved)");
-            expect(Kind.EQ, "'=' after " + key);
-            if (peek().is(Kind.MINUS)) {
-              next();
-            }
-            expect(Kind.NUMBER, "a number after " + key + " =");
-            if (peek().isWord("mm") || peek().isWord("deg")) {
-              next();
-            }
+            skipKeptValue(key);
             continue;
           }
           if (key.matches("J([7-9]|[1-9][0-9])")) {
             // J7 = ... deg: a seven-axis arm (or a group listing more joints): kept, not moved
-            expect(Kind.EQ, "'=' after " + key);
-            if (peek().is(Kind.MINUS)) {
-              next();
-            }
-            expect(Kind.NUMBER, "a number after " + key + " =");
-            if (peek().isWord("mm") || peek().isWord("deg")) {
-              next();
-            }
+            skipKeptValue(key);
             kept = "a position of an arm with more than six joints (J7 ...)";
             continue;
           }
           if (indexOf(RAIL, key) >= 0) {
             // RX = ... mm, RW = ... deg: a robot with an integrated rail lists its pose this way
-            expect(Kind.EQ, "'=' after " + key);
-            if (peek().is(Kind.MINUS)) {
-              next();
-            }
-            expect(Kind.NUMBER, "a number after " + key + " =");
-            if (peek().isWord("mm") || peek().isWord("deg")) {
-              next();
-            }
+            skipKeptValue(key);
             kept = "a position of a robot on an integrated rail (RX .. RR)";
             continue;
           }
@@ -441,6 +420,18 @@ final class LsPositionParser extends TpTokenCursor {
       return Integer.parseInt(t.text());
     } catch (NumberFormatException e) {
       throw error(t, "number " + TpToken.clip(t.text()) + " is too large");
+    }
+  }
+
+  /** Reads {@code = [-]NUMBER [mm|deg]} after a field RobotRun keeps in the file but does not move. */
+  private void skipKeptValue(String key) {
+    expect(Kind.EQ, "'=' after " + key);
+    if (peek().is(Kind.MINUS)) {
+      next();
+    }
+    expect(Kind.NUMBER, "a number after " + key + " =");
+    if (peek().isWord("mm") || peek().isWord("deg")) {
+      next();
     }
   }
 }

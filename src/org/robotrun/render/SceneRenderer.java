@@ -382,14 +382,7 @@ public final class SceneRenderer implements AutoCloseable {
       if ((c.a() < 1f) != translucent) {
         continue;
       }
-      GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
-      item.X_WS().toColumnMajor(model);
-      glUniformMatrix4fv(uModel, false, model);
-      if (smooth) {
-        edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
-      }
-      glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
-      mesh.draw();
+      drawItem(item, uModel, uColor, smooth);
     }
   }
 

@@ -73,7 +73,7 @@ public final class HelpWindows {
     }
     // before the first draw: about nine lines of text
     float h = welcomeHeight > 0 ? welcomeHeight : ImGui.getFontSize() * 11;
-    return Math.min(h, view.h() * 0.45f);
+    return Math.min(h, view.h() * WindowLayout.WELCOME_MAX_FRACTION);
   }
 
   /** Whether the card's height is known (or it is closed): the camera frames the scene once it is. */
@@ -91,13 +91,13 @@ public final class HelpWindows {
       return;
     }
     ImGui.setNextWindowPos(view.x(), view.bottom(), ImGuiCond.Always, 0f, 1f);
-    ImGui.setNextWindowSizeConstraints(view.w(), 0, view.w(), view.h() * 0.45f);
+    ImGui.setNextWindowSizeConstraints(view.w(), 0, view.w(), view.h() * WindowLayout.WELCOME_MAX_FRACTION);
     ImGui.setNextWindowBgAlpha(0.96f);
     if (ImGui.begin("First steps##card", welcome, ImGuiWindowFlags.AlwaysAutoResize | ImGuiWindowFlags.NoCollapse
         | ImGuiWindowFlags.NoMove | ImGuiWindowFlags.NoSavedSettings)) {
       boolean hasTask = !task.isBlank();
       // side by side when the view is wide enough to read them so, else one under the other
-      int columns = view.w() < ImGui.getFontSize() * 30 ? 1 : hasTask && view.w() > ImGui.getFontSize() * 44 ? 4 : 3;
+      int columns = WindowLayout.welcomeColumns(view.w(), ImGui.getFontSize(), hasTask);
       if (ImGui.beginTable("steps", columns, ImGuiTableFlags.SizingStretchSame | ImGuiTableFlags.BordersInnerV)) {
         ImGui.tableNextRow();
         if (columns == 4) {

@@ -162,27 +162,29 @@ public final class LabsPanel implements Workbench.MenuContributor {
     }
   }
 
+  /** The window size the Lab steps window was last placed for (display pixels); 0 before. */
+  private final float[] stepsPlacedFor = new float[2];
+
   @Override
-  public void drawPopups() {
+  public void drawPopups(WindowLayout layout) {
     if (!showSteps.get() || current.isEmpty()) {
       return;
     }
     Course.Lab lab = current.get();
     int at = Math.max(0, Math.min(steps.size() - 1, Integer.parseInt(state.getProperty(lab.id() + ".step", "0"))));
     float em = ImGui.getFontSize();
-    // Over the lower left column, so that neither the robot nor the pendant is hidden (fits 1366x768).
-    float h = ImGui.getIO().getDisplaySizeY();
-    // the left column shows from this width on (WindowLayout; the font is 13 px at scale 1)
-    boolean sidebar = ImGui.getIO().getDisplaySizeX() >= WindowLayout.SIDEBAR_MIN_WINDOW * em / 13f;
-    if (sidebar) {
-      ImGui.setNextWindowSize(em * 21, h * 0.5f, ImGuiCond.FirstUseEver);
-      ImGui.setNextWindowPos(0, h * 0.47f, ImGuiCond.FirstUseEver);
-    } else {
-      // no left column (a narrow window): over the top of the 3D view, clear of the first-steps
-      // card along its bottom (at 1024x640 the steps covered the card and its Got it button)
-      ImGui.setNextWindowSize(em * 21, h * 0.45f, ImGuiCond.FirstUseEver);
-      ImGui.setNextWindowPos(0, ImGui.getFrameHeight(), ImGuiCond.FirstUseEver);
-    }
+    // Over the 3D view's top right corner: the left column stays readable (lab 9's and 12's first
+    // steps point to its PLC and Vision sections, which the steps covered at 1366x768), and neither
+    // the pendant nor the first-start card along the view's bottom is hidden.
+    WindowLayout.Rect r = layout.labSteps(em, ImGui.getIO().getDisplaySizeY());
+    // placed again when the window is resized: where the student left it may now be over the pendant
+    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    boolean resized = stepsPlacedFor[0] != 0 && (stepsPlacedFor[0] != dw || stepsPlacedFor[1] != dh);
+    stepsPlacedFor[0] = dw;
+    stepsPlacedFor[1] = dh;
+    int cond = resized ? ImGuiCond.Always : ImGuiCond.FirstUseEver;
+    ImGui.setNextWindowSize(r.w(), r.h(), cond);
+    ImGui.setNextWindowPos(r.x(), r.y(), cond);
     // opaque: the left column's text showed through the steps
     ImGui.setNextWindowBgAlpha(1f);
     // the lab's title inside the window, wrapped (in the title bar it was cut at the window's edge)

@@ -15,6 +15,11 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
   public static final float MIN_VIEW_FRACTION = 0.35f;
   /** The left column's default width (unscaled pixels). */
   public static final float SIDEBAR_WIDTH = 270;
+  /**
+   * The first-start card may take up to this part of the 3D view's height (it grows to its text; at
+   * 1024x640 with a lab's task 0.45 was too little and the card's last lines sat under its scroll bar).
+   */
+  public static final float WELCOME_MAX_FRACTION = 0.6f;
   /** Below this window width (unscaled) the left column starts hidden. */
   public static final float SIDEBAR_MIN_WINDOW = 1200;
 
@@ -81,5 +86,31 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
         new Rect(0, top, sw, sw > 0 ? h : 0),
         new Rect(sw, top, vw, h),
         new Rect(width - pw, top, pw, pw > 0 ? h : 0));
+  }
+
+  /**
+   * Where the "Lab steps" window first opens (display pixels): the top right corner of the 3D view,
+   * so that it covers neither the left column (lab steps point to its Vision, PLC and robot sections)
+   * nor the pendant, nor the first-start card docked along the view's bottom. This layout's view is
+   * the one above that card; {@code windowHeight} is the whole window's height.
+   *
+   * @param em the font size (display pixels)
+   */
+  public Rect labSteps(float em, float windowHeight) {
+    float w = Math.min(em * 21, view.w * 0.5f);
+    float h = Math.min(windowHeight * 0.45f, view.h);
+    return new Rect(view.right() - w, view.y, w, h);
+  }
+
+  /**
+   * How many columns the first-start card lays its steps out in for a view {@code viewWidth} wide:
+   * each column at least {@code em * 12} wide, so that no step wraps into a tall narrow strip (at
+   * 1024x640 four narrow columns made the card taller than its room and cut its last line).
+   */
+  public static int welcomeColumns(float viewWidth, float em, boolean hasTask) {
+    if (hasTask && viewWidth >= em * 56) {
+      return 4;
+    }
+    return viewWidth >= em * 36 ? 3 : 1;
   }
 }

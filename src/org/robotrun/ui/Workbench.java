@@ -41,6 +41,11 @@ public final class Workbench implements SimulatorWindow.Panels {
      */
     default void drawPopups() {}
 
+    /** Draws the popups, knowing where the window's parts are this frame (the view is above the first-start card). */
+    default void drawPopups(WindowLayout layout) {
+      drawPopups();
+    }
+
     /**
      * When the contributor's drawing changes by itself next (a note that expires), as
      * {@link System#nanoTime}; {@link Long#MAX_VALUE} for never. The idle window wakes then.
@@ -329,7 +334,7 @@ public final class Workbench implements SimulatorWindow.Panels {
       onLayoutChange.run();
     }
     for (MenuContributor m : menus) {
-      m.drawPopups();
+      m.drawPopups(layout);
     }
   }
 

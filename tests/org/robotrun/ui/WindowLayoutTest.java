@@ -111,4 +111,40 @@ class WindowLayoutTest {
     assertThat(s.sidebarVisible).isNull();
     assertThat(s.welcomeSeen).as("reset layout keeps the first-start card dismissed").isTrue();
   }
+
+  @Test
+  void labStepsOpenOverTheViewsTopRightCornerClearOfTheLeftColumnAndThePendant() {
+    float em = 13;
+    for (float[] size : new float[][] {{1024, 640}, {1366, 768}, {1920, 1080}}) {
+      WindowLayout l = at(size[0], size[1], new LayoutState());
+      WindowLayout.Rect steps = l.labSteps(em, size[1]);
+      assertThat(steps.overlaps(l.sidebar())).as("left column at %s", size[0]).isFalse();
+      assertThat(steps.overlaps(l.pendant())).as("pendant at %s", size[0]).isFalse();
+      assertThat(steps.overlaps(l.menuBar())).isFalse();
+      assertThat(steps.right()).isEqualTo(l.view().right());
+      assertThat(steps.w()).isGreaterThanOrEqualTo(Math.min(em * 21, l.view().w() / 2));
+      assertThat(steps.h()).isGreaterThan(em * 10);
+    }
+    // with the first-start card docked along the view's bottom (the layout's view is above it)
+    WindowLayout l = at(1024, 640, new LayoutState());
+    WindowLayout.Rect v = l.view();
+    WindowLayout above = new WindowLayout(l.menuBar(), l.sidebar(), new WindowLayout.Rect(v.x(), v.y(), v.w(), v.h() - 300),
+        l.pendant());
+    assertThat(above.labSteps(em, 640).bottom()).isLessThanOrEqualTo(above.view().bottom());
+  }
+
+  @Test
+  void theFirstStartCardKeepsItsColumnsWideEnoughToRead() {
+    float em = 13;
+    assertThat(WindowLayout.welcomeColumns(528, em, true)).isEqualTo(3);  // 1024x640: not four narrow strips
+    assertThat(WindowLayout.welcomeColumns(800, em, true)).isEqualTo(4);
+    assertThat(WindowLayout.welcomeColumns(800, em, false)).isEqualTo(3);
+    assertThat(WindowLayout.welcomeColumns(400, em, true)).isEqualTo(1);
+    for (float w = 100; w < 2000; w += 7) {
+      for (boolean task : new boolean[] {true, false}) {
+        int n = WindowLayout.welcomeColumns(w, em, task);
+        assertThat(n == 1 || w / n >= em * 12).as("%s px in %s columns", w, n).isTrue();
+      }
+    }
+  }
 }
