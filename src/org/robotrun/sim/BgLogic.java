@@ -94,7 +94,7 @@ public final class BgLogic {
       case Instruction.IfThen f -> null;
       case Instruction.Else e -> null;
       case Instruction.EndIf e -> null;
-      case Instruction.Select s -> null;
+      case Instruction.Select s -> s.branch() instanceof Instruction.Call ? "CALL" : null;
       case Instruction.SelectCase s -> s.branch() instanceof Instruction.Call ? "CALL" : null;
       case Instruction.SelectElse s -> s.branch() instanceof Instruction.Call ? "CALL" : null;
       case Instruction.Comment c -> null;
