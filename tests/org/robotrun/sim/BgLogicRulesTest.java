@@ -240,4 +240,58 @@ class BgLogicRulesTest {
     assertThat(c.registers().number(2)).isEqualTo(1);
     assertThat(c.registers().number(3)).isZero();
   }
+
+  @Test
+  void aBgPulseAndTimerCountTheControllersTimeOnceInEverySlotKind() {
+    // a slot added on the setup screen, and one from the scenario's production setup
+    for (boolean fromScenario : new boolean[] {false, true}) {
+      Simulation sim = ControllerTest.cell();
+      Controller c = sim.controllers().get(0);
+      c.saveProgram(program("BGP", false, "IF R[1]<>0,JMP LBL[1]", "DO[3]=PULSE,0.2sec", "TIMER[4]=START", "R[1]=1",
+          "LBL[1]", "R[2]=TIMER[4]"));
+      if (fromScenario) {
+        c.bgLogic().configure(List.of("BGP"));
+      } else {
+        assertThat(c.bgLogic().add("BGP")).isEmpty();
+      }
+      steps(sim, 2);   // the first scan: pulse and timer start
+      steps(sim, 45);  // 0.18 s later
+      assertThat(c.registers().bit(IoKind.DO, 3)).as("scenario=%s", fromScenario).isTrue();
+      steps(sim, 8);   // 0.212 s
+      assertThat(c.registers().bit(IoKind.DO, 3)).as("scenario=%s", fromScenario).isFalse();
+      assertThat(c.registers().number(2)).as("scenario=%s", fromScenario).isBetween(0.19, 0.23);
+    }
+  }
+
+  @Test
+  void theScenariosSlotsReplaceTheOldOnes() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("A", false, "R[1]=R[1]+1"));
+    c.saveProgram(program("B", false, "R[2]=R[2]+1"));
+    c.bgLogic().configure(List.of("A"));
+    c.bgLogic().configure(List.of("B"));
+    assertThat(c.bgLogic().slots()).extracting(BgLogic.Slot::program).containsExactly("B");
+    steps(sim, 4);
+    assertThat(c.registers().number(1)).isZero();
+    assertThat(c.registers().number(2)).isEqualTo(2);
+  }
+
+  @Test
+  void aSlotStoppedByAnAlarmRunsAgainAfterResetAndStart() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("DIV", false, "R[3]=R[3]+1", "R[1]=1/R[2]"));
+    c.bgLogic().add("DIV");
+    steps(sim, 2);
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("SIMU-001");
+    assertThat(c.bgLogic().slots().get(0).running()).isFalse();
+    c.reset();
+    c.registers().setInteger(2, 4);
+    assertThat(c.bgLogic().setRunning("DIV", true)).isEmpty();
+    steps(sim, 4);
+    assertThat(c.activeAlarms()).isEmpty();
+    assertThat(c.registers().number(3)).isEqualTo(3);
+    assertThat(c.registers().number(1)).isEqualTo(0.25);
+  }
 }

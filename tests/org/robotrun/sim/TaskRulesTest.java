@@ -6,6 +6,7 @@ import static org.robotrun.sim.TaskProgs.steps;
 
 import org.junit.jupiter.api.Test;
 import org.robotrun.control.RobotControl;
+import org.robotrun.program.IoKind;
 
 /**
  * The multitasking rules of docs/production.md ("Multitasking: RUN") one by one: RUN of a missing
@@ -219,5 +220,63 @@ class TaskRulesTest {
     steps(sim, 30);
     assertThat(c.registers().number(5)).isGreaterThan(n);
     assertThat(c.tasks().list().get(0).status().state()).isEqualTo(ExecutionStatus.State.RUNNING);
+  }
+
+  @Test
+  void aTasksPulseAndTimerCountTheControllersTimeOnce() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = controller(sim);
+    // the task keeps running while its pulse is on; its timer runs for 0.2 s
+    c.saveProgram(program("PULSER", false, "TIMER[3]=START", "DO[5]=PULSE,0.2sec", "WAIT 0.20(sec)",
+        "R[3]=TIMER[3]", "WAIT 1.00(sec)"));
+    c.saveProgram(program("MAIN", false, "RUN PULSER", "WAIT 2.00(sec)"));
+    c.run("MAIN", 1, true);
+    steps(sim, 46); // 0.184 s after the task started
+    assertThat(c.registers().bit(IoKind.DO, 5)).isTrue();
+    steps(sim, 8);  // 0.216 s
+    assertThat(c.registers().bit(IoKind.DO, 5)).isFalse();
+    steps(sim, 5);
+    // TIMER reads seconds (docs/tp-execution.md): about 0.2, not twice that
+    assertThat(c.registers().number(3)).isBetween(0.19, 0.22);
+  }
+
+  @Test
+  void aTaskRunsVisionWithTheCellsVisionSystem() {
+    Simulation sim = VisionPickTest.cell(3);
+    Controller c = controller(sim);
+    c.saveProgram(program("LOOK", false, "VISION RUN_FIND 'FIND_BLOCKS'", "VISION GET_NFOUND 'FIND_BLOCKS' R[2]"));
+    c.saveProgram(program("CELLMAIN", false, "RUN LOOK", "WAIT 0.10(sec)"));
+    c.run("CELLMAIN", 1, true);
+    steps(sim, 40);
+    assertThat(c.activeAlarms()).isEmpty();
+    VisionSystem vs = sim.vision().orElseThrow();
+    assertThat(c.registers().number(2)).isEqualTo(vs.lastFound("FIND_BLOCKS").size()).isPositive();
+  }
+
+  @Test
+  void abortingATaskThatMovesTheArmStopsTheArm() {
+    for (boolean all : new boolean[] {false, true}) {
+      Simulation sim = ControllerTest.cell();
+      Controller c = controller(sim);
+      c.saveProgram(ControllerTest.jointProgram("MOVER", "J P[2] 10% FINE", new double[] {0, 0, 0, 0, -90, 0},
+          new double[] {60, 0, 0, 0, -90, 0}));
+      c.saveProgram(program("CELL", false, "RUN MOVER", "LBL[1]", "WAIT 0.04(sec)", "JMP LBL[1]"));
+      c.run("CELL", 1, true);
+      steps(sim, 100);
+      double j1 = c.currentJoints().element(1);
+      assertThat(j1).as("moving").isBetween(1.0, 59.0);
+      if (all) {
+        c.abort(); // FCTN ABORT (ALL)
+      } else {
+        assertThat(c.tasks().abort("MOVER")).isTrue();
+      }
+      steps(sim, 500);
+      // the arm decelerated to a stop: far short of P[2] (10 % of J1's 450 deg/s is 45 deg/s)
+      double stopped = c.currentJoints().element(1);
+      assertThat(stopped).as("all=%s", all).isLessThan(j1 + 10).isLessThan(59.0);
+      steps(sim, 100);
+      assertThat(c.currentJoints().element(1)).isEqualTo(stopped);
+      assertThat(c.busy()).isEqualTo(!all); // CELL goes on after one task's ABORT
+    }
   }
 }

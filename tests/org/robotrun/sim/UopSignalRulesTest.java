@@ -490,4 +490,118 @@ class UopSignalRulesTest {
     assertThat(u.plcDone()).isTrue();
     assertThat(u.simSec()).isCloseTo(sim.timeSec(), org.assertj.core.data.Offset.offset(1e-9));
   }
+
+  @Test
+  void restartPlcTurnsEveryInputOff() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = configured(sim, other());
+    Uop u = c.uop();
+    for (int i = 1; i <= 18; i++) {
+      u.setUi(i, true);
+    }
+    u.restartPlc();
+    for (int i = 1; i <= 18; i++) {
+      assertThat(u.ui(i)).as(Uop.UI_NAMES.get(i)).isFalse();
+    }
+    assertThat(u.plcStep()).isZero();
+  }
+
+  @Test
+  void imstpOffRaisesSrvo037EvenWithAnotherAlarmActive() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = configured(sim, other());
+    c.raiseAlarm("SRVO-050", "Collision Detect alarm");
+    c.uop().setUi(Uop.IMSTP, false);
+    steps(sim, 2);
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("SRVO-050", "SRVO-037");
+  }
+
+  @Test
+  void theControllerDrivesTheUoOutputsAStrayWriteLastsOneTick() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = configured(sim, other());
+    for (int o : new int[] {Uop.BATALM, 20, Uop.FAULT, Uop.HELD, Uop.SNACK}) {
+      c.registers().setBit(IoKind.UO, o, true);
+    }
+    sim.step();
+    for (int o : new int[] {Uop.BATALM, 20, Uop.FAULT, Uop.HELD, Uop.SNACK}) {
+      assertThat(c.uop().uo(o)).as(Uop.UO_NAMES.get(o)).isFalse();
+    }
+  }
+
+  @Test
+  void rsrRequestsQueueInOrderWhileTheControllerIsBusyAndPnstrobeIsNoRsr() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("RSR0001", false, "R[1]=R[9]+1", "R[9]=R[1]", "WAIT 0.10(sec)"));
+    c.saveProgram(program("RSR0002", false, "R[2]=R[9]+1", "R[9]=R[2]"));
+    c.saveProgram(program("RSR0003", false, "R[3]=R[9]+1", "R[9]=R[3]"));
+    c.saveProgram(program("BUSYTASK", false, "WAIT 0.10(sec)"));
+    c.saveProgram(program("STARTER", false, "RUN BUSYTASK"));
+    configured(sim, setup(true, Selection.RSR, 0, 0, List.of(1, 2, 3, 0, 0, 0, 0, 0), 0.2, true, Optional.empty(),
+        List.of()));
+    Uop u = c.uop();
+    // in RSR mode UI[17] (PNSTROBE) is no ninth RSR
+    pulse(sim, u, Uop.PNSTROBE);
+    assertThat(c.warnings()).isEmpty();
+    assertThat(c.activeAlarms()).isEmpty();
+    // main program idle but a RUN task still runs: the controller is busy, RSR1 waits
+    c.run("STARTER", 1, true);
+    steps(sim, 3);
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.IDLE);
+    assertThat(c.busy()).isTrue();
+    u.setUi(Uop.SEL1, true);
+    steps(sim, 2);
+    assertThat(c.registers().number(1)).isZero();
+    // RSR3 then RSR2 come while it waits: they run after RSR1, in the order they came
+    u.setUi(Uop.SEL1 + 2, true);
+    steps(sim, 2);
+    u.setUi(Uop.SEL1 + 1, true);
+    steps(sim, 150);
+    assertThat(c.registers().number(1)).isEqualTo(1);
+    assertThat(c.registers().number(3)).isEqualTo(2);
+    assertThat(c.registers().number(2)).isEqualTo(3);
+    assertThat(c.warnings()).isEmpty();
+  }
+
+  @Test
+  void aPlcStartOfAMotionProgramWhileATaskHoldsGroupOneIsRefusedWithProg040() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("HOLDER", true, "WAIT 1.00(sec)"));
+    c.saveProgram(program("MOVER", true, "R[1]=1"));
+    configured(sim, other());
+    assertThat(c.tasks().run("HOLDER")).isEmpty();
+    c.interpreter().select("MOVER");
+    pulse(sim, c.uop(), Uop.PROD_START);
+    assertThat(c.warnings()).extracting(ControllerAlarm::code).containsExactly("INTP-105");
+    assertThat(c.warnings().get(0).message()).contains("PROG-040").contains("HOLDER holds group 1");
+    assertThat(c.uop().lastRefusal()).contains("PROG-040");
+    assertThat(c.registers().number(1)).isZero();
+    assertThat(c.tasks().isRunning("HOLDER")).isTrue();
+  }
+
+  @Test
+  void stepsWithoutConditionOrDelayPassInOneTickADelayedOneEndsItsTick() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    List<ProductionSetup.PlcStep> plc = List.of(
+        new ProductionSetup.PlcStep(Optional.empty(), 0, Map.of(new Signal("DI", 1), true), "a"),
+        new ProductionSetup.PlcStep(Optional.empty(), 0, Map.of(new Signal("DI", 2), true), "b"),
+        new ProductionSetup.PlcStep(Optional.empty(), 0, Map.of(new Signal("DI", 3), true), "c"),
+        new ProductionSetup.PlcStep(Optional.empty(), 0.004, Map.of(new Signal("DI", 4), true), "d"),
+        new ProductionSetup.PlcStep(Optional.empty(), 0, Map.of(new Signal("DI", 5), true), "e"));
+    c.configureProduction(new ProductionSetup.Robot(false, true, Selection.OTHER, 0, 0, NO_RSR, new TreeMap<>(), 0.2,
+        false, false, Optional.empty(), List.of(), List.of(), 0.008, plc, true));
+    sim.step();
+    assertThat(c.uop().plcStep()).isEqualTo(3);
+    assertThat(c.registers().bit(IoKind.DI, 3)).isTrue();
+    assertThat(c.registers().bit(IoKind.DI, 4)).isFalse();
+    sim.step(); // d's 4 ms have passed: d fires and ends the tick
+    assertThat(c.uop().plcStep()).isEqualTo(4);
+    assertThat(c.registers().bit(IoKind.DI, 5)).isFalse();
+    sim.step();
+    assertThat(c.uop().plcDone()).isTrue();
+    assertThat(c.registers().bit(IoKind.DI, 5)).isTrue();
+  }
 }
