@@ -92,6 +92,11 @@ class BgLogicRulesTest {
       assertThat(c.bgLogic().add(name)).as(r.line()).isEqualTo(why);
     }
     assertThat(c.bgLogic().slots()).isEmpty();
+    // a CALL in a later SELECT case and in its ELSE too
+    c.saveProgram(program("SELCASE", false, "SELECT R[1]=1,JMP LBL[1]", "       =2,CALL OTHER", "LBL[1]"));
+    assertThat(c.bgLogic().add("SELCASE")).get().asString().startsWith("SELCASE line 2: CALL");
+    c.saveProgram(program("SELELSE", false, "SELECT R[1]=1,JMP LBL[1]", "       ELSE,CALL OTHER", "LBL[1]"));
+    assertThat(c.bgLogic().add("SELELSE")).get().asString().startsWith("SELELSE line 2: CALL");
     // a motion group alone is refused, even with nothing but allowed lines
     c.saveProgram(program("GRP", true, "R[1]=1"));
     assertThat(c.bgLogic().add("GRP")).get().asString().startsWith("GRP has motion group 1")
