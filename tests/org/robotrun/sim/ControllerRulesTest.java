@@ -117,9 +117,9 @@ class ControllerRulesTest {
     c.setMode(RobotControl.Mode.T1);
     double j1 = c.currentJoints().element(1);
     double j6 = c.currentJoints().element(6);
-    assertThat(message(c.jogIncrement(1, +1, false))).contains("0.001 deg");
+    assertThat(message(c.jogIncrement(1, +1, false))).startsWith("FINE step:").contains("0.001 deg");
     assertThat(c.currentJoints().element(1)).isCloseTo(j1 + 0.001, within(1e-9));
-    assertThat(message(c.jogIncrement(6, -1, true))).contains("0.0001 deg");
+    assertThat(message(c.jogIncrement(6, -1, true))).startsWith("VFINE step:").contains("0.0001 deg");
     assertThat(c.currentJoints().element(6)).isCloseTo(j6 - 0.0001, within(1e-9));
     assertThat(c.currentJoints().element(1)).isCloseTo(j1 + 0.001, within(1e-9));
     // WORLD: X, Y, Z in mm
@@ -343,6 +343,7 @@ class ControllerRulesTest {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
     assertThat(c.lastCycleTimeSec()).isNaN();
+    steps(sim, 50); // the run starts 0.2 s after the controller did
     c.saveProgram(program("MAIN", false, "WAIT 0.20(sec)"));
     c.run("MAIN", 1, true);
     steps(sim, 100);
@@ -357,5 +358,80 @@ class ControllerRulesTest {
     assertThat(c.lastCycleTimeSec()).isEqualTo(t);
     // ABORT ends the program (docs/alarms.md): after RESET it is ended, the cursor on the alarm's line
     assertThat(c.status()).isEqualTo(new ExecutionStatus("BAD", 2, ExecutionStatus.State.IDLE));
+  }
+
+  @Test
+  void anEditToAPausedProgramIsWhatRunsOnResume() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("MAIN", false, "R[1]=1", "PAUSE", "R[2]=2"));
+    c.run("MAIN", 1, true);
+    steps(sim, 3);
+    assertThat(c.status().state()).isEqualTo(ExecutionStatus.State.PAUSED);
+    c.saveProgram(program("MAIN", false, "R[1]=1", "PAUSE", "R[2]=20"));
+    c.run("MAIN", c.status().line(), true);
+    steps(sim, 3);
+    assertThat(c.registers().number(2)).isEqualTo(20);
+  }
+
+  @Test
+  void theProductionSetupBringsItsBgLogicSlotsAndScanPeriod() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("BG", false, "R[1]=R[1]+1"));
+    org.robotrun.world.ProductionSetup.Robot d = org.robotrun.world.ProductionSetup.Robot.defaults();
+    c.configureProduction(new org.robotrun.world.ProductionSetup.Robot(true, true, d.selection(), 0, 0, d.rsrNumbers(),
+        d.styles(), 0.2, false, false, java.util.Optional.empty(), java.util.List.of(), java.util.List.of("BG"), 0.020,
+        java.util.List.of(), false));
+    assertThat(c.bgLogic().scanSec()).isEqualTo(0.020);
+    steps(sim, 50); // 0.2 s: 10 scans of 20 ms
+    assertThat(c.registers().number(1)).isEqualTo(10);
+  }
+
+  @Test
+  void anAlarmFromOutsideHoldsTheTasksTooAndOnlyAServoAlarmTurnsTheServoOff() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.saveProgram(program("TICKER", false, "LBL[1]", "R[5]=R[5]+1", "WAIT 0.04(sec)", "JMP LBL[1]"));
+    c.saveProgram(program("MAIN", false, "RUN TICKER", "WAIT 5.00(sec)"));
+    c.run("MAIN", 1, true);
+    steps(sim, 20);
+    c.raiseAlarm("SRVO-050", "Collision Detect alarm");
+    assertThat(c.tasks().list().get(0).status().state()).isEqualTo(ExecutionStatus.State.PAUSED);
+    double n = c.registers().number(5);
+    steps(sim, 30);
+    assertThat(c.registers().number(5)).isEqualTo(n);
+    assertThat(c.servoOff()).isTrue();
+    c.reset();
+    // an ABORT-severity program alarm is no servo alarm: SYSRDY stays on
+    c.abort();
+    c.saveProgram(program("BAD", false, "R[1]=1/R[2]"));
+    c.run("BAD", 1, true);
+    steps(sim, 2);
+    assertThat(c.activeAlarms()).extracting(ControllerAlarm::code).containsExactly("SIMU-001");
+    assertThat(c.servoOff()).isFalse();
+    assertThat(c.uop().uo(Uop.SYSRDY)).isTrue();
+  }
+
+  @Test
+  void userAndJogFrameJogsGoAlongTheirFramesAxes() {
+    Simulation sim = ControllerTest.cell();
+    Controller c = sim.controllers().get(0);
+    c.setMode(RobotControl.Mode.T1);
+    // UFRAME[1] (active) turned 90 deg about z: its X is WORLD +Y; JOGFRAME[1] turned -90 deg: its X is WORLD -Y
+    c.frames().setTransform(org.robotrun.program.Instruction.FrameKind.USER, 1,
+        org.robotrun.math.Transform.rotation(0, 0, 1, Math.PI / 2));
+    c.frames().setJogFrame(1, Position.Cartesian.of(Xyzwpr.ofDegrees(0, 0, 0, 0, 0, -90), Config.DEFAULT));
+    c.setCoordSystem(RobotControl.CoordSystem.USER);
+    Xyzwpr a = c.tcpInWorld();
+    c.jogIncrement(1, +1, false);
+    Xyzwpr b = c.tcpInWorld();
+    assertThat(b.y() - a.y()).isCloseTo(0.023, within(1e-6));
+    assertThat(b.x() - a.x()).isCloseTo(0, within(1e-6));
+    c.setCoordSystem(RobotControl.CoordSystem.JGFRM);
+    c.jogIncrement(1, +1, false);
+    Xyzwpr d = c.tcpInWorld();
+    assertThat(d.y() - b.y()).isCloseTo(-0.023, within(1e-6));
+    assertThat(d.x() - b.x()).isCloseTo(0, within(1e-6));
   }
 }

@@ -51,6 +51,7 @@ class ProductionRunTest {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
     c.saveProgram(program("PNS0001", false, "R[1]=R[1]+1", "WAIT 0.30(sec)", "R[2]=1"));
+    TaskProgs.steps(sim, 100); // the cell has run 0.4 s before the PLC takes over
     c.configureProduction(setup(List.of(), Optional.empty()));
     HeadlessRun.CellResult r = ProductionRun.run(sim, c, 10, s -> {}, () -> false, "");
     assertThat(r.status()).isEqualTo(HeadlessRun.Status.FINISHED);
@@ -74,6 +75,7 @@ class ProductionRunTest {
   void aJobThePlcCannotStartEndsAtTheTimeLimitNamingTheStepAndTheRefusal() {
     Simulation sim = ControllerTest.cell();
     Controller c = sim.controllers().get(0);
+    TaskProgs.steps(sim, 100);
     c.configureProduction(setup(List.of(), Optional.empty())); // no PNS0001 loaded
     HeadlessRun.CellResult r = ProductionRun.run(sim, c, 1.0, s -> {}, () -> false, "");
     assertThat(r.status()).isEqualTo(HeadlessRun.Status.ALARM);
@@ -83,6 +85,7 @@ class ProductionRunTest {
     assertThat(a.message()).contains("1.0 s").contains("PLC step 6 of 7")
         .contains("the PLC's start was refused: INTP-105").contains("PNS0001 does not exist");
     assertThat(r.cycleTimeSec()).isCloseTo(1.0, within(0.005));
+    assertThat(r.simTimeSec()).isCloseTo(1.4, within(0.005));
     assertThat(r.robots().get(0).status()).isEqualTo(HeadlessRun.RobotStatus.ALARM);
     assertThat(r.robots().get(0).program()).isEqualTo("PNS0001"); // what the PLC selected
   }

@@ -77,6 +77,8 @@ class ScenarioCellTest {
     regs.put(1, 5.0);
     regs.put(2, 2.5);
     regs.put(3, -7.0);
+    regs.put(4, 2147483647.0);  // the largest whole number an integer register holds
+    regs.put(5, 2147483648.0);
     TreeMap<Integer, Transform> tools = new TreeMap<>();
     tools.put(1, Transform.translation(0, 0, 150));
     tools.put(2, Transform.translation(10, 0, 0));
@@ -94,6 +96,10 @@ class ScenarioCellTest {
     assertThat(c.registers().number(2)).isEqualTo(2.5);
     assertThat(c.registers().isInteger(2)).isFalse();
     assertThat(c.registers().isInteger(3)).isTrue();
+    assertThat(c.registers().isInteger(4)).isTrue();
+    assertThat(c.registers().number(4)).isEqualTo(2147483647.0);
+    assertThat(c.registers().isInteger(5)).isFalse();
+    assertThat(c.registers().number(5)).isEqualTo(2147483648.0);
     assertThat(sim.collisionAlarms()).isFalse();
   }
 
