@@ -326,7 +326,7 @@ public final class CellEditorPanel {
   }
 
   private void drawObjectList() {
-    Txt.disabled("Objects (click one here or in the 3D view)");
+    Txt.disabledWrapped("Objects (click one here or in the 3D view)", false);
     float h = Math.min(6, Math.max(1, editor.world().objects().size())) * ImGui.getTextLineHeightWithSpacing() + 6;
     if (ImGui.beginListBox("##objects", -1, h)) {
       for (WorldObject o : editor.world().objects()) {
