@@ -416,7 +416,8 @@ public final class CellEditorPanel {
       Txt.disabled(shortLabel(f));
       ImGui.sameLine();
       double v = editor.number(object, f);
-      String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "");
+      String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "")
+          .replaceFirst("^-0$", "0");  // a rounding -0.0001 (or -0) reads 0
       ImGui.setNextItemWidth(w);
       textInput(f.label(), object + "/" + f.name(), shown, t -> editor.setNumber(object, f, t), f.label() + " (" + f.unit() + ")");
     }

@@ -2,6 +2,7 @@ package org.robotrun.ui;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.List;
 import java.util.Properties;
 import org.junit.jupiter.api.Test;
 
@@ -131,6 +132,66 @@ class WindowLayoutTest {
     WindowLayout above = new WindowLayout(l.menuBar(), l.sidebar(), new WindowLayout.Rect(v.x(), v.y(), v.w(), v.h() - 300),
         l.pendant());
     assertThat(above.labSteps(em, 640).bottom()).isLessThanOrEqualTo(above.view().bottom());
+  }
+
+  @Test
+  void labStepsTakeTheCornerThatCoversLeastOfTheRobotsAndParts() {
+    float em = 13;
+    WindowLayout l = at(1366, 768, new LayoutState());
+    WindowLayout.Rect v = l.view();
+    WindowLayout.Rect topRight = l.labSteps(em, 768);
+    // nothing in the way: the top right corner
+    assertThat(l.labSteps(em, 768, List.of())).isEqualTo(topRight);
+    // lab 11 at 1366x768: robot2 stands in the view's upper right; the steps go to the top left
+    WindowLayout.Rect robot2 = new WindowLayout.Rect(v.right() - 200, v.y() + 60, 150, 300);
+    WindowLayout.Rect robot1 = new WindowLayout.Rect(v.x() + v.w() / 2 - 80, v.y() + 150, 160, 300);
+    WindowLayout.Rect steps = l.labSteps(em, 768, List.of(robot1, robot2));
+    assertThat(steps.overlapArea(robot2)).isZero();
+    // the least covered of the four corners (an oracle over the corners, computed here)
+    float w = topRight.w(), h = topRight.h();
+    double least = Double.POSITIVE_INFINITY;
+    for (float[] xy : new float[][] {{v.x(), v.y()}, {v.right() - w, v.y()}, {v.x(), v.bottom() - h}, {v.right() - w, v.bottom() - h}}) {
+      WindowLayout.Rect c = new WindowLayout.Rect(xy[0], xy[1], w, h);
+      least = Math.min(least, c.overlapArea(robot1) + c.overlapArea(robot2));
+    }
+    assertThat(steps.overlapArea(robot1) + steps.overlapArea(robot2)).isEqualTo(least);
+    assertThat(topRight.overlapArea(robot2)).as("the old corner hid robot2").isPositive();
+    // every corner holds some work: the one covering least, still clear of the column and the pendant
+    List<WindowLayout.Rect> everywhere = List.of(
+        new WindowLayout.Rect(v.x(), v.y(), 60, 60), new WindowLayout.Rect(v.right() - 100, v.y(), 100, 100),
+        new WindowLayout.Rect(v.x(), v.bottom() - 40, 40, 40), new WindowLayout.Rect(v.right() - 80, v.bottom() - 80, 80, 80));
+    WindowLayout.Rect fewest = l.labSteps(em, 768, everywhere);
+    assertThat(fewest.x()).isEqualTo(v.x());
+    assertThat(fewest.bottom()).isEqualTo(v.bottom());
+    for (WindowLayout.Rect c : List.of(fewest, steps)) {
+      assertThat(c.overlaps(l.sidebar())).isFalse();
+      assertThat(c.overlaps(l.pendant())).isFalse();
+      assertThat(c.overlaps(l.menuBar())).isFalse();
+    }
+  }
+
+  @Test
+  void aResizeKeepsTheStepsWhereTheStudentPutThemOnlyInsideTheWindowAndOffThePendant() {
+    WindowLayout big = at(1920, 1080, new LayoutState());
+    // the student dragged the steps over the left column, low down
+    WindowLayout.Rect placed = new WindowLayout.Rect(10, 500, 270, 300);
+    assertThat(big.keepInside(placed, 1080)).isEqualTo(placed);
+    // a smaller window: it stays where it was as far as the window lets it
+    WindowLayout small = at(1024, 640, new LayoutState());
+    WindowLayout.Rect kept = small.keepInside(placed, 640);
+    assertThat(kept.x()).isEqualTo(10);
+    assertThat(kept.bottom()).isEqualTo(640);
+    assertThat(kept.w()).isEqualTo(270);
+    // put over where the pendant now is: moved left of it, whole
+    WindowLayout.Rect overPendant = new WindowLayout.Rect(small.pendant().x() + 20, 100, 270, 300);
+    WindowLayout.Rect moved = small.keepInside(overPendant, 640);
+    assertThat(moved.overlaps(small.pendant())).isFalse();
+    assertThat(moved.right()).isEqualTo(small.pendant().x());
+    assertThat(moved.y()).isEqualTo(100);
+    // above the menu bar, or taller than the window: inside, under the menu bar
+    WindowLayout.Rect tall = small.keepInside(new WindowLayout.Rect(0, -50, 200, 2000), 640);
+    assertThat(tall.y()).isEqualTo(small.menuBar().bottom());
+    assertThat(tall.bottom()).isLessThanOrEqualTo(640);
   }
 
   @Test
