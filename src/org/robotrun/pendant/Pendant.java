@@ -827,7 +827,7 @@ public final class Pendant {
     List<String> body;
     String prompt = message;
     List<String> keys;
-    String title = screen.title(this);
+    String title = screen.title(this, Lcd.WIDTH);
     switch (modal) {
       case null -> {
         body = screen.body(this);
@@ -836,7 +836,9 @@ public final class Pendant {
       case Modal.Choice c -> {
         body = choiceBody(c);
         keys = List.of("", "", "", "", "");
-        title = title + " - " + c.title;
+        // the list's name stays whole at the row's end; the screen's title gives way
+        String tail = " - " + c.title;
+        title = screen.title(this, Lcd.WIDTH - tail.length()) + tail;
         if (prompt.isEmpty()) {
           prompt = "Select item (UP/DOWN, ENTER or number; PREV cancels)";
         }
