@@ -111,8 +111,9 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
   }
 
   /**
-   * Where the "Lab steps" window opens: the corner of the 3D view that covers least of
-   * {@code work} (the screen rectangles of the robots and the parts, display pixels), top right
+   * Where the "Lab steps" window opens: the corner of the 3D view that hides least of
+   * {@code work} (the screen rectangles of the robots and the parts, display pixels; each counts by
+   * the part of it hidden, so a whole small part weighs as much as a whole arm), top right
    * first, then top left, bottom right, bottom left. In a corner it never covers the left column,
    * the pendant or the first-start card; among the corners it keeps off the arm the student
    * watches (in lab 11 the top right one hid robot2 at 1366x768).
@@ -126,7 +127,8 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
         new Rect(view.right() - w, view.bottom() - h, w, h), new Rect(view.x, view.bottom() - h, w, h))) {
       double cover = 0;
       for (Rect r : work) {
-        cover += c.overlapArea(r);
+        // each thing counts by how much of it is hidden: a whole small part weighs as much as a whole arm
+        cover += c.overlapArea(r) / Math.max(1.0, (double) r.w * r.h);
       }
       if (cover < bestCover) {
         best = c;

@@ -148,18 +148,22 @@ class WindowLayoutTest {
     WindowLayout.Rect steps = l.labSteps(em, 768, List.of(robot1, robot2));
     assertThat(steps.overlapArea(robot2)).isZero();
     // the least covered of the four corners (an oracle over the corners, computed here)
-    float w = topRight.w(), h = topRight.h();
+    float cw = topRight.w(), h = topRight.h();
     double least = Double.POSITIVE_INFINITY;
-    for (float[] xy : new float[][] {{v.x(), v.y()}, {v.right() - w, v.y()}, {v.x(), v.bottom() - h}, {v.right() - w, v.bottom() - h}}) {
-      WindowLayout.Rect c = new WindowLayout.Rect(xy[0], xy[1], w, h);
-      least = Math.min(least, c.overlapArea(robot1) + c.overlapArea(robot2));
+    for (float[] xy : new float[][] {{v.x(), v.y()}, {v.right() - cw, v.y()}, {v.x(), v.bottom() - h}, {v.right() - cw, v.bottom() - h}}) {
+      WindowLayout.Rect c = new WindowLayout.Rect(xy[0], xy[1], cw, h);
+      least = Math.min(least, hidden(c, robot1) + hidden(c, robot2));
     }
-    assertThat(steps.overlapArea(robot1) + steps.overlapArea(robot2)).isEqualTo(least);
+    assertThat(hidden(steps, robot1) + hidden(steps, robot2)).isEqualTo(least);
     assertThat(topRight.overlapArea(robot2)).as("the old corner hid robot2").isPositive();
-    // every corner holds some work: the one covering least, still clear of the column and the pendant
+    // every corner hides some work: the one hiding least of it (here 25 % of one thing), still
+    // clear of the column and the pendant
+    float w = topRight.w();
     List<WindowLayout.Rect> everywhere = List.of(
-        new WindowLayout.Rect(v.x(), v.y(), 60, 60), new WindowLayout.Rect(v.right() - 100, v.y(), 100, 100),
-        new WindowLayout.Rect(v.x(), v.bottom() - 40, 40, 40), new WindowLayout.Rect(v.right() - 80, v.bottom() - 80, 80, 80));
+        new WindowLayout.Rect(v.x() + w - 50, v.y() + 10, 100, 100),          // top left: half hidden
+        new WindowLayout.Rect(v.right() - 150, v.y() + 10, 100, 100),         // top right: all
+        new WindowLayout.Rect(v.x() + w - 25, v.bottom() - 110, 100, 100),    // bottom left: a quarter
+        new WindowLayout.Rect(v.right() - w - 25, v.bottom() - 110, 100, 100)); // bottom right: three quarters
     WindowLayout.Rect fewest = l.labSteps(em, 768, everywhere);
     assertThat(fewest.x()).isEqualTo(v.x());
     assertThat(fewest.bottom()).isEqualTo(v.bottom());
@@ -168,6 +172,24 @@ class WindowLayoutTest {
       assertThat(c.overlaps(l.pendant())).isFalse();
       assertThat(c.overlaps(l.menuBar())).isFalse();
     }
+  }
+
+  /** The part of {@code thing} that {@code window} hides (0..1). */
+  private static double hidden(WindowLayout.Rect window, WindowLayout.Rect thing) {
+    return window.overlapArea(thing) / (thing.w() * thing.h());
+  }
+
+  @Test
+  void aWholeSmallPartHiddenWeighsAsMuchAsAWholeArm() {
+    float em = 13;
+    WindowLayout l = at(1024, 640, new LayoutState());
+    WindowLayout.Rect v = l.view();
+    WindowLayout.Rect topRight = l.labSteps(em, 640);
+    // a small part wholly under the top right corner, an arm's tip a little under the top left one
+    WindowLayout.Rect part = new WindowLayout.Rect(topRight.x() + 20, topRight.y() + 20, 20, 20);
+    WindowLayout.Rect arm = new WindowLayout.Rect(v.x() + 150, v.y() + 200, 300, 300);
+    WindowLayout.Rect steps = l.labSteps(em, 640, List.of(part, arm));
+    assertThat(steps.overlapArea(part)).as("the part stays in sight, though its area is small").isZero();
   }
 
   @Test
