@@ -119,7 +119,9 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
    * watches (in lab 11 the top right one hid robot2 at 1366x768).
    */
   public Rect labSteps(float em, float windowHeight, List<Rect> work) {
-    float w = Math.min(em * 21, view.w * 0.5f);
+    // half the view, but in a small window at least 15 em where the view has them (at the window's
+    // minimum size half the view was 134 px: the buttons were cut and the steps a word a line)
+    float w = Math.min(em * 21, Math.max(view.w * 0.5f, Math.min(view.w, em * 15)));
     float h = Math.min(windowHeight * 0.45f, view.h);
     Rect best = null;
     double bestCover = Double.POSITIVE_INFINITY;

@@ -193,6 +193,17 @@ class WindowLayoutTest {
   }
 
   @Test
+  void atTheWindowsMinimumSizeTheStepsStayWideEnoughToRead() {
+    float em = 13;
+    int[] min = WindowLayout.minimumSize(MENU, PENDANT, PendantPanel.minimumHeight(SCALE1));
+    WindowLayout l = at(min[0], min[1], new LayoutState());
+    WindowLayout.Rect steps = l.labSteps(em, min[1]);
+    assertThat(steps.w()).isGreaterThanOrEqualTo(Math.min(em * 15, l.view().w()));
+    assertThat(steps.x()).isGreaterThanOrEqualTo(l.view().x());
+    assertThat(steps.overlaps(l.pendant())).isFalse();
+  }
+
+  @Test
   void aResizeKeepsTheStepsWhereTheStudentPutThemOnlyInsideTheWindowAndOffThePendant() {
     WindowLayout big = at(1920, 1080, new LayoutState());
     // the student dragged the steps over the left column, low down
