@@ -228,8 +228,13 @@ public final class LabsPanel implements Workbench.MenuContributor {
       if (ImGui.button("Next >") && at < steps.size() - 1) {
         setStep(lab, at + 1);
       }
-      ImGui.sameLine();
-      Txt.disabled("step " + (at + 1) + " of " + steps.size());
+      String stepOf = "step " + (at + 1) + " of " + steps.size();
+      // beside the buttons when it fits (in a narrow window it wrapped a letter or two a line)
+      float room = ImGui.getWindowPosX() + ImGui.getWindowContentRegionMaxX() - ImGui.getItemRectMaxX();
+      if (room > ImGui.calcTextSize(stepOf).x + ImGui.getStyle().getItemSpacingX() * 2) {
+        ImGui.sameLine();
+      }
+      Txt.disabled(stepOf);
       ImGui.separator();
       for (int i = 0; i < steps.size(); i++) {
         if (i == at) {
