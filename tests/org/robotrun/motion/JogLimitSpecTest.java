@@ -116,4 +116,96 @@ class JogLimitSpecTest {
     // Past it, the jog is back near its full speed.
     assertThat(fastestLate).isGreaterThan(0.9 * Jogger.LINEAR_JOG_MM_PER_SEC);
   }
+
+  /**
+   * JOINT J2+ with the coupled J3 (docs/motion.md): the J2 keys turn kinematic J3 along, so when
+   * kinematic J3 reaches its limit first, the jog stops there with a message naming J3, J3
+   * exactly at its limit (braked, not cut), J2 moved by as much as J3.
+   */
+  @Test
+  void aJointJogOfJ2StopsWhenTheCoupledJ3ReachesItsLimit() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    org.robotrun.robot.KinematicChain chain = new PoseTracker(MotionRunnerTest.MODEL).chain();
+    JogState keys = new JogState();
+    double[] q = deg(0, 0, 0, 0, -60, 0);
+    q[2] = chain.upper(2) - Math.toRadians(5);
+    double[] q0 = q.clone();
+    keys.keyDown(1, +1, JogState.Press.HELD);
+    JogResult r = new JogResult.Moving();
+    int ticks = 0;
+    while (r instanceof JogResult.Moving && ticks++ < 10_000) {
+      r = jog.tick(q, keys, JogFrame.JOINT, 1, TOOL, Transform.IDENTITY, DT);
+      assertThat(q[2]).isLessThanOrEqualTo(chain.upper(2));
+    }
+    assertThat(((JogResult.Stopped) r).message()).isEqualTo("J2 stopped: J3 (coupled to J2) at its upper limit");
+    assertThat(q[2]).isEqualTo(chain.upper(2));
+    assertThat(q[1] - q0[1]).isCloseTo(q[2] - q0[2], org.assertj.core.data.Offset.offset(1e-12));
+    assertThat(keys.anyOn()).isFalse();
+  }
+
+  /**
+   * JOINT J1− at 50 % override to the lower limit: it comes to rest exactly at −170° with a
+   * message naming the lower limit, and its speed never changes much faster than the 0.1 s ramp
+   * of a 50 % jog allows (the braking included).
+   */
+  @Test
+  void aJointJogAtHalfOverrideBrakesIntoTheLowerLimitWithoutAJump() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = deg(-160, 0, 0, 0, -60, 0);
+    double lower = MotionRunnerTest.MODEL.joint(0).lowerRad();
+    double full = Jogger.JOINT_JOG_FRACTION * Math.toRadians(450) * 0.5;
+    double maxDv = full / Jogger.RAMP_SEC * DT;
+    keys.keyDown(0, -1, JogState.Press.HELD);
+    JogResult r = new JogResult.Moving();
+    double prevV = 0;
+    int ticks = 0;
+    while (r instanceof JogResult.Moving && ticks++ < 10_000) {
+      double before = q[0];
+      r = jog.tick(q, keys, JogFrame.JOINT, 0.5, TOOL, Transform.IDENTITY, DT);
+      double v = (q[0] - before) / DT;
+      assertThat(v).isGreaterThanOrEqualTo(-full * (1 + 1e-9));
+      // The ramp's step; the last tick, which lands exactly on the limit, up to twice that.
+      assertThat(Math.abs(v - prevV)).isLessThanOrEqualTo(maxDv * 2 + 1e-9);
+      prevV = v;
+    }
+    assertThat(((JogResult.Stopped) r).message()).isEqualTo("J1 at its lower limit (-170.0 deg)");
+    assertThat(q[0]).isEqualTo(lower);
+  }
+
+  /** WORLD W (axis 3, about X through the TCP) turns at 60 °/s, not at the 250 of a translation. */
+  @Test
+  void aWorldRotationAboutXTurnsAtSixtyDegreesPerSecond() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = deg(0, 10, -10, 0, -70, 0);
+    Transform before = MotionRunnerTest.tcp(q);
+    keys.keyDown(3, +1, JogState.Press.HELD);
+    for (int i = 0; i < 100; i++) { // 0.4 s held: 0.05 s of ramp-up lost
+      jog.tick(q, keys, JogFrame.WORLD, 1, TOOL, Transform.IDENTITY, DT);
+    }
+    Transform after = MotionRunnerTest.tcp(q);
+    double turned = Math.toDegrees(after.rotationAngleTo(before));
+    assertThat(turned).isCloseTo(60 * (0.4 - Jogger.RAMP_SEC / 2), org.assertj.core.data.Offset.offset(0.3));
+    assertThat(after.translationVector().distanceTo(before.translationVector())).isLessThan(0.01);
+  }
+
+  /** After a stop (HOLD, deadman) a key pressed again ramps up from rest: no jump at full speed. */
+  @Test
+  void aJogStoppedAndStartedAgainRampsUpFromRest() {
+    Jogger jog = new Jogger(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS);
+    JogState keys = new JogState();
+    double[] q = deg(0, 0, 0, 0, -60, 0);
+    keys.keyDown(0, +1, JogState.Press.HELD);
+    for (int i = 0; i < 50; i++) {
+      jog.tick(q, keys, JogFrame.JOINT, 1, TOOL, Transform.IDENTITY, DT);
+    }
+    jog.stop(keys);
+    keys.keyDown(0, +1, JogState.Press.HELD);
+    double before = q[0];
+    jog.tick(q, keys, JogFrame.JOINT, 1, TOOL, Transform.IDENTITY, DT);
+    double full = Jogger.JOINT_JOG_FRACTION * Math.toRadians(450);
+    // One tick of the ramp: at most full / 0.1 s × 4 ms of speed, for 4 ms.
+    assertThat((q[0] - before) / DT).isLessThanOrEqualTo(full / Jogger.RAMP_SEC * DT * (1 + 1e-9));
+  }
 }

@@ -204,6 +204,39 @@ class MotionLimitSpecTest {
     assertThat(prev).isCloseTo(target[0], offset(1e-12));
   }
 
+  /**
+   * Joint targets outside the limits are refused before the arm moves (docs/motion.md); a target
+   * exactly on a limit is inside (a JOINT jog comes to rest exactly there, and that position must
+   * run). J1, the first joint, both ways.
+   */
+  @Test
+  void aJointTargetOnJ1sLimitRunsAndOneBeyondIsRefusedBeforeMoving() {
+    for (double limit : new double[] {MotionRunnerTest.MODEL.joint(0).upperRad(), MotionRunnerTest.MODEL.joint(0).lowerRad()}) {
+      double[] on = MotionRunnerTest.HOME.clone();
+      on[0] = limit;
+      MotionRunnerTest.Recorder rec = new MotionRunnerTest.Recorder();
+      MotionRunner r = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, MotionRunnerTest.HOME, rec);
+      r.enqueue(new MoveRequest.Joint(on, Speed.percent(100), Termination.fine(), 1, 1));
+      List<double[]> trace = MotionRunnerTest.run(r, 20_000);
+      assertThat(rec.events).containsExactly("start 1", "end 1");
+      assertThat(trace.get(trace.size() - 1)[0]).isEqualTo(limit);
+
+      double[] beyond = MotionRunnerTest.HOME.clone();
+      beyond[0] = limit + Math.signum(limit) * Math.toRadians(5);
+      MotionRunnerTest.Recorder rec2 = new MotionRunnerTest.Recorder();
+      MotionRunner r2 = new MotionRunner(MotionRunnerTest.MODEL, MotionRunnerTest.LIMITS, MotionRunnerTest.HOME, rec2);
+      r2.enqueue(new MoveRequest.Joint(beyond, Speed.percent(100), Termination.fine(), 1, 2));
+      List<double[]> trace2 = MotionRunnerTest.run(r2, 20_000);
+      assertThat(rec2.events).containsExactly("fail 2");
+      assertThat(rec2.fault.kind()).isEqualTo(MotionFault.Kind.JOINT_LIMIT);
+      assertThat(rec2.fault.message()).isEqualTo(String.format(Locale.ROOT,
+          "target J1 would reach %.1f deg, outside its limits -170.0..170.0 deg", Math.signum(limit) * 175));
+      for (double[] q : trace2) {
+        assertThat(q).isEqualTo(MotionRunnerTest.HOME);
+      }
+    }
+  }
+
   static double distanceToLine(Vec3 p, Vec3 a, Vec3 b) {
     Vec3 d = b.minus(a);
     double u = p.minus(a).dot(d) / d.dot(d);
