@@ -16,8 +16,12 @@ import java.util.stream.Stream;
  * all mutants, no-coverage counted as survived, as PIT's own "mutation score". {@code --survivors}
  * also lists every surviving and uncovered mutant by class, line and mutator. Exit 1 when a package
  * with a goal is under it (unless {@code --warn} or PIT_GOALS=warn), 2 when no report can be read.
+ * {@code --killers} lists, per report (per set), the test classes that were a mutant's killing test
+ * and how many mutants each killed: PIT runs a mutant's covering tests fastest first and stops at
+ * the first that fails, so a set's test class missing from this list (from a complete, cold run)
+ * can leave the set's targetTests without changing any mutant's status (docs/testing.md).
  * Run by the mutation profile after PIT:
- * {@code java .ci/PitSummary.java target/pit-reports [--warn] [--survivors]}.
+ * {@code java .ci/PitSummary.java target/pit-reports [--warn] [--survivors] [--killers]}.
  */
 public class PitSummary {
     static final Map<String, Integer> GOALS = Map.of(
@@ -28,8 +32,9 @@ public class PitSummary {
         List<String> rest = new ArrayList<>(List.of(args));
         boolean warnOnly = rest.remove("--warn") || "warn".equals(System.getenv("PIT_GOALS"));
         boolean survivors = rest.remove("--survivors");
+        boolean killers = rest.remove("--killers");
         if (rest.size() != 1) {
-            System.err.println("usage: java .ci/PitSummary.java target/pit-reports|mutations.xml [--warn] [--survivors]");
+            System.err.println("usage: java .ci/PitSummary.java target/pit-reports|mutations.xml [--warn] [--survivors] [--killers]");
             System.exit(2);
         }
         Path where = Path.of(rest.get(0));
@@ -48,11 +53,18 @@ public class PitSummary {
         Pattern mutation = Pattern.compile("<mutation\\b[^>]*\\bstatus='([A-Z_]+)'[^>]*>(.*?)</mutation>", Pattern.DOTALL);
         Map<String, int[]> byPackage = new TreeMap<>(); // total, detected, noCoverage
         Map<String, List<String>> left = new TreeMap<>();
+        Map<Path, Map<String, Integer>> killedBy = new TreeMap<>();
+        Pattern testClass = Pattern.compile("\\[class:([^\\]]+)\\]");
         for (Path xml : reports) {
             Matcher m = mutation.matcher(Files.readString(xml));
+            Map<String, Integer> counts = killedBy.computeIfAbsent(xml, k -> new TreeMap<>());
             while (m.find()) {
                 String status = m.group(1);
                 String body = m.group(2);
+                Matcher t = testClass.matcher(field(body, "killingTest"));
+                if (status.equals("KILLED") && t.find()) {
+                    counts.merge(t.group(1), 1, Integer::sum);
+                }
                 String cls = field(body, "mutatedClass");
                 int dot = cls.lastIndexOf('.');
                 String pkg = dot < 0 ? "" : cls.substring(0, dot);
@@ -88,6 +100,13 @@ public class PitSummary {
             System.out.printf("  %-28s %5d/%-5d %5.1f%%  (no coverage %d)%s%n", e.getKey(), c[1], c[0], pct, c[2], verdict);
         }
         System.out.printf("  %-28s %5d/%-5d %5.1f%%%n", "all", detected, total, 100.0 * detected / total);
+        if (killers) {
+            for (var e : killedBy.entrySet()) {
+                System.out.println("  first killers in " + e.getKey() + ":");
+                e.getValue().entrySet().stream().sorted((a, b) -> b.getValue() - a.getValue())
+                        .forEach(k -> System.out.printf("    %5d  %s%n", k.getValue(), k.getKey()));
+            }
+        }
         for (var e : left.entrySet()) {
             System.out.println("  survivors in " + e.getKey() + ":");
             e.getValue().forEach(System.out::println);
