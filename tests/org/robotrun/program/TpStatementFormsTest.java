@@ -646,4 +646,85 @@ class TpStatementFormsTest {
       assertThat(e.column()).isEqualTo(6);
     });
   }
+
+  // ---- the printer's pieces (the pendant builds its fields from them) ----------------------------
+
+  @Test
+  void thePrintersPiecesAreTheControllersSpelling() {
+    assertThat(TpText.target(new Motion.Local(2, "PICK"))).isEqualTo("P[2:PICK]");
+    assertThat(TpText.target(new Motion.Register(new Item(new Index.Indirect(1, ""), "")))).isEqualTo("PR[R[1]]");
+    assertThat(TpText.speed(mmPerSec(400))).isEqualTo("400mm/sec");
+    assertThat(TpText.speed(new Motion.Speed(new Motion.SpeedRegister(r(3)), Motion.SpeedUnit.PERCENT))).isEqualTo("R[3]%");
+    assertThat(TpText.speedValue(new Motion.SpeedConst(0.5))).isEqualTo("0.5");
+    assertThat(TpText.termination(new Motion.CntRegister(r(2)))).isEqualTo("CNT R[2]");
+    assertThat(TpText.termination(new Motion.Cnt(50))).isEqualTo("CNT50");
+    assertThat(TpText.branch(new Instruction.Jump(new LabelRef(new Index.Direct(3), "X")))).isEqualTo("JMP LBL[3:X]");
+    assertThat(TpText.branch(new Instruction.Call("NAME", List.of(n(1), new Expr.StringConst("A"), reg(2)))))
+        .isEqualTo("CALL NAME(1,'A',R[2])");
+    assertThat(TpText.call("", List.of(n(1)))).isEqualTo("(1)");
+    assertThat(TpText.call("SUB", List.of())).isEqualTo("SUB");
+    assertThat(TpText.waitTime(new Expr.RealConst(0.2))).isEqualTo("   .20(sec)");
+    assertThat(TpText.waitTime(new Expr.IntConst(3))).isEqualTo("  3.00(sec)");
+    assertThat(TpText.waitTime(reg(2))).isEqualTo("R[2]");
+    assertThat(TpText.waitTime(new Expr.Group(reg(2)))).isEqualTo("(R[2])(sec)");
+    assertThat(TpText.label(new LabelRef(new Index.Indirect(1, "PTR"), "L"))).isEqualTo("LBL[R[1:PTR]:L]");
+    assertThat(TpText.index(new Index.Direct(5))).isEqualTo("5");
+    assertThat(TpText.index(new Index.Indirect(2, "PTR"))).isEqualTo("R[2:PTR]");
+    assertThat(TpText.index(new Index.ViaArg(1))).isEqualTo("AR[1]");
+    assertThat(TpText.item("DO", new Item(new Index.Direct(3), "LAMP"))).isEqualTo("DO[3:LAMP]");
+    assertThat(TpText.posSource(new Instruction.CurrentJpos())).isEqualTo("JPOS");
+    assertThat(TpText.posSource(new Instruction.FromFrame(Instruction.FrameKind.USER, new Index.Direct(1), "T"))).isEqualTo("UFRAME[1:T]");
+    assertThat(TpText.frameWord(Instruction.FrameKind.USER)).isEqualTo("UFRAME");
+    assertThat(TpText.frameWord(Instruction.FrameKind.TOOL)).isEqualTo("UTOOL");
+    assertThat(TpText.option(new Motion.RawOption("TB .5sec,POINT_LOGIC\n  1:  DO[1]=ON ;", "x"))).isEqualTo("TB .5sec,POINT_LOGIC");
+    assertThat(TpText.option(new Motion.RawOption("COORD", "x"))).isEqualTo("COORD");
+    StringBuilder sb = new StringBuilder();
+    TpText.move((Instruction.Move) parsed("C P[1]" + TpText.CONTINUATION + "P[2] 100mm/sec FINE"), " : ", sb);
+    assertThat(sb).hasToString("C P[1] : P[2] 100mm/sec FINE");
+  }
+
+  @Test
+  void thePrinterRefusesAModelNestedDeeperThanAControllerReads() {
+    Expr e = n(1);
+    for (int i = 0; i < TpLimits.MAX_NESTING; i++) {
+      e = new Expr.Group(e);
+    }
+    assertThat(TpText.expr(e)).isEqualTo("(".repeat(64) + "1" + ")".repeat(64));
+    Expr deeper = new Expr.Group(e);
+    assertThatThrownBy(() -> TpText.expr(deeper)).isInstanceOf(IllegalArgumentException.class)
+        .hasMessage("expression nested deeper than 64 levels of parentheses and signs: a controller would not read it");
+    assertThatThrownBy(() -> TpText.statement(new Instruction.AssignRegister(r(1), deeper))).isInstanceOf(IllegalArgumentException.class);
+    assertThatThrownBy(() -> TpText.statement(new Instruction.WaitCondition(deeper, Optional.empty())))
+        .isInstanceOf(IllegalArgumentException.class);
+  }
+
+  @Test
+  void nestingCountsParenthesesSignsAndFunctionBracketsButNotWidth() {
+    Expr one = n(1);
+    assertThat(TpLimits.nesting(one, 64)).isZero();
+    assertThat(TpLimits.nesting(new Expr.Group(one), 64)).isEqualTo(1);
+    assertThat(TpLimits.nesting(new Expr.Unary(Expr.UnaryOp.MINUS, new Expr.Group(one)), 64)).isEqualTo(2);
+    assertThat(TpLimits.nesting(new Expr.MathFunc(Expr.MathFn.ABS, new Expr.Group(one)), 64)).isEqualTo(2);
+    // a function's arguments and a binary operator's operands are side by side: the deepest counts
+    assertThat(TpLimits.nesting(new Expr.StringFunc(Expr.StringFn.SUBSTR, List.of(new Expr.StringReg(r(1)),
+        new Expr.Group(new Expr.Group(one)), new Expr.Group(one))), 64)).isEqualTo(2);
+    assertThat(TpLimits.nesting(new Expr.StringFunc(Expr.StringFn.SUBSTR, List.of(new Expr.Group(one), one,
+        new Expr.Group(new Expr.Group(new Expr.Group(one))))), 64)).isEqualTo(3);
+    Expr wide = one;
+    for (int i = 0; i < 500; i++) {
+      wide = new Expr.Binary(Expr.BinaryOp.ADD, wide, new Expr.Group(one));
+    }
+    assertThat(TpLimits.nesting(wide, 64)).isEqualTo(1);
+    assertThat(TpLimits.nesting(new Expr.Binary(Expr.BinaryOp.ADD, new Expr.Group(new Expr.Group(one)), one), 64)).isEqualTo(2);
+    assertThat(TpLimits.nesting(new Expr.Binary(Expr.BinaryOp.ADD, one, new Expr.Group(new Expr.Group(one))), 64)).isEqualTo(2);
+    assertThat(TpLimits.nesting(new Expr.Binary(Expr.BinaryOp.ADD,
+        new Expr.Binary(Expr.BinaryOp.ADD, one, new Expr.Group(new Expr.Group(new Expr.Group(one)))), one), 64)).isEqualTo(3);
+    // counting stops one past the limit, however deep the model
+    Expr deep = one;
+    for (int i = 0; i < 5000; i++) {
+      deep = new Expr.Group(deep);
+    }
+    assertThat(TpLimits.nesting(deep, 64)).isEqualTo(65);
+    assertThat(TpLimits.nesting(deep, 3)).isEqualTo(4);
+  }
 }
