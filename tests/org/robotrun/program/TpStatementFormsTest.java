@@ -727,4 +727,20 @@ class TpStatementFormsTest {
     assertThat(TpLimits.nesting(deep, 64)).isEqualTo(65);
     assertThat(TpLimits.nesting(deep, 3)).isEqualTo(4);
   }
+
+  @Test
+  void aProgramsSourceHoldsTheTextOfEachOfItsLines() {
+    Program p = Program.of("A", List.of(new Instruction.End(), new Instruction.Pause()));
+    byte[] file = "/PROG A\n".getBytes(java.nio.charset.StandardCharsets.UTF_8);
+    List<List<String>> two = List.of(List.of("   1:  END ;\n"), List.of("   2:  PAUSE ;\n"));
+    ProgramSource s = new ProgramSource(file, java.nio.charset.StandardCharsets.UTF_8, "\n", p, List.of("/PROG A\n"), List.of(),
+        two, List.of("/END\n"));
+    assertThat(s.statements()).isEqualTo(two);
+    byte[] copy = s.bytes();
+    copy[0] = 'x';
+    assertThat(s.bytes()).isEqualTo(file);
+    assertThatThrownBy(() -> new ProgramSource(file, java.nio.charset.StandardCharsets.UTF_8, "\n", p, List.of(), List.of(),
+        List.of(List.of("   1:  END ;\n")), List.of())).isInstanceOf(IllegalArgumentException.class)
+        .hasMessage("1 statement texts for 2 lines");
+  }
 }
