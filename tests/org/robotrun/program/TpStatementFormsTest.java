@@ -479,6 +479,17 @@ class TpStatementFormsTest {
     assertThat(mended("L P[1] CNT 5").warnings()).hasSize(1);
     assertThat(mended("L P[1] 50mm/sec INC").warnings()).containsExactly("mended: a L motion without termination: completed with FINE "
         + "from the pendant's first default L motion (L P[] 100mm/sec FINE)");
+    // C takes the L row too, its end point on the continuation line
+    List<TpToken> c = new java.util.ArrayList<>(TpLexer.tokenize("C P[1]", 1, 1, true));
+    c.remove(c.size() - 1);
+    c.addAll(TpLexer.tokenize("P[2]", 2, 8, false));
+    TpStatementParser.Parsed cm = TpStatementParser.parseMendingHandEdits(c, l -> null);
+    assertThat(cm.instruction()).isEqualTo(Instruction.Move.circular(new Motion.Local(1, ""), new Motion.Local(2, ""), mmPerSec(100),
+        new Motion.Fine(), List.of()));
+    assertThat(cm.warnings()).containsExactly("mended: a C motion without speed and termination: completed with 100mm/sec FINE "
+        + "from the pendant's first default L motion (L P[] 100mm/sec FINE; its table has no C row)");
+    assertThat(DefaultMotions.first(Motion.Type.J)).isEqualTo(DefaultMotions.STANDARD.get(0));
+    assertThat(DefaultMotions.first(Motion.Type.L)).isEqualTo(DefaultMotions.STANDARD.get(2));
     // a complete motion is not touched, and the pendant (statementText) still needs both parts
     assertThat(mended("L P[1] 50mm/sec CNT5").warnings()).isEmpty();
     assertThatThrownBy(() -> mended("L P[1] 50mm/sec CNTX")).isInstanceOf(TpSyntaxError.class)
@@ -600,13 +611,31 @@ class TpStatementFormsTest {
     }
     assertThat(TpStatementParser.parseMendingHandEdits(TpLexer.tokenize("WHEN DI[1] AND DI[2] OR DI[3],CALL X", 1, 1, true), l -> null)
         .warnings()).hasSize(1);
+    // parentheses anywhere make the line mixed logic: left or right of an operator, under a sign
+    assertThat(warnings("R[1]=(1)+R[2]*3")).isEmpty();
+    assertThat(warnings("R[1]=R[2]*3+(1)")).isEmpty();
+    assertThat(warnings("R[1]=-(R[2]+R[3]*2)")).isEmpty();
+    assertThat(warnings("R[1]=R[2]*-R[3]+1")).containsExactly(mixed);
+    assertThat(warnings("R[1]=ABS[R[2]+R[3]*2]")).isEmpty();
+    assertThat(warnings("R[1]=R[2] MOD 3-1")).containsExactly(mixed);
+    assertThat(warnings("R[1]=R[2] DIV 3+1")).containsExactly(mixed);
+    assertThat(warnings("R[1]=R[2]/3-1")).containsExactly(mixed);
+    assertThat(EntryRules.refusal(new Expr.Binary(Expr.BinaryOp.OR, new Expr.Binary(Expr.BinaryOp.AND, new Expr.OnOff(true),
+        new Expr.OnOff(true)), new Expr.OnOff(false)))).isPresent();
+    assertThat(EntryRules.refusal(new Expr.Binary(Expr.BinaryOp.AND, new Expr.OnOff(true), new Expr.OnOff(false)))).isEmpty();
     // five conditions in a standard line, twenty in a mixed-logic one
     String five = String.join(" AND ", java.util.Collections.nCopies(5, "DI[1]"));
     assertThat(warnings("IF " + five + ",JMP LBL[1]")).isEmpty();
     assertThat(warnings("IF " + five + " AND DI[2],JMP LBL[1]")).containsExactly("the controller takes at most 5 conditions "
         + "joined by AND/OR on a line without parentheses, this one has 6: put the condition in parentheses (mixed logic) "
         + "or split it (a pendant refuses this entry)");
+    assertThat(warnings("IF " + String.join(" OR ", java.util.Collections.nCopies(5, "!DI[1]")) + " OR DI[2],JMP LBL[1]"))
+        .hasSize(1);
     String twenty = String.join(" OR ", java.util.Collections.nCopies(20, "DI[1]"));
+    assertThat(warnings("IF (" + String.join(" OR ", java.util.Collections.nCopies(10, "DI[1]")) + ") AND !("
+        + String.join(" AND ", java.util.Collections.nCopies(11, "DI[2]")) + "),JMP LBL[1]")).hasSize(1);
+    assertThat(warnings("IF (" + String.join(" OR ", java.util.Collections.nCopies(10, "DI[1]")) + ") AND !("
+        + String.join(" AND ", java.util.Collections.nCopies(10, "DI[2]")) + "),JMP LBL[1]")).isEmpty();
     assertThat(warnings("IF (" + twenty + "),JMP LBL[1]")).isEmpty();
     assertThat(warnings("IF (" + twenty + " OR !DI[2]),JMP LBL[1]")).containsExactly("the controller takes at most 20 conditions "
         + "in one mixed-logic instruction, this one has 21: split it over several lines (a pendant refuses this entry)");
