@@ -304,4 +304,15 @@ class TpLexerTest {
     assertThat(new TpToken(Kind.WORD, "FINE", 1, 1).is(Kind.WORD)).isTrue();
     assertThat(new TpToken(Kind.WORD, "FINE", 1, 1).is(Kind.STRING)).isFalse();
   }
+
+  @Test
+  void edgesOfTheLine() {
+    // a '$' or a German group bracket at the very start or end of the text
+    assertThat(texts("$")).containsExactly("$", "");
+    assertThat(texts("$.1")).containsExactly("$", ".1", "");
+    assertThat(kinds("[GP1:5]")).containsExactly(Kind.LBRACKET, Kind.WORD, Kind.COLON, Kind.NUMBER, Kind.RBRACKET, Kind.EOL);
+    // the first character beyond ASCII is a bad character, not a crash
+    assertThat(TpLexer.tokenize("\u0080", 1, 1, true)).extracting(TpToken::kind).containsExactly(Kind.BAD_CHAR, Kind.EOL);
+    assertThat(TpLexer.tokenize("\u007f", 1, 1, true).get(0).text()).isEqualTo("\u007f");
+  }
 }

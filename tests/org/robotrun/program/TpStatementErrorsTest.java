@@ -150,6 +150,7 @@ class TpStatementErrorsTest {
     refused("PR[1]=PR[2]+PR[3]-UTOOL[1]", "", "expected PR[], P[], LPOS or JPOS after '-' in position arithmetic");
     keptAlarming("PR[1]=VR[1].OFFSET+PR[2]", "PR[i]=vision registers VR[] in position arithmetic");
     keptAlarming("PR[1]=PR[2]+VR[1].OFFSET", "PR[i]=vision registers VR[] in position arithmetic");
+    keptAlarming("PR[1]=VR[2].FOUND_POS[1]+PR[3]", "PR[i]=vision registers VR[] in position arithmetic");
     keptAlarming("PR[1]=$POS", "PR[i]=system variable");
     keptAlarming("PR[1]=PL[1]", "PR[i]=palletizing register PL[]");
     keptAlarming("PR[1]=VR[1].FOUND_POS[2]", "PR[i]=vision registers VR[]");
@@ -179,6 +180,9 @@ class TpStatementErrorsTest {
     refused("CALL SUB(1", "", "expected ')' closing the CALL arguments, found end of line");
     refused("CALL SUB(1 2)", "2)", "expected ')' closing the CALL arguments, found '2'");
     keptAlarming("CALL SUB(SPEED=5)", "named CALL arguments (NAME=value)");
+    // a name after '-' is checked whole, and the message points at the '-'
+    String long36 = "K".repeat(36);
+    refused("CALL -" + long36, "-" + long36, "'-" + long36 + "' is not a program name: expected letters, digits and '_', starting with a letter");
     keptAlarming("CALL ...", "CALL with no program chosen (...)");
     keptAlarming("RUN SR[1]", "RUN through a string register SR[]");
     refused("RUN 5", "5", "expected a program name after CALL, found '5'");
@@ -285,6 +289,7 @@ class TpStatementErrorsTest {
 
   @Test
   void continuationLinesStartWithAColon() {
+    assertThat(TpStatementParser.statementText("C P[1]\n:  P[2] 100mm/sec FINE").instruction()).isInstanceOf(Instruction.Move.class);
     assertThatThrownBy(() -> TpStatementParser.statementText("C P[1]\n  P[2] 100mm/sec FINE"))
         .isInstanceOfSatisfying(TpSyntaxError.class, e -> {
           assertThat(e.getMessage()).isEqualTo("expected a continuation line ':  ...', found 'P[2] 100mm/sec FINE'");
@@ -327,6 +332,7 @@ class TpStatementErrorsTest {
     refused("R[AR[1]=1", "=1", "expected ']' closing R[...], found '='");
     refused("R[AR[1 2]]=1", "2]]=1", "expected ']' closing AR[...], found '2'");
     refused("R[AR[0]]=1", "]]=1", "AR[0]: argument numbers start at 1");
+    refused("R[.5]=1", ".5]=1", "expected an integer (index of R[...]), found '.5'");
     keptAlarming("R[GP2:1]=1", "a group in R[GPn:...] (multi-group)");
     refused("R[1:X=1", "", "expected ']' closing R[...], found end of line");
     refused("PAYLOAD 1", "1", "expected '[' after PAYLOAD (PAYLOAD[i]), found '1'");
