@@ -485,7 +485,7 @@ class TpStatementFormsTest {
     List<TpToken> c = new java.util.ArrayList<>(TpLexer.tokenize("C P[1]", 1, 1, true));
     c.remove(c.size() - 1);
     c.addAll(TpLexer.tokenize("P[2]", 2, 8, false));
-    TpStatementParser.Parsed cm = TpStatementParser.parseMendingHandEdits(c, l -> null);
+    TpStatementParser.Parsed cm = TpStatementParser.parseMendingHandEdits(c, ln -> null);
     assertThat(cm.instruction()).isEqualTo(Instruction.Move.circular(new Motion.Local(1, ""), new Motion.Local(2, ""), mmPerSec(100),
         new Motion.Fine(), List.of()));
     assertThat(cm.warnings()).containsExactly("mended: a C motion without speed and termination: completed with 100mm/sec FINE "
