@@ -52,6 +52,8 @@ class BackwardExecutionTest {
     assertThat(back.backward()).isTrue();
     assertThat(back.fine()).isTrue();
     assertThat(back.line()).isEqualTo(1);
+    // while it moves, the cursor is on the line whose point it moves to
+    assertThat(rig.interp.cursorLine()).isEqualTo(1);
     assertThat(rig.runUntilStopped(DT, 1000)).isInstanceOf(Outcome.Paused.class);
     assertThat(rig.interp.cursorLine()).isEqualTo(2);
     // register lines were passed over, not run
@@ -239,5 +241,68 @@ class BackwardExecutionTest {
     rig2.interp.setCursor(4);
     assertThat(rig2.interp.backward()).isInstanceOf(Outcome.Paused.class);
     assertThat(rig2.interp.notice()).isEqualTo("BWD stopped at line 3: CALL cannot run backward");
+  }
+
+  /**
+   * docs/tp-execution.md: comments, labels, register/PR assignments, frame selection, TIMER,
+   * PAYLOAD, OVERRIDE and MESSAGE are passed over (not run); CALL, JMP, IF, SELECT, FOR, WAIT, I/O
+   * outputs, END, PAUSE, ABORT and UALM stop it with a notice naming the line.
+   */
+  @org.junit.jupiter.api.TestFactory
+  java.util.stream.Stream<org.junit.jupiter.api.DynamicTest> everyStatementIsPassedOverOrStopsTheStep() {
+    String[] passed = {"! remark", "//L P[9] 10mm/sec FINE", "LBL[7]", "MESSAGE[HELLO]", "$WAITTMOUT=100", "SR[1]='A'",
+        "SKIP CONDITION DI[1]=ON", "OFFSET CONDITION PR[1]", "TOOL_OFFSET CONDITION PR[1]", "PAYLOAD[1]", "R[1]=1",
+        "PR[1]=LPOS", "PR[1,1]=5", "UFRAME_NUM=0", "UTOOL_NUM=0", "UTOOL[1]=PR[1]", "UFRAME[1]=PR[1]", "TIMER[1]=START",
+        "OVERRIDE=50%", "R[2]=R[1]+1"};
+    String[][] stops = {{"CALL SUB", "CALL"}, {"JMP LBL[5]", "JMP"}, {"IF R[1]=1,JMP LBL[5]", "IF"},
+        {"IF R[1]=1,R[2]=3", "IF"}, {"SELECT R[1]=1,JMP LBL[5]", "SELECT"}, {"FOR R[1]=1 TO 2", "FOR"},
+        {"WAIT 1.00(sec)", "WAIT"}, {"WAIT DI[1]=ON", "WAIT"}, {"DO[1]=ON", "I/O"}, {"RO[1]=OFF", "I/O"},
+        {"GO[1]=3", "I/O"}, {"DO[1]=PULSE", "PULSE"}, {"END", "END"}, {"PAUSE", "PAUSE"}, {"ABORT", "ABORT"},
+        {"UALM[1]", "UALM"}, {"RUN SUB", "RUN"}, {"MONITOR COND", "MONITOR"}, {"IF (R[1]=1) THEN", "IF"}};
+    java.util.List<org.junit.jupiter.api.DynamicTest> tests = new java.util.ArrayList<>();
+    for (String line : passed) {
+      tests.add(org.junit.jupiter.api.DynamicTest.dynamicTest("passes over " + line, () -> {
+        Rig rig = bwdOver(line);
+        assertThat(rig.interp.backward()).as(line).isInstanceOf(Outcome.WaitingForMotion.class);
+        assertThat(x(rig.port.requests().get(0))).isEqualTo(200.0);
+        rig.runUntilStopped(DT, 1000);
+        assertThat(rig.interp.cursorLine()).isEqualTo(4);
+        // passed over, not run
+        assertThat(rig.regs.number(1)).isZero();
+        assertThat(rig.regs.number(2)).isZero();
+      }));
+    }
+    for (String[] stop : stops) {
+      tests.add(org.junit.jupiter.api.DynamicTest.dynamicTest("stops at " + stop[0], () -> {
+        Rig rig = bwdOver(stop[0]);
+        assertThat(rig.interp.backward()).as(stop[0]).isInstanceOf(Outcome.Paused.class);
+        assertThat(rig.interp.notice()).startsWith("BWD stopped at line 3: ").contains(stop[1]).endsWith("cannot run backward");
+        assertThat(rig.port.requests()).isEmpty();
+        assertThat(rig.regs.number(1)).isZero();
+      }));
+    }
+    return tests.stream();
+  }
+
+  /** J P[1]; L P[2]; the statement; L P[3]; a remark, with the cursor on the remark. */
+  private static Rig bwdOver(String statement) {
+    StringBuilder sb = new StringBuilder("/PROG  BWD\n/ATTR\nDEFAULT_GROUP\t= 1,*,*,*,*;\n/MN\n");
+    String[] lines = {"J P[1] 100% FINE", "L P[2] 100mm/sec FINE", "  " + statement, "L P[3] 100mm/sec FINE", "  ! end",
+        "  LBL[5]", statement.startsWith("FOR") ? "  ENDFOR" : statement.startsWith("IF (") ? "  ENDIF" : "  ! -"};
+    for (int i = 0; i < lines.length; i++) {
+      sb.append(String.format(java.util.Locale.ROOT, "%4d:%s ;%n", i + 1, lines[i]));
+    }
+    sb.append("/POS\n");
+    for (int p = 1; p <= 3; p++) {
+      sb.append("P[").append(p).append("]{\n   GP1:\n\tUF : 0, UT : 0,\t\tCONFIG : 'N U T, 0, 0, 0',\n")
+          .append(String.format(java.util.Locale.ROOT, "\tX =   %d.000  mm,\tY =     0.000  mm,\tZ =   300.000  mm,%n", 100 * p))
+          .append("\tW =   180.000 deg,\tP =     0.000 deg,\tR =     0.000 deg\n};\n");
+    }
+    sb.append("/END\n");
+    org.robotrun.io.LsReadResult r = org.robotrun.io.LsReader.parse("BWD.LS", sb.toString());
+    assertThat(r.hasAnyError()).as(r.diagnostics() + "\n" + sb).isFalse();
+    Rig rig = new Rig(r.program(), Tp.prog("SUB", comment("s")));
+    rig.interp.setCursor(5);
+    return rig;
   }
 }
