@@ -73,6 +73,25 @@ class PositionArithmeticTableTest {
   }
 
   @Test
+  void thePendantsTwoTermFormAddsAndSubtractsTheSame() {
+    // PR[i]=PR[j]+PR[k] as the pendant builds it (Instruction.PosArithmetic)
+    Program p = Tp.prog("PA",
+        new Instruction.AssignPosReg(Item.of(4), new Instruction.PosArithmetic(Item.of(2), true, Item.of(3))),
+        new Instruction.AssignPosReg(Item.of(5), new Instruction.PosArithmetic(Item.of(2), false, Item.of(3))));
+    Rig c = run(p, cart(A, FLIP), cart(B, Config.DEFAULT));
+    assertThat(elements(c.regs.position(4))).containsExactly(sum(A, B, 1));
+    assertThat(elements(c.regs.position(5))).containsExactly(sum(A, B, -1));
+    assertThat(((Position.Cartesian) c.regs.position(5)).config()).isEqualTo(FLIP);
+    Rig j = run(p, joint(A), joint(B));
+    assertThat(j.regs.position(4)).isEqualTo(joint(sum(A, B, 1)));
+    assertThat(j.regs.position(5)).isEqualTo(joint(sum(A, B, -1)));
+    Rig mixed = new Rig(p);
+    mixed.regs.setPosition(2, joint(A));
+    mixed.regs.setPosition(3, cart(B, Config.DEFAULT));
+    assertThat(mixed.alarm(mixed.run()).code()).isEqualTo("INTP-205");
+  }
+
+  @Test
   void cartesianAndJointTogetherAreATypeMismatch() {
     for (String line : List.of("PR[4]=PR[2]+PR[3]", "PR[4]=PR[3]-PR[2]", "PR[4]=PR[2]+PR[2]-PR[3]", "PR[4]=PR[3]+PR[3]-PR[2]")) {
       Rig rig = new Rig(RunSemanticsTableTest.parse(line));

@@ -156,6 +156,10 @@ class RunSemanticsTableTest {
     rows.add(ok("PR[1,1] write", "R[1]=1", "PR[1,R[1]]=5"));
     rows.add(ok("PR[1,6] write", "R[1]=6", "PR[1,R[1]]=5"));
     rows.add(fails("PR[1,7] write", "INTP-204", 2, "R[1]=7", "PR[1,R[1]]=5"));
+    // a direct index outside the table (the reader warns; the line alarms when it runs)
+    rows.add(fails("R[201]=1", "INTP-204", 2, "R[1]=1", "R[201]=1"));
+    rows.add(fails("R[9]=R[201]", "INTP-204", 2, "R[1]=1", "R[9]=R[201]"));
+    rows.add(ok("R[200]=R[200]+1", "R[1]=1", "R[200]=R[200]+1"));
     // the index register itself is R[1..200], and must hold a whole number
     rows.add(fails("R[R[1]] with R[1]=2.5", "INTP-204", 2, "R[1]=2.5", "R[9]=R[R[1]]"));
     rows.add(ok("R[R[1]] with R[1]=2.0", "R[1]=2.0", "R[9]=R[R[1]]"));
@@ -571,6 +575,32 @@ class RunSemanticsTableTest {
         assertThat(rig.regs.number(7)).as(what + " counter after").isEqualTo(count == 0 ? b[0] : last);
         assertThat(rig.regs.isInteger(1)).isTrue();
       }
+    }
+  }
+
+  @Test
+  void forBoundsAtTheThirtyTwoBitLimitsAndWholeRealBounds() {
+    // FOR bounds are whole numbers (INTP-205 otherwise); a real register holding a whole number serves.
+    for (long bound : new long[] {Integer.MAX_VALUE, Integer.MIN_VALUE}) {
+      Rig rig = new Rig(parse("FOR R[1]=R[5] TO R[5]", "R[3]=R[3]+1", "ENDFOR"));
+      rig.regs.setInteger(5, (int) bound);
+      assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+      assertThat(rig.regs.number(3)).as("FOR %d TO %d", bound, bound).isEqualTo(1);
+      assertThat(rig.regs.number(1)).isEqualTo((double) bound);
+    }
+    Rig rig = new Rig(parse("FOR R[1]=R[5] TO R[6]", "R[3]=R[3]+1", "ENDFOR"));
+    rig.regs.setReal(5, 1.0);
+    rig.regs.setReal(6, 3.0);
+    assertThat(rig.run()).isInstanceOf(Outcome.Finished.class);
+    assertThat(rig.regs.number(3)).isEqualTo(3);
+    assertThat(rig.regs.isInteger(1)).as("the counter is an integer").isTrue();
+  }
+
+  @Test
+  void aSelectOnTheLastLineOfTheProgram() {
+    for (int v = 1; v <= 2; v++) {
+      Rig rig = run("R[1]=" + v, "JMP LBL[5]", "LBL[1]", "R[2]=1", "END", "LBL[5]", "SELECT R[1]=1,JMP LBL[1]");
+      assertThat(rig.regs.number(2)).isEqualTo(v == 1 ? 1 : 0);
     }
   }
 
