@@ -597,6 +597,17 @@ class RunSemanticsTableTest {
   }
 
   @Test
+  void anIndirectJumpReachesALabelOnTheFirstLine() {
+    // JMP LBL[R[i]] is resolved when it runs (docs/tp-language.md); LBL[1] on line 1 is a label like any other.
+    Rig rig = run("LBL[1]", "R[2]=R[2]+1", "R[1]=1", "IF R[2]<3,JMP LBL[R[1]]", "R[1]=7", "JMP LBL[R[1]]", "R[3]=1", "LBL[7]");
+    assertThat(rig.regs.number(2)).isEqualTo(3);
+    assertThat(rig.regs.number(3)).isZero();
+    Alarm a = alarm("R[1]=8", "JMP LBL[R[1]]", "LBL[7]");
+    assertThat(a.code()).isEqualTo("INTP-224");
+    assertThat(a.line()).isEqualTo(2);
+  }
+
+  @Test
   void aSelectOnTheLastLineOfTheProgram() {
     for (int v = 1; v <= 2; v++) {
       Rig rig = run("R[1]=" + v, "JMP LBL[5]", "LBL[1]", "R[2]=1", "END", "LBL[5]", "SELECT R[1]=1,JMP LBL[1]");
