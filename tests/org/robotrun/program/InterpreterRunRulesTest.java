@@ -532,4 +532,42 @@ class InterpreterRunRulesTest {
     assertThat(ended.run()).isInstanceOf(Outcome.Finished.class);
     assertThat(ended.regs.number(1)).isZero();
   }
+
+  @Test
+  void aMotionHeldOnTheFirstLineStaysHeldThroughAnEditBelowAndTakesTheEditedSkipLabel() {
+    // docs/tp-execution.md: a held motion whose line and positions the edit left alone stays held
+    // and SHIFT+FWD continues it; its label targets are the edited program's.
+    Map<String, Program> store = new HashMap<>();
+    Program before = Tp.progWithPositions("MAIN", 1, Tp.lin(1, new Motion.Skip(LabelRef.of(5))), Tp.setR(1, Tp.num(1)),
+        Tp.lbl(5), Tp.setR(2, Tp.op(Tp.r(2), Expr.BinaryOp.ADD, Tp.num(1))));
+    store.put("MAIN", before);
+    FakeMotionPort port = new FakeMotionPort(1.0);
+    Registers regs = new Registers();
+    Interpreter in = new Interpreter(n -> Optional.ofNullable(store.get(n)), regs, port, InterpreterSettings.defaults());
+    in.select("MAIN");
+    in.forward();
+    for (int i = 0; i < 50; i++) {
+      port.advance(DT);
+      in.tick(DT);
+    }
+    in.hold();
+    assertThat(in.cursorLine()).isEqualTo(1);
+    store.put("MAIN", new Program("MAIN", before.attributes(), before.comment(), List.of(
+        Tp.lin(1, new Motion.Skip(LabelRef.of(5))), Tp.setR(1, Tp.num(1)), Tp.setR(3, Tp.num(1)), Tp.lbl(5),
+        Tp.setR(2, Tp.op(Tp.r(2), Expr.BinaryOp.ADD, Tp.num(1)))), before.positions()));
+    in.forward();
+    Outcome o = null;
+    for (int i = 0; i < 1000 && !(o instanceof Outcome.Finished || o instanceof Outcome.Alarmed); i++) {
+      port.advance(DT);
+      o = in.tick(DT);
+    }
+    assertThat(o).isInstanceOf(Outcome.Finished.class);
+    // the held motion went on: no second request, nothing cancelled
+    assertThat(port.requests()).hasSize(1);
+    assertThat(port.cancelled()).isEmpty();
+    // no skip condition: the motion ends and jumps to LBL[5] of the edited program (line 4)
+    assertThat(regs.number(1)).isZero();
+    assertThat(regs.number(3)).isZero();
+    assertThat(regs.number(2)).isEqualTo(1);
+  }
 }
