@@ -177,7 +177,7 @@ class BackwardExecutionTest {
   @Test
   void backwardRunsTheEditedProgramAfterAnEditWhilePaused() {
     // docs/tp-execution.md: the next SHIFT+BWD runs the edited code. Paused on line 3 of
-    // J P[1]; L P[2]; R[1]=1; L P[3]; the edit puts L P[3] in place of L P[2] (line 2).
+    // J P[1]; L P[2]; R[1]=1; L P[3]; the edit puts J P[3] in place of J P[1] (line 1).
     Map<String, Program> store = new HashMap<>();
     Program before = progWithPositions("MAIN", 3, joint(1), lin(2), setR(1, num(1)), lin(3));
     store.put("MAIN", before);
@@ -202,11 +202,11 @@ class BackwardExecutionTest {
     assertThat(in.cursorLine()).isEqualTo(3);
     int sent = port.requests().size();
     store.put("MAIN", new Program("MAIN", before.attributes(), before.comment(),
-        List.of(joint(1), lin(3), setR(1, num(1)), lin(3)), before.positions()));
+        List.of(joint(3), lin(2), setR(1, num(1)), lin(3)), before.positions()));
     assertThat(in.backward()).isInstanceOf(Outcome.WaitingForMotion.class);
     MotionRequest back = port.requests().get(sent);
-    // backing out of the edited line 2 (L to P[3]) to line 1's P[1]
-    assertThat(x(back)).isEqualTo(100.0);
+    // backing out of line 2 (L) to the edited line 1's P[3], not the old P[1]
+    assertThat(x(back)).isEqualTo(300.0);
     assertThat(back.type()).isEqualTo(Motion.Type.L);
   }
 
