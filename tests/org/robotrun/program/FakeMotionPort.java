@@ -99,6 +99,13 @@ public final class FakeMotionPort implements MotionPort {
     return left <= 1e-9 ? Status.DONE : Status.RUNNING;
   }
 
+  /** The motion's time left (for TIME BEFORE): what the fake still has to run, 0 once done or cancelled. */
+  @Override
+  public double timeLeftSec(long handle) {
+    Double left = remaining.get(handle);
+    return left == null ? 0 : Math.max(0, left);
+  }
+
   @Override
   public Start.Rejected failure(long handle) {
     return failures.get(handle);
