@@ -3,6 +3,7 @@ package org.robotrun.render;
 import static org.lwjgl.opengl.GL33C.*;
 
 import java.nio.FloatBuffer;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -181,7 +182,7 @@ public final class SceneRenderer implements AutoCloseable {
         work.close();
       }
       layer = new OffscreenTarget(width, height, 0);
-      work = new OffscreenTarget(width, height, 0);
+      work = new OffscreenTarget(width, height, 0, true);
     }
     layer.bind();
     glViewport(0, 0, width, height);
@@ -222,22 +223,25 @@ public final class SceneRenderer implements AutoCloseable {
   public void drawRegion(int[] rect) {
     int target = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
     glViewport(0, 0, frameW, frameH);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
-    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    int[] r = DamageRegion.intersect(rect,
-        new int[] {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]});
-    if (r == null) {
+    int[] viewBox = {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]};
+    int[] r = DamageRegion.intersect(rect, viewBox);
+    if (r == null || !Arrays.equals(r, rect)) {
+      // some of it lies outside the view: the background there (within the view, the scene's
+      // pixels below replace every pixel, so a rectangle within it is not cleared first: on a
+      // software renderer that clear cost as much as a copy)
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+      glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       glDisable(GL_SCISSOR_TEST);
+    }
+    if (r == null) {
       return;
     }
-    glDisable(GL_SCISSOR_TEST);
     // The moving items are drawn over a copy of the layer in a buffer of the layer's own
     // formats (depth is copied only between like buffers), then only its colour goes on. The
     // copy reaches a pixel further than the rectangle: the edge smoothing of the rectangle's
     // border pixels reads their neighbours, which must be unsmoothed as in a full frame.
-    int[] viewBox = {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]};
     int[] grown = DamageRegion.intersect(new int[] {r[0] - 1, r[1] - 1, r[2] + 1, r[3] + 1}, new int[] {0, 0, frameW, frameH});
     layer.copyTo(work.framebuffer(), grown, true);
     int[] r1 = DamageRegion.intersect(grown, viewBox);
@@ -272,22 +276,35 @@ public final class SceneRenderer implements AutoCloseable {
     }
     glDisable(GL_SCISSOR_TEST);
     gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r1);
-    if (antiAliasing == AntiAliasing.FXAA) {
-      // every solid's edges, the still ones too: the layer keeps them unsmoothed
-      float floorZ32 = (float) frameScene.floorZ();
-      float half = AXIS_LENGTH / 2;
-      addBarEdges(half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK);
-      addBarEdges(0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK);
-      for (DrawItem item : items) {
-        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
-        item.X_WS().toColumnMajor(model);
-        edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
-      }
+    if (antiAliasing != AntiAliasing.FXAA) {
+      work.copyTo(target, r, false);
+      glBindFramebuffer(GL_FRAMEBUFFER, target);
+      return;
+    }
+    // every solid's edges, the still ones too: the layer keeps them unsmoothed
+    float floorZ32 = (float) frameScene.floorZ();
+    float half = AXIS_LENGTH / 2;
+    addBarEdges(half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK);
+    addBarEdges(0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK);
+    for (DrawItem item : items) {
+      GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+      item.X_WS().toColumnMajor(model);
+      edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+    }
+    boolean triadHere = !gizmoEdges.isEmpty()
+        && DamageRegion.intersect(new int[] {gizmoEdges.x0(), gizmoEdges.y0(), gizmoEdges.x1(), gizmoEdges.y1()}, r) != null;
+    if (triadHere) {
+      // the triad's smoothing reads the scene's smoothed pixels: both passes in the buffer, then a copy
       fxaa.apply(edges, r, frameW, frameH);
       fxaa.apply(gizmoEdges, r, frameW, frameH);
+      work.copyTo(target, r, false);
+      glBindFramebuffer(GL_FRAMEBUFFER, target);
+    } else {
+      // one pass straight from the buffer's colour to the target: smoothed within the solids'
+      // rectangle, copied elsewhere (the pixels a full frame's pass would give)
+      glBindFramebuffer(GL_FRAMEBUFFER, target);
+      fxaa.drawFrom(work.colorTexture(), edges, r, frameW, frameH);
     }
-    work.copyTo(target, r, false);
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
   }
 
   private int[] useSolid(FloatBuffer vp, Vector3f eye) {
