@@ -126,6 +126,8 @@ public final class SceneRenderer implements AutoCloseable {
     frameCamera = camera;
     frameW = width;
     frameH = height;
+    detailW = width;
+    detailH = height;
     frameView = view;
     frameEye.set(camera.eye());
     viewProj.set(vp);
@@ -325,7 +327,73 @@ public final class SceneRenderer implements AutoCloseable {
       edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
     }
     glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
-    mesh.draw();
+    bySize(item.shape(), mesh).draw();
+  }
+
+  /**
+   * Divides round shapes by their size on screen ({@link MeshDetail}) from now on: the window's
+   * renderer does, so that the small shapes of an arm far from the eye cost fewer triangles.
+   * Off by default: pictures ({@code robotrun render}, grading) keep the full meshes.
+   */
+  public void setDetailBySize(boolean on) {
+    detailBySize = on;
+  }
+
+  private boolean detailBySize;
+  /** The viewport the current frame is drawn in (pixels), for {@link #bySize}. */
+  private int detailW;
+  private int detailH;
+  /** A shape divided into fewer segments than its full mesh. */
+  private record Divided(DrawShape shape, int segments, int roundSegments) {}
+  private final Map<Divided, GpuMesh> divided = new HashMap<>();
+
+  /**
+   * The mesh to draw for {@code shape}, placed by {@link #model} in the current frame: its full
+   * mesh, or with {@link #detailBySize} one divided as finely as its size on screen needs. The
+   * choice depends only on the shape, its place, the camera and the viewport, so the window's kept
+   * frame and a full redraw of it choose alike. Bounds (damage, edge smoothing) stay the full mesh's.
+   */
+  private GpuMesh bySize(DrawShape shape, GpuMesh full) {
+    if (!detailBySize) {
+      return full;
+    }
+    Divided d;
+    switch (shape) {
+      case DrawShape.Cylinder cy -> {
+        double ppm = MeshDetail.pixelsPerMm(viewProj, model[12], model[13], model[14],
+            Math.hypot(cy.radius(), cy.length() / 2), detailW, detailH);
+        d = new Divided(shape, MeshDetail.cylinderSegments(cy.radius() * ppm),
+            MeshDetail.roundSegments(MeshFactory.cylinderRimRadius(cy.radius(), cy.length()) * ppm));
+        if (d.segments() == MeshFactory.CYLINDER_SEGMENTS && d.roundSegments() == MeshFactory.ROUND_SEGMENTS) {
+          return full;
+        }
+      }
+      case DrawShape.Box b when b.rounded() -> {
+        double half = Math.sqrt(b.size().x() * b.size().x() + b.size().y() * b.size().y() + b.size().z() * b.size().z()) / 2;
+        double ppm = MeshDetail.pixelsPerMm(viewProj, model[12], model[13], model[14], half, detailW, detailH);
+        d = new Divided(shape, 0, MeshDetail.roundSegments(boxRound(b) * ppm));
+        if (d.roundSegments() == MeshFactory.ROUND_SEGMENTS) {
+          return full;
+        }
+      }
+      default -> {
+        return full;
+      }
+    }
+    return divided.computeIfAbsent(d, SceneRenderer::buildDivided);
+  }
+
+  private static GpuMesh buildDivided(Divided d) {
+    return GpuMesh.upload(switch (d.shape()) {
+      case DrawShape.Cylinder c -> MeshFactory.cylinder(c.radius(), c.length(), d.segments(), d.roundSegments());
+      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(), boxRound(b), d.roundSegments());
+      default -> throw new IllegalArgumentException("no divided mesh for " + d.shape());
+    });
+  }
+
+  /** The radius of a rounded box's edges (mm). */
+  private static double boxRound(DrawShape.Box b) {
+    return b.rounded() ? 0.14 * Math.min(b.size().x(), Math.min(b.size().y(), b.size().z())) : 0;
   }
 
   private void addBarEdges(float cx, float cy, float cz, float sx, float sy, float sz) {
@@ -352,6 +420,8 @@ public final class SceneRenderer implements AutoCloseable {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     viewProj.set(cameraViewProj);
+    detailW = width;
+    detailH = height;
     float floorZ = (float) scene.floorZ();
 
     try (MemoryStack stack = MemoryStack.stackPush()) {
@@ -429,8 +499,7 @@ public final class SceneRenderer implements AutoCloseable {
 
   private static GpuMesh buildMesh(DrawShape shape) {
     return GpuMesh.upload(switch (shape) {
-      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(),
-          b.rounded() ? 0.14 * Math.min(b.size().x(), Math.min(b.size().y(), b.size().z())) : 0);
+      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(), boxRound(b));
       case DrawShape.Cylinder c -> MeshFactory.cylinder(c.radius(), c.length());
       case DrawShape.Mesh m -> MeshFactory.triangles(m.triangles());
       case DrawShape.WireBox w -> MeshFactory.boxEdges(w.size().x(), w.size().y(), w.size().z());
@@ -455,6 +524,8 @@ public final class SceneRenderer implements AutoCloseable {
     }
     meshes.values().forEach(GpuMesh::close);
     meshes.clear();
+    divided.values().forEach(GpuMesh::close);
+    divided.clear();
     fxaa.close();
     floorQuad.close();
     axisBar.close();
