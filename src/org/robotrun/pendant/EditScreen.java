@@ -72,9 +72,26 @@ final class EditScreen implements Screen {
 
   @Override
   public String title(Pendant p) {
+    return title(p, Lcd.WIDTH);
+  }
+
+  /**
+   * "EDIT NAME  comment   LINE n/m": when the row has no room for it all, the comment is
+   * shortened (ending in "..") or left out, never the line number (an .LS file's comment may be
+   * longer than a controller's 16 characters).
+   */
+  @Override
+  public String title(Pendant p, int room) {
     Program prog = program(p);
-    return "EDIT " + programName + (prog.comment().isEmpty() ? "" : "  " + prog.comment())
-        + String.format(Locale.ROOT, "   LINE %d/%d", cursorLine(p), prog.lineCount());
+    String head = "EDIT " + programName;
+    String tail = String.format(Locale.ROOT, "   LINE %d/%d", cursorLine(p), prog.lineCount());
+    String comment = prog.comment().isEmpty() ? "" : "  " + prog.comment();
+    int left = room - head.length() - tail.length();
+    if (comment.length() > left) {
+      comment = left >= 5 ? comment.substring(0, left - 2).stripTrailing() + ".." : "";
+    }
+    String t = head + comment + tail;
+    return t.length() <= room ? t : t.substring(0, Math.max(0, room));
   }
 
   @Override

@@ -163,8 +163,12 @@ public final class Pendant {
 
   /** The operator panel's mode switch turns: a running program pauses, jogging stops. */
   public void setMode(RobotControl.Mode mode) {
+    ExecutionStatus before = control.status();
     control.setMode(mode);
-    message = "Mode " + mode;
+    // a run the mode switch stopped says so (the controller holds it; see ControllerPort.setMode)
+    message = before.state() == ExecState.RUNNING && control.status().state() != ExecState.RUNNING
+        ? "Mode " + mode + ": " + before.program() + " paused at line " + control.status().line() + " by the mode switch"
+        : "Mode " + mode;
   }
 
   /** An E-stop button is pressed: the pendant's (SRVO-002) or the operator panel's (SRVO-001). */
@@ -380,8 +384,13 @@ public final class Pendant {
     }
     Result r = control.run(from, name, line, forward);
     boolean fromLastLine = forward && line == count && count > 1;
+    // the cursor left on an END where the last run ended: the program ends at once, which a student
+    // takes for CYCLE START or SHIFT+FWD doing nothing (a deliberate addition, docs/pendant.md)
+    boolean onEnd = forward && line >= 1 && line <= count && control.program(name).get().line(line) instanceof Instruction.End;
     int startLine = line;
     message = switch (r) {
+      case Result.Ok ok when ok.message().isEmpty() && onEnd ->
+          "Started at line " + startLine + " of " + name + ", an END: it ended at once; for the whole program put the cursor on line 1";
       case Result.Ok ok when ok.message().isEmpty() && fromLastLine ->
           // the cursor stayed on the last line after a run: only that line runs, which a student
           // takes for nothing happening; say so (a deliberate addition, docs/pendant.md)
@@ -818,7 +827,7 @@ public final class Pendant {
     List<String> body;
     String prompt = message;
     List<String> keys;
-    String title = screen.title(this);
+    String title = screen.title(this, Lcd.WIDTH);
     switch (modal) {
       case null -> {
         body = screen.body(this);
@@ -827,7 +836,9 @@ public final class Pendant {
       case Modal.Choice c -> {
         body = choiceBody(c);
         keys = List.of("", "", "", "", "");
-        title = title + " - " + c.title;
+        // the list's name stays whole at the row's end; the screen's title gives way
+        String tail = " - " + c.title;
+        title = screen.title(this, Lcd.WIDTH - tail.length()) + tail;
         if (prompt.isEmpty()) {
           prompt = "Select item (UP/DOWN, ENTER or number; PREV cancels)";
         }

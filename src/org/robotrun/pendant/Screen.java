@@ -14,6 +14,15 @@ public sealed interface Screen
   /** The title row. */
   String title(Pendant p);
 
+  /**
+   * The title row in at most {@code room} characters (a choice list's name follows it on the same
+   * row). A screen whose title can run long shortens its least useful part; by default the end is cut.
+   */
+  default String title(Pendant p, int room) {
+    String t = title(p);
+    return t.length() <= room ? t : t.substring(0, Math.max(0, room));
+  }
+
   /** Up to {@link Lcd#BODY_ROWS} rows; the cursor row starts with {@code >}. */
   List<String> body(Pendant p);
 

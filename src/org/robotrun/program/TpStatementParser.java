@@ -377,7 +377,7 @@ public final class TpStatementParser extends TpTokenCursor {
         return ioAssignment(io);
       }
       if (io == IoKind.DI || io == IoKind.RI || io == IoKind.GI || io == IoKind.SI || io == IoKind.AI) {
-        throw error(w + "[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)");
+        throw error(t, w + "[] is an input: a program cannot set it (expected DO, RO, GO, AO or F)");
       }
       // SO[] (and the UOP outputs): driven by the controller itself
       throw unsupported(t, "assigning " + w + "[] (the controller sets it)", false);
@@ -400,7 +400,7 @@ public final class TpStatementParser extends TpTokenCursor {
         yield new Instruction.AssignString(reg, expression());
       }
       case "PR" -> positionRegisterAssignment();
-      case "AR" -> throw error("AR[] holds the CALL arguments: a program can read it but not set it");
+      case "AR" -> throw error(t, "AR[] holds the CALL arguments: a program can read it but not set it");
       case "TIMER" -> {
         Item timer = item("TIMER");
         expect(Kind.EQ, "'=' after TIMER[...]");
@@ -1416,8 +1416,8 @@ public final class TpStatementParser extends TpTokenCursor {
       StringBuilder sb = new StringBuilder();
       for (int k = tokens.indexOf(from); k >= 0 && k <= tokens.indexOf(last); k++) {
         TpToken x = tokens.get(k);
-        if (k > 0 && sb.length() > 0 && tokens.get(k - 1).line() == x.line()
-            && tokens.get(k - 1).column() + tokens.get(k - 1).text().length() < x.column()) {
+        TpToken before = k > 0 ? tokens.get(k - 1) : null;
+        if (before != null && sb.length() > 0 && before.line() == x.line() && before.column() + writtenWidth(before) < x.column()) {
           sb.append(' ');
         }
         sb.append(x.is(Kind.STRING) ? "'" + x.text() + "'" : x.text());
@@ -1425,6 +1425,11 @@ public final class TpStatementParser extends TpTokenCursor {
       raw = sb.toString();
     }
     return new Motion.RawOption(raw, what);
+  }
+
+  /** How many columns a token takes in the file: a string with its quotes. */
+  private static int writtenWidth(TpToken t) {
+    return t.is(Kind.STRING) ? t.text().length() + 2 : t.text().length();
   }
 
   // ---- expressions ------------------------------------------------------------------------

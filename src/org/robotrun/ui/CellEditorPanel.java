@@ -326,7 +326,7 @@ public final class CellEditorPanel {
   }
 
   private void drawObjectList() {
-    Txt.disabled("Objects (click one here or in the 3D view)");
+    Txt.disabledWrapped("Objects (click one here or in the 3D view)", false);
     float h = Math.min(6, Math.max(1, editor.world().objects().size())) * ImGui.getTextLineHeightWithSpacing() + 6;
     if (ImGui.beginListBox("##objects", -1, h)) {
       for (WorldObject o : editor.world().objects()) {
@@ -416,7 +416,8 @@ public final class CellEditorPanel {
       Txt.disabled(shortLabel(f));
       ImGui.sameLine();
       double v = editor.number(object, f);
-      String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "");
+      String shown = Double.isNaN(v) ? "" : String.format(java.util.Locale.ROOT, "%.3f", v).replaceAll("\\.?0+$", "")
+          .replaceFirst("^-0$", "0");  // a rounding -0.0001 (or -0) reads 0
       ImGui.setNextItemWidth(w);
       textInput(f.label(), object + "/" + f.name(), shown, t -> editor.setNumber(object, f, t), f.label() + " (" + f.unit() + ")");
     }

@@ -162,33 +162,63 @@ public final class LabsPanel implements Workbench.MenuContributor {
     }
   }
 
-  /** The window size the Lab steps window was last placed for (display pixels); 0 before. */
-  private final float[] stepsPlacedFor = new float[2];
+  /** The 3D view the Lab steps window was last placed for (display pixels); null before. */
+  private WindowLayout.Rect stepsPlacedFor;
+  /** Where it was placed (or last seen, once the student moved it); null before. */
+  private WindowLayout.Rect stepsAt;
+  /** Whether the student moved or resized it: then a resize keeps it where they put it. */
+  private boolean stepsMoved;
+  /** Whether it was placed with the robots' places on the screen known (the scene framed). */
+  private boolean stepsSawWork;
 
   @Override
   public void drawPopups(WindowLayout layout) {
+    drawPopups(layout, List::of);
+  }
+
+  @Override
+  public void drawPopups(WindowLayout layout, java.util.function.Supplier<List<WindowLayout.Rect>> work) {
     if (!showSteps.get() || current.isEmpty()) {
       return;
     }
     Course.Lab lab = current.get();
     int at = Math.max(0, Math.min(steps.size() - 1, Integer.parseInt(state.getProperty(lab.id() + ".step", "0"))));
     float em = ImGui.getFontSize();
-    // Over the 3D view's top right corner: the left column stays readable (lab 9's and 12's first
-    // steps point to its PLC and Vision sections, which the steps covered at 1366x768), and neither
-    // the pendant nor the first-start card along the view's bottom is hidden.
-    WindowLayout.Rect r = layout.labSteps(em, ImGui.getIO().getDisplaySizeY());
-    // placed again when the window is resized: where the student left it may now be over the pendant
-    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
-    boolean resized = stepsPlacedFor[0] != 0 && (stepsPlacedFor[0] != dw || stepsPlacedFor[1] != dh);
-    stepsPlacedFor[0] = dw;
-    stepsPlacedFor[1] = dh;
-    int cond = resized ? ImGuiCond.Always : ImGuiCond.FirstUseEver;
-    ImGui.setNextWindowSize(r.w(), r.h(), cond);
-    ImGui.setNextWindowPos(r.x(), r.y(), cond);
+    float dh = ImGui.getIO().getDisplaySizeY();
+    // Placed when it first shows, and again when the 3D view changes (a resize, the first-start card
+    // closing) or once the scene is framed: in the corner of the 3D view that covers least of the
+    // robots and parts, so neither the left column (lab 9's and 12's first steps point to its PLC and
+    // Vision sections), the pendant, the card nor the arm is hidden. Once the student has moved or
+    // resized it, it stays where they put it, only kept inside the window and off the pendant.
+    WindowLayout.Rect target = null;
+    if (stepsPlacedFor == null || !stepsPlacedFor.equals(layout.view()) || (!stepsMoved && !stepsSawWork)) {
+      if (stepsMoved && stepsAt != null) {
+        target = layout.keepInside(stepsAt, dh);
+      } else {
+        List<WindowLayout.Rect> onScreen = work.get();
+        stepsSawWork = !onScreen.isEmpty();
+        target = layout.labSteps(em, dh, onScreen);
+      }
+      if (stepsAt != null && target.equals(stepsAt) && layout.view().equals(stepsPlacedFor)) {
+        target = null;  // already there
+      }
+      stepsPlacedFor = layout.view();
+    }
+    if (target != null) {
+      ImGui.setNextWindowSize(target.w(), target.h(), ImGuiCond.Always);
+      ImGui.setNextWindowPos(target.x(), target.y(), ImGuiCond.Always);
+      stepsAt = target;
+    }
     // opaque: the left column's text showed through the steps
     ImGui.setNextWindowBgAlpha(1f);
     // the lab's title inside the window, wrapped (in the title bar it was cut at the window's edge)
     if (ImGui.begin("Lab steps###labsteps", showSteps)) {
+      WindowLayout.Rect seen = new WindowLayout.Rect(ImGui.getWindowPosX(), ImGui.getWindowPosY(),
+          ImGui.getWindowWidth(), ImGui.getWindowHeight());
+      if (stepsAt != null && target == null && !near(seen, stepsAt)) {
+        stepsMoved = true;  // dragged or resized by the student
+      }
+      stepsAt = seen;
       ImGui.pushTextWrapPos(0);
       Txt.wrapped(lab.title());
       if (ImGui.button("< Previous") && at > 0) {
@@ -198,8 +228,13 @@ public final class LabsPanel implements Workbench.MenuContributor {
       if (ImGui.button("Next >") && at < steps.size() - 1) {
         setStep(lab, at + 1);
       }
-      ImGui.sameLine();
-      Txt.disabled("step " + (at + 1) + " of " + steps.size());
+      String stepOf = "step " + (at + 1) + " of " + steps.size();
+      // beside the buttons when it fits (in a narrow window it wrapped a letter or two a line)
+      float room = ImGui.getWindowPosX() + ImGui.getWindowContentRegionMaxX() - ImGui.getItemRectMaxX();
+      if (room > ImGui.calcTextSize(stepOf).x + ImGui.getStyle().getItemSpacingX() * 2) {
+        ImGui.sameLine();
+      }
+      Txt.disabled(stepOf);
       ImGui.separator();
       for (int i = 0; i < steps.size(); i++) {
         if (i == at) {
@@ -219,6 +254,10 @@ public final class LabsPanel implements Workbench.MenuContributor {
       ImGui.popTextWrapPos();
     }
     ImGui.end();
+  }
+
+  private static boolean near(WindowLayout.Rect a, WindowLayout.Rect b) {
+    return Math.abs(a.x() - b.x()) < 1 && Math.abs(a.y() - b.y()) < 1 && Math.abs(a.w() - b.w()) < 1 && Math.abs(a.h() - b.h()) < 1;
   }
 
   private void setStep(Course.Lab lab, int step) {

@@ -132,6 +132,22 @@ public final class PlcPanel {
   }
 
   /** The BG Logic slots with START, STOP and REMOVE, and the programs a slot takes: the "BG Logic" section. */
+  /**
+   * What BG Logic says when it offers no program: it points to "Not offered" only when that list
+   * shows (with no program at all it pointed to a list that was not there), and says what a
+   * background program is.
+   *
+   * @param anySlot whether a program is in a BG slot already
+   * @param notOffered how many programs are listed under "Not offered"
+   */
+  static String noOfferHint(boolean anySlot, int notOffered) {
+    String none = anySlot ? "No other program can run as BG Logic" : "No program can run as BG Logic";
+    if (notOffered > 0) {
+      return none + ": \"Not offered\" says why";
+    }
+    return anySlot ? none : "No programs yet. A BG Logic program has no motion group (DEFAULT_GROUP = *,*,*,*,*)";
+  }
+
   public void drawBgLogic() {
     controller = robot.get();
     Txt.disabled(String.format(Locale.ROOT, "scan every %.0f ms, %d scans so far", controller.bgLogic().scanSec() * 1000,
@@ -151,8 +167,7 @@ public final class PlcPanel {
     BgLogic.Offer offer = controller.bgLogic().offer(controller.programNames());
     List<String> names = offer.programs();
     if (names.isEmpty()) {
-      Txt.disabledWrapped(controller.bgLogic().slots().isEmpty() ? "No program can run as BG Logic: \"Not offered\" says why"
-          : "No other program can run as BG Logic: \"Not offered\" says why", false);
+      Txt.disabledWrapped(noOfferHint(!controller.bgLogic().slots().isEmpty(), offer.notOffered().size()), false);
     }
     if (!names.isEmpty()) {
       bgChoice = Math.max(0, Math.min(bgChoice, names.size() - 1));

@@ -1,5 +1,7 @@
 package org.robotrun.ui;
 
+import java.util.List;
+
 /**
  * Where the window's parts go, computed fresh every frame from the window size, so shrinking
  * and growing the window never leaves panels piled over the scene. Side by side, never on top of
@@ -43,6 +45,14 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
 
     public boolean overlaps(Rect o) {
       return visible() && o.visible() && x < o.right() && o.x < right() && y < o.bottom() && o.y < bottom();
+    }
+
+    /** The area this rectangle and {@code o} share (square pixels; 0 when apart). */
+    public double overlapArea(Rect o) {
+      if (!overlaps(o)) {
+        return 0;
+      }
+      return (double) (Math.min(right(), o.right()) - Math.max(x, o.x)) * (Math.min(bottom(), o.bottom()) - Math.max(y, o.y));
     }
   }
 
@@ -97,9 +107,55 @@ public record WindowLayout(Rect menuBar, Rect sidebar, Rect view, Rect pendant) 
    * @param em the font size (display pixels)
    */
   public Rect labSteps(float em, float windowHeight) {
-    float w = Math.min(em * 21, view.w * 0.5f);
+    return labSteps(em, windowHeight, List.of());
+  }
+
+  /**
+   * Where the "Lab steps" window opens: the corner of the 3D view that hides least of
+   * {@code work} (the screen rectangles of the robots and the parts, display pixels; each counts by
+   * the part of it hidden, so a whole small part weighs as much as a whole arm), top right
+   * first, then top left, bottom right, bottom left. In a corner it never covers the left column,
+   * the pendant or the first-start card; among the corners it keeps off the arm the student
+   * watches (in lab 11 the top right one hid robot2 at 1366x768).
+   */
+  public Rect labSteps(float em, float windowHeight, List<Rect> work) {
+    // half the view, but in a small window at least 15 em where the view has them (at the window's
+    // minimum size half the view was 134 px: the buttons were cut and the steps a word a line)
+    float w = Math.min(em * 21, Math.max(view.w * 0.5f, Math.min(view.w, em * 15)));
     float h = Math.min(windowHeight * 0.45f, view.h);
-    return new Rect(view.right() - w, view.y, w, h);
+    Rect best = null;
+    double bestCover = Double.POSITIVE_INFINITY;
+    for (Rect c : List.of(new Rect(view.right() - w, view.y, w, h), new Rect(view.x, view.y, w, h),
+        new Rect(view.right() - w, view.bottom() - h, w, h), new Rect(view.x, view.bottom() - h, w, h))) {
+      double cover = 0;
+      for (Rect r : work) {
+        // each thing counts by how much of it is hidden: a whole small part weighs as much as a whole arm
+        cover += c.overlapArea(r) / Math.max(1.0, (double) r.w * r.h);
+      }
+      if (cover < bestCover) {
+        best = c;
+        bestCover = cover;
+      }
+    }
+    return best;
+  }
+
+  /**
+   * Where a window the student placed ({@code placed}) goes after the main window changed size:
+   * where it was, only moved (and, wider than the room, narrowed) so that it stays in the window
+   * under the menu bar and off the pendant. The student's placement is kept; the pendant's keys
+   * stay usable.
+   *
+   * @param windowHeight the whole window's height (display pixels)
+   */
+  public Rect keepInside(Rect placed, float windowHeight) {
+    float right = pendant.visible() ? pendant.x : menuBar.w;
+    float top = menuBar.bottom();
+    float w = Math.max(1, Math.min(placed.w, right));
+    float h = Math.max(1, Math.min(placed.h, windowHeight - top));
+    float x = Math.max(0, Math.min(placed.x, right - w));
+    float y = Math.max(top, Math.min(placed.y, windowHeight - h));
+    return new Rect(x, y, w, h);
   }
 
   /**

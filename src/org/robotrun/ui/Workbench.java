@@ -47,6 +47,15 @@ public final class Workbench implements SimulatorWindow.Panels {
     }
 
     /**
+     * Draws the popups; {@code work} answers where the robots and parts are on the screen (display
+     * pixels; empty until the camera has framed the scene), for a window that should open off
+     * them. Asking projects the scene: ask only when placing.
+     */
+    default void drawPopups(WindowLayout layout, Supplier<List<WindowLayout.Rect>> work) {
+      drawPopups(layout);
+    }
+
+    /**
      * When the contributor's drawing changes by itself next (a note that expires), as
      * {@link System#nanoTime}; {@link Long#MAX_VALUE} for never. The idle window wakes then.
      */
@@ -334,8 +343,57 @@ public final class Workbench implements SimulatorWindow.Panels {
       onLayoutChange.run();
     }
     for (MenuContributor m : menus) {
-      m.drawPopups(layout);
+      m.drawPopups(layout, this::workOnScreen);
     }
+  }
+
+  /**
+   * The screen rectangles (display pixels) of each robot (all its items together) and of each
+   * part or fixture that is not the room itself (one covering more than a quarter of the view,
+   * the table or the floor); empty before the camera has framed the scene.
+   */
+  private List<WindowLayout.Rect> workOnScreen() {
+    SceneSnapshot sc = lastScene != null ? lastScene : scene.get();
+    WindowLayout.Rect v = layout.view();
+    if (!framed || sc == null || !v.visible() || framebufferW <= 0 || framebufferH <= 0) {
+      return List.of();
+    }
+    float dw = ImGui.getIO().getDisplaySizeX(), dh = ImGui.getIO().getDisplaySizeY();
+    Matrix4f vp = camera.viewProjection(framebufferW, framebufferH);
+    java.util.Map<String, float[]> boxes = new java.util.LinkedHashMap<>();
+    java.util.Set<String> robots = new java.util.HashSet<>();
+    List<Vector3f> pts = new ArrayList<>();
+    for (DrawItem it : sc.items()) {
+      if (it.name().equals(DrivenRobotMark.RING_NAME)) {
+        continue;
+      }
+      int slash = it.name().indexOf('/');
+      String key = slash > 0 ? it.name().substring(0, slash) : it.name();  // a robot's links together
+      if (slash > 0) {
+        robots.add(key);
+      }
+      pts.clear();
+      SceneBounds.addCorners(it, pts);
+      for (Vector3f p : pts) {
+        float[] sp = project(vp, p.x, p.y, p.z, dw, dh);
+        if (sp != null) {
+          float[] b = boxes.computeIfAbsent(key, k -> new float[] {Float.MAX_VALUE, Float.MAX_VALUE, -Float.MAX_VALUE, -Float.MAX_VALUE});
+          b[0] = Math.min(b[0], sp[0]);
+          b[1] = Math.min(b[1], sp[1]);
+          b[2] = Math.max(b[2], sp[0]);
+          b[3] = Math.max(b[3], sp[1]);
+        }
+      }
+    }
+    List<WindowLayout.Rect> out = new ArrayList<>();
+    for (var e : boxes.entrySet()) {
+      float[] b = e.getValue();
+      WindowLayout.Rect r = new WindowLayout.Rect(b[0], b[1], b[2] - b[0], b[3] - b[1]);
+      if (robots.contains(e.getKey()) || r.w() * r.h() <= DrivenRobotMark.ROOM_FRACTION * v.w() * v.h()) {
+        out.add(r);
+      }
+    }
+    return out;
   }
 
   /**

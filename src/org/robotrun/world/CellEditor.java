@@ -70,17 +70,18 @@ public final class CellEditor {
       return this == W || this == P || this == R;
     }
 
+    /** The values the field takes, as a refusal says them after "enter" ("-100000 to 100000 mm"). */
     String range() {
       if (isAngle()) {
-        return "a number from -" + fmt(MAX_DEG) + " to " + fmt(MAX_DEG) + " deg";
+        return "-" + fmt(MAX_DEG) + " to " + fmt(MAX_DEG) + " deg";
       }
       if (isPose()) {
-        return "a number from -" + fmt(MAX_MM) + " to " + fmt(MAX_MM) + " mm";
+        return "-" + fmt(MAX_MM) + " to " + fmt(MAX_MM) + " mm";
       }
       if (this == SCALE) {
-        return "a number greater than 0 and at most " + fmt(MAX_SCALE);
+        return "more than 0, at most " + fmt(MAX_SCALE);
       }
-      return "a number greater than 0 and at most " + fmt(MAX_MM) + " mm";
+      return "more than 0, at most " + fmt(MAX_MM) + " mm";
     }
 
     boolean accepts(double v) {
@@ -202,7 +203,7 @@ public final class CellEditor {
   /** Adds the STL mesh in {@code file}, its coordinates times {@code scale} giving mm (a fixture). */
   public Result addMesh(Path file, double scale) {
     if (!NumberField.SCALE.accepts(scale)) {
-      return refused("scale: expected " + NumberField.SCALE.range() + ", got " + fmt(scale));
+      return refused("scale " + fmt(scale) + ": Value out of range, enter " + NumberField.SCALE.range());
     }
     String f = file.getFileName() == null ? "" : file.getFileName().toString();
     if (!f.toLowerCase(Locale.ROOT).endsWith(".stl")) {
@@ -371,12 +372,22 @@ public final class CellEditor {
     try {
       v = Double.parseDouble(t);
     } catch (NumberFormatException e) {
-      return refused(f.label() + ": expected " + f.range() + ", got '" + text + "'");
+      return refusedNumber(object, f, "'" + text + "'", "not a number");
     }
     if (t.matches("(?i).*(nan|infinity|[fd])$")) {
-      return refused(f.label() + ": expected " + f.range() + ", got '" + text + "'");
+      return refusedNumber(object, f, "'" + text + "'", "not a number");
     }
     return setNumber(object, f, v);
+  }
+
+  /**
+   * A refused number, worded as the controller's "Value out of range": the field, what was
+   * typed, why, the range to enter, and the value the field keeps (issue 29).
+   */
+  private Result refusedNumber(String object, NumberField f, String typed, String why) {
+    double old = world().find(object).isPresent() ? number(object, f) : Double.NaN;
+    String kept = Double.isNaN(old) ? "" : "; " + f.label() + " stays " + fmt(old) + (f.unit().isEmpty() ? "" : " " + f.unit());
+    return refused(f.label() + " " + typed + ": " + why + ", enter " + f.range() + kept);
   }
 
   /** Sets one number field (mm, degrees or scale). */
@@ -386,7 +397,7 @@ public final class CellEditor {
       return refused("no object named '" + object + "'");
     }
     if (!f.accepts(v)) {
-      return refused(f.label() + ": expected " + f.range() + ", got " + fmt(v));
+      return refusedNumber(object, f, fmt(v), "Value out of range");
     }
     WorldObject o = found.get();
     if (f.isPose()) {

@@ -110,4 +110,46 @@ class TpParserLimitsTest {
     assertThatThrownBy(() -> TpStatementParser.statementText("R[R[2.0]]=1"))
         .isInstanceOf(TpSyntaxError.class).hasMessageContaining("expected an integer");
   }
+
+  @Test
+  void functionBracketsNestAsParenthesesDo() {
+    assertThat(TpStatementParser.expressionText(nested("ABS[", "1", "]", 64))).isNotNull();
+    assertThatThrownBy(() -> TpStatementParser.expressionText(nested("ABS[", "1", "]", 65)))
+        .isInstanceOf(TpSyntaxError.class).hasMessageContaining("nested too deeply: at most 64 levels");
+    // a level ends with its bracket: forty 40-deep functions side by side are fine
+    String side = String.join("+", java.util.Collections.nCopies(40, nested("ABS[", "1", "]", 40)));
+    assertThat(TpStatementParser.expressionText(side)).isNotNull();
+  }
+
+  @Test
+  void signsAndPositionArithmeticCountAsOperators() {
+    // 20 operands with 50 signs each and 19 ANDs: 1019 operators
+    String nots = String.join(" AND ", java.util.Collections.nCopies(20, "!".repeat(50) + "ON"));
+    assertThatThrownBy(() -> TpStatementParser.expressionText(nots)).isInstanceOf(TpSyntaxError.class)
+        .hasMessageContaining("more than 1000 operators");
+    String minus = String.join("+", java.util.Collections.nCopies(20, "-".repeat(50) + "R[1]"));
+    assertThatThrownBy(() -> TpStatementParser.expressionText(minus)).isInstanceOf(TpSyntaxError.class)
+        .hasMessageContaining("more than 1000 operators");
+    assertThat(TpStatementParser.statementText("PR[1]=LPOS" + "+PR[2]".repeat(1000)).instruction())
+        .isInstanceOf(Instruction.AssignPosReg.class);
+    assertThatThrownBy(() -> TpStatementParser.statementText("PR[1]=LPOS" + "+PR[2]".repeat(1001)))
+        .isInstanceOf(TpSyntaxError.class).hasMessageContaining("more than 1000 operators");
+  }
+
+  @Test
+  void theEntryRulesWalkAModelOfAnyDepthWithoutOverflowingTheStack() {
+    // TpLimits: no walk of an expression may overflow the stack, whoever built the model
+    Expr and = new Expr.OnOff(true);
+    Expr group = new Expr.OnOff(true);
+    Expr mul = new Expr.IntConst(1);
+    for (int i = 0; i < 300_000; i++) {
+      and = new Expr.Binary(Expr.BinaryOp.AND, and, new Expr.OnOff(false));
+      group = new Expr.Unary(Expr.UnaryOp.NOT, new Expr.Group(new Expr.Binary(Expr.BinaryOp.OR, group, new Expr.OnOff(false))));
+      mul = new Expr.Binary(Expr.BinaryOp.MUL, mul, new Expr.IntConst(2));
+    }
+    assertThat(EntryRules.refusal(and)).get().asString().contains("at most 5 conditions");
+    assertThat(EntryRules.refusal(group)).get().asString().contains("at most 20 conditions");
+    assertThat(EntryRules.refusal(new Expr.Binary(Expr.BinaryOp.ADD, new Expr.IntConst(1), mul))).get().asString()
+        .contains("does not mix + or -");
+  }
 }

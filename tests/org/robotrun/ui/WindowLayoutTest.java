@@ -2,6 +2,7 @@ package org.robotrun.ui;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.List;
 import java.util.Properties;
 import org.junit.jupiter.api.Test;
 
@@ -131,6 +132,99 @@ class WindowLayoutTest {
     WindowLayout above = new WindowLayout(l.menuBar(), l.sidebar(), new WindowLayout.Rect(v.x(), v.y(), v.w(), v.h() - 300),
         l.pendant());
     assertThat(above.labSteps(em, 640).bottom()).isLessThanOrEqualTo(above.view().bottom());
+  }
+
+  @Test
+  void labStepsTakeTheCornerThatCoversLeastOfTheRobotsAndParts() {
+    float em = 13;
+    WindowLayout l = at(1366, 768, new LayoutState());
+    WindowLayout.Rect v = l.view();
+    WindowLayout.Rect topRight = l.labSteps(em, 768);
+    // nothing in the way: the top right corner
+    assertThat(l.labSteps(em, 768, List.of())).isEqualTo(topRight);
+    // lab 11 at 1366x768: robot2 stands in the view's upper right; the steps go to the top left
+    WindowLayout.Rect robot2 = new WindowLayout.Rect(v.right() - 200, v.y() + 60, 150, 300);
+    WindowLayout.Rect robot1 = new WindowLayout.Rect(v.x() + v.w() / 2 - 80, v.y() + 150, 160, 300);
+    WindowLayout.Rect steps = l.labSteps(em, 768, List.of(robot1, robot2));
+    assertThat(steps.overlapArea(robot2)).isZero();
+    // the least covered of the four corners (an oracle over the corners, computed here)
+    float cw = topRight.w(), h = topRight.h();
+    double least = Double.POSITIVE_INFINITY;
+    for (float[] xy : new float[][] {{v.x(), v.y()}, {v.right() - cw, v.y()}, {v.x(), v.bottom() - h}, {v.right() - cw, v.bottom() - h}}) {
+      WindowLayout.Rect c = new WindowLayout.Rect(xy[0], xy[1], cw, h);
+      least = Math.min(least, hidden(c, robot1) + hidden(c, robot2));
+    }
+    assertThat(hidden(steps, robot1) + hidden(steps, robot2)).isEqualTo(least);
+    assertThat(topRight.overlapArea(robot2)).as("the old corner hid robot2").isPositive();
+    // every corner hides some work: the one hiding least of it (here 25 % of one thing), still
+    // clear of the column and the pendant
+    float w = topRight.w();
+    List<WindowLayout.Rect> everywhere = List.of(
+        new WindowLayout.Rect(v.x() + w - 50, v.y() + 10, 100, 100),          // top left: half hidden
+        new WindowLayout.Rect(v.right() - 150, v.y() + 10, 100, 100),         // top right: all
+        new WindowLayout.Rect(v.x() + w - 25, v.bottom() - 110, 100, 100),    // bottom left: a quarter
+        new WindowLayout.Rect(v.right() - w - 25, v.bottom() - 110, 100, 100)); // bottom right: three quarters
+    WindowLayout.Rect fewest = l.labSteps(em, 768, everywhere);
+    assertThat(fewest.x()).isEqualTo(v.x());
+    assertThat(fewest.bottom()).isEqualTo(v.bottom());
+    for (WindowLayout.Rect c : List.of(fewest, steps)) {
+      assertThat(c.overlaps(l.sidebar())).isFalse();
+      assertThat(c.overlaps(l.pendant())).isFalse();
+      assertThat(c.overlaps(l.menuBar())).isFalse();
+    }
+  }
+
+  /** The part of {@code thing} that {@code window} hides (0..1). */
+  private static double hidden(WindowLayout.Rect window, WindowLayout.Rect thing) {
+    return window.overlapArea(thing) / (thing.w() * thing.h());
+  }
+
+  @Test
+  void aWholeSmallPartHiddenWeighsAsMuchAsAWholeArm() {
+    float em = 13;
+    WindowLayout l = at(1024, 640, new LayoutState());
+    WindowLayout.Rect v = l.view();
+    WindowLayout.Rect topRight = l.labSteps(em, 640);
+    // a small part wholly under the top right corner, an arm's tip a little under the top left one
+    WindowLayout.Rect part = new WindowLayout.Rect(topRight.x() + 20, topRight.y() + 20, 20, 20);
+    WindowLayout.Rect arm = new WindowLayout.Rect(v.x() + 150, v.y() + 200, 300, 300);
+    WindowLayout.Rect steps = l.labSteps(em, 640, List.of(part, arm));
+    assertThat(steps.overlapArea(part)).as("the part stays in sight, though its area is small").isZero();
+  }
+
+  @Test
+  void atTheWindowsMinimumSizeTheStepsStayWideEnoughToRead() {
+    float em = 13;
+    int[] min = WindowLayout.minimumSize(MENU, PENDANT, PendantPanel.minimumHeight(SCALE1));
+    WindowLayout l = at(min[0], min[1], new LayoutState());
+    WindowLayout.Rect steps = l.labSteps(em, min[1]);
+    assertThat(steps.w()).isGreaterThanOrEqualTo(Math.min(em * 15, l.view().w()));
+    assertThat(steps.x()).isGreaterThanOrEqualTo(l.view().x());
+    assertThat(steps.overlaps(l.pendant())).isFalse();
+  }
+
+  @Test
+  void aResizeKeepsTheStepsWhereTheStudentPutThemOnlyInsideTheWindowAndOffThePendant() {
+    WindowLayout big = at(1920, 1080, new LayoutState());
+    // the student dragged the steps over the left column, low down
+    WindowLayout.Rect placed = new WindowLayout.Rect(10, 500, 270, 300);
+    assertThat(big.keepInside(placed, 1080)).isEqualTo(placed);
+    // a smaller window: it stays where it was as far as the window lets it
+    WindowLayout small = at(1024, 640, new LayoutState());
+    WindowLayout.Rect kept = small.keepInside(placed, 640);
+    assertThat(kept.x()).isEqualTo(10);
+    assertThat(kept.bottom()).isEqualTo(640);
+    assertThat(kept.w()).isEqualTo(270);
+    // put over where the pendant now is: moved left of it, whole
+    WindowLayout.Rect overPendant = new WindowLayout.Rect(small.pendant().x() + 20, 100, 270, 300);
+    WindowLayout.Rect moved = small.keepInside(overPendant, 640);
+    assertThat(moved.overlaps(small.pendant())).isFalse();
+    assertThat(moved.right()).isEqualTo(small.pendant().x());
+    assertThat(moved.y()).isEqualTo(100);
+    // above the menu bar, or taller than the window: inside, under the menu bar
+    WindowLayout.Rect tall = small.keepInside(new WindowLayout.Rect(0, -50, 200, 2000), 640);
+    assertThat(tall.y()).isEqualTo(small.menuBar().bottom());
+    assertThat(tall.bottom()).isLessThanOrEqualTo(640);
   }
 
   @Test
