@@ -6,6 +6,8 @@
 // code is written for this renderer. Only unfiltered reads (texelFetch), five per pixel:
 // Mesa's llvmpipe pays several times more for each filtered read.
 uniform sampler2D uScene;
+// Pixels outside [x0, x1) x [y0, y1) are copied as they are (a pass that also copies).
+uniform ivec4 uSmooth;
 out vec4 fragColor;
 
 float luma(vec3 c) {
@@ -16,6 +18,10 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   ivec2 last = textureSize(uScene, 0) - 1;
   vec4 m = texelFetch(uScene, p, 0);
+  if (any(lessThan(p, uSmooth.xy)) || any(greaterThanEqual(p, uSmooth.zw))) {
+    fragColor = m;
+    return;
+  }
   vec4 n = texelFetch(uScene, min(p + ivec2(0, 1), last), 0);
   vec4 s = texelFetch(uScene, max(p - ivec2(0, 1), ivec2(0)), 0);
   vec4 e = texelFetch(uScene, min(p + ivec2(1, 0), last), 0);

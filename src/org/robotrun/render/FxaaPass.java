@@ -66,13 +66,37 @@ final class FxaaPass implements AutoCloseable {
     glCopyTexSubImage2D(GL_TEXTURE_2D, 0, cx0, cy0, cx0, cy0, cx1 - cx0, cy1 - cy0);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, readFbo);
 
-    glViewport(0, 0, width, height);
+    draw(x0, y0, x1, y1, x0, y0, x1, y1, width, height);
+  }
+
+  /**
+   * Draws the rectangle {@code rect} ({x0, y0, x1, y1}, pixels) of {@code source}, a texture of
+   * viewportWidth × viewportHeight pixels, into the same place of the framebuffer bound for
+   * drawing: smoothed where it lies within {@code smooth} (as {@link #apply} smooths), copied as
+   * it is elsewhere. The smoothing reads one pixel around each pixel it smooths; the caller keeps
+   * those in {@code source} too. One pass instead of a copy into this pass's texture, the pass,
+   * and a copy to the framebuffer.
+   */
+  void drawFrom(int source, ScreenRect smooth, int[] rect, int viewportWidth, int viewportHeight) {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, source);
+    if (smooth.isEmpty()) {
+      draw(rect[0], rect[1], rect[2], rect[3], 0, 0, 0, 0, viewportWidth, viewportHeight);
+    } else {
+      draw(rect[0], rect[1], rect[2], rect[3], smooth.x0(), smooth.y0(), smooth.x1(), smooth.y1(), viewportWidth, viewportHeight);
+    }
+  }
+
+  /** The pass over [x0, x1) × [y0, y1), smoothing within [s0, s1) × [t0, t1), from the texture bound to unit 0. */
+  private void draw(int x0, int y0, int x1, int y1, int s0, int t0, int s1, int t1, int viewportWidth, int viewportHeight) {
+    glViewport(0, 0, viewportWidth, viewportHeight);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glEnable(GL_SCISSOR_TEST);
-    glScissor(x0, y0, w, h);
+    glScissor(x0, y0, x1 - x0, y1 - y0);
     program.use();
     glUniform1i(program.uniform("uScene"), 0);
+    glUniform4i(program.uniform("uSmooth"), s0, t0, s1, t1);
     glBindVertexArray(emptyVao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_SCISSOR_TEST);

@@ -7,9 +7,9 @@ import java.util.Arrays;
  * here from parameters; no mesh files are shipped.
  */
 public final class MeshFactory {
-  /** Segments around a cylinder. */
+  /** Segments around a cylinder (at full detail: see {@link MeshDetail} for fewer). */
   static final int CYLINDER_SEGMENTS = 48;
-  /** Segments along each quarter-circle of a rounded edge. */
+  /** Segments along each quarter-circle of a rounded edge (at full detail). */
   static final int ROUND_SEGMENTS = 5;
 
   private MeshFactory() {}
@@ -48,6 +48,11 @@ public final class MeshFactory {
    * {@code round} (0 for sharp edges).
    */
   public static MeshData box(double sx, double sy, double sz, double round) {
+    return box(sx, sy, sz, round, ROUND_SEGMENTS);
+  }
+
+  /** As {@link #box(double, double, double, double)}, each quarter-circle of a rounded edge in {@code roundSegments} segments. */
+  static MeshData box(double sx, double sy, double sz, double round, int roundSegments) {
     double[] h = {sx / 2, sy / 2, sz / 2};
     double r = Math.max(0, Math.min(round, Math.min(h[0], Math.min(h[1], h[2])) * 0.999));
     double[] hi = {h[0] - r, h[1] - r, h[2] - r};
@@ -58,8 +63,8 @@ public final class MeshFactory {
       for (int sign = -1; sign <= 1; sign += 2) {
         int u = (axis + 1) % 3;
         int w = (axis + 2) % 3;
-        double[] us = edgeCoords(h[u], hi[u], r);
-        double[] ws = edgeCoords(h[w], hi[w], r);
+        double[] us = edgeCoords(h[u], hi[u], r, roundSegments);
+        double[] ws = edgeCoords(h[w], hi[w], r, roundSegments);
         int base = b.nv;
         for (double wc : ws) {
           for (double uc : us) {
@@ -101,11 +106,10 @@ public final class MeshFactory {
     return b.build();
   }
 
-  private static double[] edgeCoords(double h, double hi, double r) {
+  private static double[] edgeCoords(double h, double hi, double r, int k) {
     if (r <= 0) {
       return new double[] {-h, h};
     }
-    int k = ROUND_SEGMENTS;
     double[] out = new double[2 * (k + 1)];
     for (int i = 0; i <= k; i++) {
       double theta = Math.PI / 4 * (k - i) / k;
@@ -120,10 +124,23 @@ public final class MeshFactory {
    * smaller of radius and half length), so it catches highlights like a cast housing.
    */
   public static MeshData cylinder(double radius, double length) {
+    return cylinder(radius, length, CYLINDER_SEGMENTS, ROUND_SEGMENTS);
+  }
+
+  /** The radius of a cylinder's rounded rims (see {@link #cylinder(double, double)}). */
+  static double cylinderRimRadius(double radius, double length) {
+    return Math.min(radius * 0.12, length / 2 * 0.4);
+  }
+
+  /**
+   * As {@link #cylinder(double, double)}, in {@code segments} segments around and
+   * {@code roundSegments} along each rim's quarter-circle.
+   */
+  static MeshData cylinder(double radius, double length, int segments, int roundSegments) {
     double halfLen = length / 2;
-    double rr = Math.min(radius * 0.12, halfLen * 0.4);
+    double rr = cylinderRimRadius(radius, length);
     // Profile in (rho, z) with its outward normal, from the bottom centre to the top centre.
-    int k = ROUND_SEGMENTS;
+    int k = roundSegments;
     int n = 2 * (k + 1) + 2;
     double[] rho = new double[n], zs = new double[n], nrho = new double[n], nz = new double[n];
     int p = 0;
@@ -141,7 +158,7 @@ public final class MeshFactory {
     rho[p] = 0; zs[p] = halfLen; nrho[p] = 0; nz[p] = 1; p++;
 
     Builder b = new Builder();
-    int seg = CYLINDER_SEGMENTS;
+    int seg = segments;
     for (int s = 0; s <= seg; s++) {
       double phi = 2 * Math.PI * s / seg;
       double c = Math.cos(phi), si = Math.sin(phi);
@@ -152,8 +169,14 @@ public final class MeshFactory {
     for (int s = 0; s < seg; s++) {
       for (int i = 0; i + 1 < n; i++) {
         int a = s * n + i, bb = a + 1, c = a + n, d = c + 1;
-        b.triangle(a, c, d);
-        b.triangle(a, d, bb);
+        // the caps' centre is one point at every angle: there each quad is one triangle (the
+        // other would have no area and draw nothing)
+        if (i > 0) {
+          b.triangle(a, c, d);
+        }
+        if (i + 2 < n) {
+          b.triangle(a, d, bb);
+        }
       }
     }
     return b.build();

@@ -20,8 +20,19 @@ public final class OffscreenTarget implements AutoCloseable {
   private final int color;
   private final int depth;
   private final boolean multisampled;
+  /** The plain buffer's colour as a texture a shader can read ({@link #colorTexture}); 0 when it is a renderbuffer. */
+  private final int colorTexture;
 
   public OffscreenTarget(int width, int height, int samples) {
+    this(width, height, samples, false);
+  }
+
+  /**
+   * A target whose plain colour buffer is, when {@code readableColor}, a texture (RGBA8, read
+   * unfiltered) that a later pass may read with texelFetch, so that what was drawn here can be
+   * drawn on elsewhere without a copy first; a renderbuffer otherwise.
+   */
+  public OffscreenTarget(int width, int height, int samples, boolean readableColor) {
     this.width = width;
     this.height = height;
     multisampled = samples > 1;
@@ -45,10 +56,22 @@ public final class OffscreenTarget implements AutoCloseable {
 
     fbo = glGenFramebuffers();
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    color = glGenRenderbuffers();
-    glBindRenderbuffer(GL_RENDERBUFFER, color);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    if (readableColor) {
+      color = 0;
+      colorTexture = glGenTextures();
+      glBindTexture(GL_TEXTURE_2D, colorTexture);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, 0L);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      glBindTexture(GL_TEXTURE_2D, 0);
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colorTexture, 0);
+    } else {
+      colorTexture = 0;
+      color = glGenRenderbuffers();
+      glBindRenderbuffer(GL_RENDERBUFFER, color);
+      glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+    }
     if (multisampled) {
       depth = 0;
     } else {
@@ -107,6 +130,11 @@ public final class OffscreenTarget implements AutoCloseable {
     return topDown;
   }
 
+  /** The plain buffer's colour texture (see the constructor's {@code readableColor}); 0 when it has none. */
+  public int colorTexture() {
+    return colorTexture;
+  }
+
   /** The plain (single-sample) framebuffer's GL name. */
   public int framebuffer() {
     return fbo;
@@ -142,5 +170,6 @@ public final class OffscreenTarget implements AutoCloseable {
     glDeleteRenderbuffers(msDepth);
     glDeleteRenderbuffers(color);
     glDeleteRenderbuffers(depth);
+    glDeleteTextures(colorTexture);
   }
 }

@@ -3,6 +3,7 @@ package org.robotrun.render;
 import static org.lwjgl.opengl.GL33C.*;
 
 import java.nio.FloatBuffer;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -125,6 +126,8 @@ public final class SceneRenderer implements AutoCloseable {
     frameCamera = camera;
     frameW = width;
     frameH = height;
+    detailW = width;
+    detailH = height;
     frameView = view;
     frameEye.set(camera.eye());
     viewProj.set(vp);
@@ -181,7 +184,7 @@ public final class SceneRenderer implements AutoCloseable {
         work.close();
       }
       layer = new OffscreenTarget(width, height, 0);
-      work = new OffscreenTarget(width, height, 0);
+      work = new OffscreenTarget(width, height, 0, true);
     }
     layer.bind();
     glViewport(0, 0, width, height);
@@ -222,22 +225,25 @@ public final class SceneRenderer implements AutoCloseable {
   public void drawRegion(int[] rect) {
     int target = glGetInteger(GL_DRAW_FRAMEBUFFER_BINDING);
     glViewport(0, 0, frameW, frameH);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
-    glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    int[] r = DamageRegion.intersect(rect,
-        new int[] {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]});
-    if (r == null) {
+    int[] viewBox = {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]};
+    int[] r = DamageRegion.intersect(rect, viewBox);
+    if (r == null || !Arrays.equals(r, rect)) {
+      // some of it lies outside the view: the background there (within the view, the scene's
+      // pixels below replace every pixel, so a rectangle within it is not cleared first: on a
+      // software renderer that clear cost as much as a copy)
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(rect[0], rect[1], rect[2] - rect[0], rect[3] - rect[1]);
+      glClearColor(BACKGROUND[0], BACKGROUND[1], BACKGROUND[2], 0f);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       glDisable(GL_SCISSOR_TEST);
+    }
+    if (r == null) {
       return;
     }
-    glDisable(GL_SCISSOR_TEST);
     // The moving items are drawn over a copy of the layer in a buffer of the layer's own
     // formats (depth is copied only between like buffers), then only its colour goes on. The
     // copy reaches a pixel further than the rectangle: the edge smoothing of the rectangle's
     // border pixels reads their neighbours, which must be unsmoothed as in a full frame.
-    int[] viewBox = {frameView[0], frameView[1], frameView[0] + frameView[2], frameView[1] + frameView[3]};
     int[] grown = DamageRegion.intersect(new int[] {r[0] - 1, r[1] - 1, r[2] + 1, r[3] + 1}, new int[] {0, 0, frameW, frameH});
     layer.copyTo(work.framebuffer(), grown, true);
     int[] r1 = DamageRegion.intersect(grown, viewBox);
@@ -272,22 +278,35 @@ public final class SceneRenderer implements AutoCloseable {
     }
     glDisable(GL_SCISSOR_TEST);
     gizmo.draw(solid, axisBar, frameCamera, frameW, frameH, gizmoEdges, r1);
-    if (antiAliasing == AntiAliasing.FXAA) {
-      // every solid's edges, the still ones too: the layer keeps them unsmoothed
-      float floorZ32 = (float) frameScene.floorZ();
-      float half = AXIS_LENGTH / 2;
-      addBarEdges(half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK);
-      addBarEdges(0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK);
-      for (DrawItem item : items) {
-        GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
-        item.X_WS().toColumnMajor(model);
-        edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
-      }
+    if (antiAliasing != AntiAliasing.FXAA) {
+      work.copyTo(target, r, false);
+      glBindFramebuffer(GL_FRAMEBUFFER, target);
+      return;
+    }
+    // every solid's edges, the still ones too: the layer keeps them unsmoothed
+    float floorZ32 = (float) frameScene.floorZ();
+    float half = AXIS_LENGTH / 2;
+    addBarEdges(half, 0, floorZ32 + AXIS_THICK / 2, AXIS_LENGTH, AXIS_THICK, AXIS_THICK);
+    addBarEdges(0, half, floorZ32 + AXIS_THICK / 2, AXIS_THICK, AXIS_LENGTH, AXIS_THICK);
+    for (DrawItem item : items) {
+      GpuMesh mesh = meshes.computeIfAbsent(item.shape(), SceneRenderer::buildMesh);
+      item.X_WS().toColumnMajor(model);
+      edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
+    }
+    boolean triadHere = !gizmoEdges.isEmpty()
+        && DamageRegion.intersect(new int[] {gizmoEdges.x0(), gizmoEdges.y0(), gizmoEdges.x1(), gizmoEdges.y1()}, r) != null;
+    if (triadHere) {
+      // the triad's smoothing reads the scene's smoothed pixels: both passes in the buffer, then a copy
       fxaa.apply(edges, r, frameW, frameH);
       fxaa.apply(gizmoEdges, r, frameW, frameH);
+      work.copyTo(target, r, false);
+      glBindFramebuffer(GL_FRAMEBUFFER, target);
+    } else {
+      // one pass straight from the buffer's colour to the target: smoothed within the solids'
+      // rectangle, copied elsewhere (the pixels a full frame's pass would give)
+      glBindFramebuffer(GL_FRAMEBUFFER, target);
+      fxaa.drawFrom(work.colorTexture(), edges, r, frameW, frameH);
     }
-    work.copyTo(target, r, false);
-    glBindFramebuffer(GL_FRAMEBUFFER, target);
   }
 
   private int[] useSolid(FloatBuffer vp, Vector3f eye) {
@@ -308,7 +327,73 @@ public final class SceneRenderer implements AutoCloseable {
       edges.addBox(viewProj, modelMatrix.set(model), mesh.bounds());
     }
     glUniform4f(uColor, c.r(), c.g(), c.b(), c.a());
-    mesh.draw();
+    bySize(item.shape(), mesh).draw();
+  }
+
+  /**
+   * Divides round shapes by their size on screen ({@link MeshDetail}) from now on: the window's
+   * renderer does, so that the small shapes of an arm far from the eye cost fewer triangles.
+   * Off by default: pictures ({@code robotrun render}, grading) keep the full meshes.
+   */
+  public void setDetailBySize(boolean on) {
+    detailBySize = on;
+  }
+
+  private boolean detailBySize;
+  /** The viewport the current frame is drawn in (pixels), for {@link #bySize}. */
+  private int detailW;
+  private int detailH;
+  /** A shape divided into fewer segments than its full mesh. */
+  private record Divided(DrawShape shape, int segments, int roundSegments) {}
+  private final Map<Divided, GpuMesh> divided = new HashMap<>();
+
+  /**
+   * The mesh to draw for {@code shape}, placed by {@link #model} in the current frame: its full
+   * mesh, or with {@link #detailBySize} one divided as finely as its size on screen needs. The
+   * choice depends only on the shape, its place, the camera and the viewport, so the window's kept
+   * frame and a full redraw of it choose alike. Bounds (damage, edge smoothing) stay the full mesh's.
+   */
+  private GpuMesh bySize(DrawShape shape, GpuMesh full) {
+    if (!detailBySize) {
+      return full;
+    }
+    Divided d;
+    switch (shape) {
+      case DrawShape.Cylinder cy -> {
+        double ppm = MeshDetail.pixelsPerMm(viewProj, model[12], model[13], model[14],
+            Math.hypot(cy.radius(), cy.length() / 2), detailW, detailH);
+        d = new Divided(shape, MeshDetail.cylinderSegments(cy.radius() * ppm),
+            MeshDetail.roundSegments(MeshFactory.cylinderRimRadius(cy.radius(), cy.length()) * ppm));
+        if (d.segments() == MeshFactory.CYLINDER_SEGMENTS && d.roundSegments() == MeshFactory.ROUND_SEGMENTS) {
+          return full;
+        }
+      }
+      case DrawShape.Box b when b.rounded() -> {
+        double half = Math.sqrt(b.size().x() * b.size().x() + b.size().y() * b.size().y() + b.size().z() * b.size().z()) / 2;
+        double ppm = MeshDetail.pixelsPerMm(viewProj, model[12], model[13], model[14], half, detailW, detailH);
+        d = new Divided(shape, 0, MeshDetail.roundSegments(boxRound(b) * ppm));
+        if (d.roundSegments() == MeshFactory.ROUND_SEGMENTS) {
+          return full;
+        }
+      }
+      default -> {
+        return full;
+      }
+    }
+    return divided.computeIfAbsent(d, SceneRenderer::buildDivided);
+  }
+
+  private static GpuMesh buildDivided(Divided d) {
+    return GpuMesh.upload(switch (d.shape()) {
+      case DrawShape.Cylinder c -> MeshFactory.cylinder(c.radius(), c.length(), d.segments(), d.roundSegments());
+      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(), boxRound(b), d.roundSegments());
+      default -> throw new IllegalArgumentException("no divided mesh for " + d.shape());
+    });
+  }
+
+  /** The radius of a rounded box's edges (mm). */
+  private static double boxRound(DrawShape.Box b) {
+    return b.rounded() ? 0.14 * Math.min(b.size().x(), Math.min(b.size().y(), b.size().z())) : 0;
   }
 
   private void addBarEdges(float cx, float cy, float cz, float sx, float sy, float sz) {
@@ -335,6 +420,8 @@ public final class SceneRenderer implements AutoCloseable {
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
     viewProj.set(cameraViewProj);
+    detailW = width;
+    detailH = height;
     float floorZ = (float) scene.floorZ();
 
     try (MemoryStack stack = MemoryStack.stackPush()) {
@@ -412,8 +499,7 @@ public final class SceneRenderer implements AutoCloseable {
 
   private static GpuMesh buildMesh(DrawShape shape) {
     return GpuMesh.upload(switch (shape) {
-      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(),
-          b.rounded() ? 0.14 * Math.min(b.size().x(), Math.min(b.size().y(), b.size().z())) : 0);
+      case DrawShape.Box b -> MeshFactory.box(b.size().x(), b.size().y(), b.size().z(), boxRound(b));
       case DrawShape.Cylinder c -> MeshFactory.cylinder(c.radius(), c.length());
       case DrawShape.Mesh m -> MeshFactory.triangles(m.triangles());
       case DrawShape.WireBox w -> MeshFactory.boxEdges(w.size().x(), w.size().y(), w.size().z());
@@ -438,6 +524,8 @@ public final class SceneRenderer implements AutoCloseable {
     }
     meshes.values().forEach(GpuMesh::close);
     meshes.clear();
+    divided.values().forEach(GpuMesh::close);
+    divided.clear();
     fxaa.close();
     floorQuad.close();
     axisBar.close();

@@ -2,6 +2,8 @@ package org.robotrun.ui;
 
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * One Dear ImGui draw list of one frame, copied out of ImGui's memory (its vertices, indices and
@@ -132,24 +134,32 @@ final class DrawListCopy {
   }
 
   /**
-   * The part of the screen that changed from {@code old} to {@code now}, as {x0, y0, x1, y1} in
-   * display coordinates, or null when both draw exactly the same. When the lists share their
+   * The parts of the screen that changed from {@code old} to {@code now}, each {x0, y0, x1, y1} in
+   * display coordinates; empty when both draw exactly the same. When the lists share their
    * commands (clip rectangles and textures) and differ only in a run of triangles, that is the
-   * run's bounds in both (a changed number in a panel: a few glyphs); otherwise it is everything
-   * either list draws.
+   * run; within a run of the same length in both, only the triangles that differ count, each
+   * group of neighbouring ones on its own (a changed number in a panel: its changed glyphs, and a
+   * second changed number further down is a second rectangle, not one over the lines between
+   * them). A run of another length is bounded as a whole. Any other change is everything either
+   * list draws.
    */
-  static float[] changedArea(DrawListCopy old, DrawListCopy now) {
-    float[] partial = partialChange(old, now);
+  static List<float[]> changedAreas(DrawListCopy old, DrawListCopy now) {
+    Object partial = partialChange(old, now);
     if (partial != WHOLE) {
-      return partial;
+      @SuppressWarnings("unchecked")
+      List<float[]> areas = (List<float[]>) partial;
+      return areas;
     }
-    return union(old.drawnBounds(), now.drawnBounds());
+    float[] all = union(old.drawnBounds(), now.drawnBounds());
+    return all == null ? List.of() : List.of(all);
   }
 
   /** Marker: the change is not a run of triangles; the whole lists count. */
-  private static final float[] WHOLE = new float[0];
+  private static final Object WHOLE = new Object();
+  /** More separate rectangles than this in one list's change: their union is used instead. */
+  static final int MAX_AREAS = 12;
 
-  private static float[] partialChange(DrawListCopy old, DrawListCopy now) {
+  private static Object partialChange(DrawListCopy old, DrawListCopy now) {
     if (old.cmdCount != now.cmdCount || old.idxBytes != now.idxBytes) {
       return WHOLE;
     }
@@ -194,7 +204,7 @@ final class DrawListCopy {
     }
     si -= si % 3;
     if (ni0 == ni1 && pi + si == ni0 && sameCommands(old, now)) {
-      return null;
+      return List.of();
     }
     // command boundaries in the alike parts must sit at the same place in both lists
     for (int c = 0; c < now.cmdCount; c++) {
@@ -203,12 +213,94 @@ final class DrawListCopy {
         return WHOLE;
       }
     }
+    if (ni0 == ni1 && (ni0 - si - pi) % 3 == 0) {
+      return changedTriangles(old, now, pi, ni0 - si);
+    }
     float[] b = old.triangleBounds(pi, ni0 - si, null);
     b = now.triangleBounds(pi, ni1 - si, b);
     if (b == null) {
       // only the command split moved within the changed run, drawing nothing new: nothing to see
-      return sameCommands(old, now) ? null : WHOLE;
+      return sameCommands(old, now) ? List.of() : WHOLE;
     }
+    return List.of(grown(b));
+  }
+
+  /**
+   * Both lists have the same number of indices: the triangle at each place in [from, to) is
+   * compared with the one at the same place in the other list (its three vertices, and the
+   * command that draws it, hence its clip rectangle and texture); every pixel that only
+   * triangles alike at their place draw looks the same in both frames. The triangles that differ
+   * are bounded in groups: a triangle joins a group it touches (a pixel apart or closer).
+   */
+  private static List<float[]> changedTriangles(DrawListCopy old, DrawListCopy now, int from, int to) {
+    List<float[]> areas = new ArrayList<>();
+    float[] all = null;
+    int c0 = 0, c1 = 0;
+    for (int t = from; t < to; t += 3) {
+      c0 = commandAt(old, t, c0);
+      c1 = commandAt(now, t, c1);
+      if (c0 == c1 && old.sameVertexAt(now, t) && old.sameVertexAt(now, t + 1) && old.sameVertexAt(now, t + 2)) {
+        continue;
+      }
+      for (float[] b : new float[][] {old.triangleBounds(t, t + 3, null), now.triangleBounds(t, t + 3, null)}) {
+        if (b == null) {
+          continue;
+        }
+        b = grown(b);
+        all = union(all, b);
+        join(areas, b);
+      }
+    }
+    if (areas.size() > MAX_AREAS) {
+      return List.of(all);
+    }
+    return areas;
+  }
+
+  /** Adds {@code b} to {@code areas}, merged with every area it touches (repeatedly: a union may reach another). */
+  private static void join(List<float[]> areas, float[] b) {
+    boolean merged = true;
+    while (merged) {
+      merged = false;
+      for (int i = 0; i < areas.size(); i++) {
+        float[] a = areas.get(i);
+        if (a[0] <= b[2] && b[0] <= a[2] && a[1] <= b[3] && b[1] <= a[3]) {
+          b = union(a, b);
+          areas.remove(i);
+          merged = true;
+          break;
+        }
+      }
+    }
+    areas.add(b);
+  }
+
+  /** The command that draws index i, searching on from command {@code from} (-1: none). */
+  private static int commandAt(DrawListCopy l, int i, int from) {
+    for (int c = Math.max(0, from); c < l.cmdCount; c++) {
+      if (i >= l.idxOffset[c] && i < l.idxOffset[c] + l.elemCount[c]) {
+        return c;
+      }
+    }
+    for (int c = 0; c < Math.min(Math.max(0, from), l.cmdCount); c++) {
+      if (i >= l.idxOffset[c] && i < l.idxOffset[c] + l.elemCount[c]) {
+        return c;
+      }
+    }
+    return -1;
+  }
+
+  /** Whether index i draws the same vertex (position, texture coordinate, colour) in both lists. */
+  private boolean sameVertexAt(DrawListCopy o, int i) {
+    int a = index(i), b = o.index(i);
+    if (a >= vtxCount || b >= o.vtxCount) {
+      return false;
+    }
+    return sameVertex(o, a, b);
+  }
+
+  /** A bounds rectangle grown by a pixel each side (smoothed edges reach that far). */
+  private static float[] grown(float[] b) {
     return new float[] {b[0] - 1, b[1] - 1, b[2] + 1, b[3] + 1};
   }
 

@@ -14,11 +14,12 @@ import org.robotrun.render.DamageRegion;
 /**
  * Draws Dear ImGui's panels with OpenGL 3.3, only where they changed. Each frame the draw lists
  * are copied ({@link DrawListCopy}) and compared with the last frame's, list by list in drawing
- * order: a list that changed damages the part of the screen it changed in (a changed number:
- * the few glyphs; a list that appeared, went or changed its commands: all it draws), and a list
- * that shows a texture other than the font (a camera image, whose pixels may change while its
- * list does not) damages its image every frame. The window then draws each damaged rectangle
- * again, and {@link #draw} draws every list that reaches into it, clipped to it, in ImGui's order.
+ * order: a list that changed damages the parts of the screen it changed in (a changed number:
+ * its changed glyphs, each changed line apart; a list that appeared, went or changed its
+ * commands: all it draws), and a list that shows a texture other than the font (a camera image,
+ * whose pixels may change while its list does not) damages its image every frame. The window
+ * then draws each damaged rectangle again, and {@link #draw} draws every list that reaches into
+ * it, clipped to it, in ImGui's order.
  *
  * <p>The drawing follows Dear ImGui's documented rendering contract (docs/FAQ and imgui.h's
  * ImDrawData notes): an orthographic projection of the display rectangle, alpha blending of
@@ -198,15 +199,15 @@ final class RetainedUi implements AutoCloseable {
     for (int i = 0; i < n; i++) {
       DrawListCopy now = i < count ? lists.get(i) : null;
       DrawListCopy old = i < previousCount ? previous.get(i) : null;
-      float[] area;
       if (now == null) {
-        area = old.drawnBounds();
+        addDisplayRect(damage, old.drawnBounds());
       } else if (old == null) {
-        area = now.drawnBounds();
+        addDisplayRect(damage, now.drawnBounds());
       } else {
-        area = DrawListCopy.changedArea(old, now);
+        for (float[] area : DrawListCopy.changedAreas(old, now)) {
+          addDisplayRect(damage, area);
+        }
       }
-      addDisplayRect(damage, area);
       if (now != null) {
         for (int k = 0; k < now.cmdCount; k++) {
           if (now.texture[k] != fontTexture) {

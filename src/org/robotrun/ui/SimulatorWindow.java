@@ -175,6 +175,9 @@ public final class SimulatorWindow implements AutoCloseable {
     GL.create();
     GL.createCapabilities();
     renderer = new SceneRenderer();
+    // round shapes divided as finely as their size on screen needs (the full meshes cost most of
+    // a moving frame on a software renderer); pictures keep the full meshes
+    renderer.setDetailBySize(true);
     installInput();
     // ImGui chains to the callbacks installed above.
     ImGui.createContext();
