@@ -132,6 +132,21 @@ class IkVerdictOracleTest {
   }
 
   @Test
+  void aJointLimitIsInclusiveAndTheFirstJointOutsideIsNamed() {
+    JointSpec j = LRMATE.joint(1);
+    assertThat(j.withinLimits(j.lowerRad())).isTrue();
+    assertThat(j.withinLimits(j.upperRad())).isTrue();
+    assertThat(j.withinLimits(Math.nextDown(j.lowerRad()))).isFalse();
+    assertThat(j.withinLimits(Math.nextUp(j.upperRad()))).isFalse();
+    assertThat(j.withinLimits(Double.NaN)).isFalse();
+    double[] q = new double[6];
+    assertThat(LRMATE.firstJointOutsideLimits(q)).isEqualTo(-1);
+    q[4] = LRMATE.joint(4).upperRad() + 1e-12;
+    q[5] = LRMATE.joint(5).upperRad() + 1;
+    assertThat(LRMATE.firstJointOutsideLimits(q)).isEqualTo(4);
+  }
+
+  @Test
   void aSolutionPrintsItsJointsInDegrees() {
     IkResult.Solved s = new IkResult.Solved(new double[] {Math.PI / 2, -Math.PI / 4, 0, Math.PI, 0.5, -1}, 1.5e-7, 2.5e-10, 7);
     assertThat(s.toString()).isEqualTo(
