@@ -80,7 +80,7 @@ public final class RenderCommand implements Callable<Integer> {
       throw new UserError("--show-boxes: needs --scenario (for the robot alone use scenarios/empty-cell.json)");
     }
     if (seed != null && !org.robotrun.io.VisionJson.isValidSeed(seed)) {
-      throw new UserError("--seed: expected a whole number of at most 15 digits (as vision.seed), got " + seed);
+      throw new UserError("--seed: expected " + org.robotrun.io.VisionJson.SEED_RANGE + " (as vision.seed), got " + seed);
     }
     if ((seed != null || visionCamera != null) && scenario == null) {
       throw new UserError((seed != null ? "--seed" : "--vision-camera") + ": needs --scenario");

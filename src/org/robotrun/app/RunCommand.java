@@ -139,7 +139,7 @@ public final class RunCommand implements Callable<Integer> {
 
   private Integer runCommand() throws IOException {
     if (seed != null && !org.robotrun.io.VisionJson.isValidSeed(seed)) {
-      throw new UserError("--seed: expected a whole number of at most 15 digits (as vision.seed), got " + seed);
+      throw new UserError("--seed: expected " + org.robotrun.io.VisionJson.SEED_RANGE + " (as vision.seed), got " + seed);
     }
     if (overridePct < 1 || overridePct > 100) {
       throw new UserError("--override: expected 1..100, got " + overridePct);

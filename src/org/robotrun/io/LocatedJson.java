@@ -92,19 +92,24 @@ public sealed interface LocatedJson {
   /** Parses one JSON document; duplicate keys are reported in {@code duplicates} (last one wins). */
   static LocatedJson parse(String text, List<DuplicateKey> duplicates) throws SyntaxError {
     try (JsonParser p = factory().createParser(text)) {
-      JsonToken t = p.nextToken();
-      if (t == null) {
-        throw new SyntaxError(1, "empty file: expected a JSON object");
+      try {
+        JsonToken t = p.nextToken();
+        if (t == null) {
+          throw new SyntaxError(1, "empty file: expected a JSON object");
+        }
+        LocatedJson root = value(p, t, duplicates);
+        JsonToken extra = p.nextToken();
+        if (extra != null) {
+          throw new SyntaxError(line(p), "unexpected content after the end of the document");
+        }
+        return root;
+      } catch (JsonProcessingException e) {
+        // a limit (nesting) has no location of its own: where the parser stopped
+        com.fasterxml.jackson.core.JsonLocation at = e.getLocation() != null ? e.getLocation() : p.currentTokenLocation();
+        int line = Math.max(0, at.getLineNr());
+        int column = at.getColumnNr();
+        throw new SyntaxError(line, "not valid JSON" + (column > 0 ? " at column " + column : "") + ": " + plainReason(e));
       }
-      LocatedJson root = value(p, t, duplicates);
-      JsonToken extra = p.nextToken();
-      if (extra != null) {
-        throw new SyntaxError(line(p), "unexpected content after the end of the document");
-      }
-      return root;
-    } catch (JsonProcessingException e) {
-      int line = e.getLocation() == null ? 0 : e.getLocation().getLineNr();
-      throw new SyntaxError(line, "not valid JSON: " + e.getOriginalMessage());
     } catch (IOException e) {
       throw new SyntaxError(0, "cannot read: " + e.getMessage());
     }
@@ -113,6 +118,27 @@ public sealed interface LocatedJson {
   private static int line(JsonParser p) {
     return p.currentTokenLocation().getLineNr();
   }
+
+  java.util.regex.Pattern SOURCE =
+      java.util.regex.Pattern.compile("at \\[Source: [^\\]]*?; line: (\\d+), column: (\\d+)\\]");
+
+  /**
+   * The parser's reason in a user's words: without its internal source markers ("[Source:
+   * REDACTED (`StreamReadFeature...` disabled); line: 1, column: 7]" becomes "on line 1, column 7")
+   * and without the names of its settings.
+   */
+  static String plainReason(JsonProcessingException e) {
+    if (e instanceof com.fasterxml.jackson.core.exc.StreamConstraintsException) {
+      String m = e.getOriginalMessage();
+      return m.contains("nesting depth") ? "nested more than " + MAX_DEPTH + " levels deep"
+          : m.replaceAll("\\s*\\(from `[^`]*`\\)", "").replaceAll("`[^`]*`", "").strip();
+    }
+    return SOURCE.matcher(e.getOriginalMessage()).replaceAll("on line $1, column $2");
+  }
+
+  /** The parser's limit on nested arrays and objects (Jackson's default). */
+  int MAX_DEPTH = com.fasterxml.jackson.core.StreamReadConstraints.DEFAULT_MAX_DEPTH;
+
 
   private static LocatedJson value(JsonParser p, JsonToken t, List<DuplicateKey> duplicates) throws IOException {
     int line = line(p);

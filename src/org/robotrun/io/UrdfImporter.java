@@ -345,6 +345,21 @@ public final class UrdfImporter {
         }
       }
       assert parent == chain.moving().indexOf(j);
+      // A robot file takes limits within ±3 turns and speeds up to 3600°/s (RobotFileReader): what
+      // is imported must load again from the file `robot import` writes.
+      double maxLimit = Math.toRadians(RobotFileReader.MAX_JOINT_DEG);
+      if (lower < -maxLimit || upper > maxLimit) {
+        notes.add(at + " turns beyond ±" + (int) RobotFileReader.MAX_JOINT_DEG + "°: limited to ±"
+            + (int) RobotFileReader.MAX_JOINT_DEG + "°");
+        lower = Math.max(lower, -maxLimit);
+        upper = Math.min(upper, maxLimit);
+      }
+      double maxSpeed = Math.toRadians(RobotFileReader.MAX_JOINT_SPEED_DEG_PER_SEC);
+      if (speed > maxSpeed) {
+        notes.add(at + " gives velocity " + String.format(java.util.Locale.ROOT, "%.0f", Math.toDegrees(speed))
+            + "°/s: limited to " + (int) RobotFileReader.MAX_JOINT_SPEED_DEG_PER_SEC + "°/s");
+        speed = maxSpeed;
+      }
       return new JointSpec(j.name(), X_PJ, j.axis(), lower, upper, speed);
     }
 

@@ -34,6 +34,9 @@ public final class VisionJson extends JsonFieldReader {
   /** Seeds are whole numbers below this in size: exact in a double, so written and read back unchanged. */
   public static final double SEED_LIMIT = 9.0e15;
 
+  /** What a seed may be, for messages: the range {@link #isValidSeed} takes (16 digits at most). */
+  public static final String SEED_RANGE = "a whole number from -8999999999999999 to 8999999999999999";
+
   /** Whether {@code seed} is a seed {@code vision.seed} (and so {@code --seed}) takes: |seed| below {@link #SEED_LIMIT}. */
   public static boolean isValidSeed(double seed) {
     return seed == Math.rint(seed) && Math.abs(seed) < SEED_LIMIT;
@@ -87,7 +90,7 @@ public final class VisionJson extends JsonFieldReader {
       if (s instanceof JNumber n && n.integral() && isValidSeed(n.value())) {
         seed = (long) n.value();
       } else {
-        error(s.line(), KEY + ".seed", "expected a whole number of at most 15 digits, got " + s.describe());
+        error(s.line(), KEY + ".seed", "expected " + SEED_RANGE + ", got " + s.describe());
       }
     }
     World world = worldOf(objects);

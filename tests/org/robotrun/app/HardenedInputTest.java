@@ -327,7 +327,7 @@ class HardenedInputTest {
         {"render", "--scenario", "scenarios/vision-pick.json", "--seed", "-9000000000000000", "--out", "x.png"}}) {
       Run r = run(cmd);
       assertThat(r.exit()).isEqualTo(2);
-      assertThat(r.err()).contains("--seed: expected a whole number of at most 15 digits (as vision.seed)");
+      assertThat(r.err()).contains("--seed: expected a whole number from -8999999999999999 to 8999999999999999 (as vision.seed)");
     }
   }
 

@@ -41,6 +41,26 @@ class JsonFieldReaderTest {
     return (LocatedJson.JObject) LocatedJson.parse(json, new ArrayList<>());
   }
 
+  private static String syntaxError(String json) {
+    try {
+      LocatedJson.parse(json, new ArrayList<>());
+    } catch (LocatedJson.SyntaxError e) {
+      return e.line() + ": " + e.getMessage();
+    }
+    throw new AssertionError("parsed: " + json);
+  }
+
+  @Test
+  void brokenJsonIsDescribedWithLineAndColumnAndNoneOfTheParsersInnards() {
+    assertThat(syntaxError("{\"a\": [1,\n 2}"))
+        .isEqualTo("2: not valid JSON at column 3: Unexpected close marker '}': expected ']' (for Array starting on line 1, column 7)");
+    assertThat(syntaxError("{\"a\": tru}")).startsWith("1: not valid JSON at column 10: Unrecognized token 'tru'");
+    assertThat(syntaxError("[".repeat(5000))).isEqualTo("1: not valid JSON at column 1001: nested more than 1000 levels deep");
+    for (String bad : List.of("{\"a\": [1, 2}", "[".repeat(5000), "{\"a\": \"x", "{'a': 1}")) {
+      assertThat(syntaxError(bad)).doesNotContain("Source").doesNotContain("REDACTED").doesNotContain("`");
+    }
+  }
+
   @Test
   void anArrayOfBoundedNumbersIsReadOrEveryBadItemIsNamed() throws Exception {
     Reader r = new Reader();

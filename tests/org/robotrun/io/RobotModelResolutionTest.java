@@ -76,7 +76,7 @@ class RobotModelResolutionTest {
     Files.writeString(f, Files.readString(f).replace("\"maxSpeed\": 120.0", "\"maxSpeed\": \"fast\""));
     assertThatThrownBy(() -> RobotDefinitions.resolve("robots/my-crx.json", dir))
         .isInstanceOf(FileFormatException.class)
-        .hasMessageContaining("my-crx.json").hasMessageContaining("joints[0].maxSpeed: expected a finite number");
+        .hasMessageContaining("my-crx.json:13: joints[0].maxSpeed: expected a number 0..3600 (more than 0), got a string");
   }
 
   @Test
@@ -86,7 +86,7 @@ class RobotModelResolutionTest {
     Files.writeString(f, Files.readString(f).replace("\"flange\": {\"xyz\": [160, 0, 0]", "\"flange\": {\"xyz\": [1e999, 0, 0]"));
     assertThatThrownBy(() -> RobotDefinitions.resolve("robots/my-crx.json", dir))
         .isInstanceOf(FileFormatException.class)
-        .hasMessage(f + ": flange.xyz[0]: expected a finite number, got the number Infinity");
+        .hasMessage(f + ":20: flange.xyz[0]: expected a number -100000..100000, got the number 1e999");
   }
 
   @Test
@@ -100,7 +100,7 @@ class RobotModelResolutionTest {
     Files.writeString(f, Files.readString(f).replace("\"maxLinearSpeed\": 1500", "\"maxLinearSpeed\": 0"));
     assertThatThrownBy(() -> RobotDefinitions.resolve("robots/my-crx.json", dir))
         .isInstanceOf(FileFormatException.class)
-        .hasMessageContaining("my-crx.json").hasMessageContaining("maxLinearSpeed: expected 1 to 10000 mm/s, got 0");
+        .hasMessageContaining("my-crx.json:10: maxLinearSpeed: expected a number 1..10000, got the number 0");
   }
 
   @Test

@@ -217,6 +217,25 @@ class UrdfImporterTest {
     return j;
   }
 
+  @Test
+  void limitsAndSpeedsBeyondWhatARobotFileTakesAreLimitedWithANoteAndTheWrittenFileLoads() throws Exception {
+    List<TestArms.J> wide = new ArrayList<>(sixJoints());
+    // J6 from -25 to 25 rad (about ±1432°) at 100 rad/s (about 5730°/s)
+    wide.set(5, TestArms.rev("joint_6", "link_5", "link_6", TestArms.v(0, 0, 0.1), TestArms.v(0, 0, 1), -25, 25, 100));
+    Path file = tmp.resolve("wide/wide.urdf");
+    TestArms.write(file, plain(wide));
+    UrdfImporter.Result r = UrdfImporter.importRobot(file, Map.of());
+    assertThat(r.notes()).contains("joint 'joint_6' turns beyond ±1080°: limited to ±1080°",
+        "joint 'joint_6' gives velocity 5730°/s: limited to 3600°/s");
+    var j6 = r.model().joints().get(5);
+    assertThat(Math.toDegrees(j6.upperRad())).isCloseTo(1080, within(1e-9));
+    assertThat(Math.toDegrees(j6.lowerRad())).isCloseTo(-1080, within(1e-9));
+    assertThat(Math.toDegrees(j6.maxSpeedRadPerSec())).isCloseTo(3600, within(1e-9));
+    Path json = RobotFileWriter.write(r.model(), "x", tmp.resolve("wide-out"));
+    var back = RobotDefinitions.loadFile(json);
+    assertThat(Math.toDegrees(back.joints().get(5).upperRad())).isCloseTo(1080, within(1e-9));
+  }
+
   private String refusal(String name, String urdfText) throws Exception {
     Path file = tmp.resolve("bad/" + name);
     TestArms.write(file, urdfText);

@@ -105,6 +105,17 @@ class VisionJsonTest {
   }
 
   @Test
+  void seedsUpTo16DigitsAreTakenAndWrittenBackUnchanged() throws Exception {
+    for (long seed : new long[] {8_999_999_999_999_999L, -8_999_999_999_999_999L}) {
+      Scenario s = loaded(GOOD.replace("\"seed\": 5", "\"seed\": " + seed));
+      assertThat(s.vision().seed()).isEqualTo(seed);
+      assertThat(ScenarioWriter.toJson(s, dir)).contains("\"seed\" : " + seed + ",");
+    }
+    assertThat(errors(GOOD.replace("\"seed\": 5", "\"seed\": 9000000000000000")))
+        .containsExactly("vision.seed: expected a whole number from -8999999999999999 to 8999999999999999, got the number 9000000000000000");
+  }
+
+  @Test
   void badFieldsAreNamedByTheirPath() throws Exception {
     record Case(String from, String to, String expected) {}
     List<Case> cases = List.of(
