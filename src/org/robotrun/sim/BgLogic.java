@@ -10,7 +10,6 @@ import org.robotrun.program.InterpreterSettings;
 import org.robotrun.program.Outcome;
 import org.robotrun.program.Program;
 import org.robotrun.program.ProgramStore;
-import org.robotrun.program.TaskPort;
 
 /**
  * Background logic (MENU > SETUP > BG Logic on an R-30iB): up to {@value #SLOTS} programs without a
@@ -94,7 +93,7 @@ public final class BgLogic {
       case Instruction.IfThen f -> null;
       case Instruction.Else e -> null;
       case Instruction.EndIf e -> null;
-      case Instruction.Select s -> null;
+      case Instruction.Select s -> s.branch() instanceof Instruction.Call ? "CALL" : null;
       case Instruction.SelectCase s -> s.branch() instanceof Instruction.Call ? "CALL" : null;
       case Instruction.SelectElse s -> s.branch() instanceof Instruction.Call ? "CALL" : null;
       case Instruction.Comment c -> null;
@@ -188,7 +187,7 @@ public final class BgLogic {
     }
     Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
     in.leavePulsesToCaller();
-    in.setTaskPort(TaskPort.NONE);
+    // the interpreter's task port is TaskPort.NONE unless set: a BG program cannot RUN
     in.setAdvancesTimers(false);
     Slot s = new Slot(program, in);
     s.running = true;
@@ -206,7 +205,6 @@ public final class BgLogic {
     for (String program : programs) {
       Interpreter in = new Interpreter(store, controller.registers(), controller, settings);
       in.leavePulsesToCaller();
-      in.setTaskPort(TaskPort.NONE);
       in.setAdvancesTimers(false);
       Slot s = new Slot(program, in);
       s.running = true;
@@ -287,8 +285,7 @@ public final class BgLogic {
         s.checked = p.get();
       }
       Interpreter in = s.interpreter;
-      in.select(s.program);
-      in.setCursor(1);
+      in.select(s.program); // at line 1
       in.forward();
       Outcome o = in.tick(sinceLastScanSec);
       if (o instanceof Outcome.Alarmed a) {

@@ -528,8 +528,9 @@ public final class Controller implements MotionPort {
       default -> {
         runner.setJoints(q);
         boolean linear = coord != RobotControl.CoordSystem.JOINT && axis <= 3;
+        // plain decimals: VFINE's 0.0001 deg is not "1.0E-4"
         yield new RobotControl.Result.Ok(String.format(java.util.Locale.ROOT, "%s step: %s%s", veryFine ? "VFINE" : "FINE",
-            linear ? mm : deg, linear ? " mm" : " deg"));
+            java.math.BigDecimal.valueOf(linear ? mm : deg).stripTrailingZeros().toPlainString(), linear ? " mm" : " deg"));
       }
     };
   }

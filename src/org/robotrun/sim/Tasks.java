@@ -109,8 +109,7 @@ public final class Tasks {
     // A RUN task finds parts with the same vision system as the main program (issue 16).
     in.setVisionPort(controller.interpreter().visionPort());
     in.setAdvancesTimers(false);
-    in.select(program);
-    in.setCursor(1);
+    in.select(program); // at line 1
     in.forward();
     tasks.add(new Task(program, in, motion));
     return Optional.empty();

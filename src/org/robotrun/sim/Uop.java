@@ -80,7 +80,6 @@ public final class Uop {
   private double snackLeftSec;
   private final double[] ackLeftSec = new double[8];
   private final Deque<String> rsrQueue = new ArrayDeque<>();
-  private boolean imstpLatched;
   /** *SFSPD is off (the safety fence is open): the override is held at or below the fence limit. */
   private boolean fenceOpen;
   private double simSec;
@@ -258,6 +257,11 @@ public final class Uop {
     writeOutputs(0);
   }
 
+  private boolean imstpAlarmActive() {
+    String code = org.robotrun.program.AlarmCode.SRVO_037.code();
+    return c.activeAlarms().stream().anyMatch(a -> a.code().equals(code));
+  }
+
   private boolean rose(int i) {
     return ui(i) && !lastUi[i];
   }
@@ -267,14 +271,15 @@ public final class Uop {
   }
 
   private void readInputs() {
-    // *IMSTP off: an immediate stop (servo off) as long as it stays off
+    if (rose(FAULT_RESET)) {
+      c.reset();
+    }
+    // *IMSTP off: an immediate stop (servo off) as long as it stays off; a RESET while it is still
+    // off does not end it (the alarm is raised again at once)
     if (!ui(IMSTP)) {
-      if (!imstpLatched) {
-        imstpLatched = true;
+      if (!imstpAlarmActive()) {
         c.raiseServoAlarm(org.robotrun.program.AlarmCode.SRVO_037);
       }
-    } else {
-      imstpLatched = false;
     }
     if (!ui(HOLD) || !ui(ENBL)) {
       c.hold();
@@ -290,9 +295,6 @@ public final class Uop {
       }
     } else {
       fenceOpen = false;
-    }
-    if (rose(FAULT_RESET)) {
-      c.reset();
     }
     if (rose(CSTOPI)) {
       rsrQueue.clear();

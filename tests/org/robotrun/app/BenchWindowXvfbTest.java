@@ -16,7 +16,7 @@ import org.junit.jupiter.api.io.TempDir;
  * {@code robotrun bench window} on a virtual X display (xvfb-run, as {@link WindowLayoutXvfbTest}
  * finds it; skipped outside CI when it is missing, never in CI), one second per phase: it prints the
  * three phase lines in order and then the close line, in the documented format; the jog and the run
- * (the arm moving) drew frames, and the idle window drew fewer than the jogging one (it sleeps). A
+ * (the arm moving) drew frames, and the idle window drew at most 5 in its second (it sleeps). A
  * behaviour test: no figure is held to a speed. It runs with {@code ROBOTRUN_REDRAW=check}: every
  * frame the window kept and drew again only where it changed (the still layer, the moving arm, the
  * panels' changed glyphs) is compared with a full redraw, and no frame may differ.
@@ -60,7 +60,10 @@ class BenchWindowXvfbTest {
     }
     assertThat(frames[1]).as("frames while jogging").isPositive();
     assertThat(frames[2]).as("frames while running a program").isPositive();
-    assertThat(frames[0]).as("an idle window sleeps: fewer frames than while jogging").isLessThan(frames[1]);
+    // An idle window sleeps: it draws only what changes (a few frames a second at most), where one that
+    // did not would draw about 60. Compared with a bound, not with the jog's count: a loaded machine
+    // starves the jog phase (1 frame at load 44) but can only lower the idle count.
+    assertThat(frames[0]).as("an idle window sleeps: frames drawn in its idle second").isLessThanOrEqualTo(5);
     assertThat(lines.get(3)).matches("close_ms=\\d+");
     Matcher check = Pattern.compile("redraw check: (\\d+) frames, at most (\\d+) pixels differed").matcher(Files.readString(err));
     assertThat(check.find()).as(log).isTrue();
