@@ -199,6 +199,9 @@ class IkSolverContractTest {
             IkResult.Unreachable u = (IkResult.Unreachable) r;
             assertThat(u.reason()).isEqualTo(IkResult.Reason.JOINT_LIMIT);
             assertThat(u.message()).contains("J" + (j + 1));
+            // It says the value the joint would need and the limits, in degrees (never NaN).
+            assertThat(u.message()).as("%s %s", id, s.config())
+                .matches(".*needs J" + (j + 1) + " = -?\\d+\\.\\d deg, outside -?\\d+\\.\\d\\.\\.-?\\d+\\.\\d deg.*");
           }
         }
       }

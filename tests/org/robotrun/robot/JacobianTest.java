@@ -74,4 +74,33 @@ class JacobianTest {
       assertThat(KinematicChain.unpack(X).rotationAngleTo(expected)).isLessThan(1e-12);
     }
   }
+
+  @Test
+  void theTcpPoseItFillsIsTheFlangePoseTimesTheTool() {
+    // The pose output (used by the resolved-rate and numeric solvers) element by element against
+    // the reference FK composed with the tool, with and without a tool.
+    KinematicChain chain = new KinematicChain(robot);
+    double[] packedTool = new double[12];
+    KinematicChain.pack(tool, packedTool, 0);
+    java.util.Random rnd = new java.util.Random(12);
+    for (int k = 0; k < 20; k++) {
+      double[] q = new double[6];
+      for (int i = 0; i < 6; i++) {
+        q[i] = robot.joint(i).lowerRad() + rnd.nextDouble() * (robot.joint(i).upperRad() - robot.joint(i).lowerRad());
+      }
+      double[] J = new double[36];
+      double[] X = new double[12];
+      Jacobian.tcpJacobianInBase(chain, q, packedTool, J, X, new double[Jacobian.SCRATCH]);
+      double[] want = new double[12];
+      KinematicChain.pack(ForwardKinematics.flangePoseInBase(robot, q).compose(tool), want, 0);
+      for (int e = 0; e < 12; e++) {
+        assertThat(X[e]).as("element %d", e).isCloseTo(want[e], org.assertj.core.api.Assertions.within(e < 9 ? 1e-12 : 1e-9));
+      }
+      Jacobian.tcpJacobianInBase(chain, q, null, J, X, new double[Jacobian.SCRATCH]);
+      KinematicChain.pack(ForwardKinematics.flangePoseInBase(robot, q), want, 0);
+      for (int e = 0; e < 12; e++) {
+        assertThat(X[e]).as("element %d, no tool", e).isCloseTo(want[e], org.assertj.core.api.Assertions.within(e < 9 ? 1e-12 : 1e-9));
+      }
+    }
+  }
 }

@@ -276,41 +276,4 @@ class NumericIkCoverageTest {
     }
     return s;
   }
-
-  @Test
-  void theCornerWithThreeJointsAtTheirLimitsIsSolved() {
-    // Issue 18's last open target: J2, J3 and J5 at their limits, the flange 37 mm from the J1
-    // axis (its azimuth says nothing about J1), found from home and from a far start.
-    double[] q = Angles.toRadians(new double[] {-36.8, 144.94, -69.99994, 148.5, 124.994, 183.8});
-    whatTheClosedFormFindsTheNumericSolverFindsToo(q, 0);
-    whatTheClosedFormFindsTheNumericSolverFindsToo(q, 1);
-    // Found in a sweep like the corners property (seed 5), failing before the wrist-point seeds.
-    whatTheClosedFormFindsTheNumericSolverFindsToo(Angles.toRadians(
-        new double[] {-20.457721244213467, 145.0, -70.0, -136.5351702747399, 124.99427042204869, 359.42704220486917}), 1);
-    whatTheClosedFormFindsTheNumericSolverFindsToo(Angles.toRadians(
-        new double[] {-169.99999994270422, 145.0, -69.9999999427042, -94.90939477244062, 5.729577951308232E-6,
-            -31.95938682729684}), 0);
-    whatTheClosedFormFindsTheNumericSolverFindsToo(Angles.toRadians(
-        new double[] {-19.716200312771914, 144.4270422048692, -69.42704220486917, 113.74214719533138, 91.40677199169157,
-            -227.99100523391476}), 1);
-  }
-
-  @Test
-  void theWristFoldedBackOverTheBaseIsSolvedFromHome() {
-    // The reproducer of issue 18: J2 near +139 deg, J3 -68 deg, J4 +185 deg, the wrist folded back
-    // over the base; tried over J1, J5, J6 on a grid.
-    java.util.List<String> failures = new java.util.ArrayList<>();
-    for (double j1 : new double[] {-150, -60, 0, 45, 120, 165}) {
-      for (double j5 : new double[] {-120, -60, -10, 10, 60, 120}) {
-        for (double j6 : new double[] {-300, 0, 170}) {
-          double[] q = Angles.toRadians(new double[] {j1, 139, -68, 185, j5, j6});
-          Transform X_BF = ForwardKinematics.flangePoseInBase(ROBOT, q);
-          if (!(numeric.solve(X_BF, new double[6]) instanceof IkResult.Solved)) {
-            failures.add(j1 + "/" + j5 + "/" + j6);
-          }
-        }
-      }
-    }
-    assertThat(failures).isEmpty();
-  }
 }
