@@ -75,6 +75,16 @@ final class JointRange {
     return ok(lo, i) ? clamp(lo, i) : (ok(hi, i) ? clamp(hi, i) : Double.NaN);
   }
 
+  /** The smallest k with q + 2πk inside joint i's limits (see {@link #ok}); above {@link #lastTurn} if none. */
+  int firstTurn(double q, int i) {
+    return (int) Math.ceil((lowerSlack[i] - q) / TWO_PI);
+  }
+
+  /** The largest k with q + 2πk inside joint i's limits (see {@link #ok}). */
+  int lastTurn(double q, int i) {
+    return (int) Math.floor((upperSlack[i] - q) / TWO_PI);
+  }
+
   /** {@code q} (in (-π, π]) or its ±2π variant, whichever lies inside joint i's limits, clamped; else q. */
   double intoLimits(double q, int i) {
     if (ok(q, i)) {

@@ -302,11 +302,13 @@ public final class OffsetWristIk implements IkSolver {
     int n = solveAll(X_BF);
     List<Solution> out = new ArrayList<>();
     for (int k = 0; k < n; k++) {
-      for (int t1 = -2; t1 <= 2; t1++) {
-        for (int t4 = -2; t4 <= 2; t4++) {
-          for (int t6 = -2; t6 <= 2; t6++) {
+      // Every turn of J1, J4 and J6 inside the limits (a file may give up to ±1080°, three turns).
+      int o = 6 * k;
+      for (int t1 = range.firstTurn(sol[o], 0); t1 <= range.lastTurn(sol[o], 0); t1++) {
+        for (int t4 = range.firstTurn(sol[o + 3], 3); t4 <= range.lastTurn(sol[o + 3], 3); t4++) {
+          for (int t6 = range.firstTurn(sol[o + 5], 5); t6 <= range.lastTurn(sol[o + 5], 5); t6++) {
             double[] q = new double[6];
-            System.arraycopy(sol, 6 * k, q, 0, 6);
+            System.arraycopy(sol, o, q, 0, 6);
             q[0] += TWO_PI * t1;
             q[3] += TWO_PI * t4;
             q[5] += TWO_PI * t6;

@@ -84,4 +84,21 @@ class JointRangeBoundsTest {
     assertThat(r.nearestTurn(p, Math.toRadians(400), 5)).isCloseTo(p + TWO_PI, org.assertj.core.data.Offset.offset(1e-12));
     assertThat(r.nearestTurn(q - TWO_PI, Math.toRadians(200), 5)).isCloseTo(q, org.assertj.core.data.Offset.offset(1e-12));
   }
+
+  @Test
+  void theTurnsInsideAWideRangeAreCountedFromBothLimits() {
+    // J6 at ±1080° (three turns): 0 has the variants -3..3 turns, 0.3 rad -3..2, -0.3 rad -2..3;
+    // with limits 30°..370°, 0 has only the turn +1 and 15° none (first above last).
+    JointRange r = new JointRange(withLimits(5, Math.toRadians(-1080), Math.toRadians(1080)));
+    assertThat(new int[] {r.firstTurn(0, 5), r.lastTurn(0, 5)}).containsExactly(-3, 3);
+    assertThat(new int[] {r.firstTurn(0.3, 5), r.lastTurn(0.3, 5)}).containsExactly(-3, 2);
+    assertThat(new int[] {r.firstTurn(-0.3, 5), r.lastTurn(-0.3, 5)}).containsExactly(-2, 3);
+    // A value a round-off beyond a limit still has that turn (the limit's slack).
+    double hi = Math.toRadians(1080);
+    assertThat(r.lastTurn(hi + 0.5 * JointRange.SLACK - TWO_PI, 5)).isEqualTo(1);
+    assertThat(r.lastTurn(hi + 2 * JointRange.SLACK - TWO_PI, 5)).isEqualTo(0);
+    JointRange n = new JointRange(withLimits(5, Math.toRadians(30), Math.toRadians(370)));
+    assertThat(new int[] {n.firstTurn(0, 5), n.lastTurn(0, 5)}).containsExactly(1, 1);
+    assertThat(n.firstTurn(Math.toRadians(15), 5)).isGreaterThan(n.lastTurn(Math.toRadians(15), 5));
+  }
 }
