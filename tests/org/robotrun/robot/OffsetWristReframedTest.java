@@ -67,6 +67,7 @@ class OffsetWristReframedTest {
     assertThat(r.wristKind()).isEqualTo("offset");
     IkSolver solver = IkSolver.forModel(r);
     assertThat(solver.kind()).isEqualTo(OffsetWristIk.KIND);
+    assertThat(solver.model()).isSameAs(r);
     OffsetWristIk plain = new OffsetWristIk(m);
     OffsetWristIk moved = (OffsetWristIk) solver;
     List<double[]> poses = new ArrayList<>(OffsetWristCompletenessTest.poses(m, 900 + id.length()));
