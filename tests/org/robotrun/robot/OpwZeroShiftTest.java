@@ -41,10 +41,24 @@ class OpwZeroShiftTest {
     OpwParameters p = m.opw().orElseThrow();
     ClosedFormIk ik = new ClosedFormIk(m);
     List<double[]> qs = IkSolverContractTest.samples(m, 520 + id.length(), 2);
-    for (int i = 0; i < 6; i++) {
+    // Each joint alone, then J4 and J5 together (J5 turned 0.7 rad as well: the J6 axis then
+    // lies off the forearm at q = 0, so J4's zero counts in the wrist's frame).
+    for (int i = 0; i < 7; i++) {
       for (double theta : new double[] {Math.PI / 2, -Math.PI / 2, Math.PI, 0.4}) {
-        RobotModel s = shifted(m, i, theta);
-        String what = String.format("%s, J%d's zero moved %.2f rad", id, i + 1, theta);
+        double[] shift = new double[6];
+        if (i < 6) {
+          shift[i] = theta;
+        } else {
+          shift[3] = theta;
+          shift[4] = 0.7;
+        }
+        RobotModel s = m;
+        for (int j = 0; j < 6; j++) {
+          if (shift[j] != 0) {
+            s = shifted(s, j, shift[j]);
+          }
+        }
+        String what = String.format("%s, zeros moved %s rad", id, java.util.Arrays.toString(shift));
         OpwParameters ps = s.opw().orElseThrow(() -> new AssertionError(what + ": no closed form"));
         assertThat(ps.approximate()).as(what).isFalse();
         assertThat(IkSolver.forModel(s).kind()).isEqualTo(ClosedFormIk.KIND);
@@ -54,15 +68,18 @@ class OpwZeroShiftTest {
         for (double[] q : qs) {
           Transform X = ForwardKinematics.flangePoseInBase(m, q);
           double[] qsh = q.clone();
-          qsh[i] -= theta;
+          for (int j = 0; j < 6; j++) {
+            qsh[j] -= shift[j];
+          }
           assertThat(ForwardKinematics.flangePoseInBase(s, qsh).distanceTo(X)).as("%s: FK", what).isLessThan(1e-9);
           assertThat(OpwDerivation.forward(ps, qsh).distanceTo(X)).as("%s: OPW FK", what).isLessThan(1e-6);
           List<IkSolver.Solution> a = ik.allSolutions(X);
           List<IkSolver.Solution> b = iks.allSolutions(X);
-          int joint = i;
           for (IkSolver.Solution sol : a) {
             double[] want = sol.q().clone();
-            want[joint] -= theta;
+            for (int j = 0; j < 6; j++) {
+              want[j] -= shift[j];
+            }
             if (s.firstJointOutsideLimits(want) >= 0) {
               continue;
             }
