@@ -13,9 +13,10 @@ import org.robotrun.math.Vec3;
  * strictly positive margins ("U when … &gt; 0", "F when J5 is on the positive side of its singular
  * value"), so the exactly stretched elbow of the UR5 at q = 0 (J2, J3, J4 in one line) is D and
  * its exactly singular wrist (J6 in line with J2..J4) is N; a millidegree either way flips each. F is measured from J5's
- * singular value, not from J5 = 0: a UR5 whose J5 zero is turned by 0.7 rad (its joint origin
- * turned about the J5 axis) is the same arm with J5 read 0.7 rad higher, and keeps every flag,
- * while its solutions are the original ones with J5 moved by 0.7 rad.
+ * singular value, not from J5 = 0: an arm whose joint zeros are all turned (each joint origin
+ * turned about its own axis, as a URDF's origin rpy may do) is the same arm with its joints read
+ * that much higher, and keeps every flag, while its solutions are the original ones moved by the
+ * same amounts.
  */
 class UrTypeConfigEdgesTest {
   static final RobotModel UR5 = IkSolverContractTest.ur5(Math.PI);
@@ -44,31 +45,46 @@ class UrTypeConfigEdgesTest {
   }
 
   @Test
-  void fIsMeasuredFromJ5sSingularValueNotFromItsZero() {
-    double delta = 0.7;
-    List<JointSpec> js = new ArrayList<>(UR5.joints());
-    JointSpec j5 = js.get(4);
-    js.set(4, new JointSpec(j5.name(), j5.X_PJ().compose(Transform.rotation(0, 0, 1, -delta)), j5.axis(),
-        j5.lowerRad(), j5.upperRad(), j5.maxSpeedRadPerSec()));
-    RobotModel turned = RobotModel.fromChain("ur5-j5-turned", "UR5, J5 zero turned", js, UR5.X_6F(), UR5.X_WB(),
-        UR5.links(), false);
-    assertThat(j5.axis()).isEqualTo(Vec3.Z);
-    UrTypeIk plain = new UrTypeIk(UR5);
-    UrTypeIk other = new UrTypeIk(turned);
-    for (double[] q : IkSolverContractTest.samples(UR5, 611, 6)) {
-      double[] qt = q.clone();
-      qt[4] += delta;
-      Transform X = ForwardKinematics.flangePoseInBase(UR5, q);
-      assertThat(ForwardKinematics.flangePoseInBase(turned, qt).distanceTo(X)).isLessThan(1e-9);
-      assertThat(other.configOf(qt)).as("q = %s", java.util.Arrays.toString(q)).isEqualTo(plain.configOf(q));
-      List<double[]> a = plain.baseSolutions(X);
-      List<double[]> b = other.baseSolutions(X);
-      assertThat(b).hasSameSizeAs(a);
-      for (double[] s : a) {
-        double[] st = s.clone();
-        st[4] += delta;
-        assertThat(b.stream().anyMatch(o -> OffsetWristCompletenessTest.wrappedDiff(o, st) < 1e-9)).isTrue();
-        assertThat(other.configOf(st).sameBranch(plain.configOf(s))).isTrue();
+  void turningEveryJointsZeroKeepsTheArmItsSolutionsAndItsFlags() {
+    // Each joint's origin turned about its own axis by delta_i: the same arm, read delta_i higher.
+    // The zero posture moves with J2 and J3 (W stays well in front at the new zero, so the T
+    // orientation is unchanged); J5's singular value moves with its zero, so F is kept.
+    double[] delta = {0.3, -0.4, 0.5, 0.6, 0.7, -0.8};
+    for (RobotModel m : new RobotModel[] {UR5, UrTypeGeneralLayoutTest.oblique()}) {
+      List<JointSpec> js = new ArrayList<>();
+      for (int i = 0; i < 6; i++) {
+        JointSpec j = m.joint(i);
+        Vec3 a = j.axis();
+        js.add(new JointSpec(j.name(), j.X_PJ().compose(Transform.rotation(a.x(), a.y(), a.z(), -delta[i])), a,
+            j.lowerRad() + delta[i], j.upperRad() + delta[i], j.maxSpeedRadPerSec()));
+      }
+      RobotModel turned = RobotModel.fromChain(m.id() + "-zeros", "zeros turned", js, m.X_6F(), m.X_WB(), m.links(), false);
+      UrTypeIk plain = new UrTypeIk(m);
+      UrTypeIk other = new UrTypeIk(turned);
+      for (double[] q : IkSolverContractTest.samples(m, 611, 6)) {
+        double[] qt = q.clone();
+        for (int i = 0; i < 6; i++) {
+          qt[i] += delta[i];
+        }
+        String what = m.id() + " at " + java.util.Arrays.toString(q);
+        Transform X = ForwardKinematics.flangePoseInBase(m, q);
+        assertThat(ForwardKinematics.flangePoseInBase(turned, qt).distanceTo(X)).isLessThan(1e-9);
+        Config c = plain.configOf(q);
+        assertThat(other.configOf(qt)).as(what).isEqualTo(new Config(c.flip(), c.up(), c.top(),
+            Config.turnOf(qt[0]), Config.turnOf(qt[3]), Config.turnOf(qt[5])));
+        List<double[]> a = plain.baseSolutions(X);
+        List<double[]> b = other.baseSolutions(X);
+        assertThat(b).as(what).hasSameSizeAs(a);
+        for (double[] s : a) {
+          double[] st = s.clone();
+          for (int i = 0; i < 6; i++) {
+            st[i] += delta[i];
+          }
+          assertThat(b.stream().anyMatch(o -> OffsetWristCompletenessTest.wrappedDiff(o, st) < 1e-9)).as(what).isTrue();
+          assertThat(other.configOf(st).sameBranch(plain.configOf(s))).as(what).isTrue();
+        }
+        IkResult near = other.solveNearest(X, qt);
+        assertThat(IkSolverContractTest.maxDiff(((IkResult.Solved) near).q(), qt)).as(what).isLessThan(1e-9);
       }
     }
   }
