@@ -75,9 +75,13 @@ class UrTypeFamilyEdgesTest {
       assertThat(byConfig).as("%s: solve %s", what, c).isInstanceOf(IkResult.Solved.class);
       exact(m, ((IkResult.Solved) byConfig).q(), X, what + " by CONFIG");
       assertThat(((IkResult.Solved) byConfig).positionErrorMm()).isLessThan(1e-6);
+      // The reported error is the answer's own, whatever the solver was asked before.
+      ik.configOf(new double[6]);
       IkResult near = ik.solveNearest(X, q);
       assertThat(near).isInstanceOf(IkResult.Solved.class);
       exact(m, ((IkResult.Solved) near).q(), X, what + " nearest");
+      assertThat(((IkResult.Solved) near).positionErrorMm()).isLessThan(1e-6);
+      assertThat(((IkResult.Solved) near).orientationErrorRad()).isLessThan(1e-9);
       assertThat(IkSolverContractTest.maxDiff(((IkResult.Solved) near).q(), q)).isLessThan(1e-7);
     }
   }
