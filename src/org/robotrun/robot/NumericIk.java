@@ -31,7 +31,8 @@ import org.robotrun.math.Vec3;
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
- * used, without using its solutions; otherwise a reach-sphere check around J2.
+ * used, without using its solutions; otherwise a reach check around the circle J2 sweeps about
+ * the J1 axis.
  *
  * <p>Not thread-safe (scratch arrays). The inner loop allocates nothing.
  */
