@@ -136,4 +136,53 @@ class ClosedFormReshapedArmTest {
       assertThat(IkSolverContractTest.maxDiff(((IkResult.Solved) near).q(), q)).isLessThan(1e-9);
     }
   }
+
+  @Test
+  void jointsThatTurnFurtherListEveryTurnInsideTheLimitsAndJ5ZeroIsN() {
+    // J1, J4 and J6 turning ±630°: every 360° variant inside the limits, counted here, is listed.
+    double lim = Math.toRadians(630);
+    RobotModel m = LRMATE;
+    for (int i : new int[] {0, 3, 5}) {
+      m = IkSolverContractTest.narrowed(m, i, -lim, lim);
+    }
+    ClosedFormIk ik = new ClosedFormIk(m);
+    double[] q = {0.3, 0.2, 0.4, -0.6, 1.1, 0.4};
+    Transform X = ForwardKinematics.flangePoseInBase(m, q);
+    List<IkSolver.Solution> all = ik.allSolutions(X);
+    double[] out = new double[48];
+    int valid = ik.solveAllBase(X, out);
+    int expected = 0;
+    for (int k = 0; k < 8; k++) {
+      if ((valid & (1 << k)) == 0) {
+        continue;
+      }
+      boolean inside = true;
+      for (int i : new int[] {1, 2, 4}) {
+        double v = out[6 * k + i];
+        boolean any = false;
+        for (int t = -1; t <= 1; t++) {
+          any |= m.joint(i).withinLimits(v + 2 * Math.PI * t);
+        }
+        inside &= any;
+      }
+      int variants = inside ? 1 : 0;
+      for (int i : new int[] {0, 3, 5}) {
+        int n = 0;
+        for (int t = -3; t <= 3; t++) {
+          n += m.joint(i).withinLimits(out[6 * k + i] + 2 * Math.PI * t) ? 1 : 0;
+        }
+        variants *= n;
+      }
+      expected += variants;
+    }
+    assertThat(all).hasSize(expected);
+    assertThat(all.stream().anyMatch(s -> Math.abs(s.q()[0]) > 3 * Math.PI)).isTrue();
+    assertThat(all.stream().anyMatch(s -> Math.abs(s.q()[3]) > 3 * Math.PI)).isTrue();
+    assertThat(all.stream().anyMatch(s -> Math.abs(s.q()[5]) > 3 * Math.PI)).isTrue();
+    for (IkSolver.Solution s : all) {
+      IkSolverContractTest.reaches(m, s.q(), X, "variant " + Arrays.toString(s.q()));
+    }
+    // "F when J5 > 0, N when J5 ≤ 0": the wrist exactly in line is N.
+    assertThat(ik.configOf(new double[] {0.3, 0.2, 0.4, -0.6, 0, 0.4}).flip()).isFalse();
+  }
 }
