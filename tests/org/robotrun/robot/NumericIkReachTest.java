@@ -98,12 +98,13 @@ class NumericIkReachTest {
     RobotModel m = arm(mount);
     Random rnd = new Random(77);
     List<double[]> qs = new ArrayList<>();
+    java.util.Map<double[], Double> reach = new java.util.IdentityHashMap<>();
     for (int k = 0; k < 4000; k++) {
-      qs.add(NumericIkSpecTest.random(m, rnd));
+      double[] q = NumericIkSpecTest.random(m, rnd);
+      qs.add(q);
+      reach.put(q, fromShoulderCircle(m, ForwardKinematics.flangePoseInBase(m, q).translationVector()));
     }
-    Comparator<double[]> reach = Comparator.comparingDouble(
-        q -> fromShoulderCircle(m, ForwardKinematics.flangePoseInBase(m, q).translationVector()));
-    qs.sort(reach.reversed());
+    qs.sort(Comparator.comparingDouble((double[] q) -> reach.get(q)).reversed());
     double r = bound(m);
     NumericIk ik = new NumericIk(m);
     for (double[] q : qs.subList(0, 6)) {
