@@ -18,8 +18,9 @@ import org.robotrun.math.Vec3;
  * without the closed form, a reach sphere around J2 before any restart). No point of the arm is
  * farther from the circle that J2's origin sweeps about the J1 axis than the sum of the offsets
  * from J2 on, flange included: the bound is worked out here from the link poses at q = 0, for the
- * oblique test arm as built and bolted on three ways (as is, on a wall, turned about an oblique
- * axis and moved), so the J1 axis need not be the base's z axis.
+ * oblique test arm as built, on a wall and turned about an oblique axis and moved, and for the
+ * CRX-10iA (no closed form; J2 above J1's origin along its axis) on that oblique mount, so the J1
+ * axis need not be the base's z axis.
  * <ul>
  *   <li>a target beyond the bound is OUT_OF_REACH at once, its message giving the distance and
  *       the bound computed here;
@@ -33,7 +34,7 @@ import org.robotrun.math.Vec3;
 class NumericIkReachTest {
 
   static Stream<String> mounts() {
-    return Stream.of("as built", "wall", "oblique");
+    return Stream.of("as built", "wall", "oblique", "crx oblique");
   }
 
   static RobotModel arm(String mount) {
@@ -41,6 +42,8 @@ class NumericIkReachTest {
     return switch (mount) {
       case "wall" -> MountedArmInvarianceTest.mounted(m, Transform.translation(0, 300, 500).compose(Transform.rotation(1, 0, 0, Math.PI / 2)));
       case "oblique" -> MountedArmInvarianceTest.mounted(m, MountedArmInvarianceTest.MOUNT);
+      case "crx oblique" -> MountedArmInvarianceTest.mounted(org.robotrun.io.RobotDefinitions.load("crx10ia"),
+          MountedArmInvarianceTest.MOUNT);
       default -> m;
     };
   }
@@ -70,12 +73,14 @@ class NumericIkReachTest {
   @MethodSource("mounts")
   void aTargetBeyondTheReachBoundIsRefusedWithItsDistance(String mount) {
     RobotModel m = arm(mount);
-    assertThat(IkSolver.kindFor(m)).isEqualTo(NumericSolver.KIND);
+    assertThat(m.opw()).isEmpty();
     Transform[] L = ForwardKinematics.linkPosesInBase(m, new double[6]);
     Vec3 o = L[1].translationVector();
     Vec3 a = L[1].rotate(m.joint(0).axis()).normalized();
     Vec3 s = L[2].translationVector();
-    Vec3 side = s.minus(o).minus(a.times(s.minus(o).dot(a))).normalized();
+    Vec3 off = s.minus(o).minus(a.times(s.minus(o).dot(a)));
+    // Out from the J1 axis toward J2 (any way out when J2 sits on the axis, as on the CRX).
+    Vec3 side = off.norm() > 1e-6 ? off.normalized() : a.cross(Math.abs(a.x()) < 0.9 ? Vec3.X : Vec3.Y).normalized();
     double r = bound(m);
     NumericIk ik = new NumericIk(m);
     // Beyond the bound: along the J1 axis over the shoulder, and out sideways from it.
