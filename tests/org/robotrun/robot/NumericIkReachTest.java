@@ -19,8 +19,9 @@ import org.robotrun.math.Vec3;
  * farther from the circle that J2's origin sweeps about the J1 axis than the sum of the offsets
  * from J2 on, flange included: the bound is worked out here from the link poses at q = 0, for the
  * oblique test arm as built, on a wall and turned about an oblique axis and moved, and for the
- * CRX-10iA (no closed form; J2 above J1's origin along its axis) on that oblique mount, so the J1
- * axis need not be the base's z axis.
+ * CRX-10iA (no closed form) on that oblique mount, and written with every link frame turned and
+ * slid along its joint axis (ReframedChainInvarianceTest), so the J1 axis need not be the base's
+ * z axis nor J2 level with J1's origin.
  * <ul>
  *   <li>a target beyond the bound is OUT_OF_REACH at once, its message giving the distance and
  *       the bound computed here;
@@ -34,7 +35,7 @@ import org.robotrun.math.Vec3;
 class NumericIkReachTest {
 
   static Stream<String> mounts() {
-    return Stream.of("as built", "wall", "oblique", "crx oblique");
+    return Stream.of("as built", "wall", "oblique", "crx oblique", "rewritten");
   }
 
   static RobotModel arm(String mount) {
@@ -42,6 +43,8 @@ class NumericIkReachTest {
     return switch (mount) {
       case "wall" -> MountedArmInvarianceTest.mounted(m, Transform.translation(0, 300, 500).compose(Transform.rotation(1, 0, 0, Math.PI / 2)));
       case "oblique" -> MountedArmInvarianceTest.mounted(m, MountedArmInvarianceTest.MOUNT);
+      case "rewritten" -> ReframedChainInvarianceTest.rewritten(m, new ReframedChainInvarianceTest.Rewrite(
+          ReframedChainInvarianceTest.BASE, Transform.IDENTITY, 29, new int[] {1, 1, 1, 1, 1, 1}));
       case "crx oblique" -> MountedArmInvarianceTest.mounted(org.robotrun.io.RobotDefinitions.load("crx10ia"),
           MountedArmInvarianceTest.MOUNT);
       default -> m;
