@@ -31,7 +31,8 @@ import org.robotrun.math.Vec3;
  *
  * <p>Unreachable targets are recognised before iterating where possible: with OPW parameters
  * the closed form's reachability answer (beyond reach, or no solution inside the limits) is
- * used, without using its solutions; otherwise a reach-sphere check around J2.
+ * used, without using its solutions; otherwise a reach check around the circle J2 sweeps about
+ * the J1 axis.
  *
  * <p>Not thread-safe (scratch arrays). The inner loop allocates nothing.
  */
@@ -109,12 +110,17 @@ public final class NumericIk {
   private final Settings settings;
   private final Optional<ClosedFormIk> reachCheck;
   private final double reachRadiusMm;
+  /** The J1 axis line in the base frame: a point on it and its unit direction. */
+  private final double[] j1Origin = new double[3];
+  private final double[] j1Axis = new double[3];
+  /** J2's origin at q = 0 along the J1 axis (from {@link #j1Origin}) and off it: its circle. */
+  private final double shoulderAlong;
+  private final double shoulderOff;
   /**
    * The wrist point (J5's origin) in the flange frame when it lies on J6's axis, so that it
    * does not move with J6 (a spherical or offset wrist); else the flange origin (all zero).
    */
   private final double[] wristInFlange = new double[3];
-  private final double[] shoulder = new double[3];
   private final double[] lower;
   private final double[] upper;
   private final double[] seeds = new double[SEEDS * 6];
@@ -151,11 +157,19 @@ public final class NumericIk {
     this.lower = model.lowerLimits();
     this.upper = model.upperLimits();
     // Reach: no point is farther from the circle J2's origin sweeps about the J1 axis than the
-    // sum of the offsets from J2 on, flange included (a loose but safe bound for any arm).
-    Transform j2 = model.joint(0).X_PJ().compose(model.joint(1).X_PJ());
-    shoulder[0] = j2.x();
-    shoulder[1] = j2.y();
-    shoulder[2] = j2.z();
+    // sum of the offsets from J2 on, flange included (a loose but safe bound for any arm). The
+    // circle is taken about the J1 axis line itself, wherever the base frame puts it.
+    Transform x1 = model.joint(0).X_PJ();
+    Vec3 a1 = x1.rotate(model.joint(0).axis()).normalized();
+    j1Origin[0] = x1.x();
+    j1Origin[1] = x1.y();
+    j1Origin[2] = x1.z();
+    j1Axis[0] = a1.x();
+    j1Axis[1] = a1.y();
+    j1Axis[2] = a1.z();
+    Vec3 s2 = x1.compose(model.joint(1).X_PJ()).translationVector().minus(x1.translationVector());
+    shoulderAlong = s2.dot(a1);
+    shoulderOff = s2.minus(a1.times(shoulderAlong)).norm();
     double r = 0;
     for (int i = 2; i < RobotModel.DOF; i++) {
       r += model.joint(i).X_PJ().translationVector().norm();
@@ -476,9 +490,11 @@ public final class NumericIk {
       // Only the verdict is used: the numeric solve below never sees the closed-form joints.
       return reachCheck.get().reachability(target);
     }
-    double dx = target[9], dy = target[10], dz = target[11] - shoulder[2];
-    double horizontal = Math.sqrt(dx * dx + dy * dy);
-    double d = Math.hypot(horizontal - Math.hypot(shoulder[0], shoulder[1]), dz);
+    // The target's distance from the circle J2's origin sweeps about the J1 axis.
+    double vx = target[9] - j1Origin[0], vy = target[10] - j1Origin[1], vz = target[11] - j1Origin[2];
+    double along = vx * j1Axis[0] + vy * j1Axis[1] + vz * j1Axis[2];
+    double ox = vx - along * j1Axis[0], oy = vy - along * j1Axis[1], oz = vz - along * j1Axis[2];
+    double d = Math.hypot(Math.sqrt(ox * ox + oy * oy + oz * oz) - shoulderOff, along - shoulderAlong);
     if (d > reachRadiusMm) {
       return Optional.of(new IkResult.Unreachable(IkResult.Reason.OUT_OF_REACH, String.format(
           "position (%.1f, %.1f, %.1f) mm is %.0f mm from the shoulder, beyond the %.0f mm reach",
