@@ -349,17 +349,18 @@ public final class MotionRunner {
    * Mixed corners blend in joint space: a joint move behind Cartesian moves adds its joint
    * displacement; a Cartesian move behind joint moves runs as a shadow (see
    * {@link Segment.CartesianSegment#shadow}) and takes no follower until the joint moves end.
+   * That holds at an L → J → L corner too: the second L starts at the J move's blend point even
+   * while the first L is still decelerating (the shadow rides on the Cartesian lead), so a short
+   * J between two CNT moves does not stop the arm.
    */
   private boolean blends(Segment last, MoveRequest next) {
-    boolean cartesianNext = !(next instanceof MoveRequest.Joint);
-    boolean anyCartesian = active.stream().anyMatch(a -> a instanceof Segment.CartesianSegment);
     return switch (last) {
-      case Segment.JointSegment j -> cartesianNext ? !anyCartesian : true;
+      case Segment.JointSegment j -> true;
       case Segment.CartesianSegment c -> {
         if (c.shadow) {
           yield false;
         }
-        if (!cartesianNext) {
+        if (next instanceof MoveRequest.Joint) {
           yield true;
         }
         Transform tool = next instanceof MoveRequest.Linear l ? l.X_FT() : ((MoveRequest.Circular) next).X_FT();
@@ -427,7 +428,7 @@ public final class MotionRunner {
     pathScale = frac < 1 ? Math.max(1e-4, pathScale * frac) : Math.min(1, pathScale * 1.05 + 1e-3);
     stallSec = pathScale < STALL_SCALE && want > 0 ? stallSec + dtSec : 0;
     if (stallSec > STALL_SEC) {
-      return fail(lastTag(), singularity());
+      return fail(lastTag(), cannotFollow());
     }
     return true;
   }
@@ -478,12 +479,8 @@ public final class MotionRunner {
         switch (s) {
           case Segment.JointSegment j -> j.addDisplacement(j.tSec + step, qTry);
           case Segment.CartesianSegment c -> {
-            System.arraycopy(c.qs, 0, qsTry, 0, RobotModel.DOF);
-            if (!tracker.track(qsTry, c.ownPoseAt(c.tSec + step), c.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD)) {
+            if (!trackShadow(c, step)) {
               return false;
-            }
-            for (int i = 0; i < RobotModel.DOF; i++) {
-              qTry[i] += qsTry[i] - c.qs0[i];
             }
           }
         }
@@ -497,9 +494,28 @@ public final class MotionRunner {
     }
     System.arraycopy(qCartTry, 0, qTry, 0, RobotModel.DOF);
     for (Segment s : active) {
-      if (s instanceof Segment.JointSegment j) {
-        j.addDisplacement(j.tSec + step, qTry);
+      switch (s) {
+        case Segment.JointSegment j -> j.addDisplacement(j.tSec + step, qTry);
+        case Segment.CartesianSegment c when c.shadow -> {
+          // L -> J -> L: the second L blends in behind the J while the first L still leads.
+          if (!trackShadow(c, step)) {
+            return false;
+          }
+        }
+        case Segment.CartesianSegment c -> { }
       }
+    }
+    return true;
+  }
+
+  /** Tracks the shadow's own path into {@link #qsTry} and adds its displacement {@code qs − qs0} to {@link #qTry}. */
+  private boolean trackShadow(Segment.CartesianSegment c, double step) {
+    System.arraycopy(c.qs, 0, qsTry, 0, RobotModel.DOF);
+    if (!tracker.track(qsTry, c.ownPoseAt(c.tSec + step), c.X_FT, TRACK_TOL_MM, TRACK_TOL_RAD)) {
+      return false;
+    }
+    for (int i = 0; i < RobotModel.DOF; i++) {
+      qTry[i] += qsTry[i] - c.qs0[i];
     }
     return true;
   }
@@ -509,7 +525,7 @@ public final class MotionRunner {
     Vec3 p = X_WBase.translationVector();
     Transform R = X_WBase.withTranslation(0, 0, 0);
     for (Segment s : active) {
-      if (!(s instanceof Segment.CartesianSegment c)) {
+      if (!(s instanceof Segment.CartesianSegment c) || c.shadow) {
         continue;
       }
       double u = c.profile.position(c.tSec + step);
@@ -724,22 +740,68 @@ public final class MotionRunner {
     return crosses || (to < Math.sin(WRIST_SINGULAR_RAD) && to < from);
   }
 
+  /**
+   * Why the path cannot be followed from here (no step could be taken, or it crawled too long):
+   * the wrist singularity when J5 is near 0; MOTN-018 when the path ahead leaves the arm's reach
+   * (docs/alarms.md: "a point of the straight or circular path is out of the arm's reach"; at the
+   * edge of reach the stretched arm crawls into that edge before the tracker fails); else a
+   * singularity inside the reach.
+   */
   private MotionFault cannotFollow() {
     if (Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))) {
       return singularity();
     }
-    return new MotionFault(MotionFault.Kind.OUT_OF_REACH,
-        "the path leaves the arm's reach (or passes a singularity) here");
-  }
-
-  private MotionFault singularity() {
-    if (Math.abs(Math.sin(q[4])) < Math.sin(Math.toRadians(10))) {
-      return new MotionFault(MotionFault.Kind.SINGULARITY, String.format(
-          "wrist singularity: J4 and J6 line up (J5 = %.1f deg); teach the path with the wrist bent or use a joint move",
-          Math.toDegrees(q[4])));
+    Vec3 out = firstUnreachableAhead();
+    if (out != null) {
+      return new MotionFault(MotionFault.Kind.OUT_OF_REACH, String.format(java.util.Locale.ROOT,
+          "the path leaves the arm's reach at (%.1f, %.1f, %.1f) mm", out.x(), out.y(), out.z()));
     }
     return new MotionFault(MotionFault.Kind.SINGULARITY,
         "the path passes too close to a singularity: joints would exceed their speed");
+  }
+
+  /** Points sampled on the rest of a path when it stops, to find where it leaves the reach. */
+  static final int REACH_SAMPLES = 200;
+
+  /**
+   * The first sampled point of the rest of the Cartesian path (the lead's superimposed path, or
+   * the shadow's own under a joint lead: the first Cartesian move is one or the other) that the arm's solver finds out of reach; null if none
+   * is, or the arm has no closed-form solver to ask.
+   */
+  private Vec3 firstUnreachableAhead() {
+    if (allSolutions.isEmpty()) {
+      return null;
+    }
+    Segment.CartesianSegment follow = null;
+    for (Segment s : active) {
+      if (s instanceof Segment.CartesianSegment c) {
+        follow = c;
+        break;
+      }
+    }
+    if (follow == null) {
+      return null;
+    }
+    double left = 0;
+    for (Segment s : active) {
+      left = Math.max(left, s.profile.durationSec() - s.tSec);
+    }
+    for (int k = 1; k <= REACH_SAMPLES; k++) {
+      double ahead = left * k / REACH_SAMPLES;
+      Transform X_WT = follow.shadow ? follow.ownPoseAt(follow.tSec + ahead) : poseAt(ahead);
+      Transform X_BF = model.X_WB().inverse().compose(X_WT).compose(follow.X_FT.inverse());
+      if (allSolutions.get().solveNearest(X_BF, q) instanceof IkResult.Unreachable u
+          && u.reason() == IkResult.Reason.OUT_OF_REACH) {
+        return X_WT.translationVector();
+      }
+    }
+    return null;
+  }
+
+  private MotionFault singularity() {
+    return new MotionFault(MotionFault.Kind.SINGULARITY, String.format(
+        "wrist singularity: J4 and J6 line up (J5 = %.1f deg); teach the path with the wrist bent or use a joint move",
+        Math.toDegrees(q[4])));
   }
 
   private int firstOutside(double[] qq) {

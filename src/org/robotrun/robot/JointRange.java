@@ -69,13 +69,20 @@ final class JointRange {
     if (ok(v, i)) {
       return clamp(v, i);
     }
+    // v − 2π and v + 2π cannot both be inside while v is not (the range is one interval), so at
+    // most one of them is.
     double lo = v - TWO_PI, hi = v + TWO_PI;
-    boolean loOk = ok(lo, i);
-    boolean hiOk = ok(hi, i);
-    if (loOk && hiOk) {
-      return clamp(ref - lo < hi - ref ? lo : hi, i);
-    }
-    return loOk ? clamp(lo, i) : (hiOk ? clamp(hi, i) : Double.NaN);
+    return ok(lo, i) ? clamp(lo, i) : (ok(hi, i) ? clamp(hi, i) : Double.NaN);
+  }
+
+  /** The smallest k with q + 2πk inside joint i's limits (see {@link #ok}); above {@link #lastTurn} if none. */
+  int firstTurn(double q, int i) {
+    return (int) Math.ceil((lowerSlack[i] - q) / TWO_PI);
+  }
+
+  /** The largest k with q + 2πk inside joint i's limits (see {@link #ok}). */
+  int lastTurn(double q, int i) {
+    return (int) Math.floor((upperSlack[i] - q) / TWO_PI);
   }
 
   /** {@code q} (in (-π, π]) or its ±2π variant, whichever lies inside joint i's limits, clamped; else q. */

@@ -33,8 +33,8 @@ import org.robotrun.math.Vec3;
  * samples; the Fourier form is scanned on a 128-point grid, and an interval is halved (up to 14
  * times) while a bound on g'' says it may hide more roots than its end values show; each root
  * is refined by the Illinois method, and a minimum of |g| that nearly touches zero is a
- * candidate. Every root (for J4 near 0° or 180°, where the three equations become dependent,
- * also the elbow solved as a plane two-link problem) gives one O3
+ * candidate. Every root (for J4 near 0° or 180°, or O5 on the J1 axis, where the three equations
+ * become dependent, also the elbow from the two spheres and J4 ⟂ J5 alone) gives one O3
  * and two postures (J1 and J1 + 180° with the shoulder mirrored); each posture's joints follow
  * joint by joint (a rotation of a known vector onto a known vector per joint), are polished by a
  * few Newton steps on the pose, and are kept only when the chain's FK reproduces the target
@@ -302,11 +302,13 @@ public final class OffsetWristIk implements IkSolver {
     int n = solveAll(X_BF);
     List<Solution> out = new ArrayList<>();
     for (int k = 0; k < n; k++) {
-      for (int t1 = -2; t1 <= 2; t1++) {
-        for (int t4 = -2; t4 <= 2; t4++) {
-          for (int t6 = -2; t6 <= 2; t6++) {
+      // Every turn of J1, J4 and J6 inside the limits (a file may give up to ±1080°, three turns).
+      int o = 6 * k;
+      for (int t1 = range.firstTurn(sol[o], 0); t1 <= range.lastTurn(sol[o], 0); t1++) {
+        for (int t4 = range.firstTurn(sol[o + 3], 3); t4 <= range.lastTurn(sol[o + 3], 3); t4++) {
+          for (int t6 = range.firstTurn(sol[o + 5], 5); t6 <= range.lastTurn(sol[o + 5], 5); t6++) {
             double[] q = new double[6];
-            System.arraycopy(sol, 6 * k, q, 0, 6);
+            System.arraycopy(sol, o, q, 0, 6);
             q[0] += TWO_PI * t1;
             q[3] += TWO_PI * t4;
             q[5] += TWO_PI * t6;
@@ -584,24 +586,26 @@ public final class OffsetWristIk implements IkSolver {
       elbow(p0.x() + l2 * ex3 / det, p0.y() + l2 * ey3 / det, p0.z() + l2 * ez3 / det, px, py, pz);
     }
     if (Math.abs(det) < DEGENERATE) {
-      // The J5 axis (nearly) perpendicular to the arm plane (J4 near 0 or 180°, a common taught
-      // posture): the three equations are dependent there and Cramer's rule says nothing, but
-      // the elbow is then a plain two-link problem in the plane with normal v through P0.
+      // The three equations are dependent: the J5 axis (nearly) perpendicular to the arm plane
+      // (J4 near 0 or 180°, a common taught posture), or O5 on the J1 axis (z1 × O5 = 0, the arm
+      // plane not fixed by O5). Cramer's rule says nothing there, but the first two equations
+      // still hold: O3·v = O5·v (a plane with normal v, through P0 when J4 is 0 or 180°) and the
+      // two spheres. With O5 = d·u + dv·v (u across v): O3 = a·u + dv·v ± h·(v × u).
       double vx = c * e1x + sn * e2x, vy = c * e1y + sn * e2y, vz = c * e1z + sn * e2z;
       double dv = px * vx + py * vy + pz * vz;
       double dx = px - dv * vx, dy = py - dv * vy, dz = pz - dv * vz;
       double d = Math.sqrt(dx * dx + dy * dy + dz * dz);
       double l3 = lay.l3() / l2;
       if (d > 1e-12) {
-        double a = (1 - l3 * l3 + d * d) / (2 * d);
-        double h2 = 1 - a * a;
+        double a = (1 - l3 * l3 - dv * dv + d * d) / (2 * d);
+        double h2 = 1 - a * a - dv * dv;
         if (h2 > -1e-9) {
           double h = Math.sqrt(Math.max(0, h2));
           double ux = dx / d, uy = dy / d, uz = dz / d;
           double wx = vy * uz - vz * uy, wy = vz * ux - vx * uz, wz = vx * uy - vy * ux;
           for (int s = -1; s <= 1; s += 2) {
-            elbow(p0.x() + l2 * (a * ux + s * h * wx), p0.y() + l2 * (a * uy + s * h * wy),
-                p0.z() + l2 * (a * uz + s * h * wz), px, py, pz);
+            elbow(p0.x() + l2 * (a * ux + dv * vx + s * h * wx), p0.y() + l2 * (a * uy + dv * vy + s * h * wy),
+                p0.z() + l2 * (a * uz + dv * vz + s * h * wz), px, py, pz);
           }
         }
       }
@@ -619,16 +623,20 @@ public final class OffsetWristIk implements IkSolver {
     oy5 = py;
     oz5 = pz;
     double o5x = p0.x() + l2 * ox5, o5y = p0.y() + l2 * oy5, o5z = p0.z() + l2 * oz5;
-    // Arm plane normal: z1 × (O5 − P0), else z1 × (O3 − P0); on the axis J1 is free (0).
+    // Arm plane normal (units of L2): z1 × (O5 − P0), or z1 × (O3 − P0) where the elbow lies
+    // farther from the J1 axis (O5 on or next to the axis, where its direction across the axis is
+    // only the root's rounding, about 1e-8); both on the axis: J1 is free (0).
     Vec3 z = lay.z1();
     double nx = z.y() * oz5 - z.z() * oy5, ny = z.z() * ox5 - z.x() * oz5, nz = z.x() * oy5 - z.y() * ox5;
     double nn = Math.sqrt(nx * nx + ny * ny + nz * nz);
-    if (nn < 1e-9) {
-      double qx = ox3 - p0.x(), qy = oy3 - p0.y(), qz = oz3 - p0.z();
-      nx = z.y() * qz - z.z() * qy;
-      ny = z.z() * qx - z.x() * qz;
-      nz = z.x() * qy - z.y() * qx;
-      nn = Math.sqrt(nx * nx + ny * ny + nz * nz);
+    double qx = (ox3 - p0.x()) / l2, qy = (oy3 - p0.y()) / l2, qz = (oz3 - p0.z()) / l2;
+    double mx = z.y() * qz - z.z() * qy, my = z.z() * qx - z.x() * qz, mz = z.x() * qy - z.y() * qx;
+    double mm = Math.sqrt(mx * mx + my * my + mz * mz);
+    if (mm > nn) {
+      nx = mx;
+      ny = my;
+      nz = mz;
+      nn = mm;
     }
     for (int sgn = 1; sgn >= -1; sgn -= 2) {
       if (solCount >= MAX_SOLUTIONS) {
@@ -639,7 +647,7 @@ public final class OffsetWristIk implements IkSolver {
       identity();
       enter(0);
       double q1;
-      if (nn < 1e-9 * l2) {
+      if (nn < 1e-9) {
         q1 = sgn > 0 ? 0 : Math.PI;
       } else {
         Vec3 u = lay.n2InL1();

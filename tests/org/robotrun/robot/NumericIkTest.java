@@ -80,19 +80,19 @@ class NumericIkTest {
   }
 
   @Test
-  void beyondReachIsOutOfReachWithinAMillisecond() {
+  void beyondReachIsOutOfReachWithoutRestarts() {
     Transform far = Xyzwpr.ofDegrees(1500, 200, 330, 180, 0, 0).toTransform();
     assertReasonQuickly(ik, far, IkResult.Reason.OUT_OF_REACH);
   }
 
   @Test
-  void insideTheBaseFromBelowIsAJointLimitWithinAMillisecond() {
+  void insideTheBaseFromBelowIsAJointLimitWithoutRestarts() {
     Transform underBase = Xyzwpr.ofDegrees(0, 0, -150, 0, 0, 0).toTransform();
     assertReasonQuickly(ik, underBase, IkResult.Reason.JOINT_LIMIT);
   }
 
   @Test
-  void limitOnlyPoseIsAJointLimitWithinAMillisecond() {
+  void limitOnlyPoseIsAJointLimitWithoutRestarts() {
     Transform behind = Xyzwpr.ofDegrees(-100, 0, 900, 180, 0, 0).toTransform();
     assertReasonQuickly(ik, behind, IkResult.Reason.JOINT_LIMIT);
   }
@@ -133,27 +133,26 @@ class NumericIkTest {
   }
 
   /**
-   * The issue bounds the time to recognise an unreachable target at 1 ms. Measured as this
-   * thread's CPU time (not wall time, which a loaded machine inflates at will) after a warm-up;
-   * the best of five runs is asserted, while a solver that really iterates to its cap would
-   * spend its whole budget of iterations and fail.
+   * The issue bounds the time to recognise an unreachable target at 1 ms. The behaviour behind
+   * that bound is asserted here: a target beyond reach gets its verdict from the reach check after
+   * the first attempt, with no restarts (an answer after iterating always says "after N
+   * iterations (why)"); any other unreachable target gets its verdict from that check too, or ends
+   * because every seed was tried within the iteration budget, never by running into the
+   * iteration or time cap. The time itself is a
+   * benchmark figure (NumericIkBench.unreachableVerdict), not a test.
    */
-  private static final java.lang.management.ThreadMXBean CPU = java.lang.management.ManagementFactory.getThreadMXBean();
-
   private static void assertReasonQuickly(NumericIk solver, Transform target, IkResult.Reason reason) {
-    for (int i = 0; i < 200; i++) {
-      solver.solve(target, new double[6]);
-    }
-    long best = Long.MAX_VALUE;
-    for (int i = 0; i < 5; i++) {
-      long t0 = CPU.getCurrentThreadCpuTime();
-      IkResult r = solver.solve(target, new double[6]);
-      best = Math.min(best, CPU.getCurrentThreadCpuTime() - t0);
-      assertThat(r).isInstanceOfSatisfying(IkResult.Unreachable.class, u -> {
-        assertThat(u.reason()).isEqualTo(reason);
-        assertThat(u.message()).isNotBlank();
-      });
-    }
-    assertThat(best).isLessThan(1_000_000);
+    IkResult r = solver.solve(target, new double[6]);
+    assertThat(r).isInstanceOfSatisfying(IkResult.Unreachable.class, u -> {
+      assertThat(u.reason()).isEqualTo(reason);
+      java.util.regex.Matcher m = java.util.regex.Pattern.compile("after (\\d+) iterations \\((.+)\\)$")
+          .matcher(u.message());
+      if (reason == IkResult.Reason.OUT_OF_REACH) {
+        assertThat(m.find()).as(u.message()).isFalse();
+      } else if (m.find()) {
+        assertThat(m.group(2)).isEqualTo("all seeds tried");
+        assertThat(Integer.parseInt(m.group(1))).isLessThan(NumericIk.Settings.defaults().maxIterations());
+      }
+    });
   }
 }

@@ -12,11 +12,16 @@ import org.openjdk.jmh.annotations.Setup;
 import org.openjdk.jmh.annotations.State;
 import org.openjdk.jmh.annotations.Warmup;
 import org.robotrun.io.RobotDefinitions;
+import org.robotrun.math.Transform;
+import org.robotrun.math.Xyzwpr;
 import org.robotrun.robot.IkResult;
 import org.robotrun.robot.NumericIk;
 import org.robotrun.robot.RobotModel;
 
-/** JMH: one numeric IK solve on the default robot, from home and from a random start. */
+/**
+ * JMH: one numeric IK solve on the default robot, from home and from a random start, and the
+ * verdict on a target beyond reach (the issue bounds it at 1 ms).
+ */
 @State(Scope.Thread)
 @BenchmarkMode(Mode.AverageTime)
 @OutputTimeUnit(TimeUnit.NANOSECONDS)
@@ -27,6 +32,7 @@ public class NumericIkBench {
   private NumericIk ik;
   private KinematicsTargets targets;
   private final double[] home = new double[6];
+  private final Transform far = Xyzwpr.ofDegrees(1500, 200, 330, 180, 0, 0).toTransform();
   private int i;
 
   @Setup
@@ -46,5 +52,10 @@ public class NumericIkBench {
   public IkResult solveFromRandomStart() {
     int k = i++ & (KinematicsTargets.COUNT - 1);
     return ik.solve(targets.X_BF[k], targets.randomStart[k]);
+  }
+
+  @Benchmark
+  public IkResult unreachableVerdict() {
+    return ik.solve(far, home);
   }
 }
