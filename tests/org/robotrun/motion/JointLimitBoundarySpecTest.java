@@ -3,7 +3,10 @@ package org.robotrun.motion;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.data.Offset.offset;
 
+import static org.robotrun.motion.MotionLimitSpecTest.deg;
+
 import java.util.List;
+
 import org.junit.jupiter.api.Test;
 
 /**
@@ -15,14 +18,6 @@ import org.junit.jupiter.api.Test;
  * out here, not read from the code.
  */
 class JointLimitBoundarySpecTest {
-  static double[] deg(double... d) {
-    double[] q = new double[d.length];
-    for (int i = 0; i < d.length; i++) {
-      q[i] = Math.toRadians(d[i]);
-    }
-    return q;
-  }
-
   @Test
   void aJointMoveOntoTheLimitsRunsAndEndsExactlyThere() {
     double[] atLimits = deg(170, 0, 0, -190, 125, 360);
