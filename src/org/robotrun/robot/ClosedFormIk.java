@@ -33,8 +33,8 @@ import org.robotrun.math.Transform;
  * </ul>
  * So the eight solutions map one to one onto the eight flag triples (a test checks this on
  * every reference pose, and another checks each flag against its geometric meaning from the
- * link frames: the wrist centre in link 1's and link 2's frames). Turn numbers are {@link Config#turnOf} of J1, J4, J6; J4 and J6 (and
- * J1 when its range exceeds ±180°) get every ±2π variant inside the limits.
+ * link frames: the wrist centre in link 1's and link 2's frames). Turn numbers are {@link Config#turnOf} of J1, J4, J6;
+ * {@link #allSolutions} lists every whole-turn variant inside the limits, of every joint.
  *
  * <p>Not thread-safe (scratch arrays); allocation-free apart from the result object.
  */
@@ -299,31 +299,13 @@ public final class ClosedFormIk implements IkSolver {
       if ((valid & (1 << k)) == 0) {
         continue;
       }
-      int o = k * 6;
-      for (int t1 = -2; t1 <= 2; t1++) {
-        for (int t4 = -2; t4 <= 2; t4++) {
-          for (int t6 = -2; t6 <= 2; t6++) {
-            double[] q = new double[6];
-            System.arraycopy(base, o, q, 0, 6);
-            q[1] = range.intoLimits(q[1], 1);
-            q[2] = range.intoLimits(q[2], 2);
-            q[4] = range.intoLimits(q[4], 4);
-            q[0] += TWO_PI * t1;
-            q[3] += TWO_PI * t4;
-            q[5] += TWO_PI * t6;
-            boolean inside = true;
-            for (int i = 0; i < 6; i++) {
-              inside &= range.ok(q[i], i);
-              q[i] = range.clamp(q[i], i);
-            }
-            if (inside) {
-              if (polish != null) {
-                polish.polish(q, target);
-              }
-              out.add(new Solution(q, configOf(q)));
-            }
-          }
+      double[] q0 = new double[6];
+      System.arraycopy(base, k * 6, q0, 0, 6);
+      for (double[] q : range.turnVariants(q0)) {
+        if (polish != null) {
+          polish.polish(q, target);
         }
+        out.add(new Solution(q, configOf(q)));
       }
     }
     return out;

@@ -85,6 +85,45 @@ final class JointRange {
     return (int) Math.floor((upperSlack[i] - q) / TWO_PI);
   }
 
+  /**
+   * Every whole-turn variant of {@code q} (each joint moved by 2πk, k from {@link #firstTurn} to
+   * {@link #lastTurn}) that lies inside all six limits, clamped onto them, J1's turn outermost and
+   * J6's innermost; empty when a joint has no turn inside. A file may give a joint up to ±1080°,
+   * so the turns are counted from the limits, not from a fixed ±2. Allocates (for allSolutions).
+   */
+  java.util.List<double[]> turnVariants(double[] q) {
+    int[] first = new int[6];
+    int[] last = new int[6];
+    for (int i = 0; i < 6; i++) {
+      first[i] = firstTurn(q[i], i);
+      last[i] = lastTurn(q[i], i);
+      if (first[i] > last[i]) {
+        return java.util.List.of();
+      }
+    }
+    java.util.List<double[]> out = new java.util.ArrayList<>();
+    int[] k = first.clone();
+    while (true) {
+      double[] v = new double[6];
+      for (int i = 0; i < 6; i++) {
+        v[i] = q[i] + TWO_PI * k[i];
+      }
+      if (firstOutside(v) < 0) {
+        clampAll(v);
+        out.add(v);
+      }
+      int i = 5;
+      while (i >= 0 && k[i] == last[i]) {
+        k[i] = first[i];
+        i--;
+      }
+      if (i < 0) {
+        return out;
+      }
+      k[i]++;
+    }
+  }
+
   /** {@code q} (in (-π, π]) or its ±2π variant, whichever lies inside joint i's limits, clamped; else q. */
   double intoLimits(double q, int i) {
     if (ok(q, i)) {

@@ -302,25 +302,10 @@ public final class OffsetWristIk implements IkSolver {
     int n = solveAll(X_BF);
     List<Solution> out = new ArrayList<>();
     for (int k = 0; k < n; k++) {
-      // Every turn of J1, J4 and J6 inside the limits (a file may give up to ±1080°, three turns).
-      int o = 6 * k;
-      for (int t1 = range.firstTurn(sol[o], 0); t1 <= range.lastTurn(sol[o], 0); t1++) {
-        for (int t4 = range.firstTurn(sol[o + 3], 3); t4 <= range.lastTurn(sol[o + 3], 3); t4++) {
-          for (int t6 = range.firstTurn(sol[o + 5], 5); t6 <= range.lastTurn(sol[o + 5], 5); t6++) {
-            double[] q = new double[6];
-            System.arraycopy(sol, o, q, 0, 6);
-            q[0] += TWO_PI * t1;
-            q[3] += TWO_PI * t4;
-            q[5] += TWO_PI * t6;
-            q[1] = range.intoLimits(q[1], 1);
-            q[2] = range.intoLimits(q[2], 2);
-            q[4] = range.intoLimits(q[4], 4);
-            if (range.firstOutside(q) < 0) {
-              range.clampAll(q);
-              out.add(new Solution(q, configOf(q)));
-            }
-          }
-        }
+      double[] q0 = new double[6];
+      System.arraycopy(sol, 6 * k, q0, 0, 6);
+      for (double[] q : range.turnVariants(q0)) {
+        out.add(new Solution(q, configOf(q)));
       }
     }
     return out;

@@ -435,32 +435,14 @@ public final class UrTypeIk implements IkSolver {
       if ((valid & (1 << s)) == 0) {
         continue;
       }
-      for (int t1 = -2; t1 <= 2; t1++) {
-        for (int t2 = -1; t2 <= 1; t2++) {
-          for (int t3 = -1; t3 <= 1; t3++) {
-            for (int t4 = -2; t4 <= 2; t4++) {
-              for (int t5 = -1; t5 <= 1; t5++) {
-                for (int t6 = -2; t6 <= 2; t6++) {
-                  double[] q = new double[6];
-                  System.arraycopy(base, 6 * s, q, 0, 6);
-                  q[0] += TWO_PI * t1;
-                  q[1] += TWO_PI * t2;
-                  q[2] += TWO_PI * t3;
-                  q[3] += TWO_PI * t4;
-                  q[4] += TWO_PI * t5;
-                  q[5] += TWO_PI * t6;
-                  if (range.firstOutside(q) < 0) {
-                    if (polish != null) {
-                      polish.polish(q, target);
-                    }
-                    range.clampAll(q);
-                    out.add(new Solution(q, configOf(q)));
-                  }
-                }
-              }
-            }
-          }
+      double[] q0 = new double[6];
+      System.arraycopy(base, 6 * s, q0, 0, 6);
+      for (double[] q : range.turnVariants(q0)) {
+        if (polish != null) {
+          polish.polish(q, target);
         }
+        range.clampAll(q);
+        out.add(new Solution(q, configOf(q)));
       }
     }
     return out;
