@@ -786,10 +786,12 @@ public final class MotionRunner {
     for (Segment s : active) {
       left = Math.max(left, s.profile.durationSec() - s.tSec);
     }
+    Transform X_BW = model.X_WB().inverse();
+    Transform X_TF = follow.X_FT.inverse();
     for (int k = 1; k <= REACH_SAMPLES; k++) {
       double ahead = left * k / REACH_SAMPLES;
       Transform X_WT = follow.shadow ? follow.ownPoseAt(follow.tSec + ahead) : poseAt(ahead);
-      Transform X_BF = model.X_WB().inverse().compose(X_WT).compose(follow.X_FT.inverse());
+      Transform X_BF = X_BW.compose(X_WT).compose(X_TF);
       if (allSolutions.get().solveNearest(X_BF, q) instanceof IkResult.Unreachable u
           && u.reason() == IkResult.Reason.OUT_OF_REACH) {
         return X_WT.translationVector();
